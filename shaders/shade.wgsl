@@ -1,0 +1,86 @@
+// Shading pass: a background gradient, then the surface lit by one point light with Blinn-Phong.
+// Mirrors `ShadingUniform` in src/uniforms.rs.
+
+struct Shading {
+    view_proj: mat4x4<f32>,
+    camera_position: vec3<f32>,
+    ambient: f32,
+    light_position: vec3<f32>,
+    diffuse: f32,
+    base_color: vec3<f32>,
+    specular: f32,
+    shininess: f32,
+    // 1 when the target is not an sRGB format and the shader must encode.
+    encode_srgb: u32,
+    _pad0: u32,
+    _pad1: u32,
+}
+
+@group(0) @binding(0) var<uniform> shading: Shading;
+
+fn to_output(linear: vec3<f32>) -> vec4<f32> {
+    var c = clamp(linear, vec3<f32>(0.0), vec3<f32>(1.0));
+    if (shading.encode_srgb == 1u) {
+        let low = c * 12.92;
+        let high = 1.055 * pow(c, vec3<f32>(1.0 / 2.4)) - 0.055;
+        c = select(high, low, c <= vec3<f32>(0.0031308));
+    }
+    return vec4<f32>(c, 1.0);
+}
+
+struct BackgroundOut {
+    @builtin(position) clip: vec4<f32>,
+    @location(0) height: f32,
+}
+
+// A full-screen triangle.
+@vertex
+fn background_vertex(@builtin(vertex_index) i: u32) -> BackgroundOut {
+    let uv = vec2<f32>(f32((i << 1u) & 2u), f32(i & 2u));
+    var out: BackgroundOut;
+    out.clip = vec4<f32>(uv * 2.0 - 1.0, 1.0, 1.0);
+    out.height = uv.y;
+    return out;
+}
+
+@fragment
+fn background_fragment(in: BackgroundOut) -> @location(0) vec4<f32> {
+    let bottom = vec3<f32>(0.010, 0.012, 0.018);
+    let top = vec3<f32>(0.060, 0.075, 0.110);
+    return to_output(mix(bottom, top, clamp(in.height * 0.5, 0.0, 1.0)));
+}
+
+struct SurfaceOut {
+    @builtin(position) clip: vec4<f32>,
+    @location(0) world: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+}
+
+@vertex
+fn surface_vertex(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>) -> SurfaceOut {
+    var out: SurfaceOut;
+    out.clip = shading.view_proj * vec4<f32>(position, 1.0);
+    out.world = position;
+    out.normal = normal;
+    return out;
+}
+
+@fragment
+fn surface_fragment(in: SurfaceOut, @builtin(front_facing) front: bool) -> @location(0) vec4<f32> {
+    // Triangles wind counter-clockwise seen from outside; a back face is the inside of the surface.
+    var n = normalize(in.normal);
+    if (!front) {
+        n = -n;
+    }
+    let v = normalize(shading.camera_position - in.world);
+    let l = normalize(shading.light_position - in.world);
+    let h = normalize(l + v);
+    let lambert = max(dot(n, l), 0.0);
+    var highlight = 0.0;
+    if (lambert > 0.0) {
+        highlight = pow(max(dot(n, h), 0.0), shading.shininess);
+    }
+    let color = shading.base_color * (shading.ambient + shading.diffuse * lambert)
+        + vec3<f32>(shading.specular * highlight);
+    return to_output(color);
+}

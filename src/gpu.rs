@@ -1,0 +1,101 @@
+//! Getting a device, and reading buffers back outside the frame loop (tests and tools).
+
+use std::fmt;
+
+/// Why no device could be had.
+#[derive(Debug, Clone)]
+pub struct InitError(pub String);
+
+impl fmt::Display for InitError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for InitError {}
+
+#[cfg(not(target_arch = "wasm32"))]
+const NO_ADAPTER_HINT: &str = "install a Vulkan driver; without a GPU, Mesa's software rasteriser \
+     lavapipe works (Debian/Ubuntu: apt-get install mesa-vulkan-drivers)";
+#[cfg(target_arch = "wasm32")]
+const NO_ADAPTER_HINT: &str = "use a browser with WebGPU enabled (Chrome or Edge 113+, Firefox 141+, \
+     Safari 26+), or enable it with the browser's WebGPU flag";
+
+/// An adapter, its device and queue, with the adapter's own limits granted so that large grids fit
+/// where the hardware allows.
+pub async fn request_device(
+    instance: &wgpu::Instance,
+    compatible_surface: Option<&wgpu::Surface<'_>>,
+) -> Result<(wgpu::Adapter, wgpu::Device, wgpu::Queue), InitError> {
+    let adapter = instance
+        .request_adapter(&wgpu::RequestAdapterOptions {
+            power_preference: wgpu::PowerPreference::HighPerformance,
+            compatible_surface,
+            ..Default::default()
+        })
+        .await
+        .map_err(|e| InitError(format!("no GPU adapter found ({e}): {NO_ADAPTER_HINT}")))?;
+    let (device, queue) = adapter
+        .request_device(&wgpu::DeviceDescriptor {
+            label: Some("metaballs device"),
+            required_limits: adapter.limits(),
+            ..Default::default()
+        })
+        .await
+        .map_err(|e| InitError(format!("the GPU adapter refused a device: {e}")))?;
+    Ok((adapter, device, queue))
+}
+
+/// A native instance over every backend wgpu supports here (Vulkan first, which lavapipe provides).
+#[cfg(not(target_arch = "wasm32"))]
+pub fn native_instance() -> wgpu::Instance {
+    let mut desc = wgpu::InstanceDescriptor::new_without_display_handle_from_env();
+    if std::env::var_os("WGPU_BACKEND").is_none() {
+        desc.backends = wgpu::Backends::PRIMARY;
+    }
+    wgpu::Instance::new(desc)
+}
+
+/// Copies `size` bytes of `source` from `offset` into a mappable buffer and returns them. Waits for
+/// the GPU: for tests and tools, never for the frame loop.
+pub async fn read_buffer(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    source: &wgpu::Buffer,
+    offset: u64,
+    size: u64,
+) -> Vec<u8> {
+    if size == 0 {
+        return Vec::new();
+    }
+    let staging = device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("readback: staging"),
+        size,
+        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    });
+    let mut encoder =
+        device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("readback: copy") });
+    encoder.copy_buffer_to_buffer(source, offset, &staging, 0, size);
+    queue.submit([encoder.finish()]);
+    map_and_read(device, &staging).await
+}
+
+/// Maps a MAP_READ buffer and returns its bytes.
+pub async fn map_and_read(device: &wgpu::Device, buffer: &wgpu::Buffer) -> Vec<u8> {
+    let (sender, receiver) = futures_channel::oneshot::channel();
+    buffer.map_async(wgpu::MapMode::Read, .., move |result| {
+        let _ = sender.send(result);
+    });
+    #[cfg(not(target_arch = "wasm32"))]
+    device.poll(wgpu::PollType::wait_indefinitely()).expect("the device was lost while reading a buffer back");
+    #[cfg(target_arch = "wasm32")]
+    let _ = device;
+    receiver
+        .await
+        .expect("the map callback was dropped")
+        .expect("mapping a readback buffer failed");
+    let bytes = buffer.get_mapped_range(..).expect("mapped range").to_vec();
+    buffer.unmap();
+    bytes
+}

@@ -1,0 +1,120 @@
+//! Command line: render a frame to PNG offscreen.
+
+#[cfg(not(target_arch = "wasm32"))]
+mod cli {
+    use clap::{Parser, Subcommand};
+    use metaballs::offscreen::{Offscreen, write_png};
+    use metaballs::params::check_f32;
+    use metaballs::{ParamError, Settings};
+    use std::path::PathBuf;
+    use std::process::ExitCode;
+    use std::time::Instant;
+
+    #[derive(Parser)]
+    #[command(name = "metaballs", version, about = "Marching cubes of merging spheres on the GPU")]
+    struct Cli {
+        #[command(subcommand)]
+        command: Command,
+    }
+
+    #[derive(Subcommand)]
+    enum Command {
+        /// Render one frame offscreen and write it as a PNG.
+        Render(RenderArgs),
+    }
+
+    #[derive(clap::Args)]
+    struct RenderArgs {
+        /// PNG file to write.
+        #[arg(long)]
+        out: PathBuf,
+        /// Number of spheres, 1 to 64.
+        #[arg(long, default_value_t = Settings::default().sphere_count)]
+        spheres: u32,
+        /// Iso level of the surface.
+        #[arg(long, default_value_t = Settings::default().iso, allow_negative_numbers = true)]
+        iso: f32,
+        /// Cells along each axis of the grid.
+        #[arg(long, default_value_t = Settings::default().resolution)]
+        resolution: u32,
+        /// Image size in pixels, WIDTHxHEIGHT.
+        #[arg(long, default_value = "960x640", value_parser = parse_size)]
+        size: (u32, u32),
+        /// Seed of the sphere layout.
+        #[arg(long, default_value_t = Settings::default().seed)]
+        seed: u64,
+        /// Seconds of animation before the frame, 0 to 3600.
+        #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+        time: f32,
+    }
+
+    fn parse_size(text: &str) -> Result<(u32, u32), String> {
+        let (w, h) = text
+            .split_once(['x', 'X'])
+            .ok_or_else(|| format!("size must look like 960x640, got {text:?}"))?;
+        let parse = |s: &str, what: &str| {
+            s.trim()
+                .parse::<u32>()
+                .ok()
+                .filter(|&v| (1..=8192).contains(&v))
+                .ok_or_else(|| format!("{what} must be a whole number from 1 to 8192, got {s:?}"))
+        };
+        Ok((parse(w, "width")?, parse(h, "height")?))
+    }
+
+    fn render(args: RenderArgs) -> Result<(), Box<dyn std::error::Error>> {
+        let settings = Settings {
+            sphere_count: args.spheres,
+            iso: args.iso,
+            resolution: args.resolution,
+            seed: args.seed,
+            ..Settings::default()
+        }
+        .validated()?;
+        check_f32("time (seconds)", args.time, 0.0, 3600.0)?;
+        let (width, height) = args.size;
+        let mut offscreen = Offscreen::blocking(settings, width, height)?;
+        offscreen.renderer.update(args.time)?;
+        let started = Instant::now();
+        let pixels = offscreen.render_rgba();
+        let elapsed = started.elapsed();
+        pollster::block_on(offscreen.renderer.flush_stats());
+        write_png(&args.out, width, height, &pixels)?;
+        let stats = offscreen.renderer.stats().unwrap_or_default();
+        println!(
+            "wrote {} ({width}x{height}): {} spheres, iso {}, {} cells per axis, {} triangles{}, {:.1} ms on {}",
+            args.out.display(),
+            settings.sphere_count,
+            settings.iso,
+            settings.resolution,
+            stats.triangles,
+            if stats.overflowed() { " (budget overflowed: some triangles were dropped)" } else { "" },
+            elapsed.as_secs_f64() * 1e3,
+            offscreen.adapter.get_info().name,
+        );
+        Ok(())
+    }
+
+    pub fn main() -> ExitCode {
+        let cli = Cli::parse();
+        let result = match cli.command {
+            Command::Render(args) => render(args),
+        };
+        match result {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(error) => {
+                eprintln!("error: {error}");
+                // Bad input is a usage error (2); anything else (no GPU, I/O) is 1.
+                if error.downcast_ref::<ParamError>().is_some() { ExitCode::from(2) } else { ExitCode::FAILURE }
+            }
+        }
+    }
+}
+
+#[cfg(not(target_arch = "wasm32"))]
+fn main() -> std::process::ExitCode {
+    cli::main()
+}
+
+#[cfg(target_arch = "wasm32")]
+fn main() {}

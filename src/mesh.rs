@@ -1,0 +1,163 @@
+//! Triangle meshes as the passes emit them, and the properties the tests hold them to: equality with a
+//! tolerance, welding, closedness and topology.
+
+use glam::Vec3;
+use std::collections::HashMap;
+
+/// A triangle soup: vertices `3k`, `3k+1`, `3k+2` form triangle `k`, counter-clockwise seen from outside.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Mesh {
+    pub positions: Vec<Vec3>,
+    /// Unit normals pointing out of the surface.
+    pub normals: Vec<Vec3>,
+    /// For meshes from the CPU oracle, the grid edge each vertex lies on; empty otherwise.
+    pub edge_ids: Vec<u64>,
+}
+
+/// A welded mesh: shared vertices and triangles indexing them.
+#[derive(Clone, Debug, Default)]
+pub struct IndexedMesh {
+    pub positions: Vec<Vec3>,
+    pub triangles: Vec<[u32; 3]>,
+}
+
+/// Counts of an indexed mesh's parts that make up its topology.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Topology {
+    /// Edges used by a number of triangles other than two (0 for a closed 2-manifold).
+    pub open_or_nonmanifold_edges: usize,
+    /// Edges used twice in the same direction (0 for a consistently oriented surface).
+    pub misoriented_edges: usize,
+    /// Euler characteristic V − E + F of each connected component, sorted.
+    pub component_euler: Vec<i64>,
+}
+
+impl Mesh {
+    /// Triangles in the soup.
+    pub fn triangle_count(&self) -> usize {
+        self.positions.len() / 3
+    }
+
+    /// Triangle `k`'s vertex positions.
+    pub fn triangle(&self, k: usize) -> [Vec3; 3] {
+        [self.positions[3 * k], self.positions[3 * k + 1], self.positions[3 * k + 2]]
+    }
+
+    /// Joins vertices with bit-identical positions (vertices on one grid edge are computed identically
+    /// by both cells that share it).
+    pub fn weld_by_position(&self) -> IndexedMesh {
+        self.weld(|i| self.positions[i].to_array().map(f32::to_bits))
+    }
+
+    /// Joins vertices lying on the same grid edge (oracle meshes only).
+    pub fn weld_by_edge(&self) -> IndexedMesh {
+        assert_eq!(self.edge_ids.len(), self.positions.len(), "weld_by_edge needs edge ids");
+        self.weld(|i| self.edge_ids[i])
+    }
+
+    fn weld<K: std::hash::Hash + Eq>(&self, key: impl Fn(usize) -> K) -> IndexedMesh {
+        let mut index: HashMap<K, u32> = HashMap::new();
+        let mut out = IndexedMesh::default();
+        let mut ids = Vec::with_capacity(self.positions.len());
+        for i in 0..self.positions.len() {
+            let id = *index.entry(key(i)).or_insert_with(|| {
+                out.positions.push(self.positions[i]);
+                out.positions.len() as u32 - 1
+            });
+            ids.push(id);
+        }
+        out.triangles = ids.chunks(3).map(|t| [t[0], t[1], t[2]]).collect();
+        out
+    }
+
+    /// Checks that every triangle of `self` has a counterpart in `other` whose vertices, in the same
+    /// cyclic order, lie within `tolerance`, one to one. Returns a description of the first difference.
+    pub fn matches(&self, other: &Mesh, tolerance: f32) -> Result<(), String> {
+        if self.triangle_count() != other.triangle_count() {
+            return Err(format!(
+                "triangle counts differ: {} against {}",
+                self.triangle_count(),
+                other.triangle_count()
+            ));
+        }
+        // Bucket the other mesh's triangles by centroid on a lattice coarser than the tolerance, then
+        // look for a match in the 27 buckets around each centroid.
+        let bucket_size = (tolerance * 4.0).max(1e-6);
+        let bucket = |c: Vec3| (c / bucket_size).floor().as_ivec3();
+        let mut buckets: HashMap<glam::IVec3, Vec<usize>> = HashMap::new();
+        for k in 0..other.triangle_count() {
+            let t = other.triangle(k);
+            buckets.entry(bucket((t[0] + t[1] + t[2]) / 3.0)).or_default().push(k);
+        }
+        let mut used = vec![false; other.triangle_count()];
+        for k in 0..self.triangle_count() {
+            let t = self.triangle(k);
+            let home = bucket((t[0] + t[1] + t[2]) / 3.0);
+            let close = |a: [Vec3; 3], b: [Vec3; 3]| (0..3).all(|i| a[i].distance(b[i]) <= tolerance);
+            let found = (-1..=1)
+                .flat_map(|x| (-1..=1).flat_map(move |y| (-1..=1).map(move |z| glam::IVec3::new(x, y, z))))
+                .filter_map(|off| buckets.get(&(home + off)))
+                .flatten()
+                .copied()
+                .find(|&j| {
+                    let o = other.triangle(j);
+                    !used[j] && (0..3).any(|r| close(t, [o[r], o[(r + 1) % 3], o[(r + 2) % 3]]))
+                });
+            match found {
+                Some(j) => used[j] = true,
+                None => return Err(format!("triangle {k} {t:?} has no counterpart within {tolerance}")),
+            }
+        }
+        Ok(())
+    }
+}
+
+impl IndexedMesh {
+    /// Edge use, orientation and per-component Euler characteristic.
+    pub fn topology(&self) -> Topology {
+        let mut directed: HashMap<(u32, u32), u32> = HashMap::new();
+        for t in &self.triangles {
+            for k in 0..3 {
+                *directed.entry((t[k], t[(k + 1) % 3])).or_default() += 1;
+            }
+        }
+        let mut undirected: HashMap<(u32, u32), u32> = HashMap::new();
+        for (&(a, b), &n) in &directed {
+            *undirected.entry((a.min(b), a.max(b))).or_default() += n;
+        }
+        let open_or_nonmanifold_edges = undirected.values().filter(|&&n| n != 2).count();
+        let misoriented_edges = directed.values().filter(|&&n| n > 1).count();
+
+        // Components by union-find over vertices joined by triangles.
+        let mut parent: Vec<u32> = (0..self.positions.len() as u32).collect();
+        fn find(parent: &mut [u32], mut x: u32) -> u32 {
+            while parent[x as usize] != x {
+                parent[x as usize] = parent[parent[x as usize] as usize];
+                x = parent[x as usize];
+            }
+            x
+        }
+        for t in &self.triangles {
+            for k in 1..3 {
+                let (a, b) = (find(&mut parent, t[0]), find(&mut parent, t[k]));
+                parent[a as usize] = b;
+            }
+        }
+        let mut per_component: HashMap<u32, (i64, i64, i64)> = HashMap::new();
+        for v in 0..self.positions.len() as u32 {
+            let root = find(&mut parent, v);
+            per_component.entry(root).or_default().0 += 1;
+        }
+        for &(a, _) in undirected.keys() {
+            let root = find(&mut parent, a);
+            per_component.entry(root).or_default().1 += 1;
+        }
+        for t in &self.triangles {
+            let root = find(&mut parent, t[0]);
+            per_component.entry(root).or_default().2 += 1;
+        }
+        let mut component_euler: Vec<i64> = per_component.values().map(|(v, e, f)| v - e + f).collect();
+        component_euler.sort();
+        Topology { open_or_nonmanifold_edges, misoriented_edges, component_euler }
+    }
+}

@@ -1,0 +1,122 @@
+//! Native offscreen rendering: a `Renderer` drawing into a texture that is read back as RGBA pixels, for
+//! the PNG renderer, tests and benchmarks.
+
+use crate::gpu;
+use crate::{Renderer, Settings};
+use std::path::Path;
+
+/// The format offscreen frames are drawn in.
+pub const OFFSCREEN_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
+
+/// A renderer with its own device and target texture.
+pub struct Offscreen {
+    pub renderer: Renderer,
+    pub adapter: wgpu::Adapter,
+    pub device: wgpu::Device,
+    pub queue: wgpu::Queue,
+    texture: wgpu::Texture,
+    view: wgpu::TextureView,
+}
+
+impl Offscreen {
+    /// Gets a device and builds a renderer for `width` × `height` frames.
+    pub async fn new(settings: Settings, width: u32, height: u32) -> Result<Self, Box<dyn std::error::Error>> {
+        let instance = gpu::native_instance();
+        let (adapter, device, queue) = gpu::request_device(&instance, None).await?;
+        let renderer = Renderer::new(device.clone(), queue.clone(), OFFSCREEN_FORMAT, width, height, settings)?;
+        let (texture, view) = target(&device, width, height);
+        Ok(Self { renderer, adapter, device, queue, texture, view })
+    }
+
+    /// Blocking form of `new`.
+    pub fn blocking(settings: Settings, width: u32, height: u32) -> Result<Self, Box<dyn std::error::Error>> {
+        pollster::block_on(Self::new(settings, width, height))
+    }
+
+    /// Follows a new frame size.
+    pub fn resize(&mut self, width: u32, height: u32) -> Result<(), crate::ParamError> {
+        self.renderer.resize(width, height)?;
+        (self.texture, self.view) = target(&self.device, width, height);
+        Ok(())
+    }
+
+    /// Draws a frame into the target without reading it back.
+    pub fn render(&mut self) {
+        self.renderer.render(&self.view);
+    }
+
+    /// Draws a frame and returns its pixels, RGBA8 (sRGB), rows top to bottom.
+    pub fn render_rgba(&mut self) -> Vec<u8> {
+        self.render();
+        let (width, height) = self.renderer.size();
+        let row_bytes = width * 4;
+        let padded = row_bytes.div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
+        let buffer = self.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("offscreen: pixels"),
+            size: padded as u64 * height as u64,
+            usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let mut encoder = self
+            .device
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("offscreen: copy") });
+        encoder.copy_texture_to_buffer(
+            wgpu::TexelCopyTextureInfo {
+                texture: &self.texture,
+                mip_level: 0,
+                origin: wgpu::Origin3d::ZERO,
+                aspect: wgpu::TextureAspect::All,
+            },
+            wgpu::TexelCopyBufferInfo {
+                buffer: &buffer,
+                layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(padded), rows_per_image: None },
+            },
+            wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
+        );
+        self.queue.submit([encoder.finish()]);
+        let bytes = pollster::block_on(gpu::map_and_read(&self.device, &buffer));
+        bytes.chunks(padded as usize).flat_map(|row| &row[..row_bytes as usize]).copied().collect()
+    }
+}
+
+fn target(device: &wgpu::Device, width: u32, height: u32) -> (wgpu::Texture, wgpu::TextureView) {
+    let texture = device.create_texture(&wgpu::TextureDescriptor {
+        label: Some("offscreen: target"),
+        size: wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format: OFFSCREEN_FORMAT,
+        usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
+        view_formats: &[],
+    });
+    let view = texture.create_view(&wgpu::TextureViewDescriptor::default());
+    (texture, view)
+}
+
+/// Writes RGBA8 sRGB pixels as a PNG file.
+pub fn write_png(path: &Path, width: u32, height: u32, rgba: &[u8]) -> Result<(), Box<dyn std::error::Error>> {
+    let file = std::io::BufWriter::new(std::fs::File::create(path)?);
+    let mut encoder = png::Encoder::new(file, width, height);
+    encoder.set_color(png::ColorType::Rgba);
+    encoder.set_depth(png::BitDepth::Eight);
+    encoder.set_source_srgb(png::SrgbRenderingIntent::Perceptual);
+    let mut writer = encoder.write_header()?;
+    writer.write_image_data(rgba)?;
+    writer.finish()?;
+    Ok(())
+}
+
+/// Reads a PNG file as RGBA8 pixels: (width, height, pixels).
+pub fn read_png(path: &Path) -> Result<(u32, u32, Vec<u8>), Box<dyn std::error::Error>> {
+    let mut decoder = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(path)?));
+    decoder.set_transformations(png::Transformations::EXPAND | png::Transformations::ALPHA);
+    let mut reader = decoder.read_info()?;
+    let mut pixels = vec![0; reader.output_buffer_size().ok_or("PNG too large")?];
+    let info = reader.next_frame(&mut pixels)?;
+    pixels.truncate(info.buffer_size());
+    if info.color_type != png::ColorType::Rgba || info.bit_depth != png::BitDepth::Eight {
+        return Err(format!("{}: expected 8-bit RGBA, found {:?} {:?}", path.display(), info.color_type, info.bit_depth).into());
+    }
+    Ok((info.width, info.height, pixels))
+}

@@ -1,0 +1,251 @@
+//! Parameters a person can change, and the rules that keep them meaningful.
+//!
+//! Every check returns a [`ParamError`] whose message names the parameter, the value given and the
+//! accepted range; a refused value leaves the previous one in place.
+
+use glam::Vec3;
+use std::fmt;
+
+/// The most spheres a scene holds; raise it here and every buffer follows.
+pub const MAX_SPHERES: u32 = 64;
+/// Fewest cells along each axis of the grid.
+pub const MIN_RESOLUTION: u32 = 8;
+/// Most cells along each axis of the grid (devices may hold fewer; see `Renderer::max_resolution`).
+pub const MAX_RESOLUTION: u32 = 256;
+/// Iso levels accepted: below the lower end the surface fills the box, above the upper end it vanishes.
+pub const ISO_RANGE: (f32, f32) = (0.05, 20.0);
+
+/// A refused parameter value, with a message a person can act on.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ParamError {
+    /// The value is NaN.
+    NotANumber { name: &'static str },
+    /// The value is infinite.
+    Infinite { name: &'static str },
+    /// The value lies outside the accepted range.
+    OutOfRange { name: &'static str, value: String, min: String, max: String },
+    /// The device cannot hold what the value asks for.
+    DeviceLimit { name: &'static str, value: String, detail: String },
+}
+
+impl fmt::Display for ParamError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::NotANumber { name } => write!(f, "{name} must be a number, got NaN"),
+            Self::Infinite { name } => write!(f, "{name} must be finite, got infinity"),
+            Self::OutOfRange { name, value, min, max } => {
+                write!(f, "{name} must be between {min} and {max}, got {value}")
+            }
+            Self::DeviceLimit { name, value, detail } => {
+                write!(f, "{name} {value} is more than this device can hold: {detail}")
+            }
+        }
+    }
+}
+
+impl std::error::Error for ParamError {}
+
+/// Checks that `value` is a finite number within `[min, max]`.
+pub fn check_f32(name: &'static str, value: f32, min: f32, max: f32) -> Result<f32, ParamError> {
+    if value.is_nan() {
+        return Err(ParamError::NotANumber { name });
+    }
+    if value.is_infinite() {
+        return Err(ParamError::Infinite { name });
+    }
+    if value < min || value > max {
+        return Err(ParamError::OutOfRange {
+            name,
+            value: value.to_string(),
+            min: min.to_string(),
+            max: max.to_string(),
+        });
+    }
+    Ok(value)
+}
+
+/// Checks that an integer `value` lies within `[min, max]`.
+pub fn check_u32(name: &'static str, value: u32, min: u32, max: u32) -> Result<u32, ParamError> {
+    if value < min || value > max {
+        return Err(ParamError::OutOfRange {
+            name,
+            value: value.to_string(),
+            min: min.to_string(),
+            max: max.to_string(),
+        });
+    }
+    Ok(value)
+}
+
+fn check_vec3(name: &'static str, v: Vec3, min: f32, max: f32) -> Result<Vec3, ParamError> {
+    for c in v.to_array() {
+        check_f32(name, c, min, max)?;
+    }
+    Ok(v)
+}
+
+/// Surface material for Blinn-Phong shading.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Material {
+    /// Linear RGB albedo, each channel in [0, 1].
+    pub base_color: Vec3,
+    /// Ambient strength, [0, 1].
+    pub ambient: f32,
+    /// Diffuse (Lambert) strength, [0, 2].
+    pub diffuse: f32,
+    /// Specular strength, [0, 2].
+    pub specular: f32,
+    /// Specular exponent, [1, 1024]; higher is glossier.
+    pub shininess: f32,
+}
+
+impl Default for Material {
+    fn default() -> Self {
+        Self {
+            base_color: Vec3::new(0.80, 0.18, 0.12),
+            ambient: 0.12,
+            diffuse: 0.85,
+            specular: 0.6,
+            shininess: 64.0,
+        }
+    }
+}
+
+impl Material {
+    /// Returns the material if every field is in range.
+    pub fn validated(self) -> Result<Self, ParamError> {
+        check_vec3("base colour", self.base_color, 0.0, 1.0)?;
+        check_f32("ambient strength", self.ambient, 0.0, 1.0)?;
+        check_f32("diffuse strength", self.diffuse, 0.0, 2.0)?;
+        check_f32("specular strength", self.specular, 0.0, 2.0)?;
+        check_f32("shininess", self.shininess, 1.0, 1024.0)?;
+        Ok(self)
+    }
+}
+
+/// An orbit camera looking at the centre of the box.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Camera {
+    /// Rotation about the vertical axis, degrees, [-360, 360].
+    pub yaw_degrees: f32,
+    /// Elevation above the horizontal plane, degrees, [-89, 89].
+    pub pitch_degrees: f32,
+    /// Distance from the box centre, in box half-widths, [1.5, 20].
+    pub distance: f32,
+    /// Vertical field of view, degrees, [10, 120].
+    pub fov_y_degrees: f32,
+}
+
+impl Default for Camera {
+    fn default() -> Self {
+        Self { yaw_degrees: 30.0, pitch_degrees: 20.0, distance: 4.2, fov_y_degrees: 45.0 }
+    }
+}
+
+impl Camera {
+    /// Returns the camera if every field is in range.
+    pub fn validated(self) -> Result<Self, ParamError> {
+        check_f32("camera yaw (degrees)", self.yaw_degrees, -360.0, 360.0)?;
+        check_f32("camera pitch (degrees)", self.pitch_degrees, -89.0, 89.0)?;
+        check_f32("camera distance", self.distance, 1.5, 20.0)?;
+        check_f32("field of view (degrees)", self.fov_y_degrees, 10.0, 120.0)?;
+        Ok(self)
+    }
+
+    /// The eye position in world space, for a box centred on the origin.
+    pub fn eye(&self) -> Vec3 {
+        let (yaw, pitch) = (self.yaw_degrees.to_radians(), self.pitch_degrees.to_radians());
+        self.distance * Vec3::new(pitch.cos() * yaw.sin(), pitch.sin(), pitch.cos() * yaw.cos())
+    }
+}
+
+/// Everything that defines a frame apart from the spheres' motion.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Settings {
+    /// Spheres in play, [1, MAX_SPHERES].
+    pub sphere_count: u32,
+    /// The surface is where the field equals this level.
+    pub iso: f32,
+    /// Cells along each axis of the grid.
+    pub resolution: u32,
+    /// Seed of the sphere layout.
+    pub seed: u64,
+    /// Surface material.
+    pub material: Material,
+    /// Point light position in world space (the box spans [-1, 1] on each axis).
+    pub light_position: Vec3,
+    /// Viewpoint.
+    pub camera: Camera,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Self {
+            sphere_count: 5,
+            iso: 1.0,
+            resolution: 64,
+            seed: 1,
+            material: Material::default(),
+            light_position: Vec3::new(3.0, 4.0, 3.5),
+            camera: Camera::default(),
+        }
+    }
+}
+
+impl Settings {
+    /// Returns the settings if every field is in range (device limits are checked by the renderer).
+    pub fn validated(self) -> Result<Self, ParamError> {
+        check_sphere_count(self.sphere_count)?;
+        check_iso(self.iso)?;
+        check_resolution(self.resolution)?;
+        self.material.validated()?;
+        check_light_position(self.light_position)?;
+        self.camera.validated()?;
+        Ok(self)
+    }
+}
+
+/// Checks a sphere count.
+pub fn check_sphere_count(count: u32) -> Result<u32, ParamError> {
+    check_u32("sphere count", count, 1, MAX_SPHERES)
+}
+
+/// Checks an iso level.
+pub fn check_iso(iso: f32) -> Result<f32, ParamError> {
+    check_f32("iso level", iso, ISO_RANGE.0, ISO_RANGE.1)
+}
+
+/// Checks a resolution against the crate's bounds (not yet the device's).
+pub fn check_resolution(cells_per_axis: u32) -> Result<u32, ParamError> {
+    check_u32("resolution (cells per axis)", cells_per_axis, MIN_RESOLUTION, MAX_RESOLUTION)
+}
+
+/// Checks a light position.
+pub fn check_light_position(position: Vec3) -> Result<Vec3, ParamError> {
+    check_vec3("light position", position, -100.0, 100.0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn defaults_are_valid() {
+        assert_eq!(Settings::default().validated(), Ok(Settings::default()));
+    }
+
+    #[test]
+    fn messages_name_the_parameter_the_value_and_the_range() {
+        let e = check_iso(-1.0).unwrap_err().to_string();
+        assert_eq!(e, "iso level must be between 0.05 and 20, got -1");
+        assert_eq!(check_iso(f32::NAN).unwrap_err().to_string(), "iso level must be a number, got NaN");
+        assert_eq!(
+            check_iso(f32::INFINITY).unwrap_err().to_string(),
+            "iso level must be finite, got infinity"
+        );
+        assert_eq!(
+            check_sphere_count(0).unwrap_err().to_string(),
+            "sphere count must be between 1 and 64, got 0"
+        );
+    }
+}
