@@ -29,19 +29,19 @@ mod cli {
         #[arg(long)]
         out: PathBuf,
         /// Number of spheres, 1 to 64.
-        #[arg(long, default_value_t = Settings::default().sphere_count)]
+        #[arg(long, default_value_t = Settings::default().sphere_count, allow_negative_numbers = true)]
         spheres: u32,
         /// Iso level of the surface.
         #[arg(long, default_value_t = Settings::default().iso, allow_negative_numbers = true)]
         iso: f32,
         /// Cells along each axis of the grid.
-        #[arg(long, default_value_t = Settings::default().resolution)]
+        #[arg(long, default_value_t = Settings::default().resolution, allow_negative_numbers = true)]
         resolution: u32,
         /// Image size in pixels, WIDTHxHEIGHT.
         #[arg(long, default_value = "960x640", value_parser = parse_size)]
         size: (u32, u32),
         /// Seed of the sphere layout.
-        #[arg(long, default_value_t = Settings::default().seed)]
+        #[arg(long, default_value_t = Settings::default().seed, allow_negative_numbers = true)]
         seed: u64,
         /// Seconds of animation before the frame, 0 to 3600.
         #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]

@@ -71,8 +71,9 @@ impl Mesh {
     }
 
     /// Checks that every triangle of `self` has a counterpart in `other` whose vertices, in the same
-    /// cyclic order, lie within `tolerance`, one to one. Returns a description of the first difference.
-    pub fn matches(&self, other: &Mesh, tolerance: f32) -> Result<(), String> {
+    /// cyclic order, lie within `tolerance` with normals within `normal_tolerance` radians, one to one.
+    /// Returns a description of the first difference.
+    pub fn matches(&self, other: &Mesh, tolerance: f32, normal_tolerance: f32) -> Result<(), String> {
         if self.triangle_count() != other.triangle_count() {
             return Err(format!(
                 "triangle counts differ: {} against {}",
@@ -93,19 +94,28 @@ impl Mesh {
         for k in 0..self.triangle_count() {
             let t = self.triangle(k);
             let home = bucket((t[0] + t[1] + t[2]) / 3.0);
-            let close = |a: [Vec3; 3], b: [Vec3; 3]| (0..3).all(|i| a[i].distance(b[i]) <= tolerance);
+            let close = |j: usize, r: usize| {
+                (0..3).all(|i| {
+                    let (a, b) = (3 * k + i, 3 * j + (r + i) % 3);
+                    self.positions[a].distance(other.positions[b]) <= tolerance
+                        && self.normals[a].angle_between(other.normals[b]) <= normal_tolerance
+                })
+            };
             let found = (-1..=1)
                 .flat_map(|x| (-1..=1).flat_map(move |y| (-1..=1).map(move |z| glam::IVec3::new(x, y, z))))
                 .filter_map(|off| buckets.get(&(home + off)))
                 .flatten()
                 .copied()
-                .find(|&j| {
-                    let o = other.triangle(j);
-                    !used[j] && (0..3).any(|r| close(t, [o[r], o[(r + 1) % 3], o[(r + 2) % 3]]))
-                });
+                .find(|&j| !used[j] && (0..3).any(|r| close(j, r)));
             match found {
                 Some(j) => used[j] = true,
-                None => return Err(format!("triangle {k} {t:?} has no counterpart within {tolerance}")),
+                None => {
+                    let n = [0, 1, 2].map(|i| self.normals[3 * k + i]);
+                    return Err(format!(
+                        "triangle {k} at {t:?} with normals {n:?} has no counterpart within {tolerance} \
+                         (normals within {normal_tolerance} rad)"
+                    ));
+                }
             }
         }
         Ok(())

@@ -23,6 +23,18 @@ impl Offscreen {
     pub async fn new(settings: Settings, width: u32, height: u32) -> Result<Self, Box<dyn std::error::Error>> {
         let instance = gpu::native_instance();
         let (adapter, device, queue) = gpu::request_device(&instance, None).await?;
+        Ok(Self::with_device(adapter, device, queue, settings, width, height)?)
+    }
+
+    /// Builds a renderer for `width` × `height` frames on a device the caller already has.
+    pub fn with_device(
+        adapter: wgpu::Adapter,
+        device: wgpu::Device,
+        queue: wgpu::Queue,
+        settings: Settings,
+        width: u32,
+        height: u32,
+    ) -> Result<Self, crate::ParamError> {
         let renderer = Renderer::new(device.clone(), queue.clone(), OFFSCREEN_FORMAT, width, height, settings)?;
         let (texture, view) = target(&device, width, height);
         Ok(Self { renderer, adapter, device, queue, texture, view })

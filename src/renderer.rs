@@ -68,6 +68,8 @@ pub struct Renderer {
     latest_stats: Option<FrameStats>,
     frame: u64,
     gpu_error: Arc<Mutex<Option<String>>>,
+    /// A triangle budget set by hand, replacing the one derived from the resolution.
+    budget_override: Option<u32>,
 }
 
 impl Renderer {
@@ -140,6 +142,7 @@ impl Renderer {
             latest_stats: None,
             frame: 0,
             gpu_error,
+            budget_override: None,
         })
     }
 
@@ -197,10 +200,11 @@ impl Renderer {
         } else if settings.sphere_count != self.settings.sphere_count {
             self.scene.set_count(settings.sphere_count)?;
         }
-        if settings.resolution != self.settings.resolution {
+        let resolution_changed = settings.resolution != self.settings.resolution;
+        self.settings = settings;
+        if resolution_changed {
             self.allocate_grid(settings.resolution);
         }
-        self.settings = settings;
         Ok(())
     }
 
@@ -250,10 +254,25 @@ impl Renderer {
         self.scene = scene;
     }
 
+    /// Sets how many triangles the vertex buffer holds, replacing the budget derived from the
+    /// resolution (`None` returns to it). Past the budget, triangles are dropped and `stats` says so.
+    pub fn set_max_triangles(&mut self, max_triangles: Option<u32>) -> Result<(), ParamError> {
+        if let Some(n) = max_triangles {
+            let fits = (storage_limit(&self.device) / (3 * VERTEX_BYTES)).min(u32::MAX as u64 / 3) as u32;
+            params::check_u32("triangle budget", n, 1, fits)?;
+        }
+        self.budget_override = max_triangles;
+        self.allocate_grid(self.settings.resolution);
+        Ok(())
+    }
+
     fn allocate_grid(&mut self, cells_per_axis: u32) {
         let grid = Grid { cells_per_axis };
         self.field.set_grid(&self.device, &self.scene_buffers, grid);
-        let max_vertices = vertex_budget(&self.device, cells_per_axis);
+        let max_vertices = match self.budget_override {
+            Some(triangles) => triangles * 3,
+            None => vertex_budget(&self.device, cells_per_axis),
+        };
         self.marching.set_grid(&self.device, &self.scene_buffers, self.field.field(), grid, max_vertices);
     }
 

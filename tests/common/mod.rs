@@ -1,0 +1,71 @@
+//! Helpers shared by the native GPU tests.
+#![allow(dead_code)]
+
+use glam::{UVec3, Vec3};
+use metaballs::offscreen::Offscreen;
+use metaballs::reference::{Grid, sample_field};
+use metaballs::{Settings, Sphere};
+
+/// A device from the adapter at hand (lavapipe in CI). Fails, never skips, when there is none.
+pub fn device() -> (wgpu::Adapter, wgpu::Device, wgpu::Queue) {
+    let instance = metaballs::gpu::native_instance();
+    pollster::block_on(metaballs::gpu::request_device(&instance, None))
+        .unwrap_or_else(|e| panic!("GPU tests need an adapter: {e}"))
+}
+
+/// Runs `f` with an offscreen renderer inside a validation error scope: any validation error, in
+/// setup or in the frames, fails the test.
+pub fn with_renderer<T>(settings: Settings, width: u32, height: u32, f: impl FnOnce(&mut Offscreen) -> T) -> T {
+    let (adapter, device, queue) = device();
+    let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
+    let mut offscreen =
+        Offscreen::with_device(adapter, device.clone(), queue, settings, width, height).expect("renderer");
+    let result = f(&mut offscreen);
+    let _ = device.poll(wgpu::PollType::wait_indefinitely());
+    if let Some(error) = pollster::block_on(scope.pop()) {
+        panic!("validation error: {error}");
+    }
+    assert_eq!(offscreen.renderer.gpu_error(), None, "GPU error outside the scope");
+    result
+}
+
+/// Settings for a scene of `count` seeded spheres.
+pub fn settings(seed: u64, count: u32, resolution: u32, iso: f32) -> Settings {
+    Settings { seed, sphere_count: count, resolution, iso, ..Settings::default() }
+}
+
+/// True when no grid sample lies so close to `iso` that f32 rounding on two different processors
+/// could classify it differently (GPU and CPU may fuse or round the sum's operations differently).
+pub fn well_conditioned(spheres: &[Sphere], iso: f32, resolution: u32) -> bool {
+    sample_field(spheres, Grid { cells_per_axis: resolution }).iter().all(|&f| (f - iso).abs() > 2e-5 * iso)
+}
+
+/// `iso`, or the nearest level above it (in steps of 1e-4) at which the scene is well conditioned.
+pub fn conditioned_iso(spheres: &[Sphere], iso: f32, resolution: u32) -> f32 {
+    (0..100)
+        .map(|k| iso * (1.0 + 1e-4 * k as f32))
+        .find(|&level| well_conditioned(spheres, level, resolution))
+        .expect("no well-conditioned iso level near the requested one")
+}
+
+/// True when every sample next to the box's faces is below `iso`, so the surface stays inside the box
+/// and no wall closes it.
+pub fn surface_inside_box(spheres: &[Sphere], iso: f32, resolution: u32) -> bool {
+    let grid = Grid { cells_per_axis: resolution };
+    let f = sample_field(spheres, grid);
+    let n = resolution;
+    (1..n).all(|z| {
+        (1..n).all(|y| {
+            (1..n).all(|x| {
+                let id = UVec3::new(x, y, z);
+                let near_wall = id.min_element() == 1 || id.max_element() == n - 1;
+                !near_wall || f[grid.point_index(id)] < iso
+            })
+        })
+    })
+}
+
+/// A sphere at rest.
+pub fn sphere(center: [f32; 3], radius: f32) -> Sphere {
+    Sphere { center: Vec3::from_array(center), radius, velocity: Vec3::ZERO }
+}
