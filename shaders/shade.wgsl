@@ -1,4 +1,5 @@
-// Shading pass: a background gradient, then the surface lit by one point light with Blinn-Phong.
+// Shading pass: a background gradient, the box's edges, then the surface lit by one point light with
+// Blinn-Phong.
 // Mirrors `ShadingUniform` in src/uniforms.rs.
 
 struct Shading {
@@ -12,8 +13,8 @@ struct Shading {
     shininess: f32,
     // 1 when the target is not an sRGB format and the shader must encode.
     encode_srgb: u32,
-    _pad0: u32,
-    _pad1: u32,
+    box_half_extent: f32,
+    _pad: u32,
 }
 
 @group(0) @binding(0) var<uniform> shading: Shading;
@@ -48,6 +49,30 @@ fn background_fragment(in: BackgroundOut) -> @location(0) vec4<f32> {
     let bottom = vec3<f32>(0.010, 0.012, 0.018);
     let top = vec3<f32>(0.060, 0.075, 0.110);
     return to_output(mix(bottom, top, clamp(in.height * 0.5, 0.0, 1.0)));
+}
+
+// The box's 12 edges as a line list: vertex i is end (i & 1) of edge i / 2; edge e runs along axis e / 4
+// with the other two coordinates taken from the bits of e % 4.
+@vertex
+fn box_vertex(@builtin(vertex_index) i: u32) -> @builtin(position) vec4<f32> {
+    let edge = i / 2u;
+    let axis = edge / 4u;
+    let bits = vec2<f32>(f32(edge & 1u), f32((edge >> 1u) & 1u)) * 2.0 - 1.0;
+    let along = f32(i & 1u) * 2.0 - 1.0;
+    var p: vec3<f32>;
+    if (axis == 0u) {
+        p = vec3<f32>(along, bits.x, bits.y);
+    } else if (axis == 1u) {
+        p = vec3<f32>(bits.x, along, bits.y);
+    } else {
+        p = vec3<f32>(bits.x, bits.y, along);
+    }
+    return shading.view_proj * vec4<f32>(p * shading.box_half_extent, 1.0);
+}
+
+@fragment
+fn box_fragment() -> @location(0) vec4<f32> {
+    return to_output(vec3<f32>(0.07, 0.08, 0.11));
 }
 
 struct SurfaceOut {

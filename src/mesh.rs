@@ -70,9 +70,7 @@ impl Mesh {
         out
     }
 
-    /// Checks that every triangle of `self` has a counterpart in `other` whose vertices, in the same
-    /// cyclic order, lie within `tolerance` with normals within `normal_tolerance` radians, one to one.
-    /// Returns a description of the first difference.
+    /// Checks that the two meshes have the same triangles: equal counts, and `contained_in` holds.
     pub fn matches(&self, other: &Mesh, tolerance: f32, normal_tolerance: f32) -> Result<(), String> {
         if self.triangle_count() != other.triangle_count() {
             return Err(format!(
@@ -81,6 +79,13 @@ impl Mesh {
                 other.triangle_count()
             ));
         }
+        self.contained_in(other, tolerance, normal_tolerance)
+    }
+
+    /// Checks that every triangle of `self` has its own counterpart in `other` whose vertices, in the
+    /// same cyclic order, lie within `tolerance` with normals within `normal_tolerance` radians.
+    /// Returns a description of the first triangle without one.
+    pub fn contained_in(&self, other: &Mesh, tolerance: f32, normal_tolerance: f32) -> Result<(), String> {
         // Bucket the other mesh's triangles by centroid on a lattice coarser than the tolerance, then
         // look for a match in the 27 buckets around each centroid.
         let bucket_size = (tolerance * 4.0).max(1e-6);

@@ -103,7 +103,7 @@ impl Default for Material {
     fn default() -> Self {
         Self {
             base_color: Vec3::new(0.80, 0.18, 0.12),
-            ambient: 0.12,
+            ambient: 0.15,
             diffuse: 0.85,
             specular: 0.6,
             shininess: 64.0,
@@ -138,7 +138,7 @@ pub struct Camera {
 
 impl Default for Camera {
     fn default() -> Self {
-        Self { yaw_degrees: 30.0, pitch_degrees: 20.0, distance: 4.2, fov_y_degrees: 45.0 }
+        Self { yaw_degrees: 30.0, pitch_degrees: 20.0, distance: 4.3, fov_y_degrees: 45.0 }
     }
 }
 

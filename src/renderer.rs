@@ -306,7 +306,8 @@ impl Renderer {
             specular: s.material.specular,
             shininess: s.material.shininess,
             encode_srgb: (!self.format.is_srgb()) as u32,
-            _pad: [0; 2],
+            box_half_extent: BOX_HALF_EXTENT,
+            _pad: 0,
         };
         self.queue.write_buffer(self.shade.uniform(), 0, bytemuck::bytes_of(&shading));
     }

@@ -48,7 +48,7 @@ pub struct Scene {
 /// Radius of a typical sphere when `count` are in play: the field's long tails add up, so more spheres
 /// must be smaller for the surface not to swallow the box.
 pub fn nominal_radius(count: u32) -> f32 {
-    (0.22 / count as f32).sqrt().min(0.45)
+    (0.36 / count as f32).sqrt().min(0.45)
 }
 
 impl Scene {

@@ -12,6 +12,7 @@ const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 /// the output.
 pub struct ShadePass {
     background: wgpu::RenderPipeline,
+    box_edges: wgpu::RenderPipeline,
     surface: wgpu::RenderPipeline,
     uniform: wgpu::Buffer,
     bind_group: wgpu::BindGroup,
@@ -60,7 +61,12 @@ impl ShadePass {
             step_mode: wgpu::VertexStepMode::Vertex,
             attributes: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3],
         };
-        let pipeline = |label, vertex_entry, fragment_entry, buffers: &[Option<wgpu::VertexBufferLayout>], depth_write| {
+        let pipeline = |label,
+                        vertex_entry,
+                        fragment_entry,
+                        buffers: &[Option<wgpu::VertexBufferLayout>],
+                        topology,
+                        depth_write| {
             device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
                 label: Some(label),
                 layout: Some(&pipeline_layout),
@@ -77,6 +83,7 @@ impl ShadePass {
                     targets: &[Some(format.into())],
                 }),
                 primitive: wgpu::PrimitiveState {
+                    topology,
                     front_face: wgpu::FrontFace::Ccw,
                     // Both sides are drawn: where a wall cuts the surface open, its inside shows.
                     cull_mode: None,
@@ -98,11 +105,20 @@ impl ShadePass {
                 cache: None,
             })
         };
-        let background = pipeline("shade: background pipeline", "background_vertex", "background_fragment", &[], false);
-        let surface =
-            pipeline("shade: surface pipeline", "surface_vertex", "surface_fragment", &[Some(vertex_layout)], true);
+        use wgpu::PrimitiveTopology::{LineList, TriangleList};
+        let background =
+            pipeline("shade: background pipeline", "background_vertex", "background_fragment", &[], TriangleList, false);
+        let box_edges = pipeline("shade: box pipeline", "box_vertex", "box_fragment", &[], LineList, true);
+        let surface = pipeline(
+            "shade: surface pipeline",
+            "surface_vertex",
+            "surface_fragment",
+            &[Some(vertex_layout)],
+            TriangleList,
+            true,
+        );
         let (color, depth) = targets(device, format, width, height);
-        Self { background, surface, uniform, bind_group, format, color, depth }
+        Self { background, box_edges, surface, uniform, bind_group, format, color, depth }
     }
 
     /// Reallocates the multisampled targets for a new output size.
@@ -144,6 +160,8 @@ impl ShadePass {
         pass.set_bind_group(0, &self.bind_group, &[]);
         pass.set_pipeline(&self.background);
         pass.draw(0..3, 0..1);
+        pass.set_pipeline(&self.box_edges);
+        pass.draw(0..24, 0..1);
         pass.set_pipeline(&self.surface);
         pass.set_vertex_buffer(0, vertices.slice(..));
         pass.draw_indirect(draw_args, 0);

@@ -30,7 +30,8 @@ pub struct ShadingUniform {
     pub specular: f32,
     pub shininess: f32,
     pub encode_srgb: u32,
-    pub _pad: [u32; 2],
+    pub box_half_extent: f32,
+    pub _pad: u32,
 }
 const _: () = assert!(std::mem::size_of::<ShadingUniform>() == 128);
 

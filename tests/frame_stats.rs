@@ -1,0 +1,73 @@
+//! The host learns triangles emitted and overflow asynchronously, and an overflow never writes out of
+//! bounds.
+#![cfg(not(target_arch = "wasm32"))]
+
+mod common;
+
+use common::*;
+use metaballs::reference::{self, Grid};
+
+#[test]
+fn stats_report_the_triangles_drawn() {
+    with_renderer(settings(3, 5, 40, 1.0), 64, 64, |o| {
+        assert_eq!(o.renderer.stats(), None);
+        let spheres = o.renderer.scene().spheres().to_vec();
+        let iso = conditioned_iso(&spheres, 1.0, 40);
+        o.renderer.set_iso(iso).unwrap();
+        let expected = reference::extract(&spheres, iso, Grid { cells_per_axis: 40 }).triangle_count() as u32;
+        for _ in 0..3 {
+            o.render();
+        }
+        pollster::block_on(o.renderer.flush_stats());
+        let stats = o.renderer.stats().expect("stats after flush");
+        assert_eq!(stats.frame, 3);
+        assert_eq!(stats.triangles, expected);
+        assert_eq!(stats.triangles_requested, expected);
+        assert!(!stats.overflowed());
+    });
+}
+
+#[test]
+fn frames_do_not_wait_for_stats() {
+    // Many frames in a row: the staging buffers cycle, and stats arrive for a recent frame.
+    with_renderer(settings(3, 5, 24, 1.0), 32, 32, |o| {
+        for _ in 0..20 {
+            o.render();
+        }
+        pollster::block_on(o.renderer.flush_stats());
+        let stats = o.renderer.stats().expect("stats");
+        assert!(stats.frame >= 18, "latest stats are for frame {}", stats.frame);
+        assert!(stats.triangles > 0);
+    });
+}
+
+#[test]
+fn an_overflowing_budget_is_clamped_and_reported() {
+    with_renderer(settings(3, 16, 40, 0.3), 64, 64, |o| {
+        let spheres = o.renderer.scene().spheres().to_vec();
+        let iso = conditioned_iso(&spheres, 0.3, 40);
+        o.renderer.set_iso(iso).unwrap();
+        let full = reference::extract(&spheres, iso, Grid { cells_per_axis: 40 });
+        assert!(full.triangle_count() > 1000);
+        o.renderer.set_max_triangles(Some(500)).unwrap();
+        o.render();
+        pollster::block_on(o.renderer.flush_stats());
+        let stats = o.renderer.stats().unwrap();
+        assert!(stats.overflowed());
+        assert_eq!(stats.triangles, 500);
+        assert_eq!(stats.max_triangles, 500);
+        assert_eq!(stats.triangles_requested as usize, full.triangle_count());
+        // The 500 written are real triangles of the surface (a subset of the oracle's).
+        let mesh = pollster::block_on(o.renderer.extract_mesh());
+        assert_eq!(mesh.triangle_count(), 500);
+        let tolerance = 1e-4 * Grid { cells_per_axis: 40 }.cell_size();
+        mesh.contained_in(&full, tolerance, 0.01f32.to_radians()).unwrap();
+        // Back to the budget the resolution gets: everything fits again.
+        o.renderer.set_max_triangles(None).unwrap();
+        o.render();
+        pollster::block_on(o.renderer.flush_stats());
+        let stats = o.renderer.stats().unwrap();
+        assert!(!stats.overflowed());
+        assert_eq!(stats.triangles as usize, full.triangle_count());
+    });
+}
