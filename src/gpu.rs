@@ -88,13 +88,12 @@ pub async fn map_and_read(device: &wgpu::Device, buffer: &wgpu::Buffer) -> Vec<u
         let _ = sender.send(result);
     });
     #[cfg(not(target_arch = "wasm32"))]
-    device.poll(wgpu::PollType::wait_indefinitely()).expect("the device was lost while reading a buffer back");
+    device
+        .poll(wgpu::PollType::wait_indefinitely())
+        .expect("the device was lost while reading a buffer back");
     #[cfg(target_arch = "wasm32")]
     let _ = device;
-    receiver
-        .await
-        .expect("the map callback was dropped")
-        .expect("mapping a readback buffer failed");
+    receiver.await.expect("the map callback was dropped").expect("mapping a readback buffer failed");
     let bytes = buffer.get_mapped_range(..).expect("mapped range").to_vec();
     buffer.unmap();
     bytes

@@ -74,7 +74,7 @@ impl MarchingCubesPass {
         self.buffers = MeshBuffers::new(device, &self.kernels, scene, field, grid, max_vertices);
     }
 
-/// Resets the counter, marches every cell and writes the draw arguments.
+    /// Resets the counter, marches every cell and writes the draw arguments.
     pub fn encode(&self, encoder: &mut wgpu::CommandEncoder) {
         let b = &self.buffers;
         encoder.clear_buffer(&b.counters, 0, None);

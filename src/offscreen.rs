@@ -20,7 +20,11 @@ pub struct Offscreen {
 
 impl Offscreen {
     /// Gets a device and builds a renderer for `width` × `height` frames.
-    pub async fn new(settings: Settings, width: u32, height: u32) -> Result<Self, Box<dyn std::error::Error>> {
+    pub async fn new(
+        settings: Settings,
+        width: u32,
+        height: u32,
+    ) -> Result<Self, Box<dyn std::error::Error>> {
         let instance = gpu::native_instance();
         let (adapter, device, queue) = gpu::request_device(&instance, None).await?;
         Ok(Self::with_device(adapter, device, queue, settings, width, height)?)
@@ -35,7 +39,8 @@ impl Offscreen {
         width: u32,
         height: u32,
     ) -> Result<Self, crate::ParamError> {
-        let renderer = Renderer::new(device.clone(), queue.clone(), OFFSCREEN_FORMAT, width, height, settings)?;
+        let renderer =
+            Renderer::new(device.clone(), queue.clone(), OFFSCREEN_FORMAT, width, height, settings)?;
         let (texture, view) = target(&device, width, height);
         Ok(Self { renderer, adapter, device, queue, texture, view })
     }
@@ -60,9 +65,15 @@ impl Offscreen {
     /// Draws a frame and returns its pixels, RGBA8 (sRGB), rows top to bottom.
     pub fn render_rgba(&mut self) -> Vec<u8> {
         self.render();
+        self.last_frame_rgba()
+    }
+
+    /// Returns the pixels of the frame drawn last, RGBA8 (sRGB), rows top to bottom.
+    pub fn last_frame_rgba(&mut self) -> Vec<u8> {
         let (width, height) = self.renderer.size();
         let row_bytes = width * 4;
-        let padded = row_bytes.div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
+        let padded =
+            row_bytes.div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
         let buffer = self.device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("offscreen: pixels"),
             size: padded as u64 * height as u64,
@@ -81,7 +92,11 @@ impl Offscreen {
             },
             wgpu::TexelCopyBufferInfo {
                 buffer: &buffer,
-                layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(padded), rows_per_image: None },
+                layout: wgpu::TexelCopyBufferLayout {
+                    offset: 0,
+                    bytes_per_row: Some(padded),
+                    rows_per_image: None,
+                },
             },
             wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
         );
@@ -107,7 +122,12 @@ fn target(device: &wgpu::Device, width: u32, height: u32) -> (wgpu::Texture, wgp
 }
 
 /// Writes RGBA8 sRGB pixels as a PNG file.
-pub fn write_png(path: &Path, width: u32, height: u32, rgba: &[u8]) -> Result<(), Box<dyn std::error::Error>> {
+pub fn write_png(
+    path: &Path,
+    width: u32,
+    height: u32,
+    rgba: &[u8],
+) -> Result<(), Box<dyn std::error::Error>> {
     let file = std::io::BufWriter::new(std::fs::File::create(path)?);
     let mut encoder = png::Encoder::new(file, width, height);
     encoder.set_color(png::ColorType::Rgba);
@@ -128,7 +148,13 @@ pub fn read_png(path: &Path) -> Result<(u32, u32, Vec<u8>), Box<dyn std::error::
     let info = reader.next_frame(&mut pixels)?;
     pixels.truncate(info.buffer_size());
     if info.color_type != png::ColorType::Rgba || info.bit_depth != png::BitDepth::Eight {
-        return Err(format!("{}: expected 8-bit RGBA, found {:?} {:?}", path.display(), info.color_type, info.bit_depth).into());
+        return Err(format!(
+            "{}: expected 8-bit RGBA, found {:?} {:?}",
+            path.display(),
+            info.color_type,
+            info.bit_depth
+        )
+        .into());
     }
     Ok((info.width, info.height, pixels))
 }

@@ -294,7 +294,12 @@ impl Renderer {
         let s = &self.settings;
         let eye = s.camera.eye();
         let aspect = self.size.0 as f32 / self.size.1 as f32;
-        let projection = glam::camera::rh::proj::directx::perspective(s.camera.fov_y_degrees.to_radians(), aspect, 0.05, 100.0);
+        let projection = glam::camera::rh::proj::directx::perspective(
+            s.camera.fov_y_degrees.to_radians(),
+            aspect,
+            0.05,
+            100.0,
+        );
         let view = glam::camera::rh::view::look_at_mat4(eye, Vec3::ZERO, Vec3::Y);
         let shading = ShadingUniform {
             view_proj: (projection * view).to_cols_array_2d(),
@@ -324,19 +329,20 @@ impl Renderer {
         self.collect_stats();
         self.write_uniforms();
         self.frame += 1;
-        let mut encoder =
-            self.device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("frame: encoder") });
+        let mut encoder = self
+            .device
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("frame: encoder") });
         self.encode_extraction(&mut encoder);
         self.shade.encode(&mut encoder, view, self.marching.vertices(), self.marching.draw_args());
+        // With every staging buffer still in flight, this frame's figures are skipped.
         let slot = self.stats_slots.iter_mut().find(|s| s.state.load(Ordering::Acquire) == SLOT_FREE);
-        let slot = slot.map(|slot| {
+        if let Some(slot) = &slot {
             encoder.copy_buffer_to_buffer(self.marching.counters(), 0, &slot.buffer, 0, None);
-            slot.frame = self.frame;
-            slot.max_triangles = self.marching.max_vertices() / 3;
-            slot
-        });
+        }
         self.queue.submit([encoder.finish()]);
         if let Some(slot) = slot {
+            slot.frame = self.frame;
+            slot.max_triangles = self.marching.max_vertices() / 3;
             slot.state.store(SLOT_PENDING, Ordering::Release);
             let state = slot.state.clone();
             slot.buffer.map_async(wgpu::MapMode::Read, .., move |result| {
@@ -428,9 +434,9 @@ impl Renderer {
     /// The field values of the current state, `(resolution + 1)³`, x fastest (tests and tools).
     pub async fn extract_field(&mut self) -> Vec<f32> {
         self.write_uniforms();
-        let mut encoder = self
-            .device
-            .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("field readback: encoder") });
+        let mut encoder = self.device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
+            label: Some("field readback: encoder"),
+        });
         self.field.encode(&mut encoder);
         self.queue.submit([encoder.finish()]);
         let bytes = crate::gpu::read_buffer(

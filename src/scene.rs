@@ -65,7 +65,11 @@ impl Scene {
                 let phi: f32 = rng.random_range(0.0..std::f32::consts::TAU);
                 let s = (1.0 - z * z).sqrt();
                 let speed: f32 = rng.random_range(0.25..0.6);
-                Seedling { radius_scale, position, velocity: speed * Vec3::new(s * phi.cos(), s * phi.sin(), z) }
+                Seedling {
+                    radius_scale,
+                    position,
+                    velocity: speed * Vec3::new(s * phi.cos(), s * phi.sin(), z),
+                }
             })
             .collect();
         let radius = nominal_radius(count);
@@ -74,7 +78,11 @@ impl Scene {
             .map(|s| {
                 let r = radius * s.radius_scale;
                 let room = 2.0 * (BOX_HALF_EXTENT - r);
-                Sphere { center: Vec3::splat(-BOX_HALF_EXTENT + r) + s.position * room, radius: r, velocity: s.velocity }
+                Sphere {
+                    center: Vec3::splat(-BOX_HALF_EXTENT + r) + s.position * room,
+                    radius: r,
+                    velocity: s.velocity,
+                }
             })
             .collect();
         Ok(Self { seed, spheres })

@@ -106,8 +106,14 @@ impl ShadePass {
             })
         };
         use wgpu::PrimitiveTopology::{LineList, TriangleList};
-        let background =
-            pipeline("shade: background pipeline", "background_vertex", "background_fragment", &[], TriangleList, false);
+        let background = pipeline(
+            "shade: background pipeline",
+            "background_vertex",
+            "background_fragment",
+            &[],
+            TriangleList,
+            false,
+        );
         let box_edges = pipeline("shade: box pipeline", "box_vertex", "box_fragment", &[], LineList, true);
         let surface = pipeline(
             "shade: surface pipeline",
@@ -152,7 +158,10 @@ impl ShadePass {
             })],
             depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
                 view: &self.depth,
-                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Discard }),
+                depth_ops: Some(wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(1.0),
+                    store: wgpu::StoreOp::Discard,
+                }),
                 stencil_ops: None,
             }),
             ..Default::default()

@@ -7,35 +7,15 @@
 //! them so that front faces wind counter-clockwise, the usual convention.
 
 /// Offsets of the eight corners of a cell from its minimum corner, in cells.
-pub const CORNER_OFFSETS: [[u32; 3]; 8] = [
-    [0, 0, 0],
-    [1, 0, 0],
-    [1, 1, 0],
-    [0, 1, 0],
-    [0, 0, 1],
-    [1, 0, 1],
-    [1, 1, 1],
-    [0, 1, 1],
-];
+pub const CORNER_OFFSETS: [[u32; 3]; 8] =
+    [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]];
 
 /// The two corners each of the twelve cell edges joins.
 ///
 /// Each pair is ordered from the corner nearer the grid origin, so that the two cells sharing an edge
 /// interpolate it in the same direction and compute bit-identical vertices.
-pub const EDGE_CORNERS: [[usize; 2]; 12] = [
-    [0, 1],
-    [1, 2],
-    [3, 2],
-    [0, 3],
-    [4, 5],
-    [5, 6],
-    [7, 6],
-    [4, 7],
-    [0, 4],
-    [1, 5],
-    [2, 6],
-    [3, 7],
-];
+pub const EDGE_CORNERS: [[usize; 2]; 12] =
+    [[0, 1], [1, 2], [3, 2], [0, 3], [4, 5], [5, 6], [7, 6], [4, 7], [0, 4], [1, 5], [2, 6], [3, 7]];
 
 /// For each case, a 12-bit mask of the edges the surface crosses: an edge is crossed exactly when its two
 /// corners lie on opposite sides. Computed, so it cannot disagree with `EDGE_CORNERS`.
@@ -368,9 +348,7 @@ mod tests {
     /// The face (axis, side) both edges lie on, if any.
     fn shared_face(e0: usize, e1: usize) -> Option<(usize, u32)> {
         (0..3).flat_map(|axis| [(axis, 0), (axis, 1)]).find(|&(axis, side)| {
-            [e0, e1]
-                .iter()
-                .all(|&e| EDGE_CORNERS[e].iter().all(|&c| CORNER_OFFSETS[c][axis] == side))
+            [e0, e1].iter().all(|&e| EDGE_CORNERS[e].iter().all(|&c| CORNER_OFFSETS[c][axis] == side))
         })
     }
 
@@ -442,7 +420,8 @@ mod tests {
     fn segments_on_a_face_depend_only_on_its_corners() {
         // Key: (axis, corner bits of the face in low-face corner order); value: the segments, each as a
         // sorted pair of low-face edges.
-        let mut seen: HashMap<(usize, u8), (usize, BTreeSet<(usize, usize)>)> = HashMap::new();
+        type Segments = BTreeSet<(usize, usize)>;
+        let mut seen: HashMap<(usize, u8), (usize, Segments)> = HashMap::new();
         for case in 0..256 {
             for axis in 0..3 {
                 for side in 0..2u32 {
@@ -455,8 +434,7 @@ mod tests {
                         let [a, b] = EDGE_CORNERS[e].map(to_low_corner);
                         EDGE_CORNERS.iter().position(|&[x, y]| (x, y) == (a, b) || (x, y) == (b, a)).unwrap()
                     };
-                    let face_corners: Vec<usize> =
-                        (0..8).filter(|&c| CORNER_OFFSETS[c][axis] == 0).collect();
+                    let face_corners: Vec<usize> = (0..8).filter(|&c| CORNER_OFFSETS[c][axis] == 0).collect();
                     let bits = face_corners.iter().enumerate().fold(0u8, |m, (i, &low)| {
                         let actual = (0..8)
                             .find(|&c| to_low_corner(c) == low && CORNER_OFFSETS[c][axis] == side)

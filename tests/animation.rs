@@ -18,7 +18,10 @@ fn ten_thousand_steps_keep_spheres_inside_and_speeds_unchanged() {
             for (i, s) in scene.spheres().iter().enumerate() {
                 let limit = BOX_HALF_EXTENT - s.radius;
                 assert!(s.center.abs().max_element() <= limit + 1e-6, "sphere {i} left the box: {s:?}");
-                assert!((s.velocity.length() - speeds[i]).abs() <= 1e-6 * speeds[i], "sphere {i} changed speed");
+                assert!(
+                    (s.velocity.length() - speeds[i]).abs() <= 1e-6 * speeds[i],
+                    "sphere {i} changed speed"
+                );
                 bounced[i] |= s.velocity != before[i];
             }
         }

@@ -88,8 +88,10 @@ fn a_lit_sphere_looks_lit_round_and_glossy() {
         let p = pixel(x, y);
         p[0] as i32 > p[2] as i32 + 30
     };
-    let surface: Vec<(u32, u32)> =
-        (0..height).flat_map(|y| (0..width).map(move |x| (x, y))).filter(|&(x, y)| on_surface(x, y)).collect();
+    let surface: Vec<(u32, u32)> = (0..height)
+        .flat_map(|y| (0..width).map(move |x| (x, y)))
+        .filter(|&(x, y)| on_surface(x, y))
+        .collect();
 
     // Not blank, and the disc has the size and place perspective gives it.
     let half_fov = (camera.fov_y_degrees / 2.0).to_radians();
@@ -97,24 +99,29 @@ fn a_lit_sphere_looks_lit_round_and_glossy() {
     let disc_radius = angular_radius.tan() / half_fov.tan() * height as f32 / 2.0;
     let expected_area = std::f32::consts::PI * disc_radius * disc_radius;
     let area = surface.len() as f32;
-    assert!((area / expected_area - 1.0).abs() < 0.06, "surface covers {area} px, a sphere would cover {expected_area}");
-    let centroid = surface.iter().fold(glam::Vec2::ZERO, |c, &(x, y)| c + glam::Vec2::new(x as f32, y as f32)) / area;
-    assert!(centroid.distance(glam::Vec2::new(width as f32 / 2.0, height as f32 / 2.0)) < 2.0, "centroid {centroid}");
+    assert!(
+        (area / expected_area - 1.0).abs() < 0.06,
+        "surface covers {area} px, a sphere would cover {expected_area}"
+    );
+    let centroid =
+        surface.iter().fold(glam::Vec2::ZERO, |c, &(x, y)| c + glam::Vec2::new(x as f32, y as f32)) / area;
+    assert!(
+        centroid.distance(glam::Vec2::new(width as f32 / 2.0, height as f32 / 2.0)) < 2.0,
+        "centroid {centroid}"
+    );
 
     // The side facing the light (+x, the right) is brighter than the far side.
     let mean = |pred: &dyn Fn(u32) -> bool| {
-        let side: Vec<f32> = surface.iter().filter(|&&(x, _)| pred(x)).map(|&(x, y)| luminance(pixel(x, y))).collect();
+        let side: Vec<f32> =
+            surface.iter().filter(|&&(x, _)| pred(x)).map(|&(x, y)| luminance(pixel(x, y))).collect();
         side.iter().sum::<f32>() / side.len() as f32
     };
     let (left, right) = (mean(&|x| x < width / 2), mean(&|x| x >= width / 2));
     assert!(right > 1.4 * left, "lit side {right:.1}, far side {left:.1}");
 
     // A white highlight where the halfway vector meets the sphere.
-    let (&(hx, hy), peak) = surface
-        .iter()
-        .map(|p| (p, luminance(pixel(p.0, p.1))))
-        .max_by(|a, b| a.1.total_cmp(&b.1))
-        .unwrap();
+    let (&(hx, hy), peak) =
+        surface.iter().map(|p| (p, luminance(pixel(p.0, p.1)))).max_by(|a, b| a.1.total_cmp(&b.1)).unwrap();
     let white = pixel(hx, hy);
     assert!(white[..3].iter().all(|&c| c > 215), "brightest surface pixel {white:?} is not a highlight");
     let eye = camera.eye();
@@ -127,5 +134,8 @@ fn a_lit_sphere_looks_lit_round_and_glossy() {
     };
     let predicted = to_screen(on_sphere);
     let found = glam::Vec2::new(hx as f32, hy as f32);
-    assert!(found.distance(predicted) < 0.15 * disc_radius, "highlight at {found}, expected near {predicted} (peak {peak})");
+    assert!(
+        found.distance(predicted) < 0.15 * disc_radius,
+        "highlight at {found}, expected near {predicted} (peak {peak})"
+    );
 }

@@ -41,28 +41,58 @@ fn every_setter_refuses_bad_values_and_keeps_the_previous_state() {
             assert_refused(r.set_material(Material { shininess: bad, ..material }), "shininess must be");
             assert_refused(r.set_material(Material { ambient: bad, ..material }), "ambient strength must be");
             assert_refused(r.set_material(Material { diffuse: bad, ..material }), "diffuse strength must be");
-            assert_refused(r.set_material(Material { specular: bad, ..material }), "specular strength must be");
+            assert_refused(
+                r.set_material(Material { specular: bad, ..material }),
+                "specular strength must be",
+            );
             assert_refused(
                 r.set_material(Material { base_color: Vec3::new(0.5, bad, 0.5), ..material }),
                 "base colour must be",
             );
             assert_refused(r.set_light_position(Vec3::new(bad, 1.0, 1.0)), "light position must be");
         }
-        assert_refused(r.set_material(Material { shininess: 0.0, ..material }), "shininess must be between 1 and 1024, got 0");
-        assert_refused(r.set_material(Material { ambient: -0.5, ..material }), "ambient strength must be between 0 and 1");
-        assert_refused(r.set_material(Material { base_color: Vec3::splat(2.0), ..material }), "base colour must be between 0 and 1");
-        assert_refused(r.set_light_position(Vec3::new(1e6, 0.0, 0.0)), "light position must be between -100 and 100");
+        assert_refused(
+            r.set_material(Material { shininess: 0.0, ..material }),
+            "shininess must be between 1 and 1024, got 0",
+        );
+        assert_refused(
+            r.set_material(Material { ambient: -0.5, ..material }),
+            "ambient strength must be between 0 and 1",
+        );
+        assert_refused(
+            r.set_material(Material { base_color: Vec3::splat(2.0), ..material }),
+            "base colour must be between 0 and 1",
+        );
+        assert_refused(
+            r.set_light_position(Vec3::new(1e6, 0.0, 0.0)),
+            "light position must be between -100 and 100",
+        );
 
         let camera = Camera::default();
         for bad in BAD_FLOATS {
-            assert_refused(r.set_camera(Camera { yaw_degrees: bad, ..camera }), "camera yaw (degrees) must be");
-            assert_refused(r.set_camera(Camera { pitch_degrees: bad, ..camera }), "camera pitch (degrees) must be");
+            assert_refused(
+                r.set_camera(Camera { yaw_degrees: bad, ..camera }),
+                "camera yaw (degrees) must be",
+            );
+            assert_refused(
+                r.set_camera(Camera { pitch_degrees: bad, ..camera }),
+                "camera pitch (degrees) must be",
+            );
             assert_refused(r.set_camera(Camera { distance: bad, ..camera }), "camera distance must be");
-            assert_refused(r.set_camera(Camera { fov_y_degrees: bad, ..camera }), "field of view (degrees) must be");
+            assert_refused(
+                r.set_camera(Camera { fov_y_degrees: bad, ..camera }),
+                "field of view (degrees) must be",
+            );
         }
-        assert_refused(r.set_camera(Camera { pitch_degrees: 90.0, ..camera }), "camera pitch (degrees) must be between -89 and 89");
+        assert_refused(
+            r.set_camera(Camera { pitch_degrees: 90.0, ..camera }),
+            "camera pitch (degrees) must be between -89 and 89",
+        );
         assert_refused(r.set_camera(Camera { distance: 0.0, ..camera }), "camera distance must be between");
-        assert_refused(r.set_camera(Camera { fov_y_degrees: 180.0, ..camera }), "field of view (degrees) must be between 10 and 120");
+        assert_refused(
+            r.set_camera(Camera { fov_y_degrees: 180.0, ..camera }),
+            "field of view (degrees) must be between 10 and 120",
+        );
 
         assert_refused(r.resize(0, 10), "output width (pixels) must be between 1 and");
         assert_refused(r.resize(10, 1 << 30), "output height (pixels) must be between 1 and");
@@ -71,7 +101,10 @@ fn every_setter_refuses_bad_values_and_keeps_the_previous_state() {
         assert_refused(r.set_max_triangles(Some(0)), "triangle budget must be between 1 and");
 
         // A batch with one bad field changes nothing.
-        assert_refused(r.set_settings(Settings { sphere_count: 9, iso: f32::NAN, ..before }), "iso level must be");
+        assert_refused(
+            r.set_settings(Settings { sphere_count: 9, iso: f32::NAN, ..before }),
+            "iso level must be",
+        );
 
         assert_eq!(*r.settings(), before, "refused values must leave the settings as they were");
         assert_eq!(r.size(), (32, 32));
@@ -91,7 +124,13 @@ fn good_values_are_applied() {
         r.set_iso(0.8).unwrap();
         r.set_resolution(40).unwrap();
         r.set_seed(99).unwrap();
-        r.set_camera(Camera { yaw_degrees: -120.0, pitch_degrees: -30.0, distance: 5.0, fov_y_degrees: 60.0 }).unwrap();
+        r.set_camera(Camera {
+            yaw_degrees: -120.0,
+            pitch_degrees: -30.0,
+            distance: 5.0,
+            fov_y_degrees: 60.0,
+        })
+        .unwrap();
         r.set_light_position(Vec3::new(-2.0, 3.0, 1.0)).unwrap();
         r.resize(48, 24).unwrap();
         let s = *r.settings();
@@ -135,7 +174,11 @@ fn a_resolution_beyond_the_device_names_the_limit() {
 
 fn cli(args: &[&str]) -> (i32, String, String) {
     let out = Command::new(env!("CARGO_BIN_EXE_metaballs")).args(args).output().expect("run the binary");
-    (out.status.code().unwrap_or(-1), String::from_utf8_lossy(&out.stdout).into(), String::from_utf8_lossy(&out.stderr).into())
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into(),
+        String::from_utf8_lossy(&out.stderr).into(),
+    )
 }
 
 #[test]
@@ -172,7 +215,8 @@ fn every_cli_flag_refuses_bad_values_with_its_message() {
     let (code, _, stderr) = cli(&["render"]);
     assert_eq!(code, 2);
     assert!(stderr.contains("--out <OUT>"), "{stderr}");
-    let (code, _, stderr) = cli(&["render", "--out", dir.join("no/such/dir/x.png").to_str().unwrap(), "--size", "8x8"]);
+    let (code, _, stderr) =
+        cli(&["render", "--out", dir.join("no/such/dir/x.png").to_str().unwrap(), "--size", "8x8"]);
     assert_eq!(code, 1, "{stderr}");
     assert!(stderr.contains("error: "), "{stderr}");
     std::fs::remove_dir_all(&dir).unwrap();
@@ -184,8 +228,21 @@ fn the_cli_writes_a_png_of_the_requested_size() {
     std::fs::create_dir_all(&dir).unwrap();
     let out = dir.join("frame.png");
     let (code, stdout, stderr) = cli(&[
-        "render", "--out", out.to_str().unwrap(), "--spheres", "3", "--iso", "0.9", "--resolution", "24",
-        "--size", "64x48", "--seed", "5", "--time", "1.5",
+        "render",
+        "--out",
+        out.to_str().unwrap(),
+        "--spheres",
+        "3",
+        "--iso",
+        "0.9",
+        "--resolution",
+        "24",
+        "--size",
+        "64x48",
+        "--seed",
+        "5",
+        "--time",
+        "1.5",
     ]);
     assert_eq!(code, 0, "{stderr}");
     assert!(stdout.contains("3 spheres, iso 0.9, 24 cells per axis"), "{stdout}");
