@@ -146,6 +146,11 @@ impl Renderer {
         })
     }
 
+    /// The queue frames are submitted on.
+    pub fn queue(&self) -> &wgpu::Queue {
+        &self.queue
+    }
+
     /// The current settings.
     pub fn settings(&self) -> &Settings {
         &self.settings

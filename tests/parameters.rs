@@ -250,3 +250,24 @@ fn the_cli_writes_a_png_of_the_requested_size() {
     assert_eq!((w, h, pixels.len()), (64, 48, 64 * 48 * 4));
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn changing_resolution_frees_the_old_buffers() {
+    with_renderer(Settings { resolution: 64, ..Settings::default() }, 32, 32, |o| {
+        let memory = |o: &mut metaballs::offscreen::Offscreen| {
+            o.render();
+            let _ = o.device.poll(wgpu::PollType::wait_indefinitely());
+            let hal = o.device.get_internal_counters().hal;
+            (hal.buffer_memory.read(), hal.buffers.read())
+        };
+        let (bytes, buffers) = memory(o);
+        assert!(bytes > 0, "this backend reports no buffer memory");
+        for _ in 0..5 {
+            for resolution in [32, 160, 8, 64] {
+                o.renderer.set_resolution(resolution).unwrap();
+                memory(o);
+            }
+        }
+        assert_eq!(memory(o), (bytes, buffers), "buffer memory and count after 20 resolution changes");
+    });
+}

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Installs what the tests need (skipping what is present) and runs every test:
-# formatting and lints (native and wasm32), the native suite on the GPU adapter at hand (lavapipe
-# without a GPU), and the wasm32 library build.
+# Installs what the tests need (skipping what is present) and runs every test: formatting and lints
+# (native and wasm32), the native suite on the GPU adapter at hand (lavapipe without a GPU), the engine
+# in headless Chromium's WebGPU (wasm-bindgen-test), and the page end to end (Playwright).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -19,7 +19,8 @@ need_deb() {
     as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q "${missing[@]}"
 }
 
-need_deb mesa-vulkan-drivers
+need_deb mesa-vulkan-drivers chromium chromium-driver python3
+command -v node >/dev/null && command -v npm >/dev/null || need_deb nodejs npm
 rustup target list --installed | grep -qx wasm32-unknown-unknown || rustup target add wasm32-unknown-unknown
 rustup component list --installed | grep -q '^clippy' || rustup component add clippy
 rustup component list --installed | grep -q '^rustfmt' || rustup component add rustfmt
@@ -35,13 +36,27 @@ cargo fmt --all --check
 echo "== lints (native)"
 cargo clippy --all-targets -- -D warnings
 echo "== lints (wasm32)"
-cargo clippy --lib --target wasm32-unknown-unknown -- -D warnings
-echo "== wasm32 build"
-cargo build --lib --target wasm32-unknown-unknown
-echo "== native tests"
+cargo clippy --lib --test web --target wasm32-unknown-unknown -- -D warnings
+echo "== page build (release wasm, wasm-bindgen)"
+bash www/build.sh
+
 log="$(mktemp)"
 trap 'rm -f "$log"' EXIT
-cargo test 2>&1 | tee "$log"
+echo "== native tests"
+cargo test 2>&1 | tee -a "$log"
+
+echo "== engine in headless Chromium (WebGPU)"
+CHROMEDRIVER=/usr/bin/chromedriver cargo test --target wasm32-unknown-unknown --test web 2>&1 | tee -a "$log"
+
+echo "== page end to end (Playwright, headless Chromium)"
+(
+    cd tests/e2e
+    [ -d node_modules/playwright-core ] || PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 npm ci --no-audit --no-fund
+    npm test
+) 2>&1 | tee -a "$log"
 
 # One closing line for the whole run.
-awk '/^test result:/ { passed += $4; failed += $6 } END { printf "all tests: %d passed, %d failed\n", passed, failed }' "$log"
+awk '/^test result:/ { passed += $4; failed += $6 }
+     /^# pass /       { passed += $3 }
+     /^# fail /       { failed += $3 }
+     END { printf "all tests: %d passed, %d failed\n", passed, failed }' "$log"

@@ -1,6 +1,10 @@
 //! Helpers shared by the native GPU tests.
 #![allow(dead_code)]
 
+pub mod conditioning;
+
+#[allow(unused_imports)]
+pub use conditioning::*;
 use glam::{UVec3, Vec3};
 use metaballs::offscreen::Offscreen;
 use metaballs::reference::{Grid, sample_field};
@@ -37,26 +41,6 @@ pub fn with_renderer<T>(
 /// Settings for a scene of `count` seeded spheres.
 pub fn settings(seed: u64, count: u32, resolution: u32, iso: f32) -> Settings {
     Settings { seed, sphere_count: count, resolution, iso, ..Settings::default() }
-}
-
-/// How far the GPU's field may be from the oracle's, relative: WGSL rounds a division within 2.5 ulp
-/// and may fuse multiply-adds, so a sum of 16 positive terms can differ by a few times 1e-7.
-pub const FIELD_RELATIVE_TOLERANCE: f32 = 2e-6;
-
-/// True when no grid sample lies so close to `iso` that the GPU and the oracle could classify it
-/// differently within `FIELD_RELATIVE_TOLERANCE`.
-pub fn well_conditioned(spheres: &[Sphere], iso: f32, resolution: u32) -> bool {
-    sample_field(spheres, Grid { cells_per_axis: resolution })
-        .iter()
-        .all(|&f| (f - iso).abs() > FIELD_RELATIVE_TOLERANCE * iso)
-}
-
-/// `iso`, or the nearest level above it (in steps of 1e-4) at which the scene is well conditioned.
-pub fn conditioned_iso(spheres: &[Sphere], iso: f32, resolution: u32) -> f32 {
-    (0..100)
-        .map(|k| iso * (1.0 + 1e-4 * k as f32))
-        .find(|&level| well_conditioned(spheres, level, resolution))
-        .expect("no well-conditioned iso level near the requested one")
 }
 
 /// True when every sample next to the box's faces is below `iso`, so the surface stays inside the box

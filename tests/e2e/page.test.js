@@ -1,0 +1,300 @@
+// End-to-end tests of the served page in headless Chromium with real WebGPU (SwiftShader): what a
+// person sees and does. Expects pkg/ built (www/build.sh); serves the repository itself on 127.0.0.1.
+
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { spawn } from 'node:child_process';
+import { createServer } from 'node:net';
+import { mkdirSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import path from 'node:path';
+import { chromium } from 'playwright-core';
+
+const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
+const outputDir = path.join(root, 'tests/output');
+mkdirSync(outputDir, { recursive: true });
+
+const CHROMIUM = process.env.CHROMIUM ?? '/usr/bin/chromium';
+const FLAGS = [
+  '--enable-unsafe-webgpu',
+  '--enable-features=Vulkan',
+  '--use-vulkan=swiftshader',
+  '--use-angle=swiftshader',
+  '--no-sandbox',
+  '--disable-background-networking',
+  '--disable-component-update',
+  '--disable-sync',
+  '--no-first-run',
+  '--disable-quic',
+];
+
+let server;
+let browser;
+let baseUrl;
+
+function freePort() {
+  return new Promise((resolve, reject) => {
+    const probe = createServer();
+    probe.once('error', reject);
+    probe.listen(0, '127.0.0.1', () => {
+      const { port } = probe.address();
+      probe.close(() => resolve(port));
+    });
+  });
+}
+
+async function waitForServer(url) {
+  for (let i = 0; i < 100; i++) {
+    try {
+      if ((await fetch(url)).ok) return;
+    } catch {
+      // not up yet
+    }
+    await new Promise((r) => setTimeout(r, 100));
+  }
+  throw new Error(`the server at ${url} did not start`);
+}
+
+before(async () => {
+  const port = await freePort();
+  server = spawn('python3', ['-m', 'http.server', '--bind', '127.0.0.1', String(port), '--directory', root], {
+    stdio: 'ignore',
+  });
+  baseUrl = `http://127.0.0.1:${port}/`;
+  await waitForServer(baseUrl);
+  browser = await chromium.launch({ executablePath: CHROMIUM, args: FLAGS, headless: true });
+});
+
+after(async () => {
+  await browser?.close();
+  server?.kill();
+});
+
+// Opens the page and collects console errors and uncaught exceptions.
+async function open(query = '', { initScript } = {}) {
+  const page = await browser.newPage({ viewport: { width: 960, height: 640 } });
+  const errors = [];
+  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+  page.on('pageerror', (e) => errors.push(String(e)));
+  if (initScript) await page.addInitScript(initScript);
+  await page.goto(`${baseUrl}${query}`);
+  return { page, errors };
+}
+
+async function waitForTriangles(page, differentFrom = null) {
+  await page.waitForFunction(
+    (prev) => {
+      const text = document.getElementById('triangles').textContent.replace(/,/g, '');
+      return /^\d+$/.test(text) && Number(text) > 0 && (prev === null || Number(text) !== prev);
+    },
+    differentFrom,
+    { timeout: 60_000 },
+  );
+  return Number((await page.textContent('#triangles')).replace(/,/g, ''));
+}
+
+// Renders settle once the stats for the current settings are in: two HUD updates with the same count.
+async function settledTriangles(page) {
+  let previous = await waitForTriangles(page);
+  for (let i = 0; i < 20; i++) {
+    await page.waitForTimeout(700);
+    const now = Number((await page.textContent('#triangles')).replace(/,/g, ''));
+    if (now === previous) return now;
+    previous = now;
+  }
+  return previous;
+}
+
+async function screenshot(page, name) {
+  const file = path.join(outputDir, `e2e-${name}.png`);
+  const png = await page.locator('#view').screenshot({ path: file });
+  console.log(`screenshot: ${file}`);
+  return png;
+}
+
+// Pixel statistics of a canvas screenshot, computed in the page (it decodes PNGs for us).
+async function pixelStats(page, png) {
+  return page.evaluate(async (b64) => {
+    const image = await createImageBitmap(await (await fetch(`data:image/png;base64,${b64}`)).blob());
+    const canvas = new OffscreenCanvas(image.width, image.height);
+    const context = canvas.getContext('2d');
+    context.drawImage(image, 0, 0);
+    const { data } = context.getImageData(0, 0, image.width, image.height);
+    let surface = 0;
+    let highlight = 0;
+    for (let i = 0; i < data.length; i += 4) {
+      const [r, g, b] = [data[i], data[i + 1], data[i + 2]];
+      if (r > b + 30) surface += 1; // the default surface colour is red; the background is blue-grey
+      if (r > 215 && g > 215 && b > 215) highlight += 1;
+    }
+    const pixels = data.length / 4;
+    return { surface: surface / pixels, highlight, pixels };
+  }, png.toString('base64'));
+}
+
+async function differingFraction(page, a, b) {
+  return page.evaluate(async ([x, y]) => {
+    const decode = async (b64) => {
+      const image = await createImageBitmap(await (await fetch(`data:image/png;base64,${b64}`)).blob());
+      const canvas = new OffscreenCanvas(image.width, image.height);
+      const context = canvas.getContext('2d');
+      context.drawImage(image, 0, 0);
+      return context.getImageData(0, 0, image.width, image.height).data;
+    };
+    const [p, q] = [await decode(x), await decode(y)];
+    let differing = 0;
+    for (let i = 0; i < p.length; i += 4) {
+      if (Math.abs(p[i] - q[i]) + Math.abs(p[i + 1] - q[i + 1]) + Math.abs(p[i + 2] - q[i + 2]) > 24) differing += 1;
+    }
+    return differing / (p.length / 4);
+  }, [a.toString('base64'), b.toString('base64')]);
+}
+
+async function setRange(page, id, value) {
+  await page.$eval(`#${id}`, (input, v) => {
+    input.value = String(v);
+    input.dispatchEvent(new Event('input', { bubbles: true }));
+  }, value);
+}
+
+test('the page shows glossy blobs with no console errors', async () => {
+  const { page, errors } = await open();
+  await waitForTriangles(page);
+  const png = await screenshot(page, 'default');
+  const stats = await pixelStats(page, png);
+  assert.ok(stats.surface > 0.01, `surface covers ${(stats.surface * 100).toFixed(2)}% of the canvas`);
+  assert.ok(stats.highlight > 0, 'no specular highlight visible');
+  assert.match(await page.textContent('#adapter'), /WebGPU/);
+  assert.match(await page.textContent('#fps'), /^\d+(\.\d)?$/);
+  assert.equal(await page.isVisible('#message'), false);
+  const size = await page.$eval('#view', (c) => [c.width, c.height, devicePixelRatio]);
+  assert.deepEqual(size, [960, 640, 1], 'the canvas fills the page in device pixels');
+  assert.deepEqual(errors, []);
+  await page.close();
+});
+
+test('each control changes the picture and the triangle count', async () => {
+  const { page, errors } = await open('?paused=1&seed=3');
+  let triangles = await settledTriangles(page);
+  let before = await screenshot(page, 'controls-start');
+  for (const [id, value] of [['spheres', 12], ['iso', 0.6], ['resolution', 40]]) {
+    await setRange(page, id, value);
+    const now = await waitForTriangles(page, triangles);
+    const after = await screenshot(page, `controls-${id}`);
+    const changed = await differingFraction(page, before, after);
+    assert.ok(changed > 0.002, `${id}: only ${(changed * 100).toFixed(3)}% of pixels changed`);
+    assert.notEqual(now, triangles, `${id}: the triangle count did not change`);
+    console.log(`${id} → ${value}: ${triangles} → ${now} triangles, ${(changed * 100).toFixed(1)}% of pixels changed`);
+    triangles = await settledTriangles(page);
+    before = after;
+  }
+  // Keyboard: arrow keys move a focused slider.
+  await page.focus('#spheres');
+  await page.keyboard.press('ArrowRight');
+  await page.waitForFunction(() => window.metaballs.app.sphere_count() === 13);
+  assert.equal(await page.textContent('#spheres-value'), '13');
+  assert.deepEqual(errors, []);
+  await page.close();
+});
+
+test('the URL keeps the state and restores it', async () => {
+  const query = '?spheres=9&iso=0.8&res=40&seed=7&paused=1&yaw=-40&pitch=10&dist=5&speed=0.5';
+  const { page, errors } = await open(query);
+  await waitForTriangles(page);
+  const app = await page.evaluate(() => {
+    const { app, state } = window.metaballs;
+    return { spheres: app.sphere_count(), iso: app.iso(), res: app.resolution(), seed: app.seed(), state };
+  });
+  assert.equal(app.spheres, 9);
+  assert.ok(Math.abs(app.iso - 0.8) < 1e-6);
+  assert.equal(app.res, 40);
+  assert.equal(app.seed, 7);
+  assert.deepEqual([app.state.yaw, app.state.pitch, app.state.dist, app.state.speed, app.state.paused], [-40, 10, 5, 0.5, true]);
+  assert.equal(await page.inputValue('#spheres'), '9');
+  assert.equal(await page.textContent('#resolution-value'), '40³');
+  assert.equal(await page.textContent('#pause'), 'Play');
+  // A change is written back to the URL.
+  await setRange(page, 'spheres', 11);
+  await page.waitForFunction(() => new URLSearchParams(location.search).get('spheres') === '11');
+  assert.equal(await page.isVisible('#notice'), false);
+  assert.deepEqual(errors, []);
+  await page.close();
+});
+
+test('bad values in the URL fall back to defaults with a visible notice', async () => {
+  const { page, errors } = await open('?spheres=500&iso=abc&res=3&pitch=95&color=red');
+  await waitForTriangles(page);
+  await page.waitForSelector('#notice', { state: 'visible' });
+  const notice = await page.textContent('#notice');
+  for (const fragment of ['iso=abc', 'sphere count must be between 1 and 64, got 500', 'resolution (cells per axis) must be between 8', 'camera pitch', 'color=red']) {
+    assert.ok(notice.includes(fragment), `notice ${JSON.stringify(notice)} should mention ${fragment}`);
+  }
+  const state = await page.evaluate(() => {
+    const { app } = window.metaballs;
+    return [app.sphere_count(), app.iso(), app.resolution()];
+  });
+  assert.deepEqual(state, [5, 1, 64]);
+  const stats = await pixelStats(page, await screenshot(page, 'bad-url'));
+  assert.ok(stats.surface > 0.01, 'the page still draws');
+  assert.deepEqual(errors, []);
+  await page.close();
+});
+
+test('the camera follows drag, wheel, keys and double-click', async () => {
+  const { page, errors } = await open('?paused=1');
+  await waitForTriangles(page);
+  const camera = () => page.evaluate(() => {
+    const { yaw, pitch, dist } = window.metaballs.state;
+    return { yaw, pitch, dist };
+  });
+  const start = await camera();
+  await page.mouse.move(480, 320);
+  await page.mouse.down();
+  await page.mouse.move(380, 280, { steps: 5 });
+  await page.mouse.up();
+  const dragged = await camera();
+  assert.ok(Math.abs(dragged.yaw - start.yaw - 30) < 1e-6, `yaw ${start.yaw} → ${dragged.yaw}`);
+  assert.ok(Math.abs(dragged.pitch - start.pitch + 12) < 1e-6, `pitch ${start.pitch} → ${dragged.pitch}`);
+  await page.mouse.wheel(0, 400);
+  await page.waitForFunction((d) => window.metaballs.state.dist > d, start.dist);
+  await page.focus('#view');
+  await page.keyboard.press('ArrowLeft');
+  await page.keyboard.press('+');
+  const keyed = await camera();
+  assert.ok(Math.abs(keyed.yaw - dragged.yaw + 5) < 1e-6);
+  await page.mouse.dblclick(480, 320);
+  assert.deepEqual(await camera(), start);
+  assert.deepEqual(errors, []);
+  await page.close();
+});
+
+test('without WebGPU the page says what is needed', async () => {
+  const cases = [
+    ['no-webgpu', () => { delete Navigator.prototype.gpu; }, 'WebGPU is not available'],
+    ['no-adapter', () => { GPU.prototype.requestAdapter = async () => null; }, 'WebGPU could not start'],
+  ];
+  for (const [name, initScript, title] of cases) {
+    const { page, errors } = await open('', { initScript });
+    await page.waitForSelector('#message', { state: 'visible' });
+    assert.equal(await page.textContent('#message-title'), title);
+    assert.match(await page.textContent('#message-text'), /Chrome or Edge/);
+    await page.screenshot({ path: path.join(outputDir, `e2e-${name}.png`) });
+    console.log(`screenshot: ${path.join(outputDir, `e2e-${name}.png`)}`);
+    assert.deepEqual(errors, [], `${name}: no uncaught errors`);
+    await page.close();
+  }
+});
+
+test('frame rate at 32, 64 and 128 cells with 5 spheres (figures, not a pass mark)', async () => {
+  for (const res of [32, 64, 128]) {
+    const { page, errors } = await open(`?res=${res}`);
+    await waitForTriangles(page);
+    await page.waitForTimeout(3000);
+    const fps = await page.textContent('#fps');
+    const frame = await page.textContent('#frame-time');
+    const triangles = await page.textContent('#triangles');
+    console.log(`${res} cells, 5 spheres: ${fps} fps, ${frame} per frame, ${triangles} triangles`);
+    assert.deepEqual(errors, []);
+    await page.close();
+  }
+});

@@ -1,0 +1,102 @@
+//! The engine in a real browser: headless Chromium's WebGPU (SwiftShader) against the CPU oracle, and
+//! the renderer drawing offscreen.
+#![cfg(target_arch = "wasm32")]
+
+#[path = "common/conditioning.rs"]
+mod conditioning;
+
+use conditioning::conditioned_iso;
+use metaballs::reference::{self, Grid};
+use metaballs::{Renderer, Settings};
+use wasm_bindgen_test::*;
+
+wasm_bindgen_test_configure!(run_in_browser);
+
+const FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8UnormSrgb;
+
+async fn device() -> (wgpu::Device, wgpu::Queue) {
+    let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
+    desc.backends = wgpu::Backends::BROWSER_WEBGPU;
+    let instance = wgpu::Instance::new(desc);
+    let (_, device, queue) = metaballs::gpu::request_device(&instance, None)
+        .await
+        .unwrap_or_else(|e| panic!("browser tests need WebGPU: {e}"));
+    (device, queue)
+}
+
+#[wasm_bindgen_test]
+async fn gpu_mesh_matches_the_oracle_in_the_browser() {
+    let (device, queue) = device().await;
+    let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
+    let mut renderer = Renderer::new(device.clone(), queue, FORMAT, 16, 16, Settings::default()).unwrap();
+    for (seed, count, resolution) in [(11, 1, 16), (12, 5, 24), (13, 16, 32)] {
+        renderer
+            .set_settings(Settings { seed, sphere_count: count, resolution, iso: 1.0, ..Settings::default() })
+            .unwrap();
+        let spheres = renderer.scene().spheres().to_vec();
+        let iso = conditioned_iso(&spheres, 1.0, resolution);
+        renderer.set_iso(iso).unwrap();
+        let grid = Grid { cells_per_axis: resolution };
+        let gpu = renderer.extract_mesh().await;
+        let cpu = reference::extract(&spheres, iso, grid);
+        assert!(cpu.triangle_count() > 0);
+        if let Err(e) = gpu.matches(&cpu, 1e-4 * grid.cell_size(), 0.01f32.to_radians()) {
+            panic!("seed {seed}, {count} spheres, {resolution} cells: {e}");
+        }
+    }
+    assert!(scope.pop().await.is_none(), "validation error");
+    assert_eq!(renderer.gpu_error(), None);
+}
+
+#[wasm_bindgen_test]
+async fn the_renderer_draws_a_non_blank_image_offscreen() {
+    let (device, queue) = device().await;
+    let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
+    let (width, height) = (128u32, 96u32);
+    let mut renderer =
+        Renderer::new(device.clone(), queue.clone(), FORMAT, width, height, Settings::default()).unwrap();
+    let texture = device.create_texture(&wgpu::TextureDescriptor {
+        label: Some("test: target"),
+        size: wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format: FORMAT,
+        usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
+        view_formats: &[],
+    });
+    renderer.render(&texture.create_view(&Default::default()));
+    let row = width * 4;
+    let padded = row.div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
+    let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("test: pixels"),
+        size: (padded * height) as u64,
+        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    });
+    let mut encoder = device.create_command_encoder(&Default::default());
+    encoder.copy_texture_to_buffer(
+        texture.as_image_copy(),
+        wgpu::TexelCopyBufferInfo {
+            buffer: &buffer,
+            layout: wgpu::TexelCopyBufferLayout {
+                offset: 0,
+                bytes_per_row: Some(padded),
+                rows_per_image: None,
+            },
+        },
+        wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
+    );
+    queue.submit([encoder.finish()]);
+    let bytes = metaballs::gpu::map_and_read(&device, &buffer).await;
+    let pixels: Vec<&[u8]> =
+        bytes.chunks(padded as usize).flat_map(|r| r[..row as usize].chunks(4)).collect();
+    // The surface is red; the background blue-grey.
+    let surface = pixels.iter().filter(|p| p[0] as i32 > p[2] as i32 + 30).count();
+    let fraction = surface as f32 / pixels.len() as f32;
+    assert!(fraction > 0.02, "the surface covers {:.2}% of the image", fraction * 100.0);
+    assert!(pixels.iter().any(|p| p[..3].iter().all(|&c| c > 200)), "no specular highlight");
+    renderer.flush_stats().await;
+    assert!(renderer.stats().is_some_and(|s| s.triangles > 0 && !s.overflowed()));
+    assert!(scope.pop().await.is_none(), "validation error");
+}
