@@ -1,5 +1,6 @@
-// Shared by the field and marching-cubes passes: the grid, the spheres and the field itself.
-// Mirrors `GridUniform` in src/uniforms.rs and the oracle in src/reference.rs.
+// Shared by the compute passes: the grid, the spheres, the field, and the blocks of cells that
+// empty-space skipping works on. Mirrors `GridUniform` and `Counters` in src/uniforms.rs and the oracle
+// in src/reference.rs.
 
 struct Grid {
     box_min: vec3<f32>,
@@ -7,7 +8,28 @@ struct Grid {
     iso: f32,
     cells_per_axis: u32,
     sphere_count: u32,
+    // Capacities of the buffers; the passes never write past them.
+    max_blocks: u32,
     max_vertices: u32,
+    max_indices: u32,
+    _pad0: u32,
+    _pad1: u32,
+}
+
+// Counts the passes append with. A count above its capacity means the buffer overflowed.
+struct Counters {
+    active_blocks: atomic<u32>,
+    vertices: atomic<u32>,
+    indices: atomic<u32>,
+    active_cells: atomic<u32>,
+}
+
+// The same counters, read-only, for passes that only need the totals.
+struct Totals {
+    active_blocks: u32,
+    vertices: u32,
+    indices: u32,
+    active_cells: u32,
 }
 
 @group(0) @binding(0) var<uniform> grid: Grid;
@@ -16,23 +38,40 @@ struct Grid {
 
 // Squared distances are clamped to this so a grid point at a centre reads a huge but finite value.
 const MIN_DISTANCE_SQUARED: f32 = 1e-20;
-
-fn points_per_axis() -> u32 {
-    return grid.cells_per_axis + 1u;
-}
+// Cells along each edge of a block: a block is one workgroup of 4 × 4 × 4 invocations.
+const BLOCK_CELLS: u32 = 4u;
+// Grid points along each edge of a block (its cells' corners).
+const BLOCK_POINTS: u32 = 5u;
+// Per-block passes run a 2D grid of workgroups this wide (WebGPU allows 65535 per dimension).
+const DISPATCH_ROW: u32 = 32768u;
+const INVALID: u32 = 0xffffffffu;
 
 fn grid_point(id: vec3<u32>) -> vec3<f32> {
     return grid.box_min + vec3<f32>(id) * grid.cell_size;
 }
 
-fn point_index(id: vec3<u32>) -> u32 {
-    let n = points_per_axis();
-    return id.x + n * (id.y + n * id.z);
-}
-
 // Points on the box's faces read as outside, which closes the surface where it meets a wall.
 fn is_boundary(id: vec3<u32>) -> bool {
-    return any(id == vec3<u32>(0u)) || any(id == vec3<u32>(grid.cells_per_axis));
+    return any(id == vec3<u32>(0u)) || any(id >= vec3<u32>(grid.cells_per_axis));
+}
+
+fn blocks_per_axis() -> u32 {
+    return (grid.cells_per_axis + BLOCK_CELLS - 1u) / BLOCK_CELLS;
+}
+
+fn block_coords(block: u32) -> vec3<u32> {
+    let n = blocks_per_axis();
+    return vec3<u32>(block % n, (block / n) % n, block / (n * n));
+}
+
+fn block_index(coords: vec3<u32>) -> u32 {
+    let n = blocks_per_axis();
+    return coords.x + n * (coords.y + n * coords.z);
+}
+
+// The active block a workgroup of a per-block pass works on.
+fn slot_of(workgroup: vec3<u32>) -> u32 {
+    return workgroup.x + workgroup.y * DISPATCH_ROW;
 }
 
 // f(p) = Σ r² / |p − c|²

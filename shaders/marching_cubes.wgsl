@@ -1,27 +1,28 @@
-// Marching-cubes pass: one invocation per cell classifies it from the field values, and an active cell
-// reserves room for its triangles with one atomic add and writes them. The counter feeds the indirect
-// draw through `finalize_draw`, so the frame never waits on a readback.
+// Marching-cubes passes over the active blocks, one workgroup per block and one invocation per cell.
+//
+// `make_vertices`: each cell classifies itself and computes the vertices on the three edges leaving its
+// lowest corner, so every surface vertex is computed once. `make_triangles`: each cell looks up the
+// vertices on its twelve edges (in its own block or a neighbour's: an edge the surface crosses on a
+// block's face belongs to two blocks the surface crosses, so both are active) and appends its triangles
+// as indices. `finalize_draw` turns the index count into the indexed indirect draw, so the frame never
+// waits on a readback.
 
-struct Counters {
-    // Vertices all cells asked for; above `grid.max_vertices` means the budget overflowed.
-    vertices_requested: atomic<u32>,
-}
-
-struct DrawIndirect {
-    vertex_count: u32,
-    instance_count: u32,
-    first_vertex: u32,
-    first_instance: u32,
-}
-
-@group(0) @binding(2) var<storage, read> field: array<f32>;
+@group(0) @binding(2) var<storage, read_write> counters: Counters;
+@group(0) @binding(3) var<storage, read> active_blocks: array<u32>;
+@group(0) @binding(4) var<storage, read> block_slots: array<u32>;
+@group(0) @binding(5) var<storage, read> block_values: array<f32>;
 // Per case: bits 0..11 the crossed edges, bits 16.. the triangle count.
-@group(0) @binding(3) var<storage, read> case_table: array<u32, 256>;
+@group(0) @binding(6) var<storage, read> case_table: array<u32, 256>;
 // Per case, 16 entries: edge numbers of the triangles, -1 after the last.
-@group(0) @binding(4) var<storage, read> triangle_table: array<i32, 4096>;
+@group(0) @binding(7) var<storage, read> triangle_table: array<i32, 4096>;
+// Slot s, cell c: the case at s * 64 + c.
+@group(0) @binding(8) var<storage, read_write> cell_cases: array<u32>;
+// Slot s, cell c, axis a: the vertex on the edge leaving the cell's lowest corner along a, at
+// (s * 64 + c) * 3 + a (INVALID where the budget was full).
+@group(0) @binding(9) var<storage, read_write> edge_vertices: array<u32>;
 // Per vertex, 6 floats: position, then outward normal.
-@group(0) @binding(5) var<storage, read_write> vertices: array<f32>;
-@group(0) @binding(6) var<storage, read_write> counters: Counters;
+@group(0) @binding(10) var<storage, read_write> vertices: array<f32>;
+@group(0) @binding(11) var<storage, read_write> indices: array<u32>;
 
 // Corner c of a cell sits at (c bit 0 xor c bit 1, c bit 1, c bit 2): 0 (0,0,0), 1 (1,0,0), 2 (1,1,0),
 // 3 (0,1,0), then the same at z = 1 (src/tables.rs, CORNER_OFFSETS).
@@ -29,24 +30,42 @@ fn corner_offset(c: u32) -> vec3<u32> {
     return vec3<u32>(((c >> 1u) ^ c) & 1u, (c >> 1u) & 1u, (c >> 2u) & 1u);
 }
 
-// Edges 0..3 run along the bottom face, 4..7 along the top face, 8..11 upwards; each from its lower
-// corner (src/tables.rs, EDGE_CORNERS).
-fn edge_corners(e: u32) -> vec2<u32> {
+// Edge e starts at the corner returned in xyz and runs along axis w (src/tables.rs, EDGE_CORNERS).
+fn edge_start(e: u32) -> vec4<u32> {
     switch e {
-        case 0u: { return vec2<u32>(0u, 1u); }
-        case 1u: { return vec2<u32>(1u, 2u); }
-        case 2u: { return vec2<u32>(3u, 2u); }
-        case 3u: { return vec2<u32>(0u, 3u); }
-        case 4u: { return vec2<u32>(4u, 5u); }
-        case 5u: { return vec2<u32>(5u, 6u); }
-        case 6u: { return vec2<u32>(7u, 6u); }
-        case 7u: { return vec2<u32>(4u, 7u); }
-        default: { return vec2<u32>(e - 8u, e - 4u); }
+        case 0u: { return vec4<u32>(0u, 0u, 0u, 0u); }
+        case 1u: { return vec4<u32>(1u, 0u, 0u, 1u); }
+        case 2u: { return vec4<u32>(0u, 1u, 0u, 0u); }
+        case 3u: { return vec4<u32>(0u, 0u, 0u, 1u); }
+        case 4u: { return vec4<u32>(0u, 0u, 1u, 0u); }
+        case 5u: { return vec4<u32>(1u, 0u, 1u, 1u); }
+        case 6u: { return vec4<u32>(0u, 1u, 1u, 0u); }
+        case 7u: { return vec4<u32>(0u, 0u, 1u, 1u); }
+        case 8u: { return vec4<u32>(0u, 0u, 0u, 2u); }
+        case 9u: { return vec4<u32>(1u, 0u, 0u, 2u); }
+        case 10u: { return vec4<u32>(1u, 1u, 0u, 2u); }
+        default: { return vec4<u32>(0u, 1u, 0u, 2u); }
     }
 }
 
-fn write_vertex(slot: u32, p: vec3<f32>, n: vec3<f32>) {
-    let o = slot * 6u;
+fn unit(axis: u32) -> vec3<u32> {
+    return vec3<u32>(u32(axis == 0u), u32(axis == 1u), u32(axis == 2u));
+}
+
+fn local_cell(local: u32) -> vec3<u32> {
+    return vec3<u32>(local % BLOCK_CELLS, (local / BLOCK_CELLS) % BLOCK_CELLS, local / (BLOCK_CELLS * BLOCK_CELLS));
+}
+
+fn value_at(slot: u32, point: vec3<u32>) -> f32 {
+    return block_values[slot * 125u + point.x + BLOCK_POINTS * (point.y + BLOCK_POINTS * point.z)];
+}
+
+fn active_slot_count() -> u32 {
+    return min(atomicLoad(&counters.active_blocks), grid.max_blocks);
+}
+
+fn write_vertex(index: u32, p: vec3<f32>, n: vec3<f32>) {
+    let o = index * 6u;
     vertices[o] = p.x;
     vertices[o + 1u] = p.y;
     vertices[o + 2u] = p.z;
@@ -55,83 +74,148 @@ fn write_vertex(slot: u32, p: vec3<f32>, n: vec3<f32>) {
     vertices[o + 5u] = n.z;
 }
 
-@compute @workgroup_size(4, 4, 4)
-fn march_cells(@builtin(global_invocation_id) cell: vec3<u32>) {
-    if (any(cell >= vec3<u32>(grid.cells_per_axis))) {
+@compute @workgroup_size(64)
+fn make_vertices(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_invocation_index) local: u32) {
+    let slot = slot_of(workgroup);
+    if (slot >= active_slot_count()) {
         return;
     }
-    var values: array<f32, 8>;
+    let at = local_cell(local);
+    let cell = block_coords(active_blocks[slot]) * BLOCK_CELLS + at;
     var case_index = 0u;
-    for (var c = 0u; c < 8u; c++) {
-        let v = field[point_index(cell + corner_offset(c))];
-        values[c] = v;
-        case_index |= select(0u, 1u << c, v > grid.iso);
+    if (all(cell < vec3<u32>(grid.cells_per_axis))) {
+        for (var c = 0u; c < 8u; c++) {
+            case_index |= select(0u, 1u << c, value_at(slot, at + corner_offset(c)) > grid.iso);
+        }
     }
+    cell_cases[slot * 64u + local] = case_index;
+    if (case_index == 0u || case_index == 255u) {
+        return;
+    }
+
+    // The edges leaving the lowest corner: 0 along x, 3 along y, 8 along z.
+    let f0 = value_at(slot, at);
+    let inside0 = f0 > grid.iso;
+    var crossed = 0u;
+    for (var axis = 0u; axis < 3u; axis++) {
+        if ((value_at(slot, at + unit(axis)) > grid.iso) != inside0) {
+            crossed |= 1u << axis;
+        }
+    }
+    let count = countOneBits(crossed);
+    var next = INVALID;
+    if (count > 0u) {
+        next = atomicAdd(&counters.vertices, count);
+    }
+    for (var axis = 0u; axis < 3u; axis++) {
+        var index = INVALID;
+        if ((crossed & (1u << axis)) != 0u) {
+            if (next < grid.max_vertices) {
+                index = next;
+                let ib = cell + unit(axis);
+                let pa = grid_point(cell);
+                let pb = grid_point(ib);
+                let fb = value_at(slot, at + unit(axis));
+                let t = (grid.iso - f0) / (fb - f0);
+                let p = pa + (pb - pa) * t;
+                var n: vec3<f32>;
+                if (is_boundary(cell)) {
+                    n = normalize(pa - pb);
+                } else if (is_boundary(ib)) {
+                    n = normalize(pb - pa);
+                } else {
+                    let g = outward_gradient(p);
+                    let len2 = dot(g, g);
+                    if (len2 > 0.0) {
+                        n = g * inverseSqrt(len2);
+                    } else {
+                        n = normalize(select(pa - pb, pb - pa, inside0));
+                    }
+                }
+                write_vertex(index, p, n);
+            }
+            next += 1u;
+        }
+        edge_vertices[(slot * 64u + local) * 3u + axis] = index;
+    }
+}
+
+// The vertex on the edge leaving `cell`'s lowest corner along `axis`, wherever its block's slot is.
+fn vertex_on_edge(cell: vec3<u32>, axis: u32) -> u32 {
+    // A crossed edge never starts on the box's far faces (both its ends would read as outside).
+    if (any(cell >= vec3<u32>(grid.cells_per_axis))) {
+        return INVALID;
+    }
+    let slot = block_slots[block_index(cell / BLOCK_CELLS)];
+    if (slot >= grid.max_blocks) {
+        return INVALID;
+    }
+    let at = cell % BLOCK_CELLS;
+    let local = at.x + BLOCK_CELLS * (at.y + BLOCK_CELLS * at.z);
+    return edge_vertices[(slot * 64u + local) * 3u + axis];
+}
+
+@compute @workgroup_size(64)
+fn make_triangles(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_invocation_index) local: u32) {
+    let slot = slot_of(workgroup);
+    if (slot >= active_slot_count()) {
+        return;
+    }
+    let case_index = cell_cases[slot * 64u + local];
     let entry = case_table[case_index];
     let triangle_count = entry >> 16u;
     if (triangle_count == 0u) {
         return;
     }
-
-    // Each crossed edge's vertex, computed once.
-    var positions: array<vec3<f32>, 12>;
-    var normals: array<vec3<f32>, 12>;
-    for (var e = 0u; e < 12u; e++) {
-        if ((entry & (1u << e)) == 0u) {
-            continue;
-        }
-        let ab = edge_corners(e);
-        let ia = cell + corner_offset(ab.x);
-        let ib = cell + corner_offset(ab.y);
-        let pa = grid_point(ia);
-        let pb = grid_point(ib);
-        let fa = values[ab.x];
-        let fb = values[ab.y];
-        let t = (grid.iso - fa) / (fb - fa);
-        let p = pa + (pb - pa) * t;
-        var n: vec3<f32>;
-        if (is_boundary(ia)) {
-            n = normalize(pa - pb);
-        } else if (is_boundary(ib)) {
-            n = normalize(pb - pa);
-        } else {
-            let g = outward_gradient(p);
-            let len2 = dot(g, g);
-            if (len2 > 0.0) {
-                n = g * inverseSqrt(len2);
-            } else {
-                n = normalize(select(pa - pb, pb - pa, fa > grid.iso));
-            }
-        }
-        positions[e] = p;
-        normals[e] = n;
-    }
-
-    let first = atomicAdd(&counters.vertices_requested, triangle_count * 3u);
+    atomicAdd(&counters.active_cells, 1u);
+    let cell = block_coords(active_blocks[slot]) * BLOCK_CELLS + local_cell(local);
+    let first = atomicAdd(&counters.indices, triangle_count * 3u);
     let row = case_index * 16u;
     for (var k = 0u; k < triangle_count; k++) {
-        let slot = first + 3u * k;
-        // Past the budget: write nothing (the host sees the overflow in the counter).
-        if (slot + 3u > grid.max_vertices) {
+        let slot_index = first + 3u * k;
+        if (slot_index + 3u > grid.max_indices) {
             return;
         }
         // The table winds clockwise seen from outside; emit counter-clockwise.
-        let e0 = u32(triangle_table[row + 3u * k]);
-        let e1 = u32(triangle_table[row + 3u * k + 2u]);
-        let e2 = u32(triangle_table[row + 3u * k + 1u]);
-        write_vertex(slot, positions[e0], normals[e0]);
-        write_vertex(slot + 1u, positions[e1], normals[e1]);
-        write_vertex(slot + 2u, positions[e2], normals[e2]);
+        let edges = vec3<u32>(
+            u32(triangle_table[row + 3u * k]),
+            u32(triangle_table[row + 3u * k + 2u]),
+            u32(triangle_table[row + 3u * k + 1u]),
+        );
+        var triangle = vec3<u32>(0u);
+        var complete = true;
+        for (var j = 0u; j < 3u; j++) {
+            let start = edge_start(edges[j]);
+            let index = vertex_on_edge(cell + start.xyz, start.w);
+            complete = complete && index != INVALID;
+            triangle[j] = index;
+        }
+        // A vertex lost to a full buffer leaves a degenerate triangle, which draws nothing.
+        if (!complete) {
+            triangle = vec3<u32>(0u);
+        }
+        indices[slot_index] = triangle.x;
+        indices[slot_index + 1u] = triangle.y;
+        indices[slot_index + 2u] = triangle.z;
     }
 }
 
-@group(0) @binding(7) var<storage, read_write> draw: DrawIndirect;
+struct DrawIndexedIndirect {
+    index_count: u32,
+    instance_count: u32,
+    first_index: u32,
+    base_vertex: i32,
+    first_instance: u32,
+}
 
-// One invocation: the draw covers the vertices written, never more than the buffer holds.
+@group(0) @binding(12) var<storage, read_write> draw: DrawIndexedIndirect;
+
+// One invocation: the draw covers the indices written, never more than the buffer holds.
 @compute @workgroup_size(1)
 fn finalize_draw() {
-    draw.vertex_count = min(atomicLoad(&counters.vertices_requested), grid.max_vertices);
+    draw.index_count = min(atomicLoad(&counters.indices), grid.max_indices);
     draw.instance_count = 1u;
-    draw.first_vertex = 0u;
+    draw.first_index = 0u;
+    draw.base_vertex = 0;
     draw.first_instance = 0u;
 }

@@ -39,6 +39,8 @@ pub async fn request_device(
         .request_device(&wgpu::DeviceDescriptor {
             label: Some("metaballs device"),
             required_limits: adapter.limits(),
+            // Benchmarks time the stages where the adapter allows it.
+            required_features: adapter.features() & wgpu::Features::TIMESTAMP_QUERY,
             ..Default::default()
         })
         .await
@@ -97,4 +99,48 @@ pub async fn map_and_read(device: &wgpu::Device, buffer: &wgpu::Buffer) -> Vec<u
     let bytes = buffer.get_mapped_range(..).expect("mapped range").to_vec();
     buffer.unmap();
     bytes
+}
+
+/// A compute shader module made of `shaders/common.wgsl` followed by a pass's own source.
+pub(crate) fn compute_module(device: &wgpu::Device, label: &str, source: &str) -> wgpu::ShaderModule {
+    let source = format!("{}\n{source}", include_str!("../shaders/common.wgsl"));
+    device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some(label),
+        source: wgpu::ShaderSource::Wgsl(source.into()),
+    })
+}
+
+/// A compute pipeline for one entry point, its bind group layout derived from what the entry uses.
+pub(crate) fn compute_pipeline(
+    device: &wgpu::Device,
+    label: &str,
+    module: &wgpu::ShaderModule,
+    entry_point: &str,
+) -> wgpu::ComputePipeline {
+    device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+        label: Some(label),
+        layout: None,
+        module,
+        entry_point: Some(entry_point),
+        compilation_options: Default::default(),
+        cache: None,
+    })
+}
+
+/// A bind group for group 0 of `pipeline`, binding whole buffers.
+pub(crate) fn bind_buffers(
+    device: &wgpu::Device,
+    label: &str,
+    pipeline: &wgpu::ComputePipeline,
+    buffers: &[(u32, &wgpu::Buffer)],
+) -> wgpu::BindGroup {
+    let entries: Vec<wgpu::BindGroupEntry> = buffers
+        .iter()
+        .map(|&(binding, buffer)| wgpu::BindGroupEntry { binding, resource: buffer.as_entire_binding() })
+        .collect();
+    device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: Some(label),
+        layout: &pipeline.get_bind_group_layout(0),
+        entries: &entries,
+    })
 }

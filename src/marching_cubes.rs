@@ -1,42 +1,11 @@
-//! The marching-cubes pass (`shaders/marching_cubes.wgsl`): classify cells, append their triangles with
-//! an atomic counter, and turn the count into indirect draw arguments on the GPU.
+//! The marching-cubes passes (`shaders/marching_cubes.wgsl`): vertices on the edges each cell owns, then
+//! triangles as indices into them, then the indexed indirect draw's arguments.
 
-use crate::field_pass::{COMMON_WGSL, SceneBuffers, workgroups};
-use crate::reference::Grid;
+use crate::gpu::{bind_buffers, compute_module, compute_pipeline};
+use crate::mesh_buffers::MeshBuffers;
+use crate::scene_buffers::SceneBuffers;
 use crate::tables::{CASE_TRIANGLES, EDGE_TABLE, TRI_TABLE};
-use crate::uniforms::Counters;
 use wgpu::util::DeviceExt;
-
-/// Bytes of one vertex: position and normal, three f32 each.
-pub const VERTEX_BYTES: u64 = 24;
-/// Bytes of the indirect draw arguments.
-const DRAW_ARGS_BYTES: u64 = 16;
-
-/// Owns the marching-cubes pipelines, the tables on the GPU and, for the current grid, the vertex,
-/// counter and draw-argument buffers.
-pub struct MarchingCubesPass {
-    kernels: Kernels,
-    buffers: MeshBuffers,
-}
-
-/// What does not depend on the grid: pipelines and tables.
-struct Kernels {
-    march: wgpu::ComputePipeline,
-    finalize: wgpu::ComputePipeline,
-    case_table: wgpu::Buffer,
-    triangle_table: wgpu::Buffer,
-}
-
-/// The buffers sized for one grid and triangle budget.
-struct MeshBuffers {
-    grid: Grid,
-    max_vertices: u32,
-    vertices: wgpu::Buffer,
-    counters: wgpu::Buffer,
-    draw_args: wgpu::Buffer,
-    march_group: wgpu::BindGroup,
-    finalize_group: wgpu::BindGroup,
-}
 
 /// The case table as the shader reads it: crossed-edge mask in bits 0..11, triangle count from bit 16.
 pub fn packed_case_table() -> [u32; 256] {
@@ -48,90 +17,29 @@ pub fn flat_triangle_table() -> Vec<i32> {
     TRI_TABLE.iter().flatten().map(|&e| e as i32).collect()
 }
 
-impl MarchingCubesPass {
-    pub fn new(
-        device: &wgpu::Device,
-        scene: &SceneBuffers,
-        field: &wgpu::Buffer,
-        grid: Grid,
-        max_vertices: u32,
-    ) -> Self {
-        let kernels = Kernels::new(device);
-        let buffers = MeshBuffers::new(device, &kernels, scene, field, grid, max_vertices);
-        Self { kernels, buffers }
-    }
-
-    /// Replaces the mesh buffers for a new grid or budget; the old ones are freed.
-    pub fn set_grid(
-        &mut self,
-        device: &wgpu::Device,
-        scene: &SceneBuffers,
-        field: &wgpu::Buffer,
-        grid: Grid,
-        max_vertices: u32,
-    ) {
-        self.buffers.destroy();
-        self.buffers = MeshBuffers::new(device, &self.kernels, scene, field, grid, max_vertices);
-    }
-
-    /// Resets the counter, marches every cell and writes the draw arguments.
-    pub fn encode(&self, encoder: &mut wgpu::CommandEncoder) {
-        let b = &self.buffers;
-        encoder.clear_buffer(&b.counters, 0, None);
-        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
-            label: Some("marching cubes: pass"),
-            timestamp_writes: None,
-        });
-        pass.set_pipeline(&self.kernels.march);
-        pass.set_bind_group(0, &b.march_group, &[]);
-        let groups = workgroups(b.grid.cells_per_axis);
-        pass.dispatch_workgroups(groups, groups, groups);
-        pass.set_pipeline(&self.kernels.finalize);
-        pass.set_bind_group(0, &b.finalize_group, &[]);
-        pass.dispatch_workgroups(1, 1, 1);
-    }
-
-    /// Vertices: position and normal per vertex, three per triangle.
-    pub fn vertices(&self) -> &wgpu::Buffer {
-        &self.buffers.vertices
-    }
-
-    /// The counter block (`Counters`), for statistics.
-    pub fn counters(&self) -> &wgpu::Buffer {
-        &self.buffers.counters
-    }
-
-    /// Arguments for `draw_indirect`.
-    pub fn draw_args(&self) -> &wgpu::Buffer {
-        &self.buffers.draw_args
-    }
-
-    /// Capacity of the vertex buffer.
-    pub fn max_vertices(&self) -> u32 {
-        self.buffers.max_vertices
-    }
+/// Owns the marching-cubes pipelines, the tables on the GPU, and bind groups for the current buffers.
+pub struct MarchingCubesPass {
+    vertices: wgpu::ComputePipeline,
+    triangles: wgpu::ComputePipeline,
+    finalize: wgpu::ComputePipeline,
+    case_table: wgpu::Buffer,
+    triangle_table: wgpu::Buffer,
+    groups: Option<[wgpu::BindGroup; 3]>,
 }
 
-impl Kernels {
-    fn new(device: &wgpu::Device) -> Self {
-        let source = format!("{COMMON_WGSL}\n{}", include_str!("../shaders/marching_cubes.wgsl"));
-        let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("marching cubes: shader"),
-            source: wgpu::ShaderSource::Wgsl(source.into()),
-        });
-        let pipeline = |label, entry_point| {
-            device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-                label: Some(label),
-                layout: None,
-                module: &module,
-                entry_point: Some(entry_point),
-                compilation_options: Default::default(),
-                cache: None,
-            })
-        };
+impl MarchingCubesPass {
+    pub fn new(device: &wgpu::Device) -> Self {
+        let module =
+            compute_module(device, "marching cubes: shader", include_str!("../shaders/marching_cubes.wgsl"));
         Self {
-            march: pipeline("marching cubes: march pipeline", "march_cells"),
-            finalize: pipeline("marching cubes: finalize pipeline", "finalize_draw"),
+            vertices: compute_pipeline(device, "marching cubes: vertex pipeline", &module, "make_vertices"),
+            triangles: compute_pipeline(
+                device,
+                "marching cubes: triangle pipeline",
+                &module,
+                "make_triangles",
+            ),
+            finalize: compute_pipeline(device, "marching cubes: finalize pipeline", &module, "finalize_draw"),
             case_table: device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
                 label: Some("marching cubes: case table"),
                 contents: bytemuck::cast_slice(&packed_case_table()),
@@ -142,65 +50,74 @@ impl Kernels {
                 contents: bytemuck::cast_slice(&flat_triangle_table()),
                 usage: wgpu::BufferUsages::STORAGE,
             }),
+            groups: None,
         }
     }
-}
 
-impl MeshBuffers {
-    fn new(
-        device: &wgpu::Device,
-        kernels: &Kernels,
-        scene: &SceneBuffers,
-        field: &wgpu::Buffer,
-        grid: Grid,
-        max_vertices: u32,
-    ) -> Self {
-        let vertices = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("marching cubes: vertices"),
-            size: max_vertices as u64 * VERTEX_BYTES,
-            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_SRC,
-            mapped_at_creation: false,
-        });
-        let counters = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("marching cubes: counters"),
-            size: std::mem::size_of::<Counters>() as u64,
-            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
-        let draw_args = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("marching cubes: draw arguments"),
-            size: DRAW_ARGS_BYTES,
-            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::INDIRECT,
-            mapped_at_creation: false,
-        });
-        let march_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("marching cubes: march bind group"),
-            layout: &kernels.march.get_bind_group_layout(0),
-            entries: &[
-                wgpu::BindGroupEntry { binding: 0, resource: scene.grid.as_entire_binding() },
-                wgpu::BindGroupEntry { binding: 1, resource: scene.spheres.as_entire_binding() },
-                wgpu::BindGroupEntry { binding: 2, resource: field.as_entire_binding() },
-                wgpu::BindGroupEntry { binding: 3, resource: kernels.case_table.as_entire_binding() },
-                wgpu::BindGroupEntry { binding: 4, resource: kernels.triangle_table.as_entire_binding() },
-                wgpu::BindGroupEntry { binding: 5, resource: vertices.as_entire_binding() },
-                wgpu::BindGroupEntry { binding: 6, resource: counters.as_entire_binding() },
-            ],
-        });
-        let finalize_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("marching cubes: finalize bind group"),
-            layout: &kernels.finalize.get_bind_group_layout(0),
-            entries: &[
-                wgpu::BindGroupEntry { binding: 0, resource: scene.grid.as_entire_binding() },
-                wgpu::BindGroupEntry { binding: 6, resource: counters.as_entire_binding() },
-                wgpu::BindGroupEntry { binding: 7, resource: draw_args.as_entire_binding() },
-            ],
-        });
-        Self { grid, max_vertices, vertices, counters, draw_args, march_group, finalize_group }
+    /// Binds the passes to new buffers.
+    pub fn bind(&mut self, device: &wgpu::Device, scene: &SceneBuffers, mesh: &MeshBuffers) {
+        self.groups = Some([
+            bind_buffers(
+                device,
+                "marching cubes: vertex bind group",
+                &self.vertices,
+                &[
+                    (0, &scene.grid),
+                    (1, &scene.spheres),
+                    (2, &mesh.counters),
+                    (3, &mesh.active_blocks),
+                    (5, &mesh.block_values),
+                    (8, &mesh.cell_cases),
+                    (9, &mesh.edge_vertices),
+                    (10, &mesh.vertices),
+                ],
+            ),
+            bind_buffers(
+                device,
+                "marching cubes: triangle bind group",
+                &self.triangles,
+                &[
+                    (0, &scene.grid),
+                    (2, &mesh.counters),
+                    (3, &mesh.active_blocks),
+                    (4, &mesh.block_slots),
+                    (6, &self.case_table),
+                    (7, &self.triangle_table),
+                    (8, &mesh.cell_cases),
+                    (9, &mesh.edge_vertices),
+                    (11, &mesh.indices),
+                ],
+            ),
+            bind_buffers(
+                device,
+                "marching cubes: finalize bind group",
+                &self.finalize,
+                &[(0, &scene.grid), (2, &mesh.counters), (12, &mesh.draw_args)],
+            ),
+        ]);
     }
 
-    fn destroy(&self) {
-        self.vertices.destroy();
-        self.counters.destroy();
-        self.draw_args.destroy();
+    /// Vertices, then triangles, then the draw arguments, over the active blocks.
+    pub fn encode(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        mesh: &MeshBuffers,
+        timestamp_writes: Option<wgpu::ComputePassTimestampWrites>,
+    ) {
+        let [vertices, triangles, finalize] =
+            self.groups.as_ref().expect("MarchingCubesPass::bind before encode");
+        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+            label: Some("marching cubes: pass"),
+            timestamp_writes,
+        });
+        pass.set_pipeline(&self.vertices);
+        pass.set_bind_group(0, vertices, &[]);
+        pass.dispatch_workgroups_indirect(&mesh.dispatch, 0);
+        pass.set_pipeline(&self.triangles);
+        pass.set_bind_group(0, triangles, &[]);
+        pass.dispatch_workgroups_indirect(&mesh.dispatch, 0);
+        pass.set_pipeline(&self.finalize);
+        pass.set_bind_group(0, finalize, &[]);
+        pass.dispatch_workgroups(1, 1, 1);
     }
 }

@@ -18,6 +18,8 @@ pub struct Mesh {
 #[derive(Clone, Debug, Default)]
 pub struct IndexedMesh {
     pub positions: Vec<Vec3>,
+    /// Unit normals pointing out of the surface, one per vertex.
+    pub normals: Vec<Vec3>,
     pub triangles: Vec<[u32; 3]>,
 }
 
@@ -62,6 +64,7 @@ impl Mesh {
         for i in 0..self.positions.len() {
             let id = *index.entry(key(i)).or_insert_with(|| {
                 out.positions.push(self.positions[i]);
+                out.normals.push(self.normals[i]);
                 out.positions.len() as u32 - 1
             });
             ids.push(id);
@@ -128,6 +131,16 @@ impl Mesh {
 }
 
 impl IndexedMesh {
+    /// The same triangles as a soup.
+    pub fn to_soup(&self) -> Mesh {
+        let corners = self.triangles.iter().flatten().map(|&i| i as usize);
+        Mesh {
+            positions: corners.clone().map(|i| self.positions[i]).collect(),
+            normals: corners.map(|i| self.normals[i]).collect(),
+            edge_ids: Vec::new(),
+        }
+    }
+
     /// Edge use, orientation and per-component Euler characteristic.
     pub fn topology(&self) -> Topology {
         let mut directed: HashMap<(u32, u32), u32> = HashMap::new();

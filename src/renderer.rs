@@ -1,23 +1,22 @@
 //! One renderer for every output: it owns the scene, the settings and the passes, and draws a frame into
 //! any texture view of its format (a canvas's current texture or an offscreen texture).
 
-use crate::field_pass::{FieldPass, SceneBuffers, field_bytes, workgroups};
-use crate::marching_cubes::{MarchingCubesPass, VERTEX_BYTES};
-use crate::mesh::Mesh;
-use crate::params::{
-    self, Camera, MAX_RESOLUTION, MAX_SPHERES, MIN_RESOLUTION, Material, ParamError, Settings,
-};
+use crate::blocks::BlockPass;
+use crate::field_pass::FieldPass;
+use crate::gpu::read_buffer;
+use crate::marching_cubes::MarchingCubesPass;
+use crate::mesh::IndexedMesh;
+use crate::mesh_buffers::{BLOCK_CELLS, Capacity, INDEX_BYTES, MeshBuffers, VERTEX_BYTES};
+use crate::params::{self, Camera, MAX_RESOLUTION, MIN_RESOLUTION, Material, ParamError, Settings};
 use crate::reference::Grid;
 use crate::scene::{BOX_HALF_EXTENT, Scene};
+use crate::scene_buffers::SceneBuffers;
 use crate::shade::ShadePass;
+use crate::timing::{StageTimes, Timing};
 use crate::uniforms::{Counters, GridUniform, ShadingUniform};
-use glam::Vec3;
+use glam::{UVec3, Vec3};
 use std::sync::atomic::{AtomicU8, Ordering};
 use std::sync::{Arc, Mutex};
-
-/// Triangles the vertex buffer holds per cell of one face of the grid: a surface crossing the grid
-/// emits about two triangles per cell of its area, and this leaves room for several such sheets.
-pub const TRIANGLES_PER_FACE_CELL: u64 = 16;
 
 /// What the GPU reported for a past frame (a frame or two late; nothing waits for it).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -26,16 +25,31 @@ pub struct FrameStats {
     pub frame: u64,
     /// Triangles written and drawn.
     pub triangles: u32,
-    /// Triangles the surface needed; above `max_triangles` when the budget overflowed.
+    /// Triangles the surface needed; more than `max_triangles` when the index buffer overflowed.
     pub triangles_requested: u32,
-    /// Capacity of the vertex buffer, in triangles.
+    /// Capacity of the index buffer, in triangles.
     pub max_triangles: u32,
+    /// Shared vertices the surface needed.
+    pub vertices: u32,
+    /// Blocks of 4³ cells the surface may cross (the others were skipped).
+    pub active_blocks: u32,
+    /// Blocks in the grid.
+    pub total_blocks: u32,
+    /// Cells that emitted triangles.
+    pub active_cells: u32,
+    /// Cells in the grid.
+    pub total_cells: u32,
+    /// True when some buffer was too small for this frame, so part of the surface was not drawn (the
+    /// buffers grow for the next frames).
+    pub overflowed: bool,
+    /// GPU memory held by the mesh buffers, in bytes.
+    pub mesh_bytes: u64,
 }
 
 impl FrameStats {
-    /// True when the surface needed more triangles than the buffer holds, so some were not drawn.
+    /// True when the surface needed more room than the buffers had, so some of it was not drawn.
     pub fn overflowed(&self) -> bool {
-        self.triangles_requested > self.max_triangles
+        self.overflowed
     }
 }
 
@@ -49,10 +63,19 @@ struct StatsSlot {
     buffer: wgpu::Buffer,
     state: Arc<AtomicU8>,
     frame: u64,
-    max_triangles: u32,
+    capacity: Capacity,
 }
 
-/// Draws merging spheres: field, marching cubes and shading, every frame on the GPU.
+/// How the buffers are sized.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Sizing {
+    /// Start from `Capacity::for_grid` and grow when a frame reports it needed more.
+    Automatic,
+    /// A fixed triangle budget (tests and tools); overflow is reported, nothing grows.
+    FixedTriangles(u32),
+}
+
+/// Draws merging spheres: block skipping, field, marching cubes and shading, every frame on the GPU.
 pub struct Renderer {
     device: wgpu::Device,
     queue: wgpu::Queue,
@@ -61,15 +84,19 @@ pub struct Renderer {
     settings: Settings,
     scene: Scene,
     scene_buffers: SceneBuffers,
+    mesh: MeshBuffers,
+    blocks: BlockPass,
     field: FieldPass,
     marching: MarchingCubesPass,
     shade: ShadePass,
+    sizing: Sizing,
+    /// Capacity a past frame asked for, applied before the next one.
+    pending_capacity: Option<Capacity>,
     stats_slots: Vec<StatsSlot>,
     latest_stats: Option<FrameStats>,
     frame: u64,
+    timing: Option<Timing>,
     gpu_error: Arc<Mutex<Option<String>>>,
-    /// A triangle budget set by hand, replacing the one derived from the resolution.
-    budget_override: Option<u32>,
 }
 
 impl Renderer {
@@ -95,39 +122,27 @@ impl Renderer {
             sink.lock().unwrap_or_else(|e| e.into_inner()).get_or_insert(message);
         }));
 
-        let scene_buffers = SceneBuffers {
-            grid: device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some("scene: grid uniforms"),
-                size: std::mem::size_of::<GridUniform>() as u64,
-                usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-                mapped_at_creation: false,
-            }),
-            spheres: device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some("scene: spheres"),
-                size: MAX_SPHERES as u64 * 16,
-                usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
-                mapped_at_creation: false,
-            }),
-        };
+        let scene_buffers = SceneBuffers::new(&device);
         let grid = Grid { cells_per_axis: settings.resolution };
-        let field = FieldPass::new(&device, &scene_buffers, grid);
-        let max_vertices = vertex_budget(&device, settings.resolution);
-        let marching = MarchingCubesPass::new(&device, &scene_buffers, field.field(), grid, max_vertices);
-        let shade = ShadePass::new(&device, format, width, height);
-        let stats_slots = (0..STATS_SLOTS)
-            .map(|_| StatsSlot {
-                buffer: device.create_buffer(&wgpu::BufferDescriptor {
-                    label: Some("stats: staging"),
-                    size: std::mem::size_of::<Counters>() as u64,
-                    usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-                    mapped_at_creation: false,
-                }),
-                state: Arc::new(AtomicU8::new(SLOT_FREE)),
-                frame: 0,
-                max_triangles: 0,
-            })
-            .collect();
-        Ok(Self {
+        let mesh = MeshBuffers::new(&device, grid, automatic_capacity(&device, grid));
+        let mut renderer = Self {
+            blocks: BlockPass::new(&device),
+            field: FieldPass::new(&device),
+            marching: MarchingCubesPass::new(&device),
+            shade: ShadePass::new(&device, format, width, height),
+            stats_slots: (0..STATS_SLOTS)
+                .map(|_| StatsSlot {
+                    buffer: device.create_buffer(&wgpu::BufferDescriptor {
+                        label: Some("stats: staging"),
+                        size: std::mem::size_of::<Counters>() as u64,
+                        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+                        mapped_at_creation: false,
+                    }),
+                    state: Arc::new(AtomicU8::new(SLOT_FREE)),
+                    frame: 0,
+                    capacity: mesh.capacity,
+                })
+                .collect(),
             device,
             queue,
             format,
@@ -135,15 +150,16 @@ impl Renderer {
             settings,
             scene,
             scene_buffers,
-            field,
-            marching,
-            shade,
-            stats_slots,
+            mesh,
+            sizing: Sizing::Automatic,
+            pending_capacity: None,
             latest_stats: None,
             frame: 0,
+            timing: None,
             gpu_error,
-            budget_override: None,
-        })
+        };
+        renderer.bind_passes();
+        Ok(renderer)
     }
 
     /// The queue frames are submitted on.
@@ -174,6 +190,16 @@ impl Renderer {
     /// The largest resolution this device holds.
     pub fn max_resolution(&self) -> u32 {
         max_resolution(&self.device)
+    }
+
+    /// What the mesh buffers hold now.
+    pub fn capacity(&self) -> Capacity {
+        self.mesh.capacity
+    }
+
+    /// GPU memory held by the mesh buffers, in bytes.
+    pub fn mesh_bytes(&self) -> u64 {
+        self.mesh.bytes()
     }
 
     /// The newest statistics the GPU has reported, if any yet.
@@ -208,7 +234,7 @@ impl Renderer {
         let resolution_changed = settings.resolution != self.settings.resolution;
         self.settings = settings;
         if resolution_changed {
-            self.allocate_grid(settings.resolution);
+            self.reallocate(self.starting_capacity());
         }
         Ok(())
     }
@@ -259,38 +285,63 @@ impl Renderer {
         self.scene = scene;
     }
 
-    /// Sets how many triangles the vertex buffer holds, replacing the budget derived from the
-    /// resolution (`None` returns to it). Past the budget, triangles are dropped and `stats` says so.
+    /// Fixes the triangle budget (`None` returns to buffers that grow with the surface). Past a fixed
+    /// budget, triangles are dropped and `stats` says so.
     pub fn set_max_triangles(&mut self, max_triangles: Option<u32>) -> Result<(), ParamError> {
-        if let Some(n) = max_triangles {
-            let fits = (storage_limit(&self.device) / (3 * VERTEX_BYTES)).min(u32::MAX as u64 / 3) as u32;
-            params::check_u32("triangle budget", n, 1, fits)?;
-        }
-        self.budget_override = max_triangles;
-        self.allocate_grid(self.settings.resolution);
+        self.sizing = match max_triangles {
+            Some(n) => {
+                let fits = Capacity::largest(self.grid(), storage_limit(&self.device)).indices / 3;
+                Sizing::FixedTriangles(params::check_u32("triangle budget", n, 1, fits)?)
+            }
+            None => Sizing::Automatic,
+        };
+        self.reallocate(self.starting_capacity());
         Ok(())
     }
 
-    fn allocate_grid(&mut self, cells_per_axis: u32) {
-        let grid = Grid { cells_per_axis };
-        self.field.set_grid(&self.device, &self.scene_buffers, grid);
-        let max_vertices = match self.budget_override {
-            Some(triangles) => triangles * 3,
-            None => vertex_budget(&self.device, cells_per_axis),
-        };
-        self.marching.set_grid(&self.device, &self.scene_buffers, self.field.field(), grid, max_vertices);
+    fn grid(&self) -> Grid {
+        Grid { cells_per_axis: self.settings.resolution }
+    }
+
+    fn starting_capacity(&self) -> Capacity {
+        let automatic = automatic_capacity(&self.device, self.grid());
+        match self.sizing {
+            Sizing::Automatic => automatic,
+            Sizing::FixedTriangles(n) => Capacity {
+                blocks: Capacity::largest(self.grid(), storage_limit(&self.device)).blocks,
+                indices: 3 * n,
+                ..automatic
+            },
+        }
+    }
+
+    fn reallocate(&mut self, capacity: Capacity) {
+        self.mesh.destroy();
+        self.mesh = MeshBuffers::new(&self.device, self.grid(), capacity);
+        self.pending_capacity = None;
+        self.bind_passes();
+    }
+
+    fn bind_passes(&mut self) {
+        self.blocks.bind(&self.device, &self.scene_buffers, &self.mesh);
+        self.field.bind(&self.device, &self.scene_buffers, &self.mesh);
+        self.marching.bind(&self.device, &self.scene_buffers, &self.mesh);
     }
 
     fn write_uniforms(&self) {
-        let grid = Grid { cells_per_axis: self.settings.resolution };
+        let grid = self.grid();
         let spheres = self.scene.spheres();
+        let capacity = self.mesh.capacity;
         let grid_uniform = GridUniform {
             box_min: [-BOX_HALF_EXTENT; 3],
             cell_size: grid.cell_size(),
             iso: self.settings.iso,
             cells_per_axis: grid.cells_per_axis,
             sphere_count: spheres.len() as u32,
-            max_vertices: self.marching.max_vertices(),
+            max_blocks: capacity.blocks,
+            max_vertices: capacity.vertices,
+            max_indices: capacity.indices,
+            _pad: [0; 2],
         };
         self.queue.write_buffer(&self.scene_buffers.grid, 0, bytemuck::bytes_of(&grid_uniform));
         let packed: Vec<[f32; 4]> = spheres.iter().map(|s| s.to_gpu()).collect();
@@ -322,32 +373,45 @@ impl Renderer {
         self.queue.write_buffer(self.shade.uniform(), 0, bytemuck::bytes_of(&shading));
     }
 
-    /// Runs the field and marching-cubes passes into `encoder`.
-    fn encode_extraction(&self, encoder: &mut wgpu::CommandEncoder) {
-        self.field.encode(encoder);
-        self.marching.encode(encoder);
+    /// Records the extraction passes: blocks, field, marching cubes.
+    fn encode_extraction(&self, encoder: &mut wgpu::CommandEncoder, timed: bool) {
+        let timing = self.timing.as_ref().filter(|_| timed);
+        self.blocks.encode(encoder, &self.mesh, timing.map(|t| t.compute_writes(0)));
+        self.field.encode(encoder, &self.mesh, timing.map(|t| t.compute_writes(1)));
+        self.marching.encode(encoder, &self.mesh, timing.map(|t| t.compute_writes(2)));
     }
 
     /// Draws one frame into `view` (a texture of this renderer's format and size). Never waits on the
     /// GPU: statistics come back asynchronously through `stats`.
     pub fn render(&mut self, view: &wgpu::TextureView) {
+        self.render_frame(view, false);
+    }
+
+    fn render_frame(&mut self, view: &wgpu::TextureView, timed: bool) {
         self.collect_stats();
+        if let Some(capacity) = self.pending_capacity.take() {
+            self.reallocate(capacity);
+        }
         self.write_uniforms();
         self.frame += 1;
         let mut encoder = self
             .device
             .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("frame: encoder") });
-        self.encode_extraction(&mut encoder);
-        self.shade.encode(&mut encoder, view, self.marching.vertices(), self.marching.draw_args());
+        self.encode_extraction(&mut encoder, timed);
+        let timing = self.timing.as_ref().filter(|_| timed);
+        self.shade.encode(&mut encoder, view, &self.mesh, timing.map(|t| t.render_writes(3)));
+        if let Some(timing) = timing {
+            timing.resolve(&mut encoder);
+        }
         // With every staging buffer still in flight, this frame's figures are skipped.
         let slot = self.stats_slots.iter_mut().find(|s| s.state.load(Ordering::Acquire) == SLOT_FREE);
         if let Some(slot) = &slot {
-            encoder.copy_buffer_to_buffer(self.marching.counters(), 0, &slot.buffer, 0, None);
+            encoder.copy_buffer_to_buffer(&self.mesh.counters, 0, &slot.buffer, 0, None);
         }
         self.queue.submit([encoder.finish()]);
         if let Some(slot) = slot {
             slot.frame = self.frame;
-            slot.max_triangles = self.marching.max_vertices() / 3;
+            slot.capacity = self.mesh.capacity;
             slot.state.store(SLOT_PENDING, Ordering::Release);
             let state = slot.state.clone();
             slot.buffer.map_async(wgpu::MapMode::Read, .., move |result| {
@@ -356,10 +420,31 @@ impl Renderer {
         }
     }
 
-    /// Reads the statistics whose buffers have been mapped since the last call.
+    /// Asks the device for timestamp queries, if it has them, so that `render_timed` can report the
+    /// GPU time of each stage. Returns whether it can.
+    pub fn enable_timing(&mut self) -> bool {
+        if self.timing.is_none() {
+            self.timing = Timing::new(&self.device, &self.queue);
+        }
+        self.timing.is_some()
+    }
+
+    /// Draws a frame like `render` and waits for the GPU time of each stage (tools and benchmarks; it
+    /// stalls). `None` without timestamp queries (`enable_timing`).
+    pub async fn render_timed(&mut self, view: &wgpu::TextureView) -> Option<StageTimes> {
+        self.timing.as_ref()?;
+        self.render_frame(view, true);
+        let timing = self.timing.as_ref()?;
+        Some(timing.read(&self.device, &self.queue).await)
+    }
+
+    /// Reads the statistics whose buffers have been mapped since the last call, and plans larger
+    /// buffers when a frame overflowed.
     fn collect_stats(&mut self) {
         #[cfg(not(target_arch = "wasm32"))]
         let _ = self.device.poll(wgpu::PollType::Poll);
+        let grid = self.grid();
+        let total_blocks = grid.cells_per_axis.div_ceil(BLOCK_CELLS).pow(3);
         for slot in &mut self.stats_slots {
             if slot.state.load(Ordering::Acquire) != SLOT_READY {
                 continue;
@@ -370,89 +455,114 @@ impl Renderer {
             };
             slot.buffer.unmap();
             slot.state.store(SLOT_FREE, Ordering::Release);
-            let requested = counters.vertices_requested / 3;
+            let capacity = slot.capacity;
             let stats = FrameStats {
                 frame: slot.frame,
-                triangles: requested.min(slot.max_triangles),
-                triangles_requested: requested,
-                max_triangles: slot.max_triangles,
+                triangles: counters.indices.min(capacity.indices) / 3,
+                triangles_requested: counters.indices / 3,
+                max_triangles: capacity.indices / 3,
+                vertices: counters.vertices,
+                active_blocks: counters.active_blocks,
+                total_blocks,
+                active_cells: counters.active_cells,
+                total_cells: grid.cells_per_axis.pow(3),
+                overflowed: !capacity.holds(&counters),
+                mesh_bytes: self.mesh.bytes(),
             };
             if self.latest_stats.is_none_or(|s| s.frame < stats.frame) {
                 self.latest_stats = Some(stats);
+            }
+            // Grow once per size: figures from frames drawn with smaller buffers than now are stale.
+            let current = self.pending_capacity.unwrap_or(self.mesh.capacity);
+            if stats.overflowed && self.sizing == Sizing::Automatic && capacity == self.mesh.capacity {
+                let largest = Capacity::largest(grid, storage_limit(&self.device));
+                let grown = current.grown_for(&counters).min(largest);
+                if grown != current {
+                    self.pending_capacity = Some(grown);
+                }
             }
         }
     }
 
     /// Waits until the statistics of every submitted frame are in (tests and tools).
     pub async fn flush_stats(&mut self) {
-        for slot in &self.stats_slots {
-            if slot.state.load(Ordering::Acquire) == SLOT_PENDING {
-                let (sender, receiver) = futures_channel::oneshot::channel::<()>();
-                // Queue work done implies earlier map callbacks have run.
-                self.queue.on_submitted_work_done(move || {
-                    let _ = sender.send(());
-                });
-                #[cfg(not(target_arch = "wasm32"))]
-                let _ = self.device.poll(wgpu::PollType::wait_indefinitely());
-                let _ = receiver.await;
-                break;
-            }
+        if self.stats_slots.iter().any(|s| s.state.load(Ordering::Acquire) == SLOT_PENDING) {
+            let (sender, receiver) = futures_channel::oneshot::channel::<()>();
+            // Queue work done implies earlier map callbacks have run.
+            self.queue.on_submitted_work_done(move || {
+                let _ = sender.send(());
+            });
+            #[cfg(not(target_arch = "wasm32"))]
+            let _ = self.device.poll(wgpu::PollType::wait_indefinitely());
+            let _ = receiver.await;
         }
         self.collect_stats();
     }
 
-    /// Extracts the surface for the current state and reads the mesh back. Waits for the GPU: for tests
-    /// and tools, not the frame loop.
-    pub async fn extract_mesh(&mut self) -> Mesh {
+    async fn run_extraction(&mut self) -> Counters {
         self.write_uniforms();
         let mut encoder = self
             .device
             .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("extract: encoder") });
-        self.encode_extraction(&mut encoder);
+        self.encode_extraction(&mut encoder, false);
         self.queue.submit([encoder.finish()]);
-        let counters = crate::gpu::read_buffer(
-            &self.device,
-            &self.queue,
-            self.marching.counters(),
-            0,
-            std::mem::size_of::<Counters>() as u64,
-        )
-        .await;
-        let counters: Counters = bytemuck::pod_read_unaligned(&counters);
-        let vertex_count = counters.vertices_requested.min(self.marching.max_vertices());
-        let bytes = crate::gpu::read_buffer(
-            &self.device,
-            &self.queue,
-            self.marching.vertices(),
-            0,
-            vertex_count as u64 * VERTEX_BYTES,
-        )
-        .await;
-        let floats: &[[f32; 6]] = bytemuck::cast_slice(&bytes);
-        Mesh {
+        let bytes = read_buffer(&self.device, &self.queue, &self.mesh.counters, 0, 16).await;
+        bytemuck::pod_read_unaligned(&bytes)
+    }
+
+    /// Extracts the surface for the current state and reads the indexed mesh back, growing the buffers
+    /// first if the surface needs it (unless the budget is fixed). Waits for the GPU: for tests and
+    /// tools, not the frame loop.
+    pub async fn extract_mesh(&mut self) -> IndexedMesh {
+        let mut counters = self.run_extraction().await;
+        while self.sizing == Sizing::Automatic && !self.mesh.capacity.holds(&counters) {
+            let largest = Capacity::largest(self.grid(), storage_limit(&self.device));
+            let grown = self.mesh.capacity.grown_for(&counters).min(largest);
+            if grown == self.mesh.capacity {
+                break;
+            }
+            self.reallocate(grown);
+            counters = self.run_extraction().await;
+        }
+        let capacity = self.mesh.capacity;
+        let vertex_count = counters.vertices.min(capacity.vertices) as u64;
+        let index_count = counters.indices.min(capacity.indices) as u64;
+        let vertex_bytes =
+            read_buffer(&self.device, &self.queue, &self.mesh.vertices, 0, vertex_count * VERTEX_BYTES).await;
+        let index_bytes =
+            read_buffer(&self.device, &self.queue, &self.mesh.indices, 0, index_count * INDEX_BYTES).await;
+        let floats: &[[f32; 6]] = bytemuck::cast_slice(&vertex_bytes);
+        let indices: &[u32] = bytemuck::cast_slice(&index_bytes);
+        IndexedMesh {
             positions: floats.iter().map(|v| Vec3::new(v[0], v[1], v[2])).collect(),
             normals: floats.iter().map(|v| Vec3::new(v[3], v[4], v[5])).collect(),
-            edge_ids: Vec::new(),
+            triangles: indices.chunks(3).map(|t| [t[0], t[1], t[2]]).collect(),
         }
     }
 
-    /// The field values of the current state, `(resolution + 1)³`, x fastest (tests and tools).
-    pub async fn extract_field(&mut self) -> Vec<f32> {
-        self.write_uniforms();
-        let mut encoder = self.device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
-            label: Some("field readback: encoder"),
-        });
-        self.field.encode(&mut encoder);
-        self.queue.submit([encoder.finish()]);
-        let bytes = crate::gpu::read_buffer(
-            &self.device,
-            &self.queue,
-            self.field.field(),
-            0,
-            field_bytes(self.settings.resolution),
-        )
-        .await;
-        bytemuck::cast_slice(&bytes).to_vec()
+    /// The field values the GPU computed for the current state: every grid point of every active block,
+    /// with its grid coordinates (a point on a face between blocks appears once per block).
+    pub async fn extract_field(&mut self) -> Vec<(UVec3, f32)> {
+        let counters = self.run_extraction().await;
+        let active = counters.active_blocks.min(self.mesh.capacity.blocks) as u64;
+        let blocks = read_buffer(&self.device, &self.queue, &self.mesh.active_blocks, 0, active * 4).await;
+        let values = read_buffer(&self.device, &self.queue, &self.mesh.block_values, 0, active * 500).await;
+        let blocks: &[u32] = bytemuck::cast_slice(&blocks);
+        let values: &[f32] = bytemuck::cast_slice(&values);
+        let n = self.settings.resolution;
+        let per_axis = n.div_ceil(BLOCK_CELLS);
+        let mut points = Vec::new();
+        for (slot, &block) in blocks.iter().enumerate() {
+            let coords =
+                UVec3::new(block % per_axis, (block / per_axis) % per_axis, block / (per_axis * per_axis));
+            for i in 0..125u32 {
+                let id = coords * BLOCK_CELLS + UVec3::new(i % 5, (i / 5) % 5, i / 25);
+                if id.max_element() <= n {
+                    points.push((id, values[slot * 125 + i as usize]));
+                }
+            }
+        }
+        points
     }
 }
 
@@ -468,15 +578,12 @@ fn storage_limit(device: &wgpu::Device) -> u64 {
     limits.max_storage_buffer_binding_size.min(limits.max_buffer_size)
 }
 
-/// The vertex buffer's capacity at a resolution: `TRIANGLES_PER_FACE_CELL` per cell of a face, within the
-/// device's largest storage binding.
-fn vertex_budget(device: &wgpu::Device, cells_per_axis: u32) -> u32 {
-    let wanted = TRIANGLES_PER_FACE_CELL * (cells_per_axis as u64).pow(2);
-    let fits = storage_limit(device) / (3 * VERTEX_BYTES);
-    (wanted.min(fits).min(u32::MAX as u64 / 3) * 3) as u32
+fn automatic_capacity(device: &wgpu::Device, grid: Grid) -> Capacity {
+    Capacity::for_grid(grid).min(Capacity::largest(grid, storage_limit(device)))
 }
 
-/// The largest resolution whose field fits the device.
+/// The largest resolution this device can run: its block table must fit one storage binding and its
+/// block pass one dispatch.
 pub fn max_resolution(device: &wgpu::Device) -> u32 {
     (MIN_RESOLUTION..=MAX_RESOLUTION)
         .rev()
@@ -485,20 +592,21 @@ pub fn max_resolution(device: &wgpu::Device) -> u32 {
 }
 
 fn resolution_fits(device: &wgpu::Device, cells_per_axis: u32) -> Result<(), String> {
-    let limits = device.limits();
-    let needed = field_bytes(cells_per_axis);
+    let blocks = (cells_per_axis.div_ceil(BLOCK_CELLS) as u64).pow(3);
+    let needed = blocks * 4;
     if needed > storage_limit(device) {
         return Err(format!(
-            "its field needs {:.1} MiB but the device's max_storage_buffer_binding_size is {:.1} MiB",
+            "its block table needs {:.1} MiB but the device's max_storage_buffer_binding_size is {:.1} MiB",
             needed as f64 / 1048576.0,
             storage_limit(device) as f64 / 1048576.0
         ));
     }
-    let groups = workgroups(cells_per_axis + 1);
-    if groups > limits.max_compute_workgroups_per_dimension {
+    let groups = blocks.div_ceil(64);
+    let max_groups = device.limits().max_compute_workgroups_per_dimension as u64;
+    if groups > max_groups {
         return Err(format!(
-            "it needs {groups} workgroups per axis but the device's max_compute_workgroups_per_dimension is {}",
-            limits.max_compute_workgroups_per_dimension
+            "it needs {groups} workgroups in one dispatch but the device's max_compute_workgroups_per_dimension \
+             is {max_groups}"
         ));
     }
     Ok(())

@@ -1,7 +1,7 @@
 //! The shading pass (`shaders/shade.wgsl`): background, then the surface with Blinn-Phong, multisampled
 //! and depth-tested, resolved into the caller's texture view.
 
-use crate::marching_cubes::VERTEX_BYTES;
+use crate::mesh_buffers::{MeshBuffers, VERTEX_BYTES};
 use crate::uniforms::ShadingUniform;
 
 /// Samples per pixel; 4 is supported for every renderable format WebGPU guarantees.
@@ -137,13 +137,13 @@ impl ShadePass {
         &self.uniform
     }
 
-    /// Draws the background and `draw_args`' vertices of `vertices` into `view`.
+    /// Draws the background, the box and the mesh (as far as its indirect draw arguments say) into `view`.
     pub fn encode(
         &self,
         encoder: &mut wgpu::CommandEncoder,
         view: &wgpu::TextureView,
-        vertices: &wgpu::Buffer,
-        draw_args: &wgpu::Buffer,
+        mesh: &MeshBuffers,
+        timestamp_writes: Option<wgpu::RenderPassTimestampWrites>,
     ) {
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("shade: pass"),
@@ -164,6 +164,7 @@ impl ShadePass {
                 }),
                 stencil_ops: None,
             }),
+            timestamp_writes,
             ..Default::default()
         });
         pass.set_bind_group(0, &self.bind_group, &[]);
@@ -172,8 +173,9 @@ impl ShadePass {
         pass.set_pipeline(&self.box_edges);
         pass.draw(0..24, 0..1);
         pass.set_pipeline(&self.surface);
-        pass.set_vertex_buffer(0, vertices.slice(..));
-        pass.draw_indirect(draw_args, 0);
+        pass.set_vertex_buffer(0, mesh.vertices.slice(..));
+        pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
+        pass.draw_indexed_indirect(&mesh.draw_args, 0);
     }
 }
 

@@ -1,9 +1,9 @@
-//! Uniform blocks as the shaders read them: `#[repr(C)]` mirrors of the WGSL structs, with their sizes
-//! checked at compile time.
+//! Uniform and storage blocks as the shaders read them: `#[repr(C)]` mirrors of the WGSL structs, with
+//! their sizes checked at compile time.
 
 use bytemuck::{Pod, Zeroable};
 
-/// The grid and iso level, for the field and marching-cubes passes (`Grid` in `shaders/common.wgsl`).
+/// The grid, iso level and buffer capacities, for the compute passes (`Grid` in `shaders/common.wgsl`).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, Pod, Zeroable, PartialEq)]
 pub struct GridUniform {
@@ -12,10 +12,12 @@ pub struct GridUniform {
     pub iso: f32,
     pub cells_per_axis: u32,
     pub sphere_count: u32,
-    /// Capacity of the vertex buffer; the pass writes no vertex past it.
+    pub max_blocks: u32,
     pub max_vertices: u32,
+    pub max_indices: u32,
+    pub _pad: [u32; 2],
 }
-const _: () = assert!(std::mem::size_of::<GridUniform>() == 32);
+const _: () = assert!(std::mem::size_of::<GridUniform>() == 48);
 
 /// Camera, light and material for the shading pass (`Shading` in `shaders/shade.wgsl`).
 #[repr(C)]
@@ -35,10 +37,14 @@ pub struct ShadingUniform {
 }
 const _: () = assert!(std::mem::size_of::<ShadingUniform>() == 128);
 
-/// The counter block the marching-cubes pass appends with (`Counters` in `shaders/marching_cubes.wgsl`).
+/// The counts the passes append with (`Counters` in `shaders/common.wgsl`); a count above its
+/// capacity means that buffer overflowed.
 #[repr(C)]
-#[derive(Clone, Copy, Debug, Default, Pod, Zeroable, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, Pod, Zeroable, PartialEq, Eq)]
 pub struct Counters {
-    pub vertices_requested: u32,
+    pub active_blocks: u32,
+    pub vertices: u32,
+    pub indices: u32,
+    pub active_cells: u32,
 }
-const _: () = assert!(std::mem::size_of::<Counters>() == 4);
+const _: () = assert!(std::mem::size_of::<Counters>() == 16);

@@ -18,7 +18,7 @@ fn assert_gpu_matches_oracle(offscreen: &mut metaballs::offscreen::Offscreen, wh
         println!("{what}: iso {} moved to {iso}, away from samples that round differently", settings.iso);
     }
     offscreen.renderer.set_iso(iso).unwrap();
-    let gpu = pollster::block_on(offscreen.renderer.extract_mesh());
+    let gpu = pollster::block_on(offscreen.renderer.extract_mesh()).to_soup();
     let cpu = reference::extract(&spheres, iso, grid);
     assert!(cpu.triangle_count() > 0, "{what}: the oracle found no surface");
     assert_eq!(gpu.triangle_count(), cpu.triangle_count(), "{what}: triangle counts differ");
@@ -33,13 +33,15 @@ fn assert_gpu_matches_oracle(offscreen: &mut metaballs::offscreen::Offscreen, wh
 fn gpu_field_matches_the_oracle() {
     // 16 spheres, so up to 16 rounded divisions and additions per sample.
     with_renderer(settings(5, 16, 48, 1.0), 16, 16, |o| {
+        let grid = Grid { cells_per_axis: 48 };
         let gpu = pollster::block_on(o.renderer.extract_field());
-        let cpu = reference::sample_field(o.renderer.scene().spheres(), Grid { cells_per_axis: 48 });
-        assert_eq!(gpu.len(), cpu.len());
+        let cpu = reference::sample_field(o.renderer.scene().spheres(), grid);
+        assert!(gpu.len() > 1000, "only {} points evaluated", gpu.len());
         let mut worst = 0.0f32;
-        for (i, (g, c)) in gpu.iter().zip(&cpu).enumerate() {
-            let relative = (g - c).abs() / c.abs().max(f32::MIN_POSITIVE);
-            assert!(relative <= FIELD_RELATIVE_TOLERANCE, "point {i}: GPU {g}, oracle {c}");
+        for (id, g) in gpu {
+            let c = cpu[grid.point_index(id)];
+            let relative = if c == 0.0 { g.abs() } else { (g - c).abs() / c.abs() };
+            assert!(relative <= FIELD_RELATIVE_TOLERANCE, "point {id}: GPU {g}, oracle {c}");
             worst = worst.max(relative);
         }
         println!("largest relative difference: {worst:e}");
@@ -107,6 +109,7 @@ fn a_sphere_centred_on_a_grid_point_stays_finite() {
     with_renderer(settings(1, 1, 32, 1.0), 16, 16, |o| {
         o.renderer.set_scene(scene);
         let mesh = pollster::block_on(o.renderer.extract_mesh());
+        assert!(!mesh.triangles.is_empty());
         assert!(mesh.positions.iter().chain(&mesh.normals).all(|v| v.is_finite()));
         assert_gpu_matches_oracle(o, "sphere on a grid point");
     });

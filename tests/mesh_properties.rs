@@ -9,18 +9,19 @@ use glam::{DVec3, Vec3};
 use metaballs::reference::{self, Grid};
 use metaballs::{Scene, Sphere};
 
-fn gpu_mesh(scene: &Scene, iso: f32, resolution: u32) -> metaballs::mesh::Mesh {
+fn gpu_mesh(scene: &Scene, iso: f32, resolution: u32) -> metaballs::mesh::IndexedMesh {
     with_renderer(settings(1, 1, resolution, iso), 16, 16, |o| {
         o.renderer.set_scene(scene.clone());
         pollster::block_on(o.renderer.extract_mesh())
     })
 }
 
-/// Welds the GPU mesh by position and the oracle's by grid edge, and checks both are closed,
-/// consistently oriented 2-manifolds with the expected Euler characteristic per component.
+/// Checks that the GPU's indexed mesh (its vertices shared as the GPU shares them) and the oracle's
+/// (welded by grid edge) are closed, consistently oriented 2-manifolds with the expected Euler
+/// characteristic per component.
 fn assert_closed_with_euler(scene: &Scene, iso: f32, resolution: u32, expected: &[i64]) {
     let what = format!("{} spheres, iso {iso}, {resolution} cells", scene.spheres().len());
-    let gpu = gpu_mesh(scene, iso, resolution).weld_by_position();
+    let gpu = gpu_mesh(scene, iso, resolution);
     let cpu = reference::extract(scene.spheres(), iso, Grid { cells_per_axis: resolution }).weld_by_edge();
     for (name, mesh) in [("GPU", gpu), ("oracle", cpu)] {
         let topology = mesh.topology();
@@ -59,7 +60,7 @@ fn seeded_scenes_are_closed_manifolds_whether_or_not_walls_cut_them() {
         for count in [3, 8, 16, 64] {
             let scene = Scene::new(seed, count).unwrap();
             inside += surface_inside_box(scene.spheres(), 1.0, 40) as u32;
-            let mesh = gpu_mesh(&scene, 1.0, 40).weld_by_position();
+            let mesh = gpu_mesh(&scene, 1.0, 40);
             let topology = mesh.topology();
             assert_eq!(topology.open_or_nonmanifold_edges, 0, "seed {seed}, {count} spheres");
             assert_eq!(topology.misoriented_edges, 0, "seed {seed}, {count} spheres");
@@ -90,7 +91,7 @@ fn a_single_sphere_at_iso_one_is_its_own_sphere() {
     for resolution in [16, 48, 96] {
         let cell = Grid { cells_per_axis: resolution }.cell_size();
         let mesh = gpu_mesh(&scene, 1.0, resolution);
-        assert!(mesh.triangle_count() > 100);
+        assert!(mesh.triangles.len() > 100);
         let worst =
             mesh.positions.iter().map(|p| (p.distance(s.center) - s.radius).abs()).fold(0.0, f32::max);
         assert!(worst < cell, "{resolution} cells: a vertex is {worst} from the sphere (cell {cell})");
@@ -145,7 +146,7 @@ fn analytic_normals_match_a_central_difference_gradient_within_one_degree() {
 fn triangles_face_outwards() {
     // Signed volume of a closed surface with counter-clockwise outside faces is positive.
     let scene = Scene::new(9, 5).unwrap();
-    let mesh = gpu_mesh(&scene, 1.0, 48);
+    let mesh = gpu_mesh(&scene, 1.0, 48).to_soup();
     let volume: f32 = (0..mesh.triangle_count())
         .map(|k| {
             let [a, b, c] = mesh.triangle(k);

@@ -36,7 +36,7 @@ cargo fmt --all --check
 echo "== lints (native)"
 cargo clippy --all-targets -- -D warnings
 echo "== lints (wasm32)"
-cargo clippy --lib --test web --target wasm32-unknown-unknown -- -D warnings
+cargo clippy --lib --test browser --target wasm32-unknown-unknown -- -D warnings
 echo "== page build (release wasm, wasm-bindgen)"
 bash www/build.sh
 
@@ -46,7 +46,7 @@ echo "== native tests"
 cargo test 2>&1 | tee -a "$log"
 
 echo "== engine in headless Chromium (WebGPU)"
-CHROMEDRIVER=/usr/bin/chromedriver cargo test --target wasm32-unknown-unknown --test web 2>&1 | tee -a "$log"
+CHROMEDRIVER=/usr/bin/chromedriver cargo test --target wasm32-unknown-unknown --test browser 2>&1 | tee -a "$log"
 
 echo "== page end to end (Playwright, headless Chromium)"
 (

@@ -37,7 +37,7 @@ async fn gpu_mesh_matches_the_oracle_in_the_browser() {
         let iso = conditioned_iso(&spheres, 1.0, resolution);
         renderer.set_iso(iso).unwrap();
         let grid = Grid { cells_per_axis: resolution };
-        let gpu = renderer.extract_mesh().await;
+        let gpu = renderer.extract_mesh().await.to_soup();
         let cpu = reference::extract(&spheres, iso, grid);
         assert!(cpu.triangle_count() > 0);
         if let Err(e) = gpu.matches(&cpu, 1e-4 * grid.cell_size(), 0.01f32.to_radians()) {

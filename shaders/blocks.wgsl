@@ -1,0 +1,74 @@
+// Block pass: bound the field over each block of 4³ cells and keep only the blocks the surface may
+// cross. Over a box with centre c and half-diagonal h, a sphere's term r²/|p − cᵢ|² lies between
+// r²/(d + h)² and r²/(d − h)² (d = |c − cᵢ|), so the sums of those bound f. A block whose upper bound is
+// at most iso is all outside, one whose lower bound is above iso all inside (unless it touches the box's
+// faces, which read as outside); either way no cell in it emits a triangle. The others are appended to
+// the active list, whose length becomes the indirect dispatch of the per-block passes.
+
+@group(0) @binding(2) var<storage, read_write> counters: Counters;
+// Slot → block index, for the active blocks.
+@group(0) @binding(3) var<storage, read_write> active_blocks: array<u32>;
+// Block index → slot, or INVALID for a skipped block.
+@group(0) @binding(4) var<storage, read_write> block_slots: array<u32>;
+
+// Bounds are skipped on only with this relative margin, far above f32 rounding of the sums.
+const BOUND_MARGIN: f32 = 1e-4;
+
+@compute @workgroup_size(64)
+fn classify_blocks(@builtin(global_invocation_id) id: vec3<u32>) {
+    let n = blocks_per_axis();
+    let block = id.x;
+    if (block >= n * n * n) {
+        return;
+    }
+    let first = block_coords(block) * BLOCK_CELLS;
+    let last = min(first + vec3<u32>(BLOCK_CELLS), vec3<u32>(grid.cells_per_axis));
+    let low = grid_point(first);
+    let high = grid_point(last);
+    let centre = 0.5 * (low + high);
+    let h = 0.5 * length(high - low);
+    var lower = 0.0;
+    var upper = 0.0;
+    var unbounded = false;
+    for (var i = 0u; i < grid.sphere_count; i++) {
+        let s = spheres[i];
+        let d = length(centre - s.xyz);
+        let r2 = s.w * s.w;
+        lower += r2 / ((d + h) * (d + h));
+        let gap = d - h;
+        if (gap <= 0.0) {
+            unbounded = true;
+        } else {
+            upper += r2 / (gap * gap);
+        }
+    }
+    let touches_walls = any(first == vec3<u32>(0u)) || any(last >= vec3<u32>(grid.cells_per_axis));
+    let all_outside = !unbounded && upper * (1.0 + BOUND_MARGIN) <= grid.iso;
+    let all_inside = !touches_walls && lower * (1.0 - BOUND_MARGIN) > grid.iso;
+    var slot = INVALID;
+    if (!all_outside && !all_inside) {
+        let s = atomicAdd(&counters.active_blocks, 1u);
+        if (s < grid.max_blocks) {
+            active_blocks[s] = block;
+            slot = s;
+        }
+    }
+    block_slots[block] = slot;
+}
+
+struct DispatchIndirect {
+    x: u32,
+    y: u32,
+    z: u32,
+}
+
+@group(0) @binding(5) var<storage, read_write> dispatch: DispatchIndirect;
+
+// One invocation: one workgroup per active block (that fits), in rows of DISPATCH_ROW.
+@compute @workgroup_size(1)
+fn plan_dispatch() {
+    let count = min(atomicLoad(&counters.active_blocks), grid.max_blocks);
+    dispatch.x = min(count, DISPATCH_ROW);
+    dispatch.y = (count + DISPATCH_ROW - 1u) / DISPATCH_ROW;
+    dispatch.z = 1u;
+}
