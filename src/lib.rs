@@ -5,6 +5,8 @@
 //! triangles whose count feeds an indexed indirect draw; a render pass shades them. The same
 //! [`Renderer`] draws into a canvas (wasm) or an offscreen texture (native tests, PNG renderer).
 
+#[cfg(not(target_arch = "wasm32"))]
+pub mod bench;
 pub mod blocks;
 pub mod field_pass;
 pub mod gpu;

@@ -3,6 +3,7 @@
 #[cfg(not(target_arch = "wasm32"))]
 mod cli {
     use clap::{Parser, Subcommand};
+    use metaballs::bench;
     use metaballs::offscreen::{Offscreen, write_png};
     use metaballs::params::{check_f32, check_u32};
     use metaballs::{ParamError, Settings};
@@ -21,6 +22,31 @@ mod cli {
     enum Command {
         /// Render one frame offscreen and write it as a PNG.
         Render(RenderArgs),
+        /// Time animated frames for a table of resolutions and sphere counts.
+        Bench(BenchArgs),
+    }
+
+    #[derive(clap::Args)]
+    struct BenchArgs {
+        /// Also write the table as a JSON array of records to this file.
+        #[arg(long)]
+        json: Option<PathBuf>,
+        /// Frames timed per row (after three warm-up frames).
+        #[arg(long, default_value_t = 30, allow_negative_numbers = true)]
+        frames: u32,
+        /// Resolutions (cells per axis), comma-separated; by default 32, 64, 128, 256 and what the
+        /// device holds beyond.
+        #[arg(long, value_delimiter = ',', allow_negative_numbers = true)]
+        resolutions: Option<Vec<u32>>,
+        /// Sphere counts, comma-separated.
+        #[arg(long, value_delimiter = ',', default_value = "1,5,16,64", allow_negative_numbers = true)]
+        spheres: Vec<u32>,
+        /// Frame size in pixels, WIDTHxHEIGHT.
+        #[arg(long, default_value = "960x640", value_parser = parse_size)]
+        size: (u32, u32),
+        /// Skip timing the CPU oracle.
+        #[arg(long)]
+        no_oracle: bool,
     }
 
     #[derive(clap::Args)]
@@ -112,10 +138,53 @@ mod cli {
         Ok(())
     }
 
+    fn bench(args: BenchArgs) -> Result<(), Box<dyn std::error::Error>> {
+        check_u32("frames", args.frames, 1, 100_000)?;
+        let resolutions = args.resolutions.unwrap_or_else(|| vec![32, 64, 128, 256]);
+        for &n in &resolutions {
+            metaballs::params::check_resolution(n)?;
+        }
+        for &n in &args.spheres {
+            metaballs::params::check_sphere_count(n)?;
+        }
+        let plan = bench::Plan {
+            resolutions,
+            sphere_counts: args.spheres,
+            frames: args.frames,
+            size: args.size,
+            oracle: !args.no_oracle,
+        };
+        let mut printed_header = false;
+        let (adapter, timed, records) = bench::run(&plan, |record| {
+            if !printed_header {
+                println!("{}", bench::header(record.stage_ms.is_some()));
+                printed_header = true;
+            }
+            println!("{}", bench::row(record));
+        })?;
+        println!(
+            "{} frames of {}x{} per row on {adapter}; {}",
+            plan.frames,
+            plan.size.0,
+            plan.size.1,
+            if timed {
+                "stage times from GPU timestamp queries (medians)"
+            } else {
+                "this adapter has no timestamp queries: whole frames timed with a queue sync"
+            }
+        );
+        if let Some(path) = args.json {
+            std::fs::write(&path, serde_json::to_string_pretty(&records)?)?;
+            println!("wrote {}", path.display());
+        }
+        Ok(())
+    }
+
     pub fn main() -> ExitCode {
         let cli = Cli::parse();
         let result = match cli.command {
             Command::Render(args) => render(args),
+            Command::Bench(args) => bench(args),
         };
         match result {
             Ok(()) => ExitCode::SUCCESS,

@@ -62,6 +62,11 @@ impl Offscreen {
         self.renderer.render(&self.view);
     }
 
+    /// Draws a frame and waits for its GPU time per stage (`Renderer::render_timed`).
+    pub async fn render_timed(&mut self) -> Option<crate::timing::StageTimes> {
+        self.renderer.render_timed(&self.view).await
+    }
+
     /// Draws a frame and returns its pixels, RGBA8 (sRGB), rows top to bottom.
     pub fn render_rgba(&mut self) -> Vec<u8> {
         self.render();

@@ -499,13 +499,19 @@ impl Renderer {
         self.collect_stats();
     }
 
-    async fn run_extraction(&mut self) -> Counters {
+    /// Runs the mesh generation passes alone for the current state, without drawing or waiting
+    /// (benchmarks time it against `Queue::on_submitted_work_done`).
+    pub fn extract(&mut self) {
         self.write_uniforms();
         let mut encoder = self
             .device
             .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("extract: encoder") });
         self.encode_extraction(&mut encoder, false);
         self.queue.submit([encoder.finish()]);
+    }
+
+    async fn run_extraction(&mut self) -> Counters {
+        self.extract();
         let bytes = read_buffer(&self.device, &self.queue, &self.mesh.counters, 0, 16).await;
         bytemuck::pod_read_unaligned(&bytes)
     }

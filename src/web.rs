@@ -180,6 +180,38 @@ impl App {
         self.renderer.set_light_position(Vec3::new(x, y, z)).map_err(js_error)
     }
 
+    /// Runs mesh generation alone (no drawing), for the benchmark.
+    pub fn extract(&mut self) {
+        self.renderer.extract();
+    }
+
+    /// A promise that resolves when the GPU has finished all work submitted so far.
+    pub fn work_done(&self) -> js_sys::Promise {
+        let (sender, receiver) = futures_channel::oneshot::channel::<()>();
+        self.renderer.queue().on_submitted_work_done(move || {
+            let _ = sender.send(());
+        });
+        wasm_bindgen_futures::future_to_promise(async move {
+            receiver.await.map_err(|_| JsValue::from_str("the GPU queue was dropped"))?;
+            Ok(JsValue::UNDEFINED)
+        })
+    }
+
+    /// Active blocks and cells of the newest figures, as fractions of the grid: [blocks, cells].
+    pub fn active_fractions(&self) -> Vec<f64> {
+        self.renderer.stats().map_or(vec![0.0, 0.0], |s| {
+            vec![
+                s.active_blocks as f64 / s.total_blocks.max(1) as f64,
+                s.active_cells as f64 / s.total_cells.max(1) as f64,
+            ]
+        })
+    }
+
+    /// GPU memory held by the mesh buffers, in bytes.
+    pub fn mesh_bytes(&self) -> f64 {
+        self.renderer.mesh_bytes() as f64
+    }
+
     /// The newest figures the GPU reported, if any yet.
     pub fn stats(&self) -> Option<Stats> {
         self.renderer.stats().map(Stats::from)

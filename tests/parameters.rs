@@ -272,3 +272,38 @@ fn changing_resolution_frees_the_old_buffers() {
         assert_eq!(memory(o), (bytes, buffers), "buffer memory and count after 20 resolution changes");
     });
 }
+
+#[test]
+fn the_benchmark_runs_and_writes_json_records() {
+    let dir = std::env::temp_dir().join(format!("metaballs-bench-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let json = dir.join("bench.json");
+    let (code, stdout, stderr) = cli(&[
+        "bench",
+        "--frames",
+        "2",
+        "--resolutions",
+        "8,16",
+        "--spheres",
+        "1,3",
+        "--size",
+        "32x24",
+        "--json",
+        json.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{stderr}");
+    assert!(stdout.contains("frame ms"), "{stdout}");
+    let records: Vec<serde_json::Value> =
+        serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    assert_eq!(records.len(), 4);
+    for (record, (resolution, spheres)) in records.iter().zip([(8, 1), (8, 3), (16, 1), (16, 3)]) {
+        assert_eq!(record["resolution"], resolution);
+        assert_eq!(record["spheres"], spheres);
+        assert!(record["frame_ms"].as_f64().unwrap() > 0.0, "{record}");
+        assert!(record["triangles"].as_u64().unwrap() > 0, "{record}");
+    }
+    let (code, _, stderr) = cli(&["bench", "--resolutions", "4"]);
+    assert_eq!(code, 2);
+    assert!(stderr.contains("resolution (cells per axis) must be between 8 and 256, got 4"), "{stderr}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}

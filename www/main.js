@@ -2,6 +2,7 @@
 // URL state, and explains what is missing when WebGPU is not available.
 
 import init, { App } from '../pkg/metaballs.js';
+import { runBenchmark } from './bench.js';
 
 const DEFAULTS = Object.freeze({
   spheres: 5,
@@ -93,6 +94,10 @@ function currentUrl() {
     if (key === 'paused') value = value ? 1 : 0;
     if (typeof value === 'number' && !Number.isInteger(value)) value = Number(value.toFixed(3));
     query.set(key, String(value));
+  }
+  // The benchmark's own parameters stay, so a reload runs it again.
+  for (const [key, value] of new URLSearchParams(location.search)) {
+    if (key === 'bench' || key.startsWith('bench_')) query.set(key, value);
   }
   const search = query.toString();
   return `${location.pathname}${search ? `?${search}` : ''}`;
@@ -432,6 +437,17 @@ async function main() {
   wireCamera(canvas);
   wireResize(canvas);
   window.metaballs = { app, state };
+  if (new URLSearchParams(location.search).has('bench')) {
+    try {
+      await runBenchmark(app, $('bench'));
+    } catch (error) {
+      stop('The benchmark stopped', error);
+      return;
+    }
+    // Back to the settings the page had; the table stays.
+    for (const key of ['spheres', 'res']) apply(key);
+  }
+  last = performance.now();
   requestAnimationFrame(frame);
 }
 

@@ -298,3 +298,35 @@ test('frame rate at 32, 64 and 128 cells with 5 spheres (figures, not a pass mar
     await page.close();
   }
 });
+
+test('the benchmark mode shows a table and logs it as JSON', async () => {
+  const { page, errors } = await open('?bench&bench_resolutions=16,24&bench_spheres=1,5&bench_frames=2');
+  const logged = new Promise((resolve) => {
+    page.on('console', (m) => { if (m.text().startsWith('metaballs-bench ')) resolve(m.text()); });
+  });
+  const records = JSON.parse((await logged).slice('metaballs-bench '.length));
+  assert.equal(records.length, 4);
+  for (const r of records) {
+    for (const key of ['resolution', 'spheres', 'frame_ms', 'mesh_ms', 'triangles']) {
+      assert.ok(key in r, `record lacks ${key}: ${JSON.stringify(r)}`);
+    }
+    assert.ok(r.triangles > 0 && r.frame_ms > 0 && r.mesh_ms > 0, JSON.stringify(r));
+  }
+  assert.deepEqual(records.map((r) => [r.resolution, r.spheres]), [[16, 1], [16, 5], [24, 1], [24, 5]]);
+  await page.waitForSelector('#bench table');
+  assert.equal(await page.locator('#bench tbody tr').count(), 4);
+  assert.match(new URL(page.url()).search, /bench/);
+  assert.deepEqual(errors, []);
+  await page.close();
+});
+
+test('the benchmark in headless Chromium (figures, not a pass mark)', async () => {
+  const { page } = await open('?bench&bench_resolutions=32,64,128&bench_spheres=5,16&bench_frames=5');
+  const line = await new Promise((resolve) => {
+    page.on('console', (m) => { if (m.text().startsWith('metaballs-bench ')) resolve(m.text()); });
+  });
+  for (const r of JSON.parse(line.slice('metaballs-bench '.length))) {
+    console.log(`${r.resolution} cells × ${r.spheres} spheres: frame ${r.frame_ms.toFixed(1)} ms, mesh ${r.mesh_ms.toFixed(1)} ms, ${r.triangles} triangles`);
+  }
+  await page.close();
+});

@@ -1,0 +1,167 @@
+//! The benchmark: an animated scene rendered offscreen for a table of resolutions and sphere counts,
+//! with GPU time per stage where the adapter has timestamp queries, and the CPU oracle on the same
+//! scenes for comparison.
+
+use crate::offscreen::Offscreen;
+use crate::reference::{self, Grid};
+use crate::timing::{STAGES, StageTimes};
+use crate::{ParamError, Settings};
+use serde::Serialize;
+use std::time::Instant;
+
+/// One row of the table.
+#[derive(Clone, Debug, Serialize)]
+pub struct Record {
+    pub resolution: u32,
+    pub spheres: u32,
+    /// Median wall time of a whole frame, submission to GPU idle, in milliseconds.
+    pub frame_ms: f64,
+    /// Median GPU time per stage (`STAGES` order), when the adapter has timestamp queries.
+    pub stage_ms: Option<[f64; 4]>,
+    /// Median GPU time of mesh generation (every stage but shading), when timed.
+    pub mesh_ms: Option<f64>,
+    pub triangles: u32,
+    pub vertices: u32,
+    /// Cells that emitted triangles, as a fraction of the grid.
+    pub active_cell_fraction: f64,
+    /// Blocks the empty-space test kept, as a fraction of the grid's blocks.
+    pub active_block_fraction: f64,
+    /// GPU memory held by the mesh buffers.
+    pub mesh_bytes: u64,
+    /// Wall time of the CPU oracle on the same scene, in milliseconds.
+    pub oracle_ms: Option<f64>,
+}
+
+/// What to run.
+pub struct Plan {
+    pub resolutions: Vec<u32>,
+    pub sphere_counts: Vec<u32>,
+    pub frames: u32,
+    pub size: (u32, u32),
+    pub oracle: bool,
+}
+
+fn median(values: &mut [f64]) -> f64 {
+    values.sort_by(f64::total_cmp);
+    values[values.len() / 2]
+}
+
+/// Runs the plan on one device, calling `report` after each row.
+pub fn run(
+    plan: &Plan,
+    mut report: impl FnMut(&Record),
+) -> Result<(String, bool, Vec<Record>), Box<dyn std::error::Error>> {
+    let (width, height) = plan.size;
+    let mut offscreen = Offscreen::blocking(Settings::default(), width, height)?;
+    let timed = offscreen.renderer.enable_timing();
+    let adapter = offscreen.adapter.get_info().name;
+    let mut records = Vec::new();
+    for &resolution in &plan.resolutions {
+        for &spheres in &plan.sphere_counts {
+            let settings = Settings { resolution, sphere_count: spheres, ..Settings::default() };
+            offscreen.renderer.set_settings(settings)?;
+            let record = measure(&mut offscreen, plan, timed)?;
+            report(&record);
+            records.push(record);
+        }
+    }
+    Ok((adapter, timed, records))
+}
+
+fn measure(offscreen: &mut Offscreen, plan: &Plan, timed: bool) -> Result<Record, ParamError> {
+    let settings = *offscreen.renderer.settings();
+    // Warm up: pipelines compile, and the buffers grow to the surface.
+    for _ in 0..3 {
+        offscreen.render();
+        pollster::block_on(offscreen.renderer.flush_stats());
+    }
+    let mut frame_ms = Vec::new();
+    let mut stages: Vec<StageTimes> = Vec::new();
+    for _ in 0..plan.frames.max(1) {
+        offscreen.renderer.update(1.0 / 60.0)?;
+        let started = Instant::now();
+        if timed {
+            stages.extend(pollster::block_on(offscreen.render_timed()));
+        } else {
+            offscreen.render();
+            let _ = offscreen.device.poll(wgpu::PollType::wait_indefinitely());
+        }
+        frame_ms.push(started.elapsed().as_secs_f64() * 1e3);
+    }
+    pollster::block_on(offscreen.renderer.flush_stats());
+    let stats = offscreen.renderer.stats().unwrap_or_default();
+    let stage_ms = (!stages.is_empty()).then(|| {
+        std::array::from_fn(|i| median(&mut stages.iter().map(|s| s.stages_ms[i]).collect::<Vec<_>>()))
+    });
+    let mesh_ms = (!stages.is_empty())
+        .then(|| median(&mut stages.iter().map(|s| s.extraction_ms()).collect::<Vec<_>>()));
+    let oracle_ms = plan.oracle.then(|| {
+        let started = Instant::now();
+        let mesh = reference::extract(
+            offscreen.renderer.scene().spheres(),
+            settings.iso,
+            Grid { cells_per_axis: settings.resolution },
+        );
+        std::hint::black_box(mesh.triangle_count());
+        started.elapsed().as_secs_f64() * 1e3
+    });
+    Ok(Record {
+        resolution: settings.resolution,
+        spheres: settings.sphere_count,
+        frame_ms: median(&mut frame_ms),
+        stage_ms,
+        mesh_ms,
+        triangles: stats.triangles,
+        vertices: stats.vertices,
+        active_cell_fraction: stats.active_cells as f64 / stats.total_cells.max(1) as f64,
+        active_block_fraction: stats.active_blocks as f64 / stats.total_blocks.max(1) as f64,
+        mesh_bytes: stats.mesh_bytes,
+        oracle_ms,
+    })
+}
+
+/// The table's heading.
+pub fn header(timed: bool) -> String {
+    let stages = if timed {
+        STAGES.iter().map(|s| format!("{:>9}", truncate(s))).collect::<Vec<_>>().join(" ")
+    } else {
+        String::new()
+    };
+    format!(
+        "{:>5} {:>7} {:>9} {} {:>9} {:>10} {:>9} {:>8} {:>8} {:>9} {:>10}",
+        "cells",
+        "spheres",
+        "frame ms",
+        stages,
+        if timed { "mesh ms" } else { "" },
+        "triangles",
+        "vertices",
+        "cells %",
+        "blocks %",
+        "mesh MiB",
+        "oracle ms"
+    )
+}
+
+fn truncate(s: &str) -> &str {
+    &s[..s.len().min(9)]
+}
+
+/// One row of the table.
+pub fn row(r: &Record) -> String {
+    let stages = r.stage_ms.map(|s| s.iter().map(|v| format!("{v:>9.2}")).collect::<Vec<_>>().join(" "));
+    format!(
+        "{:>5} {:>7} {:>9.2} {} {:>9} {:>10} {:>9} {:>8.3} {:>8.2} {:>9.1} {:>10}",
+        r.resolution,
+        r.spheres,
+        r.frame_ms,
+        stages.unwrap_or_default(),
+        r.mesh_ms.map(|v| format!("{v:.2}")).unwrap_or_default(),
+        r.triangles,
+        r.vertices,
+        100.0 * r.active_cell_fraction,
+        100.0 * r.active_block_fraction,
+        r.mesh_bytes as f64 / 1048576.0,
+        r.oracle_ms.map(|v| format!("{v:.1}")).unwrap_or_else(|| "-".into()),
+    )
+}

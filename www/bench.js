@@ -1,0 +1,69 @@
+// The benchmark in the browser (`?bench`, optionally `&bench_resolutions=32,64&bench_spheres=1,5&bench_frames=10`): the same fixed sequence as `metaballs bench`, timed with the
+// GPU queue synchronised after each frame. Shows a table and logs it as JSON on the console (a line
+// starting with "metaballs-bench ") for headless runs to collect.
+
+const median = (values) => [...values].sort((a, b) => a - b)[Math.floor(values.length / 2)];
+
+function listParam(query, key, fallback) {
+  if (!query.has(key)) return fallback;
+  const values = query.get(key).split(',').map(Number);
+  return values.every((v) => Number.isInteger(v) && v > 0) ? values : fallback;
+}
+
+async function timeFrames(app, frames, step) {
+  const times = [];
+  for (let i = 0; i < frames; i++) {
+    const start = performance.now();
+    step();
+    await app.work_done();
+    times.push(performance.now() - start);
+  }
+  return median(times);
+}
+
+function showTable(container, records, status) {
+  const rows = records.map((r) => `<tr><td>${r.resolution}</td><td>${r.spheres}</td><td>${r.frame_ms.toFixed(1)}</td>`
+    + `<td>${r.mesh_ms.toFixed(1)}</td><td>${r.triangles}</td><td>${(100 * r.active_cell_fraction).toFixed(2)}</td>`
+    + `<td>${(100 * r.active_block_fraction).toFixed(1)}</td><td>${(r.mesh_bytes / 1048576).toFixed(1)}</td></tr>`);
+  container.innerHTML = `<h2>Benchmark</h2><p>${status}</p><table><thead><tr><th>cells</th><th>spheres</th>`
+    + '<th>frame ms</th><th>mesh ms</th><th>triangles</th><th>cells %</th><th>blocks %</th><th>mesh MiB</th>'
+    + `</tr></thead><tbody>${rows.join('')}</tbody></table>`;
+}
+
+export async function runBenchmark(app, container) {
+  const query = new URLSearchParams(location.search);
+  const maxResolution = app.max_resolution();
+  const resolutions = listParam(query, 'bench_resolutions', [32, 64, 128, 256]).filter((n) => n <= maxResolution);
+  const sphereCounts = listParam(query, 'bench_spheres', [1, 5, 16, 64]);
+  const frames = listParam(query, 'bench_frames', [10])[0];
+  container.hidden = false;
+  const records = [];
+  for (const resolution of resolutions) {
+    for (const spheres of sphereCounts) {
+      showTable(container, records, `Running ${resolution}³ cells × ${spheres} spheres…`);
+      app.set_resolution(resolution);
+      app.set_sphere_count(spheres);
+      // Warm up: pipelines compile and the buffers grow to the surface.
+      await timeFrames(app, 3, () => app.frame(1 / 60));
+      const frame_ms = await timeFrames(app, frames, () => app.frame(1 / 60));
+      const mesh_ms = await timeFrames(app, frames, () => app.extract());
+      await timeFrames(app, 2, () => app.frame(0));
+      const stats = app.stats();
+      const [blocks, cells] = app.active_fractions();
+      records.push({
+        resolution,
+        spheres,
+        frame_ms,
+        mesh_ms,
+        triangles: stats?.triangles ?? 0,
+        active_cell_fraction: cells,
+        active_block_fraction: blocks,
+        mesh_bytes: app.mesh_bytes(),
+      });
+      stats?.free();
+    }
+  }
+  showTable(container, records, `${frames} frames per row, medians; the GPU queue is synchronised after each frame.`);
+  console.log(`metaballs-bench ${JSON.stringify(records)}`);
+  return records;
+}
