@@ -12,8 +12,8 @@ struct Grid {
     max_blocks: u32,
     max_vertices: u32,
     max_indices: u32,
+    max_cells: u32,
     _pad0: u32,
-    _pad1: u32,
 }
 
 // Counts the passes append with. A count above its capacity means the buffer overflowed.

@@ -1,7 +1,8 @@
-// Marching-cubes passes over the active blocks, one workgroup per block and one invocation per cell.
+// Marching-cubes passes over the active cells (those the field pass found the surface crossing), one
+// invocation per cell.
 //
-// `make_vertices`: each cell classifies itself and computes the vertices on the three edges leaving its
-// lowest corner, so every surface vertex is computed once. `make_triangles`: each cell looks up the
+// `make_vertices`: each cell computes the vertices on the three edges leaving its lowest corner, so every
+// surface vertex is computed once (a crossed edge's lowest corner always belongs to an active cell). `make_triangles`: each cell looks up the
 // vertices on its twelve edges (in its own block or a neighbour's: an edge the surface crosses on a
 // block's face belongs to two blocks the surface crosses, so both are active) and appends its triangles
 // as indices. `finalize_draw` turns the index count into the indexed indirect draw, so the frame never
@@ -10,13 +11,15 @@
 @group(0) @binding(2) var<storage, read_write> counters: Counters;
 @group(0) @binding(3) var<storage, read> active_blocks: array<u32>;
 @group(0) @binding(4) var<storage, read> block_slots: array<u32>;
+// The active cells, each as slot * 64 + cell.
+@group(0) @binding(13) var<storage, read> active_cells: array<u32>;
 @group(0) @binding(5) var<storage, read> block_values: array<f32>;
 // Per case: bits 0..11 the crossed edges, bits 16.. the triangle count.
 @group(0) @binding(6) var<storage, read> case_table: array<u32, 256>;
 // Per case, 16 entries: edge numbers of the triangles, -1 after the last.
 @group(0) @binding(7) var<storage, read> triangle_table: array<i32, 4096>;
 // Slot s, cell c: the case at s * 64 + c.
-@group(0) @binding(8) var<storage, read_write> cell_cases: array<u32>;
+@group(0) @binding(8) var<storage, read> cell_cases: array<u32>;
 // Slot s, cell c, axis a: the vertex on the edge leaving the cell's lowest corner along a, at
 // (s * 64 + c) * 3 + a (INVALID where the budget was full).
 @group(0) @binding(9) var<storage, read_write> edge_vertices: array<u32>;
@@ -60,8 +63,13 @@ fn value_at(slot: u32, point: vec3<u32>) -> f32 {
     return block_values[slot * 125u + point.x + BLOCK_POINTS * (point.y + BLOCK_POINTS * point.z)];
 }
 
-fn active_slot_count() -> u32 {
-    return min(atomicLoad(&counters.active_blocks), grid.max_blocks);
+// The active cell invocation `id` of a per-cell pass works on, as slot * 64 + cell, or INVALID.
+fn active_cell(workgroup: vec3<u32>, local: u32) -> u32 {
+    let id = slot_of(workgroup) * 64u + local;
+    if (id >= min(atomicLoad(&counters.active_cells), grid.max_cells)) {
+        return INVALID;
+    }
+    return active_cells[id];
 }
 
 fn write_vertex(index: u32, p: vec3<f32>, n: vec3<f32>) {
@@ -75,23 +83,15 @@ fn write_vertex(index: u32, p: vec3<f32>, n: vec3<f32>) {
 }
 
 @compute @workgroup_size(64)
-fn make_vertices(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_invocation_index) local: u32) {
-    let slot = slot_of(workgroup);
-    if (slot >= active_slot_count()) {
+fn make_vertices(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_invocation_index) index: u32) {
+    let reference = active_cell(workgroup, index);
+    if (reference == INVALID) {
         return;
     }
+    let slot = reference / 64u;
+    let local = reference % 64u;
     let at = local_cell(local);
     let cell = block_coords(active_blocks[slot]) * BLOCK_CELLS + at;
-    var case_index = 0u;
-    if (all(cell < vec3<u32>(grid.cells_per_axis))) {
-        for (var c = 0u; c < 8u; c++) {
-            case_index |= select(0u, 1u << c, value_at(slot, at + corner_offset(c)) > grid.iso);
-        }
-    }
-    cell_cases[slot * 64u + local] = case_index;
-    if (case_index == 0u || case_index == 255u) {
-        return;
-    }
 
     // The edges leaving the lowest corner: 0 along x, 3 along y, 8 along z.
     let f0 = value_at(slot, at);
@@ -156,18 +156,19 @@ fn vertex_on_edge(cell: vec3<u32>, axis: u32) -> u32 {
 }
 
 @compute @workgroup_size(64)
-fn make_triangles(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_invocation_index) local: u32) {
-    let slot = slot_of(workgroup);
-    if (slot >= active_slot_count()) {
+fn make_triangles(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_invocation_index) index: u32) {
+    let reference = active_cell(workgroup, index);
+    if (reference == INVALID) {
         return;
     }
-    let case_index = cell_cases[slot * 64u + local];
+    let slot = reference / 64u;
+    let local = reference % 64u;
+    let case_index = cell_cases[reference];
     let entry = case_table[case_index];
     let triangle_count = entry >> 16u;
     if (triangle_count == 0u) {
         return;
     }
-    atomicAdd(&counters.active_cells, 1u);
     let cell = block_coords(active_blocks[slot]) * BLOCK_CELLS + local_cell(local);
     let first = atomicAdd(&counters.indices, triangle_count * 3u);
     let row = case_index * 16u;

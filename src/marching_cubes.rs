@@ -1,5 +1,5 @@
-//! The marching-cubes passes (`shaders/marching_cubes.wgsl`): vertices on the edges each cell owns, then
-//! triangles as indices into them, then the indexed indirect draw's arguments.
+//! The marching-cubes passes (`shaders/marching_cubes.wgsl`), over the active cells: vertices on the
+//! edges each cell owns, then triangles as indices into them, then the indexed indirect draw's arguments.
 
 use crate::gpu::{bind_buffers, compute_module, compute_pipeline};
 use crate::mesh_buffers::MeshBuffers;
@@ -67,9 +67,9 @@ impl MarchingCubesPass {
                     (2, &mesh.counters),
                     (3, &mesh.active_blocks),
                     (5, &mesh.block_values),
-                    (8, &mesh.cell_cases),
                     (9, &mesh.edge_vertices),
                     (10, &mesh.vertices),
+                    (13, &mesh.active_cells),
                 ],
             ),
             bind_buffers(
@@ -86,6 +86,7 @@ impl MarchingCubesPass {
                     (8, &mesh.cell_cases),
                     (9, &mesh.edge_vertices),
                     (11, &mesh.indices),
+                    (13, &mesh.active_cells),
                 ],
             ),
             bind_buffers(
@@ -112,10 +113,10 @@ impl MarchingCubesPass {
         });
         pass.set_pipeline(&self.vertices);
         pass.set_bind_group(0, vertices, &[]);
-        pass.dispatch_workgroups_indirect(&mesh.dispatch, 0);
+        pass.dispatch_workgroups_indirect(&mesh.cell_dispatch, 0);
         pass.set_pipeline(&self.triangles);
         pass.set_bind_group(0, triangles, &[]);
-        pass.dispatch_workgroups_indirect(&mesh.dispatch, 0);
+        pass.dispatch_workgroups_indirect(&mesh.cell_dispatch, 0);
         pass.set_pipeline(&self.finalize);
         pass.set_bind_group(0, finalize, &[]);
         pass.dispatch_workgroups(1, 1, 1);

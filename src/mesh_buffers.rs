@@ -1,5 +1,6 @@
-//! The buffers the compute passes share for one grid: the active-block list, per-block field values,
-//! cases and edge vertices, and the indexed mesh with its indirect draw. Sized by capacities that grow
+//! The buffers the compute passes share for one grid: the active-block and active-cell lists with their
+//! indirect dispatches, per-block field values, cases and edge vertices, and the indexed mesh with its
+//! indirect draw. Sized by capacities that grow
 //! when a frame reports it needed more.
 
 use crate::reference::Grid;
@@ -21,6 +22,8 @@ const BLOCK_EDGE_BYTES: u64 = 192 * 4;
 pub struct Capacity {
     /// Active blocks.
     pub blocks: u32,
+    /// Active cells (those the surface crosses).
+    pub cells: u32,
     /// Mesh vertices.
     pub vertices: u32,
     /// Mesh indices (three per triangle).
@@ -33,8 +36,10 @@ impl Capacity {
         let n = grid.cells_per_axis;
         let blocks_per_axis = n.div_ceil(BLOCK_CELLS);
         let face_cells = n * n;
+        let blocks = blocks_per_axis.pow(3).min((6 * blocks_per_axis * blocks_per_axis).max(512));
         Self {
-            blocks: blocks_per_axis.pow(3).min((6 * blocks_per_axis * blocks_per_axis).max(512)),
+            blocks,
+            cells: (16 * blocks).min(grid.cells_per_axis.pow(3)),
             vertices: (4 * face_cells).max(4096),
             indices: (24 * face_cells).max(24576),
         }
@@ -45,6 +50,7 @@ impl Capacity {
         let fit = |bytes_each: u64| (limit / bytes_each).min(u32::MAX as u64) as u32;
         Self {
             blocks: grid.cells_per_axis.div_ceil(BLOCK_CELLS).pow(3).min(fit(BLOCK_EDGE_BYTES)),
+            cells: grid.cells_per_axis.pow(3).min(fit(4)),
             vertices: fit(VERTEX_BYTES),
             indices: fit(INDEX_BYTES) / 3 * 3,
         }
@@ -54,6 +60,7 @@ impl Capacity {
     pub fn min(self, other: Self) -> Self {
         Self {
             blocks: self.blocks.min(other.blocks),
+            cells: self.cells.min(other.cells),
             vertices: self.vertices.min(other.vertices),
             indices: self.indices.min(other.indices),
         }
@@ -62,6 +69,7 @@ impl Capacity {
     /// True when every count fits.
     pub fn holds(&self, counters: &Counters) -> bool {
         counters.active_blocks <= self.blocks
+            && counters.active_cells <= self.cells
             && counters.vertices <= self.vertices
             && counters.indices <= self.indices
     }
@@ -71,6 +79,7 @@ impl Capacity {
         let grow = |have: u32, need: u32| if need > have { need.saturating_add(need / 4) } else { have };
         Self {
             blocks: grow(self.blocks, counters.active_blocks),
+            cells: grow(self.cells, counters.active_cells),
             vertices: grow(self.vertices, counters.vertices),
             indices: grow(self.indices, counters.indices) / 3 * 3 + 3,
         }
@@ -83,7 +92,9 @@ pub struct MeshBuffers {
     pub capacity: Capacity,
     pub counters: wgpu::Buffer,
     pub dispatch: wgpu::Buffer,
+    pub cell_dispatch: wgpu::Buffer,
     pub active_blocks: wgpu::Buffer,
+    pub active_cells: wgpu::Buffer,
     pub block_slots: wgpu::Buffer,
     pub block_values: wgpu::Buffer,
     pub cell_cases: wgpu::Buffer,
@@ -115,7 +126,9 @@ impl MeshBuffers {
                 U::COPY_SRC | U::COPY_DST,
             ),
             dispatch: buffer("mesh: per-block dispatch", 12, U::INDIRECT),
+            cell_dispatch: buffer("mesh: per-cell dispatch", 12, U::INDIRECT),
             active_blocks: buffer("mesh: active blocks", blocks * 4, U::COPY_SRC),
+            active_cells: buffer("mesh: active cells", capacity.cells as u64 * 4, U::empty()),
             block_slots: buffer("mesh: block slots", total_blocks * 4, U::empty()),
             block_values: buffer("mesh: block field values", blocks * BLOCK_VALUE_BYTES, U::COPY_SRC),
             cell_cases: buffer("mesh: cell cases", blocks * BLOCK_CASE_BYTES, U::empty()),
@@ -130,11 +143,13 @@ impl MeshBuffers {
         }
     }
 
-    fn all(&self) -> [&wgpu::Buffer; 10] {
+    fn all(&self) -> [&wgpu::Buffer; 12] {
         [
             &self.counters,
             &self.dispatch,
+            &self.cell_dispatch,
             &self.active_blocks,
+            &self.active_cells,
             &self.block_slots,
             &self.block_values,
             &self.cell_cases,

@@ -341,7 +341,8 @@ impl Renderer {
             max_blocks: capacity.blocks,
             max_vertices: capacity.vertices,
             max_indices: capacity.indices,
-            _pad: [0; 2],
+            max_cells: capacity.cells,
+            _pad: 0,
         };
         self.queue.write_buffer(&self.scene_buffers.grid, 0, bytemuck::bytes_of(&grid_uniform));
         let packed: Vec<[f32; 4]> = spheres.iter().map(|s| s.to_gpu()).collect();

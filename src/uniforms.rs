@@ -15,7 +15,8 @@ pub struct GridUniform {
     pub max_blocks: u32,
     pub max_vertices: u32,
     pub max_indices: u32,
-    pub _pad: [u32; 2],
+    pub max_cells: u32,
+    pub _pad: u32,
 }
 const _: () = assert!(std::mem::size_of::<GridUniform>() == 48);
 
