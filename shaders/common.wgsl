@@ -33,8 +33,9 @@ struct Totals {
 }
 
 @group(0) @binding(0) var<uniform> grid: Grid;
-// xyz: centre, w: radius.
-@group(0) @binding(1) var<storage, read> spheres: array<vec4<f32>>;
+// xyz: centre, w: radius; a uniform array (MAX_SPHERES is prepended from src/params.rs), which software
+// adapters read much faster than storage.
+@group(0) @binding(1) var<uniform> spheres: array<vec4<f32>, MAX_SPHERES>;
 
 // Squared distances are clamped to this so a grid point at a centre reads a huge but finite value.
 const MIN_DISTANCE_SQUARED: f32 = 1e-20;

@@ -103,7 +103,11 @@ pub async fn map_and_read(device: &wgpu::Device, buffer: &wgpu::Buffer) -> Vec<u
 
 /// A compute shader module made of `shaders/common.wgsl` followed by a pass's own source.
 pub(crate) fn compute_module(device: &wgpu::Device, label: &str, source: &str) -> wgpu::ShaderModule {
-    let source = format!("{}\n{source}", include_str!("../shaders/common.wgsl"));
+    let source = format!(
+        "const MAX_SPHERES: u32 = {}u;\n{}\n{source}",
+        crate::params::MAX_SPHERES,
+        include_str!("../shaders/common.wgsl")
+    );
     device.create_shader_module(wgpu::ShaderModuleDescriptor {
         label: Some(label),
         source: wgpu::ShaderSource::Wgsl(source.into()),

@@ -307,11 +307,11 @@ impl Renderer {
         let automatic = automatic_capacity(&self.device, self.grid());
         match self.sizing {
             Sizing::Automatic => automatic,
-            Sizing::FixedTriangles(n) => Capacity {
-                blocks: Capacity::largest(self.grid(), storage_limit(&self.device)).blocks,
-                indices: 3 * n,
-                ..automatic
-            },
+            // Everything but the index buffer holds the whole grid, so only triangles overflow.
+            Sizing::FixedTriangles(n) => {
+                let largest = Capacity::largest(self.grid(), storage_limit(&self.device));
+                Capacity { vertices: largest.vertices.min(3 * largest.cells), indices: 3 * n, ..largest }
+            }
         }
     }
 

@@ -20,7 +20,7 @@ impl SceneBuffers {
             spheres: device.create_buffer(&wgpu::BufferDescriptor {
                 label: Some("scene: spheres"),
                 size: MAX_SPHERES as u64 * 16,
-                usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
+                usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
                 mapped_at_creation: false,
             }),
         }
