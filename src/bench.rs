@@ -39,6 +39,7 @@ pub struct Plan {
     pub frames: u32,
     pub size: (u32, u32),
     pub oracle: bool,
+    pub antialiasing: bool,
 }
 
 fn median(values: &mut [f64]) -> f64 {
@@ -52,13 +53,14 @@ pub fn run(
     mut report: impl FnMut(&Record),
 ) -> Result<(String, bool, Vec<Record>), Box<dyn std::error::Error>> {
     let (width, height) = plan.size;
-    let mut offscreen = Offscreen::blocking(Settings::default(), width, height)?;
+    let base = Settings { antialiasing: plan.antialiasing, ..Settings::default() };
+    let mut offscreen = Offscreen::blocking(base, width, height)?;
     let timed = offscreen.renderer.enable_timing();
     let adapter = offscreen.adapter.get_info().name;
     let mut records = Vec::new();
     for &resolution in &plan.resolutions {
         for &spheres in &plan.sphere_counts {
-            let settings = Settings { resolution, sphere_count: spheres, ..Settings::default() };
+            let settings = Settings { resolution, sphere_count: spheres, ..base };
             offscreen.renderer.set_settings(settings)?;
             let record = measure(&mut offscreen, plan, timed)?;
             report(&record);

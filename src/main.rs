@@ -47,6 +47,9 @@ mod cli {
         /// Skip timing the CPU oracle.
         #[arg(long)]
         no_oracle: bool,
+        /// Draw without 4× multisampling.
+        #[arg(long)]
+        no_antialiasing: bool,
     }
 
     #[derive(clap::Args)]
@@ -72,6 +75,9 @@ mod cli {
         /// Seconds of animation before the frame, 0 to 3600.
         #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
         time: f32,
+        /// Draw without 4× multisampling.
+        #[arg(long)]
+        no_antialiasing: bool,
         /// Frames to render, 1/60 s of animation apart, timing each; the last is written.
         #[arg(long, default_value_t = 1, allow_negative_numbers = true)]
         frames: u32,
@@ -97,6 +103,7 @@ mod cli {
             iso: args.iso,
             resolution: args.resolution,
             seed: args.seed,
+            antialiasing: !args.no_antialiasing,
             ..Settings::default()
         }
         .validated()?;
@@ -153,6 +160,7 @@ mod cli {
             frames: args.frames,
             size: args.size,
             oracle: !args.no_oracle,
+            antialiasing: !args.no_antialiasing,
         };
         let mut printed_header = false;
         let (adapter, timed, records) = bench::run(&plan, |record| {

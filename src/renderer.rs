@@ -129,7 +129,7 @@ impl Renderer {
             blocks: BlockPass::new(&device),
             field: FieldPass::new(&device),
             marching: MarchingCubesPass::new(&device),
-            shade: ShadePass::new(&device, format, width, height),
+            shade: ShadePass::new(&device, format, width, height, settings.antialiasing),
             stats_slots: (0..STATS_SLOTS)
                 .map(|_| StatsSlot {
                     buffer: device.create_buffer(&wgpu::BufferDescriptor {
@@ -232,6 +232,10 @@ impl Renderer {
             self.scene.set_count(settings.sphere_count)?;
         }
         let resolution_changed = settings.resolution != self.settings.resolution;
+        if settings.antialiasing != self.settings.antialiasing {
+            let (width, height) = self.size;
+            self.shade = ShadePass::new(&self.device, self.format, width, height, settings.antialiasing);
+        }
         self.settings = settings;
         if resolution_changed {
             self.reallocate(self.starting_capacity());
@@ -267,6 +271,11 @@ impl Renderer {
     /// Moves the light.
     pub fn set_light_position(&mut self, position: Vec3) -> Result<(), ParamError> {
         self.set_settings(Settings { light_position: position, ..self.settings })
+    }
+
+    /// Turns 4× multisampling on or off.
+    pub fn set_antialiasing(&mut self, on: bool) -> Result<(), ParamError> {
+        self.set_settings(Settings { antialiasing: on, ..self.settings })
     }
 
     /// Moves the camera.

@@ -1,11 +1,11 @@
-//! The shading pass (`shaders/shade.wgsl`): background, then the surface with Blinn-Phong, multisampled
-//! and depth-tested, resolved into the caller's texture view.
+//! The shading pass (`shaders/shade.wgsl`): background, the box's edges, then the surface with
+//! Blinn-Phong, depth-tested and (with antialiasing) multisampled and resolved into the caller's view.
 
 use crate::mesh_buffers::{MeshBuffers, VERTEX_BYTES};
 use crate::uniforms::ShadingUniform;
 
-/// Samples per pixel; 4 is supported for every renderable format WebGPU guarantees.
-pub const SAMPLE_COUNT: u32 = 4;
+/// Samples per pixel with antialiasing on; 4 is supported for every renderable format WebGPU guarantees.
+pub const MULTISAMPLES: u32 = 4;
 const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 
 /// Owns the shading pipelines, their uniform buffer, and multisampled colour and depth targets sized to
@@ -17,12 +17,22 @@ pub struct ShadePass {
     uniform: wgpu::Buffer,
     bind_group: wgpu::BindGroup,
     format: wgpu::TextureFormat,
-    color: wgpu::TextureView,
+    sample_count: u32,
+    /// The multisampled colour target, resolved into the output (none without antialiasing).
+    color: Option<wgpu::TextureView>,
     depth: wgpu::TextureView,
 }
 
 impl ShadePass {
-    pub fn new(device: &wgpu::Device, format: wgpu::TextureFormat, width: u32, height: u32) -> Self {
+    /// Draws `width` × `height` frames of `format`, 4× multisampled when `antialiasing`.
+    pub fn new(
+        device: &wgpu::Device,
+        format: wgpu::TextureFormat,
+        width: u32,
+        height: u32,
+        antialiasing: bool,
+    ) -> Self {
+        let sample_count = if antialiasing { MULTISAMPLES } else { 1 };
         let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some("shade: shader"),
             source: wgpu::ShaderSource::Wgsl(include_str!("../shaders/shade.wgsl").into()),
@@ -100,7 +110,7 @@ impl ShadePass {
                     stencil: Default::default(),
                     bias: Default::default(),
                 }),
-                multisample: wgpu::MultisampleState { count: SAMPLE_COUNT, ..Default::default() },
+                multisample: wgpu::MultisampleState { count: sample_count, ..Default::default() },
                 multiview_mask: None,
                 cache: None,
             })
@@ -123,13 +133,13 @@ impl ShadePass {
             TriangleList,
             true,
         );
-        let (color, depth) = targets(device, format, width, height);
-        Self { background, box_edges, surface, uniform, bind_group, format, color, depth }
+        let (color, depth) = targets(device, format, width, height, sample_count);
+        Self { background, box_edges, surface, uniform, bind_group, format, sample_count, color, depth }
     }
 
     /// Reallocates the multisampled targets for a new output size.
     pub fn resize(&mut self, device: &wgpu::Device, width: u32, height: u32) {
-        (self.color, self.depth) = targets(device, self.format, width, height);
+        (self.color, self.depth) = targets(device, self.format, width, height, self.sample_count);
     }
 
     /// The uniform buffer the renderer writes each frame.
@@ -148,12 +158,12 @@ impl ShadePass {
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("shade: pass"),
             color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: &self.color,
+                view: self.color.as_ref().unwrap_or(view),
                 depth_slice: None,
-                resolve_target: Some(view),
+                resolve_target: self.color.as_ref().map(|_| view),
                 ops: wgpu::Operations {
                     load: wgpu::LoadOp::Clear(wgpu::Color::BLACK),
-                    store: wgpu::StoreOp::Discard,
+                    store: if self.color.is_some() { wgpu::StoreOp::Discard } else { wgpu::StoreOp::Store },
                 },
             })],
             depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
@@ -184,14 +194,15 @@ fn targets(
     format: wgpu::TextureFormat,
     width: u32,
     height: u32,
-) -> (wgpu::TextureView, wgpu::TextureView) {
+    sample_count: u32,
+) -> (Option<wgpu::TextureView>, wgpu::TextureView) {
     let texture = |label, format| {
         device
             .create_texture(&wgpu::TextureDescriptor {
                 label: Some(label),
                 size: wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
                 mip_level_count: 1,
-                sample_count: SAMPLE_COUNT,
+                sample_count,
                 dimension: wgpu::TextureDimension::D2,
                 format,
                 usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
@@ -199,5 +210,6 @@ fn targets(
             })
             .create_view(&wgpu::TextureViewDescriptor::default())
     };
-    (texture("shade: multisampled colour", format), texture("shade: depth", DEPTH_FORMAT))
+    let color = (sample_count > 1).then(|| texture("shade: multisampled colour", format));
+    (color, texture("shade: depth", DEPTH_FORMAT))
 }

@@ -176,6 +176,11 @@ impl App {
         self.renderer.set_material(material).map_err(js_error)
     }
 
+    /// 4× multisampling on or off (software adapters draw much faster without it).
+    pub fn set_antialiasing(&mut self, on: bool) -> Result<(), JsError> {
+        self.renderer.set_antialiasing(on).map_err(js_error)
+    }
+
     pub fn set_light_position(&mut self, x: f32, y: f32, z: f32) -> Result<(), JsError> {
         self.renderer.set_light_position(Vec3::new(x, y, z)).map_err(js_error)
     }

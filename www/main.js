@@ -16,6 +16,7 @@ const DEFAULTS = Object.freeze({
   dist: 4.3,
   shine: 64,
   color: '#e77661',
+  aa: true,
 });
 
 const $ = (id) => document.getElementById(id);
@@ -61,6 +62,7 @@ const PARAMS = {
   dist: { parse: parseFloat },
   shine: { parse: parseFloat },
   color: { parse: (s) => (/^#?[0-9a-f]{6}$/i.test(s) ? `#${s.replace('#', '').toLowerCase()}` : NaN) },
+  aa: { parse: (s) => (s === '1' || s === 'true' ? true : s === '0' || s === 'false' ? false : NaN) },
 };
 
 function parseInteger(s) {
@@ -91,7 +93,7 @@ function currentUrl() {
   for (const key of Object.keys(PARAMS)) {
     let value = state[key];
     if (value === DEFAULTS[key]) continue;
-    if (key === 'paused') value = value ? 1 : 0;
+    if (typeof value === 'boolean') value = value ? 1 : 0;
     if (typeof value === 'number' && !Number.isInteger(value)) value = Number(value.toFixed(3));
     query.set(key, String(value));
   }
@@ -126,6 +128,7 @@ function apply(key) {
     case 'yaw': case 'pitch': case 'dist': app.set_camera(s.yaw, s.pitch, s.dist); break;
     case 'shine': app.set_shininess(s.shine); break;
     case 'color': app.set_color(...hexToLinear(s.color)); break;
+    case 'aa': app.set_antialiasing(s.aa); break;
     default: break;
   }
 }
@@ -166,6 +169,8 @@ function showControls() {
     input.value = state[key];
     $(`${control.input}-value`).textContent = control.format(state[key]);
   }
+  $('antialiasing').checked = state.aa;
+  $('antialiasing-value').textContent = state.aa ? '4×' : 'off';
   const pause = $('pause');
   pause.setAttribute('aria-pressed', String(state.paused));
   pause.textContent = state.paused ? 'Play' : 'Pause';
@@ -184,6 +189,7 @@ function wireControls() {
       pending.set(key, value);
     });
   }
+  $('antialiasing').addEventListener('change', () => pending.set('aa', $('antialiasing').checked));
   $('pause').addEventListener('click', togglePause);
   $('reseed').addEventListener('click', reseed);
   $('reset-view').addEventListener('click', resetView);
@@ -383,16 +389,20 @@ const WEBGPU_HELP =
   'On Linux, Chrome needs WebGPU switched on at chrome://flags/#enable-unsafe-webgpu; ' +
   'the page must also be served over https or from localhost.';
 
-// The browser names its adapter through GPUAdapterInfo (wgpu sees only an anonymous one).
-async function adapterLabel() {
+// The browser names its adapter through GPUAdapterInfo (wgpu sees only an anonymous one). Software
+// adapters (SwiftShader, or any fallback adapter) draw much faster without multisampling.
+async function adapterInfo() {
   try {
-    const info = (await navigator.gpu.requestAdapter())?.info;
+    const adapter = await navigator.gpu.requestAdapter();
+    const info = adapter?.info;
     const words = [info?.vendor, info?.architecture, info?.description].filter(Boolean);
-    if (words.length) return `WebGPU · ${[...new Set(words)].join(' ')}`;
+    const software = Boolean(info?.isFallbackAdapter || adapter?.isFallbackAdapter)
+      || /swiftshader|llvmpipe|lavapipe|software/i.test(words.join(' '));
+    if (words.length) return { label: `WebGPU · ${[...new Set(words)].join(' ')}`, software };
+    return { label: app.adapter(), software };
   } catch {
-    // fall through to what wgpu knows
+    return { label: app.adapter(), software: false };
   }
-  return app.adapter();
 }
 
 async function main() {
@@ -415,8 +425,10 @@ async function main() {
   if (stopped) return;
 
   $('resolution').max = String(app.max_resolution());
-  $('adapter').textContent = await adapterLabel();
-  for (const key of ['spheres', 'iso', 'res', 'seed', 'shine', 'color']) {
+  const adapter = await adapterInfo();
+  $('adapter').textContent = adapter.label;
+  if (adapter.software && !new URLSearchParams(location.search).has('aa')) state.aa = false;
+  for (const key of ['spheres', 'iso', 'res', 'seed', 'shine', 'color', 'aa']) {
     const problem = applyOrRevert(key, DEFAULTS[key]);
     if (problem) problems.push(problem);
   }

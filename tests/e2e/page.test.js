@@ -165,6 +165,8 @@ test('the page shows glossy blobs with no console errors', async () => {
   assert.ok(stats.surface > 0.01, `surface covers ${(stats.surface * 100).toFixed(2)}% of the canvas`);
   assert.ok(stats.highlight > 0, 'no specular highlight visible');
   assert.match(await page.textContent('#adapter'), /WebGPU/);
+  // SwiftShader is a software adapter: the page starts without multisampling there.
+  assert.equal(await page.isChecked('#antialiasing'), false);
   assert.match(await page.textContent('#fps'), /^\d+(\.\d)?$/);
   assert.equal(await page.isVisible('#message'), false);
   const size = await page.$eval('#view', (c) => [c.width, c.height, devicePixelRatio]);
@@ -198,7 +200,7 @@ test('each control changes the picture and the triangle count', async () => {
 });
 
 test('the URL keeps the state and restores it', async () => {
-  const query = '?spheres=9&iso=0.8&res=40&seed=7&paused=1&yaw=-40&pitch=10&dist=5&speed=0.5';
+  const query = '?spheres=9&iso=0.8&res=40&seed=7&paused=1&yaw=-40&pitch=10&dist=5&speed=0.5&aa=1';
   const { page, errors } = await open(query);
   await waitForTriangles(page);
   const app = await page.evaluate(() => {
@@ -213,6 +215,7 @@ test('the URL keeps the state and restores it', async () => {
   assert.equal(await page.inputValue('#spheres'), '9');
   assert.equal(await page.textContent('#resolution-value'), '40³');
   assert.equal(await page.textContent('#pause'), 'Play');
+  assert.equal(await page.isChecked('#antialiasing'), true);
   // A change is written back to the URL.
   await setRange(page, 'spheres', 11);
   await page.waitForFunction(() => new URLSearchParams(location.search).get('spheres') === '11');
