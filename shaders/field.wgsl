@@ -1,6 +1,8 @@
 // Field pass: for each active block, f at its 5³ grid points (0 on the box's faces), kept per slot; then
 // each of its 4³ cells classifies itself from them, and the cells the surface crosses are appended to the
-// active-cell list, so that vertex and triangle work runs only where there is surface.
+// active-cell list, so that vertex and triangle work runs only where there is surface. Two dispatches
+// rather than one with workgroup memory: software adapters (SwiftShader) run workgroup barriers slowly,
+// and this halves mesh generation there.
 
 @group(0) @binding(2) var<storage, read_write> counters: Counters;
 @group(0) @binding(3) var<storage, read> active_blocks: array<u32>;
@@ -11,23 +13,22 @@
 // The active cells, each as slot * 64 + cell.
 @group(0) @binding(6) var<storage, read_write> active_cells: array<u32>;
 
-var<workgroup> values: array<f32, 125>;
-var<workgroup> slot_count: u32;
-var<workgroup> block_cells: atomic<u32>;
-var<workgroup> block_first: u32;
-
 fn corner_offset(c: u32) -> vec3<u32> {
     return vec3<u32>(((c >> 1u) ^ c) & 1u, (c >> 1u) & 1u, (c >> 2u) & 1u);
 }
 
+fn active_slot(workgroup: vec3<u32>) -> u32 {
+    let slot = slot_of(workgroup);
+    if (slot >= min(atomicLoad(&counters.active_blocks), grid.max_blocks)) {
+        return INVALID;
+    }
+    return slot;
+}
+
 @compute @workgroup_size(64)
 fn evaluate_field(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_invocation_index) local: u32) {
-    let slot = slot_of(workgroup);
-    if (local == 0u) {
-        slot_count = min(atomicLoad(&counters.active_blocks), grid.max_blocks);
-    }
-    // Uniform across the workgroup, so every invocation reaches the barriers below.
-    if (slot >= workgroupUniformLoad(&slot_count)) {
+    let slot = active_slot(workgroup);
+    if (slot == INVALID) {
         return;
     }
     let origin = block_coords(active_blocks[slot]) * BLOCK_CELLS;
@@ -38,37 +39,32 @@ fn evaluate_field(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_in
         if (!is_boundary(id)) {
             value = field_at(grid_point(id));
         }
-        values[i] = value;
         block_values[slot * 125u + i] = value;
     }
-    if (local == 0u) {
-        atomicStore(&block_cells, 0u);
-    }
-    workgroupBarrier();
+}
 
+@compute @workgroup_size(64)
+fn classify_cells(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_invocation_index) local: u32) {
+    let slot = active_slot(workgroup);
+    if (slot == INVALID) {
+        return;
+    }
+    let origin = block_coords(active_blocks[slot]) * BLOCK_CELLS;
     let at = vec3<u32>(local % BLOCK_CELLS, (local / BLOCK_CELLS) % BLOCK_CELLS, local / (BLOCK_CELLS * BLOCK_CELLS));
     var case_index = 0u;
     if (all(origin + at < vec3<u32>(grid.cells_per_axis))) {
         for (var c = 0u; c < 8u; c++) {
             let p = at + corner_offset(c);
-            let v = values[p.x + BLOCK_POINTS * (p.y + BLOCK_POINTS * p.z)];
+            let v = block_values[slot * 125u + p.x + BLOCK_POINTS * (p.y + BLOCK_POINTS * p.z)];
             case_index |= select(0u, 1u << c, v > grid.iso);
         }
     }
     cell_cases[slot * 64u + local] = case_index;
-    let crossed = case_index != 0u && case_index != 255u;
-    // One global atomic per block: cells take places within the block's run.
-    var place = 0u;
-    if (crossed) {
-        place = atomicAdd(&block_cells, 1u);
-    }
-    workgroupBarrier();
-    if (local == 0u) {
-        block_first = atomicAdd(&counters.active_cells, atomicLoad(&block_cells));
-    }
-    let first = workgroupUniformLoad(&block_first);
-    if (crossed && first + place < grid.max_cells) {
-        active_cells[first + place] = slot * 64u + local;
+    if (case_index != 0u && case_index != 255u) {
+        let place = atomicAdd(&counters.active_cells, 1u);
+        if (place < grid.max_cells) {
+            active_cells[place] = slot * 64u + local;
+        }
     }
 }
 

@@ -8,8 +8,9 @@ use crate::scene_buffers::SceneBuffers;
 /// Owns the field pipeline and its bind group for the current buffers.
 pub struct FieldPass {
     pipeline: wgpu::ComputePipeline,
+    classify: wgpu::ComputePipeline,
     plan: wgpu::ComputePipeline,
-    groups: Option<[wgpu::BindGroup; 2]>,
+    groups: Option<[wgpu::BindGroup; 3]>,
 }
 
 impl FieldPass {
@@ -17,6 +18,7 @@ impl FieldPass {
         let module = compute_module(device, "field: shader", include_str!("../shaders/field.wgsl"));
         Self {
             pipeline: compute_pipeline(device, "field: pipeline", &module, "evaluate_field"),
+            classify: compute_pipeline(device, "field: classify pipeline", &module, "classify_cells"),
             plan: compute_pipeline(device, "field: plan pipeline", &module, "plan_cell_dispatch"),
             groups: None,
         }
@@ -32,6 +34,17 @@ impl FieldPass {
                 &[
                     (0, &scene.grid),
                     (1, &scene.spheres),
+                    (2, &mesh.counters),
+                    (3, &mesh.active_blocks),
+                    (4, &mesh.block_values),
+                ],
+            ),
+            bind_buffers(
+                device,
+                "field: classify bind group",
+                &self.classify,
+                &[
+                    (0, &scene.grid),
                     (2, &mesh.counters),
                     (3, &mesh.active_blocks),
                     (4, &mesh.block_values),
@@ -54,13 +67,16 @@ impl FieldPass {
         mesh: &MeshBuffers,
         timestamp_writes: Option<wgpu::ComputePassTimestampWrites>,
     ) {
-        let [group, plan] = self.groups.as_ref().expect("FieldPass::bind before encode");
+        let [group, classify, plan] = self.groups.as_ref().expect("FieldPass::bind before encode");
         let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
             label: Some("field: pass"),
             timestamp_writes,
         });
         pass.set_pipeline(&self.pipeline);
         pass.set_bind_group(0, group, &[]);
+        pass.dispatch_workgroups_indirect(&mesh.dispatch, 0);
+        pass.set_pipeline(&self.classify);
+        pass.set_bind_group(0, classify, &[]);
         pass.dispatch_workgroups_indirect(&mesh.dispatch, 0);
         pass.set_pipeline(&self.plan);
         pass.set_bind_group(0, plan, &[]);

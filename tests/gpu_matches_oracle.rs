@@ -4,9 +4,9 @@
 mod common;
 
 use common::*;
+use metaballs::reference::{self, Grid};
 use metaballs::{Scene, Settings};
 use rand::{RngExt, SeedableRng};
-use metaballs::reference::{self, Grid};
 
 /// Checks the GPU mesh of the renderer's current scene against the oracle: equal triangle counts, and
 /// the same triangles with vertices within 1e-4 of a cell and normals within 0.01°.
@@ -131,7 +131,8 @@ fn seeded_random_scenes_match_the_oracle() {
                 .set_settings(Settings { seed, sphere_count: count, resolution, iso, ..Settings::default() })
                 .unwrap();
             o.renderer.update(time).unwrap();
-            let what = format!("case {case}: seed {seed}, {count} spheres, {resolution} cells, iso {iso}, {time} s");
+            let what =
+                format!("case {case}: seed {seed}, {count} spheres, {resolution} cells, iso {iso}, {time} s");
             with_surface += (assert_gpu_matches_oracle(o, &what) > 0) as u32;
         }
     });
