@@ -75,39 +75,7 @@ impl Offscreen {
 
     /// Returns the pixels of the frame drawn last, RGBA8 (sRGB), rows top to bottom.
     pub fn last_frame_rgba(&mut self) -> Vec<u8> {
-        let (width, height) = self.renderer.size();
-        let row_bytes = width * 4;
-        let padded =
-            row_bytes.div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
-        let buffer = self.device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("offscreen: pixels"),
-            size: padded as u64 * height as u64,
-            usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
-        let mut encoder = self
-            .device
-            .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("offscreen: copy") });
-        encoder.copy_texture_to_buffer(
-            wgpu::TexelCopyTextureInfo {
-                texture: &self.texture,
-                mip_level: 0,
-                origin: wgpu::Origin3d::ZERO,
-                aspect: wgpu::TextureAspect::All,
-            },
-            wgpu::TexelCopyBufferInfo {
-                buffer: &buffer,
-                layout: wgpu::TexelCopyBufferLayout {
-                    offset: 0,
-                    bytes_per_row: Some(padded),
-                    rows_per_image: None,
-                },
-            },
-            wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
-        );
-        self.queue.submit([encoder.finish()]);
-        let bytes = pollster::block_on(gpu::map_and_read(&self.device, &buffer));
-        bytes.chunks(padded as usize).flat_map(|row| &row[..row_bytes as usize]).copied().collect()
+        pollster::block_on(gpu::read_texture(&self.device, &self.queue, &self.texture))
     }
 }
 

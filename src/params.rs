@@ -53,19 +53,20 @@ pub fn check_f32(name: &'static str, value: f32, min: f32, max: f32) -> Result<f
     if value.is_infinite() {
         return Err(ParamError::Infinite { name });
     }
-    if value < min || value > max {
-        return Err(ParamError::OutOfRange {
-            name,
-            value: value.to_string(),
-            min: min.to_string(),
-            max: max.to_string(),
-        });
-    }
-    Ok(value)
+    check_range(name, value, min, max)
 }
 
 /// Checks that an integer `value` lies within `[min, max]`.
 pub fn check_u32(name: &'static str, value: u32, min: u32, max: u32) -> Result<u32, ParamError> {
+    check_range(name, value, min, max)
+}
+
+fn check_range<T: PartialOrd + fmt::Display>(
+    name: &'static str,
+    value: T,
+    min: T,
+    max: T,
+) -> Result<T, ParamError> {
     if value < min || value > max {
         return Err(ParamError::OutOfRange {
             name,

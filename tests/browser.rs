@@ -66,31 +66,8 @@ async fn the_renderer_draws_a_non_blank_image_offscreen() {
         view_formats: &[],
     });
     renderer.render(&texture.create_view(&Default::default()));
-    let row = width * 4;
-    let padded = row.div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
-    let buffer = device.create_buffer(&wgpu::BufferDescriptor {
-        label: Some("test: pixels"),
-        size: (padded * height) as u64,
-        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-        mapped_at_creation: false,
-    });
-    let mut encoder = device.create_command_encoder(&Default::default());
-    encoder.copy_texture_to_buffer(
-        texture.as_image_copy(),
-        wgpu::TexelCopyBufferInfo {
-            buffer: &buffer,
-            layout: wgpu::TexelCopyBufferLayout {
-                offset: 0,
-                bytes_per_row: Some(padded),
-                rows_per_image: None,
-            },
-        },
-        wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
-    );
-    queue.submit([encoder.finish()]);
-    let bytes = metaballs::gpu::map_and_read(&device, &buffer).await;
-    let pixels: Vec<&[u8]> =
-        bytes.chunks(padded as usize).flat_map(|r| r[..row as usize].chunks(4)).collect();
+    let bytes = metaballs::gpu::read_texture(&device, &queue, &texture).await;
+    let pixels: Vec<&[u8]> = bytes.chunks(4).collect();
     // The surface is red; the background blue-grey.
     let surface = pixels.iter().filter(|p| p[0] as i32 > p[2] as i32 + 30).count();
     let fraction = surface as f32 / pixels.len() as f32;
