@@ -179,7 +179,7 @@ test('each control changes the picture and the triangle count', async () => {
   const { page, errors } = await open('?paused=1&seed=3');
   let triangles = await settledTriangles(page);
   let before = await screenshot(page, 'controls-start');
-  for (const [id, value] of [['spheres', 12], ['iso', 0.6], ['resolution', 40]]) {
+  for (const [id, value] of [['spheres', 12], ['iso', 0.6], ['resolution', 24]]) {
     await setRange(page, id, value);
     const now = await waitForTriangles(page, triangles);
     const after = await screenshot(page, `controls-${id}`);
