@@ -83,6 +83,25 @@ pub async fn read_buffer(
     map_and_read(device, &staging).await
 }
 
+/// A texture to render frames into and read them back from (offscreen rendering and tests).
+pub fn render_target(
+    device: &wgpu::Device,
+    width: u32,
+    height: u32,
+    format: wgpu::TextureFormat,
+) -> wgpu::Texture {
+    device.create_texture(&wgpu::TextureDescriptor {
+        label: Some("offscreen: target"),
+        size: wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format,
+        usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
+        view_formats: &[],
+    })
+}
+
 /// Copies a 4-byte-per-texel 2D texture (COPY_SRC) into a mappable buffer and returns its texels, rows
 /// top to bottom without padding. Waits for the GPU: for tests and tools.
 pub async fn read_texture(device: &wgpu::Device, queue: &wgpu::Queue, texture: &wgpu::Texture) -> Vec<u8> {

@@ -55,16 +55,7 @@ async fn the_renderer_draws_a_non_blank_image_offscreen() {
     let (width, height) = (128u32, 96u32);
     let mut renderer =
         Renderer::new(device.clone(), queue.clone(), FORMAT, width, height, Settings::default()).unwrap();
-    let texture = device.create_texture(&wgpu::TextureDescriptor {
-        label: Some("test: target"),
-        size: wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
-        mip_level_count: 1,
-        sample_count: 1,
-        dimension: wgpu::TextureDimension::D2,
-        format: FORMAT,
-        usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
-        view_formats: &[],
-    });
+    let texture = metaballs::gpu::render_target(&device, width, height, FORMAT);
     renderer.render(&texture.create_view(&Default::default()));
     let bytes = metaballs::gpu::read_texture(&device, &queue, &texture).await;
     let pixels: Vec<&[u8]> = bytes.chunks(4).collect();
