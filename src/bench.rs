@@ -34,7 +34,9 @@ pub struct Record {
 
 /// What to run.
 pub struct Plan {
-    pub resolutions: Vec<u32>,
+    /// `None`: 32, 64, 128, 256, and 512 where the device holds it (not on software adapters, where it
+    /// takes seconds per frame).
+    pub resolutions: Option<Vec<u32>>,
     pub sphere_counts: Vec<u32>,
     pub frames: u32,
     pub size: (u32, u32),
@@ -56,9 +58,17 @@ pub fn run(
     let base = Settings { antialiasing: plan.antialiasing, ..Settings::default() };
     let mut offscreen = Offscreen::blocking(base, width, height)?;
     let timed = offscreen.renderer.enable_timing();
-    let adapter = offscreen.adapter.get_info().name;
+    let info = offscreen.adapter.get_info();
+    let resolutions = plan.resolutions.clone().unwrap_or_else(|| {
+        let mut list = vec![32, 64, 128, 256];
+        if offscreen.renderer.max_resolution() >= 512 && info.device_type != wgpu::DeviceType::Cpu {
+            list.push(512);
+        }
+        list
+    });
+    let adapter = info.name;
     let mut records = Vec::new();
-    for &resolution in &plan.resolutions {
+    for &resolution in &resolutions {
         for &spheres in &plan.sphere_counts {
             let settings = Settings { resolution, sphere_count: spheres, ..base };
             offscreen.renderer.set_settings(settings)?;

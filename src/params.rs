@@ -11,7 +11,7 @@ pub const MAX_SPHERES: u32 = 64;
 /// Fewest cells along each axis of the grid.
 pub const MIN_RESOLUTION: u32 = 8;
 /// Most cells along each axis of the grid (devices may hold fewer; see `Renderer::max_resolution`).
-pub const MAX_RESOLUTION: u32 = 256;
+pub const MAX_RESOLUTION: u32 = 512;
 /// Iso levels accepted: below the lower end the surface fills the box, above the upper end it vanishes.
 pub const ISO_RANGE: (f32, f32) = (0.05, 20.0);
 

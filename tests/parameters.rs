@@ -32,9 +32,9 @@ fn every_setter_refuses_bad_values_and_keeps_the_previous_state() {
         assert_refused(r.set_iso(-1.0), "iso level must be between 0.05 and 20, got -1");
         assert_refused(r.set_iso(1e9), "iso level must be between");
 
-        assert_refused(r.set_resolution(0), "resolution (cells per axis) must be between 8 and 256, got 0");
-        assert_refused(r.set_resolution(7), "resolution (cells per axis) must be between 8 and 256, got 7");
-        assert_refused(r.set_resolution(100_000), "resolution (cells per axis) must be between 8 and 256");
+        assert_refused(r.set_resolution(0), "resolution (cells per axis) must be between 8 and 512, got 0");
+        assert_refused(r.set_resolution(7), "resolution (cells per axis) must be between 8 and 512, got 7");
+        assert_refused(r.set_resolution(100_000), "resolution (cells per axis) must be between 8 and 512");
 
         let material = Material::default();
         for bad in BAD_FLOATS {
@@ -195,8 +195,8 @@ fn every_cli_flag_refuses_bad_values_with_its_message() {
         (&["--iso", "NaN"], "iso level must be a number, got NaN"),
         (&["--iso", "inf"], "iso level must be finite, got infinity"),
         (&["--iso", "-2"], "iso level must be between 0.05 and 20, got -2"),
-        (&["--resolution", "4"], "resolution (cells per axis) must be between 8 and 256, got 4"),
-        (&["--resolution", "9999"], "resolution (cells per axis) must be between 8 and 256, got 9999"),
+        (&["--resolution", "4"], "resolution (cells per axis) must be between 8 and 512, got 4"),
+        (&["--resolution", "9999"], "resolution (cells per axis) must be between 8 and 512, got 9999"),
         (&["--size", "0x10"], "width must be a whole number from 1 to 8192"),
         (&["--size", "640"], "size must look like 960x640"),
         (&["--size", "10x99999"], "height must be a whole number from 1 to 8192"),
@@ -304,6 +304,6 @@ fn the_benchmark_runs_and_writes_json_records() {
     }
     let (code, _, stderr) = cli(&["bench", "--resolutions", "4"]);
     assert_eq!(code, 2);
-    assert!(stderr.contains("resolution (cells per axis) must be between 8 and 256, got 4"), "{stderr}");
+    assert!(stderr.contains("resolution (cells per axis) must be between 8 and 512, got 4"), "{stderr}");
     std::fs::remove_dir_all(&dir).unwrap();
 }

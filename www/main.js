@@ -424,8 +424,9 @@ async function main() {
   }
   if (stopped) return;
 
-  $('resolution').max = String(app.max_resolution());
   const adapter = await adapterInfo();
+  // A software adapter takes seconds per frame beyond 256 cells; the link can still ask for more.
+  $('resolution').max = String(adapter.software ? Math.min(256, app.max_resolution()) : app.max_resolution());
   $('adapter').textContent = adapter.label;
   if (adapter.software && !new URLSearchParams(location.search).has('aa')) state.aa = false;
   for (const key of ['spheres', 'iso', 'res', 'seed', 'shine', 'color', 'aa']) {
