@@ -173,6 +173,13 @@ fn a_resolution_beyond_the_device_names_the_limit() {
     r.set_resolution(160).unwrap();
 }
 
+/// An empty folder of its own for one test.
+fn scratch_dir(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("{name}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
 fn cli(args: &[&str]) -> (i32, String, String) {
     let out = Command::new(env!("CARGO_BIN_EXE_metaballs")).args(args).output().expect("run the binary");
     (
@@ -184,8 +191,7 @@ fn cli(args: &[&str]) -> (i32, String, String) {
 
 #[test]
 fn every_cli_flag_refuses_bad_values_with_its_message() {
-    let dir = std::env::temp_dir().join(format!("metaballs-cli-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = scratch_dir("metaballs-cli");
     let out = dir.join("bad.png");
     let out = out.to_str().unwrap();
     let cases: &[(&[&str], &str)] = &[
@@ -225,8 +231,7 @@ fn every_cli_flag_refuses_bad_values_with_its_message() {
 
 #[test]
 fn the_cli_writes_a_png_of_the_requested_size() {
-    let dir = std::env::temp_dir().join(format!("metaballs-cli-ok-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = scratch_dir("metaballs-cli-ok");
     let out = dir.join("frame.png");
     let (code, stdout, stderr) = cli(&[
         "render",
@@ -275,8 +280,7 @@ fn changing_resolution_frees_the_old_buffers() {
 
 #[test]
 fn the_benchmark_runs_and_writes_json_records() {
-    let dir = std::env::temp_dir().join(format!("metaballs-bench-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = scratch_dir("metaballs-bench");
     let json = dir.join("bench.json");
     let (code, stdout, stderr) = cli(&[
         "bench",

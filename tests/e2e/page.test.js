@@ -188,6 +188,9 @@ test('each control changes the picture and the triangle count', async () => {
     assert.notEqual(now, triangles, `${id}: the triangle count did not change`);
     console.log(`${id} → ${value}: ${triangles} → ${now} triangles, ${(changed * 100).toFixed(1)}% of pixels changed`);
     triangles = await settledTriangles(page);
+    // The buffers have grown to the surface: no lasting overflow warning.
+    await page.waitForTimeout(1200);
+    assert.equal(await page.isVisible('#overflow'), false, `${id}: overflow warning still shown`);
     before = after;
   }
   // Keyboard: arrow keys move a focused slider.
