@@ -6,6 +6,7 @@ use crate::mesh_buffers::{BLOCK_CELLS, MeshBuffers};
 use crate::scene_buffers::SceneBuffers;
 
 /// Owns the block classification pipelines and their bind groups for the current buffers.
+#[derive(Clone)]
 pub struct BlockPass {
     classify: wgpu::ComputePipeline,
     plan: wgpu::ComputePipeline,

@@ -6,6 +6,7 @@ use crate::mesh_buffers::MeshBuffers;
 use crate::scene_buffers::SceneBuffers;
 
 /// Owns the field pipeline and its bind group for the current buffers.
+#[derive(Clone)]
 pub struct FieldPass {
     pipeline: wgpu::ComputePipeline,
     classify: wgpu::ComputePipeline,

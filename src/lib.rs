@@ -8,6 +8,7 @@
 #[cfg(not(target_arch = "wasm32"))]
 pub mod bench;
 pub mod blocks;
+pub mod context;
 pub mod field_pass;
 pub mod gpu;
 pub mod marching_cubes;
@@ -27,6 +28,7 @@ pub mod uniforms;
 #[cfg(target_arch = "wasm32")]
 mod web;
 
+pub use context::GpuContext;
 pub use params::{Camera, Material, ParamError, Settings};
 pub use renderer::{FrameStats, Renderer};
 pub use scene::{Scene, Sphere};

@@ -18,6 +18,7 @@ pub fn flat_triangle_table() -> Vec<i32> {
 }
 
 /// Owns the marching-cubes pipelines, the tables on the GPU, and bind groups for the current buffers.
+#[derive(Clone)]
 pub struct MarchingCubesPass {
     vertices: wgpu::ComputePipeline,
     triangles: wgpu::ComputePipeline,

@@ -2,6 +2,7 @@
 //! any texture view of its format (a canvas's current texture or an offscreen texture).
 
 use crate::blocks::BlockPass;
+use crate::context::{GpuContext, RendererToken};
 use crate::field_pass::FieldPass;
 use crate::gpu::read_buffer;
 use crate::marching_cubes::MarchingCubesPass;
@@ -11,12 +12,12 @@ use crate::params::{self, Camera, MAX_RESOLUTION, MIN_RESOLUTION, Material, Para
 use crate::reference::Grid;
 use crate::scene::{BOX_HALF_EXTENT, Scene};
 use crate::scene_buffers::SceneBuffers;
-use crate::shade::ShadePass;
+use crate::shade::{MULTISAMPLES, ShadePass};
 use crate::timing::{StageTimes, Timing};
 use crate::uniforms::{Counters, GridUniform, ShadingUniform};
 use glam::{UVec3, Vec3};
+use std::sync::Arc;
 use std::sync::atomic::{AtomicU8, Ordering};
-use std::sync::{Arc, Mutex};
 
 /// What the GPU reported for a past frame (a frame or two late; nothing waits for it).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -77,6 +78,8 @@ enum Sizing {
 
 /// Draws merging spheres: block skipping, field, marching cubes and shading, every frame on the GPU.
 pub struct Renderer {
+    context: GpuContext,
+    _alive: RendererToken,
     device: wgpu::Device,
     queue: wgpu::Queue,
     format: wgpu::TextureFormat,
@@ -96,11 +99,11 @@ pub struct Renderer {
     latest_stats: Option<FrameStats>,
     frame: u64,
     timing: Option<Timing>,
-    gpu_error: Arc<Mutex<Option<String>>>,
 }
 
 impl Renderer {
-    /// A renderer drawing into `width` × `height` textures of `format`, with validated `settings`.
+    /// A renderer with a device of its own, drawing into `width` × `height` textures of `format`, with
+    /// validated `settings`.
     pub fn new(
         device: wgpu::Device,
         queue: wgpu::Queue,
@@ -109,27 +112,38 @@ impl Renderer {
         height: u32,
         settings: Settings,
     ) -> Result<Self, ParamError> {
+        Self::on_context(&GpuContext::new(device, queue), format, width, height, settings)
+    }
+
+    /// A renderer on a shared device: it uses the context's pipelines and owns only its buffers,
+    /// targets and scene.
+    pub fn on_context(
+        context: &GpuContext,
+        format: wgpu::TextureFormat,
+        width: u32,
+        height: u32,
+        settings: Settings,
+    ) -> Result<Self, ParamError> {
         let settings = settings.validated()?;
+        let (device, queue) = (context.device().clone(), context.queue().clone());
         check_size(&device, width, height)?;
         check_resolution_fits(&device, settings.resolution)?;
         let scene = Scene::new(settings.seed, settings.sphere_count)?;
 
-        let gpu_error: Arc<Mutex<Option<String>>> = Arc::default();
-        let sink = gpu_error.clone();
-        device.on_uncaptured_error(Arc::new(move |error: wgpu::Error| {
-            let message = error.to_string();
-            log_error(&message);
-            sink.lock().unwrap_or_else(|e| e.into_inner()).get_or_insert(message);
-        }));
-
+        let pipelines = context.pipelines();
         let scene_buffers = SceneBuffers::new(&device);
         let grid = Grid { cells_per_axis: settings.resolution };
         let mesh = MeshBuffers::new(&device, grid, automatic_capacity(&device, grid));
         let mut renderer = Self {
-            blocks: BlockPass::new(&device),
-            field: FieldPass::new(&device),
-            marching: MarchingCubesPass::new(&device),
-            shade: ShadePass::new(&device, format, width, height, settings.antialiasing),
+            blocks: pipelines.blocks.clone(),
+            field: pipelines.field.clone(),
+            marching: pipelines.marching.clone(),
+            shade: ShadePass::new(
+                &device,
+                context.shade_pipelines(format, sample_count(settings.antialiasing)),
+                width,
+                height,
+            ),
             stats_slots: (0..STATS_SLOTS)
                 .map(|_| StatsSlot {
                     buffer: device.create_buffer(&wgpu::BufferDescriptor {
@@ -143,6 +157,8 @@ impl Renderer {
                     capacity: mesh.capacity,
                 })
                 .collect(),
+            _alive: context.renderer_token(),
+            context: context.clone(),
             device,
             queue,
             format,
@@ -156,7 +172,6 @@ impl Renderer {
             latest_stats: None,
             frame: 0,
             timing: None,
-            gpu_error,
         };
         renderer.bind_passes();
         Ok(renderer)
@@ -202,6 +217,28 @@ impl Renderer {
         self.mesh.bytes()
     }
 
+    /// GPU memory held by this renderer's own buffers and targets (not the shared pipelines), in bytes.
+    pub fn gpu_bytes(&self) -> u64 {
+        self.mesh.bytes() + self.shade.bytes()
+    }
+
+    /// The device context this renderer draws on.
+    pub fn context(&self) -> &GpuContext {
+        &self.context
+    }
+
+    /// True when a past frame asked for larger buffers, so the next frame would differ from the last
+    /// even with nothing else changed.
+    pub fn needs_redraw(&self) -> bool {
+        self.pending_capacity.is_some()
+    }
+
+    /// Takes in the statistics that have arrived since the last frame, without drawing (a paused view
+    /// calls this so its figures still come in).
+    pub fn poll_stats(&mut self) {
+        self.collect_stats();
+    }
+
     /// The newest statistics the GPU has reported, if any yet.
     pub fn stats(&self) -> Option<FrameStats> {
         self.latest_stats
@@ -209,7 +246,7 @@ impl Renderer {
 
     /// The first GPU error raised outside an error scope, if any (they are also logged).
     pub fn gpu_error(&self) -> Option<String> {
-        self.gpu_error.lock().unwrap_or_else(|e| e.into_inner()).clone()
+        self.context.gpu_error()
     }
 
     /// Follows a new output size.
@@ -234,7 +271,9 @@ impl Renderer {
         let resolution_changed = settings.resolution != self.settings.resolution;
         if settings.antialiasing != self.settings.antialiasing {
             let (width, height) = self.size;
-            self.shade = ShadePass::new(&self.device, self.format, width, height, settings.antialiasing);
+            let pipelines = self.context.shade_pipelines(self.format, sample_count(settings.antialiasing));
+            self.shade.destroy();
+            self.shade = ShadePass::new(&self.device, pipelines, width, height);
         }
         self.settings = settings;
         if resolution_changed {
@@ -582,11 +621,16 @@ impl Renderer {
     }
 }
 
-fn log_error(message: &str) {
-    #[cfg(target_arch = "wasm32")]
-    web_sys::console::error_1(&format!("GPU error: {message}").into());
-    #[cfg(not(target_arch = "wasm32"))]
-    eprintln!("GPU error: {message}");
+impl Drop for Renderer {
+    /// Frees the GPU memory at once: a view removed from a page gives its buffers back.
+    fn drop(&mut self) {
+        self.mesh.destroy();
+        self.shade.destroy();
+    }
+}
+
+fn sample_count(antialiasing: bool) -> u32 {
+    if antialiasing { MULTISAMPLES } else { 1 }
 }
 
 fn storage_limit(device: &wgpu::Device) -> u64 {

@@ -104,6 +104,12 @@ impl Scene {
         Ok(Self { seed: 0, spheres })
     }
 
+    /// The same spheres, with `seed` drawing the ones added when the count grows.
+    pub fn with_seed(mut self, seed: u64) -> Self {
+        self.seed = seed;
+        self
+    }
+
     /// The seed this layout was drawn from (0 for hand-made scenes).
     pub fn seed(&self) -> u64 {
         self.seed

@@ -8,40 +8,24 @@ use crate::uniforms::ShadingUniform;
 pub const MULTISAMPLES: u32 = 4;
 const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 
-/// Owns the shading pipelines, their uniform buffer, and multisampled colour and depth targets sized to
-/// the output.
-pub struct ShadePass {
+/// The shading pipelines for one output format and sample count, with their bind group layout.
+/// Cloning shares them: every renderer on a device drawing the same format uses one set.
+#[derive(Clone)]
+pub struct ShadePipelines {
     background: wgpu::RenderPipeline,
     box_edges: wgpu::RenderPipeline,
     surface: wgpu::RenderPipeline,
-    uniform: wgpu::Buffer,
-    bind_group: wgpu::BindGroup,
+    layout: wgpu::BindGroupLayout,
     format: wgpu::TextureFormat,
     sample_count: u32,
-    /// The multisampled colour target, resolved into the output (none without antialiasing).
-    color: Option<wgpu::TextureView>,
-    depth: wgpu::TextureView,
 }
 
-impl ShadePass {
-    /// Draws `width` × `height` frames of `format`, 4× multisampled when `antialiasing`.
-    pub fn new(
-        device: &wgpu::Device,
-        format: wgpu::TextureFormat,
-        width: u32,
-        height: u32,
-        antialiasing: bool,
-    ) -> Self {
-        let sample_count = if antialiasing { MULTISAMPLES } else { 1 };
+impl ShadePipelines {
+    /// Compiles the shading shader and its pipelines for `format` with `sample_count` samples.
+    pub fn new(device: &wgpu::Device, format: wgpu::TextureFormat, sample_count: u32) -> Self {
         let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some("shade: shader"),
             source: wgpu::ShaderSource::Wgsl(include_str!("../shaders/shade.wgsl").into()),
-        });
-        let uniform = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("shade: uniforms"),
-            size: std::mem::size_of::<ShadingUniform>() as u64,
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
         });
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("shade: bind group layout"),
@@ -55,11 +39,6 @@ impl ShadePass {
                 },
                 count: None,
             }],
-        });
-        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("shade: bind group"),
-            layout: &layout,
-            entries: &[wgpu::BindGroupEntry { binding: 0, resource: uniform.as_entire_binding() }],
         });
         let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("shade: pipeline layout"),
@@ -133,13 +112,52 @@ impl ShadePass {
             TriangleList,
             true,
         );
-        let (color, depth) = targets(device, format, width, height, sample_count);
-        Self { background, box_edges, surface, uniform, bind_group, format, sample_count, color, depth }
+        Self { background, box_edges, surface, layout, format, sample_count }
+    }
+}
+
+/// Draws a renderer's frames: shared pipelines, plus its own uniform buffer and colour and depth
+/// targets sized to the output.
+pub struct ShadePass {
+    pipelines: ShadePipelines,
+    uniform: wgpu::Buffer,
+    bind_group: wgpu::BindGroup,
+    targets: Targets,
+}
+
+impl ShadePass {
+    /// Draws `width` × `height` frames with `pipelines` (which fix the format and sample count).
+    pub fn new(device: &wgpu::Device, pipelines: ShadePipelines, width: u32, height: u32) -> Self {
+        let uniform = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("shade: uniforms"),
+            size: std::mem::size_of::<ShadingUniform>() as u64,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("shade: bind group"),
+            layout: &pipelines.layout,
+            entries: &[wgpu::BindGroupEntry { binding: 0, resource: uniform.as_entire_binding() }],
+        });
+        let targets = Targets::new(device, &pipelines, width, height);
+        Self { pipelines, uniform, bind_group, targets }
     }
 
     /// Reallocates the multisampled targets for a new output size.
     pub fn resize(&mut self, device: &wgpu::Device, width: u32, height: u32) {
-        (self.color, self.depth) = targets(device, self.format, width, height, self.sample_count);
+        self.targets.destroy();
+        self.targets = Targets::new(device, &self.pipelines, width, height);
+    }
+
+    /// GPU memory held by this pass's own targets and uniforms, in bytes.
+    pub fn bytes(&self) -> u64 {
+        self.uniform.size() + self.targets.bytes()
+    }
+
+    /// Frees the targets and uniforms now rather than when the last reference goes.
+    pub fn destroy(&self) {
+        self.targets.destroy();
+        self.uniform.destroy();
     }
 
     /// The uniform buffer the renderer writes each frame.
@@ -158,16 +176,20 @@ impl ShadePass {
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("shade: pass"),
             color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: self.color.as_ref().unwrap_or(view),
+                view: self.targets.color_view.as_ref().unwrap_or(view),
                 depth_slice: None,
-                resolve_target: self.color.as_ref().map(|_| view),
+                resolve_target: self.targets.color_view.as_ref().map(|_| view),
                 ops: wgpu::Operations {
                     load: wgpu::LoadOp::Clear(wgpu::Color::BLACK),
-                    store: if self.color.is_some() { wgpu::StoreOp::Discard } else { wgpu::StoreOp::Store },
+                    store: if self.targets.color.is_some() {
+                        wgpu::StoreOp::Discard
+                    } else {
+                        wgpu::StoreOp::Store
+                    },
                 },
             })],
             depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                view: &self.depth,
+                view: &self.targets.depth_view,
                 depth_ops: Some(wgpu::Operations {
                     load: wgpu::LoadOp::Clear(1.0),
                     store: wgpu::StoreOp::Discard,
@@ -178,38 +200,58 @@ impl ShadePass {
             ..Default::default()
         });
         pass.set_bind_group(0, &self.bind_group, &[]);
-        pass.set_pipeline(&self.background);
+        pass.set_pipeline(&self.pipelines.background);
         pass.draw(0..3, 0..1);
-        pass.set_pipeline(&self.box_edges);
+        pass.set_pipeline(&self.pipelines.box_edges);
         pass.draw(0..24, 0..1);
-        pass.set_pipeline(&self.surface);
+        pass.set_pipeline(&self.pipelines.surface);
         pass.set_vertex_buffer(0, mesh.vertices.slice(..));
         pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
         pass.draw_indexed_indirect(&mesh.draw_args, 0);
     }
 }
 
-fn targets(
-    device: &wgpu::Device,
-    format: wgpu::TextureFormat,
-    width: u32,
-    height: u32,
-    sample_count: u32,
-) -> (Option<wgpu::TextureView>, wgpu::TextureView) {
-    let texture = |label, format| {
-        device
-            .create_texture(&wgpu::TextureDescriptor {
+/// The multisampled colour target (none without antialiasing) and the depth target.
+struct Targets {
+    color: Option<wgpu::Texture>,
+    depth: wgpu::Texture,
+    color_view: Option<wgpu::TextureView>,
+    depth_view: wgpu::TextureView,
+}
+
+impl Targets {
+    fn new(device: &wgpu::Device, pipelines: &ShadePipelines, width: u32, height: u32) -> Self {
+        let texture = |label, format| {
+            device.create_texture(&wgpu::TextureDescriptor {
                 label: Some(label),
                 size: wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
                 mip_level_count: 1,
-                sample_count,
+                sample_count: pipelines.sample_count,
                 dimension: wgpu::TextureDimension::D2,
                 format,
                 usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
                 view_formats: &[],
             })
-            .create_view(&wgpu::TextureViewDescriptor::default())
-    };
-    let color = (sample_count > 1).then(|| texture("shade: multisampled colour", format));
-    (color, texture("shade: depth", DEPTH_FORMAT))
+        };
+        let view = |t: &wgpu::Texture| t.create_view(&wgpu::TextureViewDescriptor::default());
+        let color =
+            (pipelines.sample_count > 1).then(|| texture("shade: multisampled colour", pipelines.format));
+        let depth = texture("shade: depth", DEPTH_FORMAT);
+        Self { color_view: color.as_ref().map(view), depth_view: view(&depth), color, depth }
+    }
+
+    fn bytes(&self) -> u64 {
+        let bytes = |t: &wgpu::Texture| {
+            let block = t.format().block_copy_size(None).unwrap_or(4) as u64;
+            t.width() as u64 * t.height() as u64 * t.sample_count() as u64 * block
+        };
+        self.color.as_ref().map_or(0, bytes) + bytes(&self.depth)
+    }
+
+    fn destroy(&self) {
+        if let Some(color) = &self.color {
+            color.destroy();
+        }
+        self.depth.destroy();
+    }
 }

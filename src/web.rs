@@ -1,16 +1,19 @@
-//! The browser handle the page drives: a canvas, a device and a `Renderer`, kept alive together for as
-//! long as the page holds the `App`. Every setter validates and returns an error with a message for the
-//! page to show; a refused value leaves the demo running as it was.
+//! The browser side: a `Gpu` (one adapter, device and pipeline set, shared by every view on a page) and
+//! a `View` (one canvas with its own renderer, scene and buffers). Every setter validates and returns an
+//! error with a message for the page to show; a refused value leaves the view running as it was.
 
-use crate::params::Camera;
-use crate::{FrameStats, Renderer, Settings};
+use crate::params::{self, Camera, Kind, PARAMETERS, Value};
+use crate::scene::Scene;
+use crate::{FrameStats, GpuContext, Renderer, Settings, Sphere};
 use glam::Vec3;
+use std::cell::RefCell;
+use std::rc::Rc;
 use wasm_bindgen::prelude::*;
 use web_sys::HtmlCanvasElement;
 
 #[wasm_bindgen]
 extern "C" {
-    /// Shows a panic's message over the canvas (defined by the page before the module starts).
+    /// Reports a panic to the page (defined by the page's script before the module starts).
     #[wasm_bindgen(js_namespace = globalThis, js_name = metaballsShowPanic)]
     fn show_panic(message: &str);
 }
@@ -27,6 +30,56 @@ fn js_error(error: impl std::fmt::Display) -> JsError {
     JsError::new(&error.to_string())
 }
 
+/// The parameter table (name, short name in links, label, kind, accepted range, slider, default), for
+/// the page and the element to build their attributes, URL parsing and controls from.
+#[wasm_bindgen]
+pub fn parameters() -> js_sys::Array {
+    let set = |object: &js_sys::Object, key: &str, value: JsValue| {
+        let _ = js_sys::Reflect::set(object, &key.into(), &value);
+    };
+    PARAMETERS
+        .iter()
+        .map(|p| {
+            let object = js_sys::Object::new();
+            set(&object, "name", p.name.into());
+            set(&object, "url", p.url.into());
+            set(&object, "label", p.label.into());
+            let (kind, words): (&str, &[&str]) = match p.kind {
+                Kind::Integer => ("integer", &[]),
+                Kind::Number => ("number", &[]),
+                Kind::Boolean => ("boolean", &[]),
+                Kind::Color => ("color", &[]),
+                Kind::Choice(words) => ("choice", words),
+                Kind::List(words) => ("list", words),
+            };
+            set(&object, "kind", kind.into());
+            set(
+                &object,
+                "words",
+                words.iter().map(|w| JsValue::from_str(w)).collect::<js_sys::Array>().into(),
+            );
+            set(&object, "min", p.min.into());
+            set(&object, "max", p.max.into());
+            set(&object, "sliderMin", p.slider.0.into());
+            set(&object, "sliderMax", p.slider.1.into());
+            set(&object, "step", p.slider.2.into());
+            set(&object, "default", p.default.into());
+            JsValue::from(object)
+        })
+        .collect()
+}
+
+/// Reads `text` as the value of parameter `name` (or its short name in links): a number, a boolean or
+/// a string; throws with a message naming what is accepted.
+#[wasm_bindgen]
+pub fn parse_parameter(name: &str, text: &str) -> Result<JsValue, JsError> {
+    Ok(match params::parse_parameter(name, text).map_err(js_error)? {
+        Value::Number(v) => v.into(),
+        Value::Boolean(b) => b.into(),
+        Value::Text(s) => s.into(),
+    })
+}
+
 /// Figures from the GPU about a recent frame.
 #[wasm_bindgen]
 #[derive(Clone, Copy)]
@@ -37,7 +90,7 @@ pub struct Stats {
     pub triangles: u32,
     /// Triangles the surface needed (more than `max_triangles` on overflow).
     pub triangles_requested: u32,
-    /// Capacity of the vertex buffer in triangles.
+    /// Capacity of the index buffer in triangles.
     pub max_triangles: u32,
     /// True when triangles were dropped because the budget was full.
     pub overflowed: bool,
@@ -55,33 +108,97 @@ impl From<FrameStats> for Stats {
     }
 }
 
-/// The demo on one canvas.
+/// One adapter and device, their pipelines, and what the page learns about them. Every view on a page
+/// draws with the same `Gpu`; when it is lost, the page makes a new one and the views move to it.
 #[wasm_bindgen]
-pub struct App {
+pub struct Gpu {
+    instance: wgpu::Instance,
+    adapter: wgpu::Adapter,
+    context: GpuContext,
+}
+
+#[wasm_bindgen]
+impl Gpu {
+    /// Requests an adapter and a device. Rejects with a message saying what is missing when the
+    /// browser has no WebGPU or no adapter.
+    pub async fn create() -> Result<Gpu, JsError> {
+        let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
+        desc.backends = wgpu::Backends::BROWSER_WEBGPU;
+        let instance = wgpu::Instance::new(desc);
+        let (adapter, device, queue) = crate::gpu::request_device(&instance, None).await.map_err(js_error)?;
+        Ok(Gpu { instance, adapter, context: GpuContext::new(device, queue) })
+    }
+
+    /// True when the browser says the adapter is a fallback (software) one.
+    pub fn is_fallback(&self) -> bool {
+        self.adapter.get_info().device_type == wgpu::DeviceType::Cpu
+    }
+
+    /// Why the device was lost, once it has been.
+    pub fn lost(&self) -> Option<String> {
+        self.context.lost()
+    }
+
+    /// The first GPU error raised on this device outside a view's frames, if any.
+    pub fn gpu_error(&self) -> Option<String> {
+        self.context.gpu_error()
+    }
+
+    /// Destroys the device, as a driver reset would (tests of recovery use it).
+    pub fn destroy(&self) {
+        self.context.device().destroy();
+    }
+
+    /// Renderers alive on this device (one per view that has started and not been removed).
+    pub fn live_renderers(&self) -> u32 {
+        self.context.live_renderers() as u32
+    }
+
+    /// Pipeline sets compiled on this device: one for the compute passes plus one per output format
+    /// and sample count, however many views there are.
+    pub fn pipeline_sets_built(&self) -> u32 {
+        self.context.pipeline_sets_built() as u32
+    }
+
+    /// The largest resolution this device holds.
+    pub fn max_resolution(&self) -> u32 {
+        crate::renderer::max_resolution(self.context.device())
+    }
+}
+
+/// A view: one canvas, its renderer, scene and buffers, on a shared `Gpu`.
+#[wasm_bindgen]
+pub struct View {
     renderer: Renderer,
     surface: wgpu::Surface<'static>,
     config: wgpu::SurfaceConfiguration,
     device: wgpu::Device,
-    adapter: String,
+    /// The first GPU error this view's frames raised (caught in error scopes around each frame).
+    error: Rc<RefCell<Option<String>>>,
 }
 
 #[wasm_bindgen]
-impl App {
-    /// Starts WebGPU on `canvas` (sized by the page beforehand). Rejects with a message saying what is
-    /// missing when the browser has no WebGPU or no adapter.
-    pub async fn create(canvas: HtmlCanvasElement) -> Result<App, JsError> {
+impl View {
+    /// Starts drawing on `canvas` (sized by the page beforehand) with the given scene settings;
+    /// material and camera follow through their setters.
+    pub fn create(
+        gpu: &Gpu,
+        canvas: HtmlCanvasElement,
+        spheres: u32,
+        iso: f32,
+        resolution: u32,
+        seed: u32,
+        antialiasing: bool,
+    ) -> Result<View, JsError> {
         let (width, height) = (canvas.width().max(1), canvas.height().max(1));
-        let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
-        desc.backends = wgpu::Backends::BROWSER_WEBGPU;
-        let instance = wgpu::Instance::new(desc);
-        let surface = instance
+        let surface = gpu
+            .instance
             .create_surface(wgpu::SurfaceTarget::Canvas(canvas))
             .map_err(|e| js_error(format!("cannot draw on the canvas with WebGPU: {e}")))?;
-        let (adapter, device, queue) =
-            crate::gpu::request_device(&instance, Some(&surface)).await.map_err(js_error)?;
-        let capabilities = surface.get_capabilities(&adapter);
+        let capabilities = surface.get_capabilities(&gpu.adapter);
         let format =
             *capabilities.formats.first().ok_or_else(|| js_error("the canvas offers no texture format"))?;
+        let device = gpu.context.device().clone();
         let config = wgpu::SurfaceConfiguration {
             usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
             format,
@@ -93,19 +210,18 @@ impl App {
             view_formats: vec![],
             color_space: wgpu::SurfaceColorSpace::Auto,
         };
+        let settings = Settings {
+            sphere_count: spheres,
+            iso,
+            resolution,
+            seed: seed as u64,
+            antialiasing,
+            ..Settings::default()
+        };
+        let renderer =
+            Renderer::on_context(&gpu.context, format, width, height, settings).map_err(js_error)?;
         surface.configure(&device, &config);
-        let info = adapter.get_info();
-        let adapter_name = [info.name.as_str(), info.driver.as_str(), info.driver_info.as_str()]
-            .iter()
-            .filter(|s| !s.is_empty())
-            .copied()
-            .collect::<Vec<_>>()
-            .join(" · ");
-        let adapter_name =
-            if adapter_name.is_empty() { format!("{:?}", info.device_type) } else { adapter_name };
-        let renderer = Renderer::new(device.clone(), queue, format, width, height, Settings::default())
-            .map_err(js_error)?;
-        Ok(App { renderer, surface, config, device, adapter: format!("WebGPU · {adapter_name}") })
+        Ok(View { renderer, surface, config, device, error: Rc::default() })
     }
 
     /// Advances the animation by `dt` seconds and draws a frame on the canvas.
@@ -119,10 +235,34 @@ impl App {
             }
             _ => return Ok(()),
         };
+        let validation = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let memory = self.device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
         let view = texture.texture.create_view(&wgpu::TextureViewDescriptor::default());
         self.renderer.render(&view);
         self.renderer.queue().present(texture);
+        let (memory, validation) = (memory.pop(), validation.pop());
+        let sink = self.error.clone();
+        wasm_bindgen_futures::spawn_local(async move {
+            let error = match memory.await {
+                Some(error) => Some(error),
+                None => validation.await,
+            };
+            if let Some(error) = error {
+                web_sys::console::error_1(&format!("GPU error: {error}").into());
+                sink.borrow_mut().get_or_insert(error.to_string());
+            }
+        });
         Ok(())
+    }
+
+    /// Takes in the GPU's figures for past frames without drawing (a paused view).
+    pub fn poll(&mut self) {
+        self.renderer.poll_stats();
+    }
+
+    /// True when the next frame would differ even with nothing changed (the buffers are growing).
+    pub fn needs_redraw(&self) -> bool {
+        self.renderer.needs_redraw()
     }
 
     /// Follows a new canvas size in device pixels.
@@ -159,11 +299,6 @@ impl App {
         self.renderer.set_camera(camera).map_err(js_error)
     }
 
-    pub fn set_field_of_view(&mut self, degrees: f32) -> Result<(), JsError> {
-        let camera = Camera { fov_y_degrees: degrees, ..self.renderer.settings().camera };
-        self.renderer.set_camera(camera).map_err(js_error)
-    }
-
     pub fn set_shininess(&mut self, shininess: f32) -> Result<(), JsError> {
         let material = crate::Material { shininess, ..self.renderer.settings().material };
         self.renderer.set_material(material).map_err(js_error)
@@ -181,8 +316,36 @@ impl App {
         self.renderer.set_antialiasing(on).map_err(js_error)
     }
 
-    pub fn set_light_position(&mut self, x: f32, y: f32, z: f32) -> Result<(), JsError> {
-        self.renderer.set_light_position(Vec3::new(x, y, z)).map_err(js_error)
+    /// The spheres as they are now, 7 numbers each (centre, radius, velocity), so a view rebuilt on a
+    /// new device carries on from where it was.
+    pub fn spheres(&self) -> Vec<f32> {
+        self.renderer
+            .scene()
+            .spheres()
+            .iter()
+            .flat_map(|s| {
+                [s.center.x, s.center.y, s.center.z, s.radius, s.velocity.x, s.velocity.y, s.velocity.z]
+            })
+            .collect()
+    }
+
+    /// Puts back spheres saved by `spheres`.
+    pub fn set_spheres(&mut self, packed: Vec<f32>) -> Result<(), JsError> {
+        if !packed.len().is_multiple_of(7) {
+            return Err(js_error("spheres come as 7 numbers each (centre, radius, velocity)"));
+        }
+        let spheres = packed
+            .chunks(7)
+            .map(|s| Sphere {
+                center: Vec3::new(s[0], s[1], s[2]),
+                radius: s[3],
+                velocity: Vec3::new(s[4], s[5], s[6]),
+            })
+            .collect();
+        let seed = self.renderer.settings().seed;
+        let scene = Scene::from_spheres(spheres).map_err(js_error)?.with_seed(seed);
+        self.renderer.set_scene(scene);
+        Ok(())
     }
 
     /// Runs mesh generation alone (no drawing), for the benchmark.
@@ -217,24 +380,19 @@ impl App {
         self.renderer.mesh_bytes() as f64
     }
 
+    /// GPU memory held by this view's buffers and targets, in bytes.
+    pub fn gpu_bytes(&self) -> f64 {
+        self.renderer.gpu_bytes() as f64
+    }
+
     /// The newest figures the GPU reported, if any yet.
     pub fn stats(&self) -> Option<Stats> {
         self.renderer.stats().map(Stats::from)
     }
 
-    /// The first GPU error seen, if any.
+    /// The first GPU error this view's frames raised, if any.
     pub fn gpu_error(&self) -> Option<String> {
-        self.renderer.gpu_error()
-    }
-
-    /// What the page is drawing with.
-    pub fn adapter(&self) -> String {
-        self.adapter.clone()
-    }
-
-    /// The largest resolution this device holds.
-    pub fn max_resolution(&self) -> u32 {
-        self.renderer.max_resolution()
+        self.error.borrow().clone()
     }
 
     pub fn sphere_count(&self) -> u32 {
