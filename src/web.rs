@@ -395,6 +395,11 @@ impl View {
         self.error.borrow().clone()
     }
 
+    /// The largest resolution this device holds.
+    pub fn max_resolution(&self) -> u32 {
+        self.renderer.max_resolution()
+    }
+
     pub fn sphere_count(&self) -> u32 {
         self.renderer.settings().sphere_count
     }

@@ -10,12 +10,12 @@ function listParam(query, key, fallback) {
   return values.every((v) => Number.isInteger(v) && v > 0) ? values : fallback;
 }
 
-async function timeFrames(app, frames, step) {
+async function timeFrames(view, frames, step) {
   const times = [];
   for (let i = 0; i < frames; i++) {
     const start = performance.now();
     step();
-    await app.work_done();
+    await view.work_done();
     times.push(performance.now() - start);
   }
   return median(times);
@@ -30,9 +30,9 @@ function showTable(container, records, status) {
     + `</tr></thead><tbody>${rows.join('')}</tbody></table>`;
 }
 
-export async function runBenchmark(app, container) {
+export async function runBenchmark(view, container) {
   const query = new URLSearchParams(location.search);
-  const maxResolution = app.max_resolution();
+  const maxResolution = view.max_resolution();
   const resolutions = listParam(query, 'bench_resolutions', [32, 64, 128, 256]).filter((n) => n <= maxResolution);
   const sphereCounts = listParam(query, 'bench_spheres', [1, 5, 16, 64]);
   const frames = listParam(query, 'bench_frames', [10])[0];
@@ -41,15 +41,15 @@ export async function runBenchmark(app, container) {
   for (const resolution of resolutions) {
     for (const spheres of sphereCounts) {
       showTable(container, records, `Running ${resolution}³ cells × ${spheres} spheres…`);
-      app.set_resolution(resolution);
-      app.set_sphere_count(spheres);
+      view.set_resolution(resolution);
+      view.set_sphere_count(spheres);
       // Warm up: pipelines compile and the buffers grow to the surface.
-      await timeFrames(app, 3, () => app.frame(1 / 60));
-      const frame_ms = await timeFrames(app, frames, () => app.frame(1 / 60));
-      const mesh_ms = await timeFrames(app, frames, () => app.extract());
-      await timeFrames(app, 2, () => app.frame(0));
-      const stats = app.stats();
-      const [blocks, cells] = app.active_fractions();
+      await timeFrames(view, 3, () => view.frame(1 / 60));
+      const frame_ms = await timeFrames(view, frames, () => view.frame(1 / 60));
+      const mesh_ms = await timeFrames(view, frames, () => view.extract());
+      await timeFrames(view, 2, () => view.frame(0));
+      const stats = view.stats();
+      const [blocks, cells] = view.active_fractions();
       records.push({
         resolution,
         spheres,
@@ -58,7 +58,7 @@ export async function runBenchmark(app, container) {
         triangles: stats?.triangles ?? 0,
         active_cell_fraction: cells,
         active_block_fraction: blocks,
-        mesh_bytes: app.mesh_bytes(),
+        mesh_bytes: view.mesh_bytes(),
       });
       stats?.free();
     }

@@ -1,0 +1,97 @@
+// Camera gestures scoped to one element: drag to orbit (mouse, pen, touch), pinch or wheel to zoom,
+// keys while it has focus, double-click to reset. The wheel zooms only while the figure has focus or
+// with Ctrl held; otherwise it scrolls the page and a one-line hint says how to zoom.
+
+const PITCH_LIMIT = 89;
+const DISTANCE_RANGE = [1.5, 20];
+
+/**
+ * Wires gestures on `surface` (the canvas) and keys on `host`. `camera` has get() → {yaw, pitch,
+ * distance} and set(partial); `actions` has togglePause, reseed, resetView, step, hint(text).
+ */
+export function wireCameraInput(host, surface, camera, actions) {
+  const focused = () => host.matches(':focus-within');
+  const orbit = (dYaw, dPitch) => {
+    const { yaw, pitch } = camera.get();
+    camera.set({
+      yaw: ((((yaw + dYaw + 180) % 360) + 360) % 360) - 180,
+      pitch: Math.max(-PITCH_LIMIT, Math.min(PITCH_LIMIT, pitch + dPitch)),
+    });
+  };
+  const zoom = (factor) => {
+    const { distance } = camera.get();
+    camera.set({ distance: Math.max(DISTANCE_RANGE[0], Math.min(DISTANCE_RANGE[1], distance * factor)) });
+  };
+
+  // One-finger vertical swipes scroll the page unless the figure has focus.
+  const touchAction = () => { surface.style.touchAction = focused() ? 'none' : 'pan-y'; };
+  host.addEventListener('focusin', touchAction);
+  host.addEventListener('focusout', touchAction);
+  touchAction();
+
+  const pointers = new Map();
+  let pinchSpan = 0;
+  const span = () => {
+    const [a, b] = [...pointers.values()];
+    return Math.hypot(a.x - b.x, a.y - b.y);
+  };
+  surface.addEventListener('pointerdown', (e) => {
+    surface.setPointerCapture?.(e.pointerId);
+    pointers.set(e.pointerId, { x: e.clientX, y: e.clientY });
+    if (pointers.size === 2) pinchSpan = span();
+  });
+  surface.addEventListener('pointermove', (e) => {
+    const p = pointers.get(e.pointerId);
+    if (!p) return;
+    const dx = e.clientX - p.x;
+    const dy = e.clientY - p.y;
+    p.x = e.clientX;
+    p.y = e.clientY;
+    if (pointers.size === 1) {
+      orbit(-dx * 0.3, dy * 0.3);
+    } else if (pointers.size === 2) {
+      const now = span();
+      if (pinchSpan > 0 && now > 0) zoom(pinchSpan / now);
+      pinchSpan = now;
+    }
+  });
+  const release = (e) => {
+    pointers.delete(e.pointerId);
+    pinchSpan = pointers.size === 2 ? span() : 0;
+  };
+  surface.addEventListener('pointerup', release);
+  surface.addEventListener('pointercancel', release);
+  surface.addEventListener('wheel', (e) => {
+    if (!focused() && !e.ctrlKey) {
+      actions.hint('Click the figure (or hold Ctrl) to zoom with the wheel');
+      return;
+    }
+    e.preventDefault();
+    zoom(Math.exp(e.deltaY * (e.deltaMode === 1 ? 0.05 : 0.0015)));
+  }, { passive: false });
+  surface.addEventListener('dblclick', () => actions.resetView());
+
+  host.addEventListener('keydown', (e) => {
+    // Keys go to the panel's controls while one of them has focus.
+    const target = e.composedPath()[0];
+    if (target instanceof HTMLInputElement || target instanceof HTMLButtonElement
+      || target instanceof HTMLSelectElement || target?.tagName === 'SUMMARY') return;
+    if (e.ctrlKey || e.metaKey || e.altKey) return;
+    const step = e.shiftKey ? 15 : 5;
+    const keys = {
+      ArrowLeft: () => orbit(-step, 0), a: () => orbit(-step, 0),
+      ArrowRight: () => orbit(step, 0), d: () => orbit(step, 0),
+      ArrowUp: () => orbit(0, step), w: () => orbit(0, step),
+      ArrowDown: () => orbit(0, -step), s: () => orbit(0, -step),
+      '+': () => zoom(0.9), '=': () => zoom(0.9),
+      '-': () => zoom(1 / 0.9), _: () => zoom(1 / 0.9),
+      p: actions.togglePause, ' ': actions.togglePause,
+      n: actions.reseed, r: actions.resetView, '.': actions.step,
+    };
+    const action = keys[e.key.length === 1 ? e.key.toLowerCase() : e.key];
+    if (action) {
+      e.preventDefault();
+      action();
+    }
+  });
+}

@@ -1,0 +1,143 @@
+// The element's own styles, adopted by every shadow root (one stylesheet per page). Shadow DOM keeps the
+// host page's rules out and these in.
+
+export const elementStyle = new CSSStyleSheet();
+elementStyle.replaceSync(`
+:host {
+  --panel: rgba(14, 17, 24, 0.84);
+  --text: #e6e9ef;
+  --muted: #9aa3b5;
+  --accent: #e77661;
+  display: block;
+  position: relative;
+  width: 100%;
+  aspect-ratio: 16 / 9;
+  overflow: hidden;
+  background: #0b0d12;
+  color: var(--text);
+  font: 13px/1.4 system-ui, -apple-system, "Segoe UI", Roboto, sans-serif;
+  color-scheme: dark;
+  contain: layout paint;
+  border-radius: 6px;
+}
+:host([hidden]) { display: none; }
+* { box-sizing: border-box; }
+
+canvas {
+  position: absolute;
+  inset: 0;
+  display: block;
+  width: 100%;
+  height: 100%;
+  margin: 0;
+  padding: 0;
+  border: 0;
+  cursor: grab;
+  outline: none;
+}
+canvas:active { cursor: grabbing; }
+canvas:focus-visible { outline: 2px solid var(--accent); outline-offset: -2px; }
+:host(:focus-within) { box-shadow: 0 0 0 2px var(--accent); }
+
+#panel {
+  position: absolute;
+  top: 8px;
+  left: 8px;
+  width: min(280px, 33%);
+  max-height: calc(100% - 16px);
+  overflow-y: auto;
+  background: var(--panel);
+  border-radius: 8px;
+  backdrop-filter: blur(6px);
+}
+#panel[hidden] { display: none; }
+summary { padding: 6px 10px; cursor: pointer; color: var(--muted); user-select: none; }
+summary:focus-visible { outline: 2px solid var(--accent); outline-offset: -2px; }
+.controls { padding: 0 10px 10px; }
+.control {
+  display: grid;
+  grid-template-columns: minmax(48px, 78px) minmax(40px, 1fr) minmax(32px, 52px);
+  align-items: center;
+  gap: 6px;
+  margin: 4px 0;
+}
+.control label { color: var(--muted); overflow: hidden; text-overflow: ellipsis; white-space: nowrap; }
+.control output { text-align: right; font-variant-numeric: tabular-nums; }
+input { margin: 0; font: inherit; }
+input[type="range"] { width: 100%; accent-color: var(--accent); }
+input[type="color"] { width: 100%; height: 22px; border: none; background: none; padding: 0; }
+input[type="checkbox"] { accent-color: var(--accent); justify-self: start; }
+.buttons { display: flex; gap: 6px; margin: 8px 0 4px; flex-wrap: wrap; }
+button {
+  flex: 1;
+  padding: 5px 8px;
+  color: var(--text);
+  background: #232838;
+  border: 1px solid #343b50;
+  border-radius: 6px;
+  font: inherit;
+  cursor: pointer;
+}
+button:hover { background: #2c3245; }
+button[aria-pressed="true"] { background: var(--accent); color: #1a0d0a; border-color: var(--accent); }
+button:focus-visible, input:focus-visible { outline: 2px solid var(--accent); outline-offset: 2px; }
+.seed, .hint { margin: 4px 0; color: var(--muted); font-size: 12px; }
+::slotted(*) { color: var(--muted); font-size: 12px; }
+
+#hud {
+  position: absolute;
+  top: 8px;
+  right: 8px;
+  max-width: 33%;
+  padding: 6px 10px;
+  background: var(--panel);
+  border-radius: 8px;
+  font-variant-numeric: tabular-nums;
+  font-size: 12px;
+}
+#hud[hidden] { display: none; }
+#hud div { white-space: nowrap; overflow: hidden; text-overflow: ellipsis; }
+#hud .key { display: inline-block; width: 64px; color: var(--muted); }
+#overflow { color: #ffb347; white-space: normal !important; }
+
+#play {
+  position: absolute;
+  right: 8px;
+  bottom: 8px;
+  flex: none;
+  padding: 6px 12px;
+  background: var(--panel);
+}
+#play[hidden] { display: none; }
+
+#notice, #wheel-hint {
+  position: absolute;
+  left: 50%;
+  bottom: 8px;
+  transform: translateX(-50%);
+  max-width: calc(100% - 16px);
+  padding: 6px 10px;
+  border-radius: 6px;
+  font-size: 12.5px;
+}
+#notice { background: #3b2f12; border: 1px solid #8a6a1f; color: #ffe2a3; }
+#wheel-hint { background: var(--panel); color: var(--text); pointer-events: none; }
+#notice[hidden], #wheel-hint[hidden] { display: none; }
+
+#message {
+  position: absolute;
+  inset: 0;
+  display: flex;
+  flex-direction: column;
+  align-items: center;
+  justify-content: center;
+  padding: 16px;
+  text-align: center;
+  background: rgba(11, 13, 18, 0.94);
+  overflow: auto;
+}
+#message[hidden] { display: none; }
+#message h2 { margin: 0 0 6px; font-size: 16px; }
+#message p { margin: 0 0 8px; max-width: 620px; color: var(--muted); white-space: pre-line; }
+#message button { flex: none; }
+`);

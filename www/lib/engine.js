@@ -1,0 +1,196 @@
+// The WebAssembly and the GPU, once per page: loads the wasm a single time, holds the one device every
+// <metaballs-view> on the page draws with, drives all of them from one requestAnimationFrame loop (which
+// stops when none needs a frame), and rebuilds every view on a new device when the device is lost.
+
+import init, { Gpu, View, parameters as wasmParameters, parse_parameter } from '../../pkg/metaballs.js';
+
+export { View };
+
+let wasmReady = null;
+
+/** Loads and starts the wasm (once, however many elements ask). */
+export function loadWasm() {
+  wasmReady ??= init();
+  return wasmReady;
+}
+
+let table = null;
+/** The parameter table from Rust (name, url, label, kind, min, max, slider, default). */
+export function parameterTable() {
+  table ??= wasmParameters();
+  return table;
+}
+
+/** Reads `text` as parameter `name`'s value; throws an Error with a message saying what is accepted. */
+export function parseParameter(name, text) {
+  return parse_parameter(name, text);
+}
+
+export const WEBGPU_HELP =
+  'This figure draws with WebGPU, which this browser does not offer. ' +
+  'Use a current Chrome or Edge (113 or later), Safari 26, or Firefox 141 or later. ' +
+  'On Linux, Chrome needs WebGPU switched on at chrome://flags/#enable-unsafe-webgpu; ' +
+  'the page must also be served over https or from localhost.';
+
+// Losses closer together than this count as one run; this many in a run and the hub stops retrying.
+const LOSS_WINDOW_MS = 60_000;
+const MAX_LOSSES = 3;
+
+class Hub {
+  constructor() {
+    this.gpu = null;
+    this.starting = null;
+    this.adapter = null;
+    this.elements = new Set();
+    this.devicesCreated = 0;
+    this.losses = [];
+    this.recovering = false;
+    this.stopped = null;
+    this.frameRequested = false;
+  }
+
+  /** Devices alive now (0 or 1). */
+  get devices() {
+    return this.gpu ? 1 : 0;
+  }
+
+  /** The shared device, created on first use; rejects with a message when WebGPU is missing. */
+  acquire() {
+    if (this.gpu) return Promise.resolve(this.gpu);
+    if (this.stopped) return Promise.reject(new Error(this.stopped));
+    this.starting ??= this.#start().finally(() => { this.starting = null; });
+    return this.starting;
+  }
+
+  async #start() {
+    if (!('gpu' in navigator) || !navigator.gpu) throw new Error(WEBGPU_HELP);
+    await loadWasm();
+    this.adapter = await describeAdapter();
+    let gpu;
+    try {
+      gpu = await Gpu.create();
+    } catch (error) {
+      throw new Error(`${error?.message ?? error}`);
+    }
+    this.devicesCreated += 1;
+    this.gpu = gpu;
+    return gpu;
+  }
+
+  register(element) {
+    this.elements.add(element);
+    this.requestFrame();
+  }
+
+  unregister(element) {
+    this.elements.delete(element);
+  }
+
+  /** Schedules one animation frame for every element that wants one (none when none does). */
+  requestFrame() {
+    if (this.frameRequested) return;
+    this.frameRequested = true;
+    requestAnimationFrame((now) => this.#frame(now));
+  }
+
+  #frame(now) {
+    this.frameRequested = false;
+    if (this.gpu && !this.recovering) {
+      const lost = this.gpu.lost();
+      if (lost) {
+        this.#recover(lost);
+        return;
+      }
+      const error = this.gpu.gpu_error();
+      if (error && !this.reportedError) {
+        this.reportedError = true;
+        for (const element of this.elements) element.fail('The GPU reported an error', error);
+      }
+    }
+    let wanted = false;
+    for (const element of this.elements) {
+      if (element.tick(now)) wanted = true;
+    }
+    if (wanted) this.requestFrame();
+  }
+
+  // Every view leaves the lost device (keeping its state on the CPU), then, after a pause that doubles
+  // with each loss, all move to a new device. Too many losses in a short time stop the retries.
+  async #recover(reason) {
+    this.recovering = true;
+    console.warn(`metaballs: ${reason}; starting again on a new device`);
+    for (const element of this.elements) element.suspend(reason);
+    try { this.gpu.free(); } catch { /* already gone */ }
+    this.gpu = null;
+    const now = performance.now();
+    this.losses = this.losses.filter((t) => now - t < LOSS_WINDOW_MS);
+    this.losses.push(now);
+    if (this.losses.length >= MAX_LOSSES) {
+      this.recovering = false;
+      this.stopped = `The GPU was lost ${this.losses.length} times within a minute (${reason}), so the figures stopped trying.`;
+      for (const element of this.elements) element.fail('The GPU keeps failing', this.stopped, { retry: true });
+      return;
+    }
+    for (let attempt = 0; attempt < 6; attempt++) {
+      await new Promise((r) => setTimeout(r, 250 * 2 ** (this.losses.length - 1 + attempt)));
+      try {
+        await this.acquire();
+        break;
+      } catch (error) {
+        console.warn(`metaballs: no new device yet (${error?.message ?? error})`);
+      }
+    }
+    this.recovering = false;
+    if (!this.gpu) {
+      this.stopped = `The GPU was lost (${reason}) and no new device could be had.`;
+      for (const element of this.elements) element.fail('The GPU is gone', this.stopped, { retry: true });
+      return;
+    }
+    for (const element of this.elements) element.resume();
+    this.requestFrame();
+  }
+
+  /** After the hub gave up: try again from scratch (an element's "Try again" button). */
+  retry() {
+    this.stopped = null;
+    this.losses = [];
+    this.reportedError = false;
+    for (const element of this.elements) element.resume();
+  }
+}
+
+/** The one hub of this page. */
+export const hub = new Hub();
+
+// The browser names its adapter through GPUAdapterInfo (wgpu sees only an anonymous one). Software
+// adapters (SwiftShader, llvmpipe, or any fallback adapter) draw much faster without multisampling and
+// at lower pixel ratios.
+async function describeAdapter() {
+  try {
+    const adapter = await navigator.gpu.requestAdapter();
+    const info = adapter?.info;
+    const words = [info?.vendor, info?.architecture, info?.description].filter(Boolean);
+    const software = Boolean(info?.isFallbackAdapter || adapter?.isFallbackAdapter)
+      || /swiftshader|llvmpipe|lavapipe|software/i.test(words.join(' '));
+    return { label: `WebGPU · ${words.length ? [...new Set(words)].join(' ') : 'adapter'}`, software };
+  } catch {
+    return { label: 'WebGPU', software: false };
+  }
+}
+
+// A Rust panic reaches the page here (see src/web.rs): the element whose call panicked shows it.
+let current = null;
+/** Runs `f` with `element` as the one a panic would be reported in. */
+export function within(element, f) {
+  const previous = current;
+  current = element;
+  try {
+    return f();
+  } finally {
+    current = previous;
+  }
+}
+globalThis.metaballsShowPanic = (message) => {
+  if (current) current.fail('The renderer stopped', message);
+  else console.error(`metaballs: ${message}`);
+};

@@ -1,0 +1,574 @@
+// <metaballs-view>: merging spheres drawn with marching cubes, as an element a page embeds any number of
+// times. Load it with one <script type="module" src=".../www/metaballs-view.js">; every element on the
+// page shares one GPU device, starts when it first comes near the viewport, draws only while on screen,
+// takes keys only while focused, and survives a lost GPU.
+
+import { hub, loadWasm, parameterTable, parseParameter, View, within, WEBGPU_HELP } from './lib/engine.js';
+import { wireCameraInput } from './lib/camera-input.js';
+import { buildPanel, listedControls } from './lib/panel.js';
+import { elementStyle } from './lib/element-style.js';
+
+const wasmError = await loadWasm().then(() => null, (error) => error);
+const TABLE = wasmError ? [] : parameterTable();
+const NAMES = TABLE.map((p) => p.name);
+const CONTROL_NAMES = TABLE.find((p) => p.name === 'controls')?.words ?? [];
+const camelCase = (name) => name.replace(/-([a-z])/g, (_, c) => c.toUpperCase());
+
+/** The default values of every parameter, typed. */
+function defaults() {
+  return Object.fromEntries(TABLE.map((p) => [p.name, parseParameter(p.name, p.default)]));
+}
+
+// A shared pair of observers: one starts elements as they come near the viewport, the other tells
+// whether each is on screen at all.
+const nearObserver = new IntersectionObserver((entries) => {
+  for (const entry of entries) if (entry.isIntersecting) entry.target.approach();
+}, { rootMargin: '200px' });
+const visibleObserver = new IntersectionObserver((entries) => {
+  for (const entry of entries) entry.target.setOnScreen(entry.isIntersecting);
+});
+document.addEventListener('visibilitychange', () => hub.requestFrame());
+
+const reducedMotion = matchMedia('(prefers-reduced-motion: reduce)');
+const numberFormat = new Intl.NumberFormat('en');
+
+function hexToLinear(hex) {
+  const channel = (i) => {
+    const c = parseInt(hex.slice(1 + 2 * i, 3 + 2 * i), 16) / 255;
+    return c <= 0.04045 ? c / 12.92 : ((c + 0.055) / 1.055) ** 2.4;
+  };
+  return [channel(0), channel(1), channel(2)];
+}
+
+const TEMPLATE = `
+  <canvas id="view" tabindex="0" part="canvas"
+    aria-label="Merging spheres drawn with marching cubes; drag to orbit, click then wheel to zoom"></canvas>
+  <aside id="panel" aria-label="Controls" hidden></aside>
+  <section id="hud" aria-label="Statistics" aria-live="off" hidden>
+    <div><span class="key">FPS</span> <span id="fps">–</span></div>
+    <div><span class="key">Frame</span> <span id="frame-time">–</span></div>
+    <div><span class="key">Triangles</span> <span id="triangles">–</span></div>
+    <div><span class="key">Adapter</span> <span id="adapter">–</span></div>
+    <div id="overflow" role="alert" hidden>Triangle budget full: part of the surface is not drawn. Lower the resolution or raise the iso level.</div>
+  </section>
+  <button id="play" type="button" hidden>▶ Play</button>
+  <div id="wheel-hint" hidden></div>
+  <div id="notice" role="status" hidden></div>
+  <div id="message" role="alert" hidden>
+    <h2 id="message-title"></h2>
+    <p id="message-text"></p>
+    <button id="retry" type="button" hidden>Try again</button>
+  </div>`;
+
+export class MetaballsView extends HTMLElement {
+  static get observedAttributes() {
+    return NAMES;
+  }
+
+  /** GPU devices alive on this page (all elements share one). */
+  static get devices() { return hub.devices; }
+  /** GPU devices created on this page so far (more than one only after a device was lost). */
+  static get devicesCreated() { return hub.devicesCreated; }
+  /** Renderers alive on the shared device. */
+  static get liveRenderers() { return hub.gpu?.live_renderers() ?? 0; }
+  /** Pipeline sets compiled on the shared device (not one per element). */
+  static get pipelineSets() { return hub.gpu?.pipeline_sets_built() ?? 0; }
+  /** GPU memory held by every element's buffers and targets, in bytes. */
+  static get gpuBytes() {
+    let bytes = 0;
+    for (const element of hub.elements) bytes += element.#view?.gpu_bytes() ?? 0;
+    return bytes;
+  }
+  /** Destroys the shared device, as a driver reset would (for testing recovery). */
+  static destroyDevice() { hub.gpu?.destroy(); hub.requestFrame(); }
+
+  #state = defaults();
+  #applied = { ...this.#state };
+  #changed = new Set();
+  #given = new Set();
+  #view = null;
+  #starting = null;
+  #near = false;
+  #onScreen = false;
+  #failed = false;
+  #software = false;
+  #savedSpheres = null;
+  #dirty = 0;
+  #stepRequested = false;
+  #last = 0;
+  #framesDrawn = 0;
+  #hud = { frames: 0, since: 0, overflows: 0, fps: 0, frameTime: 0 };
+  #stats = { triangles: 0, fps: 0, frameTime: 0, adapter: '' };
+  #held = false;
+  #reflecting = false;
+  #showPanel = () => {};
+  #timers = {};
+  #root;
+  #canvas;
+  #started = false;
+
+  constructor() {
+    super();
+    this.#root = this.attachShadow({ mode: 'open', delegatesFocus: true });
+    this.#root.adoptedStyleSheets = [elementStyle];
+    this.#root.innerHTML = TEMPLATE;
+    this.#canvas = this.#root.getElementById('view');
+    const $ = (id) => this.#root.getElementById(id);
+    $('play').addEventListener('click', () => { this.play(); this.#canvas.focus(); });
+    $('retry').addEventListener('click', () => hub.retry());
+    wireCameraInput(this, this.#canvas, {
+      get: () => ({ yaw: this.#state.yaw, pitch: this.#state.pitch, distance: this.#state.distance }),
+      set: (camera) => {
+        for (const [name, value] of Object.entries(camera)) this.#set(name, Number(value.toFixed(3)));
+      },
+    }, {
+      togglePause: () => (this.#state.paused ? this.play() : this.pause()),
+      reseed: () => this.#set('seed', 1 + Math.floor(Math.random() * 1e6)),
+      resetView: () => this.resetView(),
+      step: () => this.step(),
+      hint: (text) => this.#flash('wheel-hint', text, 1500),
+    });
+    new ResizeObserver(([entry]) => this.#resize(entry)).observe(this.#canvas);
+  }
+
+  // Properties mirror the attributes (camelCase for dashed names): reading gives the value in effect,
+  // writing goes through the same checks as the attribute.
+  static {
+    for (const name of NAMES) {
+      Object.defineProperty(this.prototype, camelCase(name), {
+        get() { return this.#state[name]; },
+        set(value) { this.setAttribute(name, String(value)); },
+      });
+    }
+  }
+
+  // ---------------------------------------------------------------- lifecycle
+
+  connectedCallback() {
+    if (wasmError) {
+      this.fail('The figure could not load', `${wasmError?.message ?? wasmError}`);
+      return;
+    }
+    if (!this.#started) {
+      this.#started = true;
+      if (this.#state.autoplay === 'off' || reducedMotion.matches) this.#set('paused', true);
+    }
+    this.#buildPanel();
+    this.#root.getElementById('hud').hidden = this.#state.hud !== 'on';
+    hub.register(this);
+    nearObserver.observe(this);
+    visibleObserver.observe(this);
+  }
+
+  disconnectedCallback() {
+    nearObserver.unobserve(this);
+    visibleObserver.unobserve(this);
+    hub.unregister(this);
+    this.#release();
+    this.#near = false;
+    this.#onScreen = false;
+  }
+
+  attributeChangedCallback(name, _old, text) {
+    if (this.#reflecting || wasmError) return;
+    if (text === null) {
+      this.#given.delete(name);
+      this.#accept(name, parseParameter(name, TABLE.find((p) => p.name === name).default));
+      return;
+    }
+    let value;
+    try {
+      value = parseParameter(name, text);
+    } catch (error) {
+      const message = `${name}="${text}": ${error.message}; keeping ${this.#format(name)}`;
+      console.warn(`<metaballs-view> ${message}`);
+      this.#notice(message);
+      return;
+    }
+    this.#given.add(name);
+    this.#accept(name, value);
+  }
+
+  // Takes a valid value: records it, applies it to the renderer on the next frame, tells listeners.
+  #accept(name, value) {
+    if (this.#state[name] === value) return;
+    this.#state[name] = value;
+    this.#changed.add(name);
+    if (name === 'controls') this.#buildPanel();
+    if (name === 'hud') this.#root.getElementById('hud').hidden = value !== 'on';
+    if (name === 'max-pixel-ratio') this.#resize();
+    if (name === 'paused') this.#root.getElementById('play').hidden = !this.#showsPlayButton();
+    this.#showPanel(this.#state);
+    this.dispatchEvent(new CustomEvent('metaballs-change', { detail: { property: camelCase(name), value } }));
+    hub.requestFrame();
+  }
+
+  // A change from inside (gestures, panel, methods): reflected to the attribute, then accepted.
+  #set(name, value) {
+    this.#reflecting = true;
+    try {
+      this.setAttribute(name, String(value));
+    } finally {
+      this.#reflecting = false;
+    }
+    this.#given.add(name);
+    this.#accept(name, value);
+  }
+
+  #format(name) {
+    const value = this.#state[name];
+    return typeof value === 'string' ? `"${value}"` : String(value);
+  }
+
+  #showsPlayButton() {
+    return this.#state.paused && !listedControls(this.#state.controls, CONTROL_NAMES).includes('paused');
+  }
+
+  #buildPanel() {
+    const names = listedControls(this.#state.controls, CONTROL_NAMES);
+    const maxResolution = hub.gpu?.max_resolution() ?? 512;
+    this.#showPanel = buildPanel(this.#root.getElementById('panel'), names, TABLE, this.#state,
+      (name, value) => this.#set(name, value), {
+        togglePause: () => (this.#state.paused ? this.play() : this.pause()),
+        reseed: () => this.#set('seed', 1 + Math.floor(Math.random() * 1e6)),
+        resetView: () => this.resetView(),
+      }, {
+        maxResolution: this.#software ? Math.min(256, maxResolution) : maxResolution,
+        small: this.clientWidth > 0 && this.clientWidth < 560,
+      });
+    this.#root.getElementById('play').hidden = !this.#showsPlayButton();
+  }
+
+  // ---------------------------------------------------------------- starting and stopping
+
+  /** Called when the element first comes near the viewport: starts its renderer. */
+  approach() {
+    this.#near = true;
+    this.#start();
+  }
+
+  /** Called as the element enters or leaves the screen. */
+  setOnScreen(onScreen) {
+    this.#onScreen = onScreen;
+    this.#last = 0;
+    if (onScreen) hub.requestFrame();
+  }
+
+  #start() {
+    if (this.#view || this.#starting || this.#failed || !this.#near || !this.isConnected) return;
+    this.#starting = this.#create().finally(() => { this.#starting = null; });
+  }
+
+  async #create() {
+    let gpu;
+    try {
+      gpu = await hub.acquire();
+    } catch (error) {
+      const noWebGpu = !('gpu' in navigator) || !navigator.gpu;
+      this.fail(noWebGpu ? 'WebGPU is not available' : 'WebGPU could not start',
+        noWebGpu ? WEBGPU_HELP : `${error?.message ?? error}\n\n${WEBGPU_HELP}`, { retry: Boolean(hub.stopped) });
+      return;
+    }
+    if (!this.isConnected || this.#view) return;
+    this.#software = hub.adapter?.software || gpu.is_fallback();
+    this.#stats.adapter = hub.adapter?.label ?? 'WebGPU';
+    this.#root.getElementById('adapter').textContent = this.#stats.adapter;
+    if (this.#software && !this.#given.has('antialiasing')) this.#state.antialiasing = false;
+    this.#sizeCanvas();
+    const s = this.#state;
+    const create = (resolution) => within(this, () => View.create(
+      gpu, this.#canvas, s.spheres, s.iso, resolution, s.seed, s.antialiasing));
+    try {
+      this.#view = create(s.resolution);
+    } catch (error) {
+      // Most likely a resolution beyond this device: start at the default and say why.
+      const fallback = parseParameter('resolution', TABLE.find((p) => p.name === 'resolution').default);
+      this.#notice(`resolution ${s.resolution}: ${error.message}`);
+      s.resolution = fallback;
+      try {
+        this.#view = create(fallback);
+      } catch (again) {
+        this.fail('The figure could not start', again.message);
+        return;
+      }
+    }
+    this.#applied = { ...s };
+    this.#changed = new Set(['yaw', 'shininess', 'color']);
+    this.#apply();
+    if (this.#savedSpheres) {
+      try {
+        this.#view.set_spheres(this.#savedSpheres);
+      } catch (error) {
+        console.warn(`<metaballs-view> could not restore the spheres: ${error.message}`);
+      }
+      this.#savedSpheres = null;
+    }
+    this.#buildPanel();
+    this.#hideMessage();
+    this.#dirty = 3;
+    this.#last = 0;
+    hub.requestFrame();
+  }
+
+  // Frees the renderer's GPU memory and leaves the canvas unconfigured.
+  #release() {
+    if (!this.#view) return;
+    this.#view.free();
+    this.#view = null;
+    try {
+      this.#canvas.getContext('webgpu')?.unconfigure();
+    } catch { /* the context is gone with the device */ }
+  }
+
+  /** The device is lost: keep the scene on the CPU and let go of the GPU. */
+  suspend(reason) {
+    if (this.#view) {
+      try {
+        this.#savedSpheres = this.#view.spheres();
+      } catch { /* keep what was saved before */ }
+    }
+    this.#release();
+    if (this.#near) this.#notice(`The GPU was lost (${reason}); starting again…`, 4000);
+  }
+
+  /** A new device is ready (or a retry was asked for): start again with the current state. */
+  resume() {
+    this.#failed = false;
+    this.#hideMessage();
+    this.#start();
+  }
+
+  /** Shows a message in this element's box and stops drawing it. */
+  fail(title, text, { retry = false } = {}) {
+    this.#failed = true;
+    this.#release();
+    const $ = (id) => this.#root.getElementById(id);
+    $('message-title').textContent = title;
+    $('message-text').textContent = text;
+    $('retry').hidden = !retry;
+    $('message').hidden = false;
+    this.dispatchEvent(new CustomEvent('metaballs-error', { detail: { message: `${title}: ${text}` } }));
+  }
+
+  #hideMessage() {
+    this.#root.getElementById('message').hidden = true;
+  }
+
+  // ---------------------------------------------------------------- frames
+
+  // Pushes the changed values into the renderer. A value it refuses (a resolution beyond the device)
+  // goes back to the last one that worked, with a notice.
+  #apply() {
+    const view = this.#view;
+    if (!view) return;
+    for (const name of this.#changed) {
+      const s = this.#state;
+      const run = {
+        spheres: () => view.set_sphere_count(s.spheres),
+        iso: () => view.set_iso(s.iso),
+        resolution: () => view.set_resolution(s.resolution),
+        seed: () => view.set_seed(s.seed),
+        yaw: () => view.set_camera(s.yaw, s.pitch, s.distance),
+        pitch: () => view.set_camera(s.yaw, s.pitch, s.distance),
+        distance: () => view.set_camera(s.yaw, s.pitch, s.distance),
+        shininess: () => view.set_shininess(s.shininess),
+        color: () => view.set_color(...hexToLinear(s.color)),
+        antialiasing: () => view.set_antialiasing(s.antialiasing),
+      }[name];
+      if (!run) continue;
+      try {
+        within(this, run);
+        this.#applied[name] = s[name];
+      } catch (error) {
+        this.#notice(`${name} ${s[name]}: ${error.message}`);
+        s[name] = this.#applied[name];
+        this.#reflect(name);
+        this.#showPanel(s);
+      }
+    }
+    if (this.#changed.size) this.#dirty = Math.max(this.#dirty, 3);
+    this.#changed.clear();
+  }
+
+  #reflect(name) {
+    this.#reflecting = true;
+    this.setAttribute(name, String(this.#state[name]));
+    this.#reflecting = false;
+  }
+
+  /**
+   * One animation frame of the page: draws if this element is on screen and has something to show.
+   * Returns whether it wants the next frame too.
+   */
+  tick(now) {
+    const view = this.#view;
+    if (!view || this.#failed || this.#held || !this.#onScreen || document.visibilityState === 'hidden') {
+      return false;
+    }
+    try {
+      this.#apply();
+      const elapsed = this.#last ? Math.min(Math.max(now - this.#last, 0) / 1000, 0.1) : 0;
+      this.#last = now;
+      const animating = !this.#state.paused && this.#state.speed > 0;
+      if (animating || this.#dirty > 0 || this.#stepRequested || view.needs_redraw()) {
+        const dt = animating ? elapsed * this.#state.speed : this.#stepRequested ? 1 / 60 : 0;
+        this.#stepRequested = false;
+        within(this, () => view.frame(dt));
+        this.#framesDrawn += 1;
+        this.#hud.frames += 1;
+        this.#dirty = Math.max(0, this.#dirty - 1);
+      } else {
+        view.poll();
+      }
+    } catch (error) {
+      this.fail('The renderer stopped', error?.message ?? String(error));
+      return false;
+    }
+    this.#updateHud(now);
+    const error = view.gpu_error();
+    if (error) {
+      this.fail('The GPU reported an error', error);
+      return false;
+    }
+    return true;
+  }
+
+  #updateHud(now) {
+    const hud = this.#hud;
+    if (!hud.since) hud.since = now;
+    const elapsed = now - hud.since;
+    if (elapsed < 500) return;
+    const $ = (id) => this.#root.getElementById(id);
+    this.#stats.fps = (hud.frames * 1000) / elapsed;
+    this.#stats.frameTime = hud.frames ? elapsed / hud.frames : 0;
+    $('fps').textContent = this.#stats.fps.toFixed(1);
+    $('frame-time').textContent = hud.frames ? `${this.#stats.frameTime.toFixed(1)} ms` : 'idle';
+    hud.frames = 0;
+    hud.since = now;
+    const stats = this.#view.stats();
+    if (stats) {
+      this.#stats.triangles = stats.triangles;
+      $('triangles').textContent = numberFormat.format(stats.triangles);
+      $('triangles').title = `budget ${numberFormat.format(stats.max_triangles)} triangles`;
+      // The buffers grow a frame after an overflow; warn only when it lasts (they hit the device's limit).
+      hud.overflows = stats.overflowed ? hud.overflows + 1 : 0;
+      this.#stats.overflowed = hud.overflows >= 2;
+      $('overflow').hidden = !this.#stats.overflowed;
+      stats.free();
+    }
+  }
+
+  // ---------------------------------------------------------------- size
+
+  #ratio() {
+    const cap = this.#state['max-pixel-ratio'];
+    // Software adapters shade every pixel on the CPU: no more than one pixel per CSS pixel there.
+    return Math.min(devicePixelRatio, cap, this.#software ? 1 : Infinity);
+  }
+
+  #sizeCanvas() {
+    const rect = this.#canvas.getBoundingClientRect();
+    const ratio = this.#ratio();
+    this.#canvas.width = Math.max(1, Math.round(rect.width * ratio));
+    this.#canvas.height = Math.max(1, Math.round(rect.height * ratio));
+  }
+
+  #resize(entry) {
+    let width;
+    let height;
+    const ratio = this.#ratio();
+    const box = entry?.devicePixelContentBoxSize?.[0];
+    if (box) {
+      width = (box.inlineSize * ratio) / devicePixelRatio;
+      height = (box.blockSize * ratio) / devicePixelRatio;
+    } else {
+      const rect = this.#canvas.getBoundingClientRect();
+      width = rect.width * ratio;
+      height = rect.height * ratio;
+    }
+    width = Math.max(1, Math.round(width));
+    height = Math.max(1, Math.round(height));
+    if (this.#canvas.width === width && this.#canvas.height === height) return;
+    this.#canvas.width = width;
+    this.#canvas.height = height;
+    if (!this.#view) return;
+    try {
+      this.#view.resize(width, height);
+    } catch (error) {
+      this.#notice(error.message);
+    }
+    this.#dirty = Math.max(this.#dirty, 2);
+    hub.requestFrame();
+  }
+
+  // ---------------------------------------------------------------- notices
+
+  #notice(text, ms = 8000) {
+    this.#flash('notice', text, ms);
+  }
+
+  #flash(id, text, ms) {
+    const box = this.#root.getElementById(id);
+    box.textContent = text;
+    box.hidden = false;
+    clearTimeout(this.#timers[id]);
+    this.#timers[id] = setTimeout(() => { box.hidden = true; }, ms);
+  }
+
+  /** Shows a short message inside the figure (pages use it for problems with their links). */
+  showNotice(text, ms = 8000) {
+    this.#notice(text, ms);
+  }
+
+  // ---------------------------------------------------------------- API for authors
+
+  play() { this.#set('paused', false); }
+
+  pause() { this.#set('paused', true); }
+
+  /** Back to the default camera. */
+  resetView() {
+    const d = defaults();
+    for (const name of ['yaw', 'pitch', 'distance']) this.#set(name, d[name]);
+  }
+
+  /** Draws one frame of animation (1/60 s) and stays paused. */
+  step() {
+    if (!this.#state.paused) this.pause();
+    this.#stepRequested = true;
+    hub.requestFrame();
+  }
+
+  /** Figures of the newest frames: triangles, fps, frame time (ms), adapter, overflowed. */
+  get stats() { return { ...this.#stats }; }
+
+  /** Frames this element has drawn (none while off screen). */
+  get framesDrawn() { return this.#framesDrawn; }
+
+  /** Resolves once the renderer has started (or rejects with why it could not). */
+  async ready() {
+    while (!this.#view) {
+      if (this.#failed) throw new Error(this.#root.getElementById('message-text').textContent);
+      await new Promise((r) => setTimeout(r, 50));
+    }
+  }
+
+  /**
+   * Runs `f(view)` with the wasm view while the element's own frames are held (the benchmark uses it).
+   */
+  async withView(f) {
+    await this.ready();
+    this.#held = true;
+    try {
+      return await f(this.#view);
+    } finally {
+      this.#held = false;
+      // Whatever `f` changed, the figure goes back to its own settings.
+      for (const name of ['spheres', 'resolution', 'iso', 'seed']) this.#changed.add(name);
+      this.#dirty = 3;
+      hub.requestFrame();
+    }
+  }
+}
+
+if (!customElements.get('metaballs-view')) customElements.define('metaballs-view', MetaballsView);

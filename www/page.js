@@ -1,0 +1,69 @@
+// The full page and the iframe page: one <metaballs-view> whose attributes come from the link's query
+// string (`?spheres=9&iso=0.8&res=96&seed=7&paused=1`, short or long names), kept in the URL as the
+// person changes them, plus the benchmark mode (`?bench`). Bad values in a link are reported inside the
+// figure and replaced by defaults.
+
+import { loadWasm, parameterTable, parseParameter } from './lib/engine.js';
+import { runBenchmark } from './bench.js';
+
+await loadWasm();
+await customElements.whenDefined('metaballs-view');
+const element = document.querySelector('metaballs-view');
+const table = parameterTable();
+const query = new URLSearchParams(location.search);
+// The iframe page shows what the link asks for and nothing more; the full page has everything.
+const chromeless = document.body.dataset.page === 'embed';
+
+const problems = [];
+for (const spec of table) {
+  if (chromeless === false && (spec.name === 'controls' || spec.name === 'hud')) continue;
+  const key = query.has(spec.url) ? spec.url : query.has(spec.name) ? spec.name : null;
+  if (key === null) continue;
+  const raw = query.get(key);
+  try {
+    parseParameter(spec.name, raw);
+    element.setAttribute(spec.name, raw);
+  } catch (error) {
+    problems.push(`${key}=${raw}: ${error.message}`);
+  }
+}
+if (problems.length) {
+  element.showNotice(`Some values in the link were invalid and were replaced by defaults: ${problems.join('; ')}.`);
+}
+
+// Changes go back into the link (short names, defaults left out), so a link reproduces the view.
+const share = document.getElementById('share');
+let urlTimer = 0;
+function saveUrl() {
+  clearTimeout(urlTimer);
+  urlTimer = setTimeout(() => {
+    const next = new URLSearchParams();
+    for (const spec of table) {
+      if (!chromeless && (spec.name === 'controls' || spec.name === 'hud')) continue;
+      const value = element[spec.name.replace(/-([a-z])/g, (_, c) => c.toUpperCase())];
+      if (value === parseParameter(spec.name, spec.default)) continue;
+      const text = typeof value === 'boolean' ? (value ? '1' : '0') : String(value);
+      next.set(spec.url, text);
+    }
+    for (const [key, value] of query) {
+      if (key === 'bench' || key.startsWith('bench_')) next.set(key, value);
+    }
+    const search = next.toString();
+    const url = `${location.pathname}${search ? `?${search}` : ''}`;
+    history.replaceState(null, '', url);
+    if (share) share.href = url;
+  }, 150);
+}
+element.addEventListener('metaballs-change', saveUrl);
+saveUrl();
+
+// For tests and the console.
+window.metaballs = { element };
+
+if (query.has('bench')) {
+  const container = document.getElementById('bench');
+  // The figure goes back to its own settings afterwards; the table stays.
+  element.withView((view) => runBenchmark(view, container)).catch(
+    (error) => element.fail('The benchmark stopped', error?.message ?? String(error)),
+  );
+}
