@@ -1,161 +1,16 @@
 // End-to-end tests of the served page in headless Chromium with real WebGPU (SwiftShader): what a
 // person sees and does. Expects pkg/ built (www/build.sh); serves the repository itself on 127.0.0.1.
+// The page is one full-bleed <metaballs-view>; Playwright's selectors reach into its shadow root.
 
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { spawn } from 'node:child_process';
-import { createServer } from 'node:net';
-import { mkdirSync } from 'node:fs';
-import { fileURLToPath } from 'node:url';
 import path from 'node:path';
-import { chromium } from 'playwright-core';
+import {
+  useServerAndBrowser, open, waitForTriangles, settledTriangles, screenshot, pixelStats, differingFraction,
+  setRange, outputDir,
+} from './helpers.js';
 
-const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
-const outputDir = path.join(root, 'tests/output');
-mkdirSync(outputDir, { recursive: true });
-
-const CHROMIUM = process.env.CHROMIUM ?? '/usr/bin/chromium';
-const FLAGS = [
-  '--enable-unsafe-webgpu',
-  '--enable-features=Vulkan',
-  '--use-vulkan=swiftshader',
-  '--use-angle=swiftshader',
-  '--no-sandbox',
-  '--disable-background-networking',
-  '--disable-component-update',
-  '--disable-sync',
-  '--no-first-run',
-  '--disable-quic',
-];
-
-let server;
-let browser;
-let baseUrl;
-
-function freePort() {
-  return new Promise((resolve, reject) => {
-    const probe = createServer();
-    probe.once('error', reject);
-    probe.listen(0, '127.0.0.1', () => {
-      const { port } = probe.address();
-      probe.close(() => resolve(port));
-    });
-  });
-}
-
-async function waitForServer(url) {
-  for (let i = 0; i < 100; i++) {
-    try {
-      if ((await fetch(url)).ok) return;
-    } catch {
-      // not up yet
-    }
-    await new Promise((r) => setTimeout(r, 100));
-  }
-  throw new Error(`the server at ${url} did not start`);
-}
-
-before(async () => {
-  const port = await freePort();
-  server = spawn('python3', ['-m', 'http.server', '--bind', '127.0.0.1', String(port), '--directory', root], {
-    stdio: 'ignore',
-  });
-  baseUrl = `http://127.0.0.1:${port}/`;
-  await waitForServer(baseUrl);
-  browser = await chromium.launch({ executablePath: CHROMIUM, args: FLAGS, headless: true });
-});
-
-after(async () => {
-  await browser?.close();
-  server?.kill();
-});
-
-// Opens the page and collects console errors and uncaught exceptions.
-async function open(query = '', { initScript } = {}) {
-  const page = await browser.newPage({ viewport: { width: 960, height: 640 } });
-  const errors = [];
-  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
-  page.on('pageerror', (e) => errors.push(String(e)));
-  if (initScript) await page.addInitScript(initScript);
-  await page.goto(`${baseUrl}${query}`);
-  return { page, errors };
-}
-
-async function waitForTriangles(page, differentFrom = null) {
-  await page.waitForFunction(
-    (prev) => {
-      const text = document.getElementById('triangles').textContent.replace(/,/g, '');
-      return /^\d+$/.test(text) && Number(text) > 0 && (prev === null || Number(text) !== prev);
-    },
-    differentFrom,
-    { timeout: 60_000 },
-  );
-  return Number((await page.textContent('#triangles')).replace(/,/g, ''));
-}
-
-// Renders settle once the stats for the current settings are in: two HUD updates with the same count.
-async function settledTriangles(page) {
-  let previous = await waitForTriangles(page);
-  for (let i = 0; i < 20; i++) {
-    await page.waitForTimeout(700);
-    const now = Number((await page.textContent('#triangles')).replace(/,/g, ''));
-    if (now === previous) return now;
-    previous = now;
-  }
-  return previous;
-}
-
-async function screenshot(page, name) {
-  const file = path.join(outputDir, `e2e-${name}.png`);
-  const png = await page.locator('#view').screenshot({ path: file });
-  console.log(`screenshot: ${file}`);
-  return png;
-}
-
-// Pixel statistics of a canvas screenshot, computed in the page (it decodes PNGs for us).
-async function pixelStats(page, png) {
-  return page.evaluate(async (b64) => {
-    const image = await createImageBitmap(await (await fetch(`data:image/png;base64,${b64}`)).blob());
-    const canvas = new OffscreenCanvas(image.width, image.height);
-    const context = canvas.getContext('2d');
-    context.drawImage(image, 0, 0);
-    const { data } = context.getImageData(0, 0, image.width, image.height);
-    let surface = 0;
-    let highlight = 0;
-    for (let i = 0; i < data.length; i += 4) {
-      const [r, g, b] = [data[i], data[i + 1], data[i + 2]];
-      if (r > b + 30) surface += 1; // the default surface colour is red; the background is blue-grey
-      if (r > 215 && g > 215 && b > 215) highlight += 1;
-    }
-    const pixels = data.length / 4;
-    return { surface: surface / pixels, highlight, pixels };
-  }, png.toString('base64'));
-}
-
-async function differingFraction(page, a, b) {
-  return page.evaluate(async ([x, y]) => {
-    const decode = async (b64) => {
-      const image = await createImageBitmap(await (await fetch(`data:image/png;base64,${b64}`)).blob());
-      const canvas = new OffscreenCanvas(image.width, image.height);
-      const context = canvas.getContext('2d');
-      context.drawImage(image, 0, 0);
-      return context.getImageData(0, 0, image.width, image.height).data;
-    };
-    const [p, q] = [await decode(x), await decode(y)];
-    let differing = 0;
-    for (let i = 0; i < p.length; i += 4) {
-      if (Math.abs(p[i] - q[i]) + Math.abs(p[i + 1] - q[i + 1]) + Math.abs(p[i + 2] - q[i + 2]) > 24) differing += 1;
-    }
-    return differing / (p.length / 4);
-  }, [a.toString('base64'), b.toString('base64')]);
-}
-
-async function setRange(page, id, value) {
-  await page.$eval(`#${id}`, (input, v) => {
-    input.value = String(v);
-    input.dispatchEvent(new Event('input', { bubbles: true }));
-  }, value);
-}
+useServerAndBrowser();
 
 test('the page shows glossy blobs with no console errors', async () => {
   const { page, errors } = await open();
@@ -196,7 +51,7 @@ test('each control changes the picture and the triangle count', async () => {
   // Keyboard: arrow keys move a focused slider.
   await page.focus('#spheres');
   await page.keyboard.press('ArrowRight');
-  await page.waitForFunction(() => window.metaballs.app.sphere_count() === 13);
+  await page.waitForFunction(() => window.metaballs.element.spheres === 13);
   assert.equal(await page.textContent('#spheres-value'), '13');
   assert.deepEqual(errors, []);
   await page.close();
@@ -207,8 +62,11 @@ test('the URL keeps the state and restores it', async () => {
   const { page, errors } = await open(query);
   await waitForTriangles(page);
   const app = await page.evaluate(() => {
-    const { app, state } = window.metaballs;
-    return { spheres: app.sphere_count(), iso: app.iso(), res: app.resolution(), seed: app.seed(), state };
+    const { element: e } = window.metaballs;
+    return {
+      spheres: e.spheres, iso: e.iso, res: e.resolution, seed: e.seed,
+      state: { yaw: e.yaw, pitch: e.pitch, dist: e.distance, speed: e.speed, paused: e.paused },
+    };
   });
   assert.equal(app.spheres, 9);
   assert.ok(Math.abs(app.iso - 0.8) < 1e-6);
@@ -236,8 +94,8 @@ test('bad values in the URL fall back to defaults with a visible notice', async 
     assert.ok(notice.includes(fragment), `notice ${JSON.stringify(notice)} should mention ${fragment}`);
   }
   const state = await page.evaluate(() => {
-    const { app } = window.metaballs;
-    return [app.sphere_count(), app.iso(), app.resolution()];
+    const { element: e } = window.metaballs;
+    return [e.spheres, e.iso, e.resolution];
   });
   assert.deepEqual(state, [5, 1, 64]);
   const stats = await pixelStats(page, await screenshot(page, 'bad-url'));
@@ -250,8 +108,8 @@ test('the camera follows drag, wheel, keys and double-click', async () => {
   const { page, errors } = await open('?paused=1');
   await waitForTriangles(page);
   const camera = () => page.evaluate(() => {
-    const { yaw, pitch, dist } = window.metaballs.state;
-    return { yaw, pitch, dist };
+    const { yaw, pitch, distance } = window.metaballs.element;
+    return { yaw, pitch, dist: distance };
   });
   const start = await camera();
   await page.mouse.move(480, 320);
@@ -262,7 +120,7 @@ test('the camera follows drag, wheel, keys and double-click', async () => {
   assert.ok(Math.abs(dragged.yaw - start.yaw - 30) < 1e-6, `yaw ${start.yaw} → ${dragged.yaw}`);
   assert.ok(Math.abs(dragged.pitch - start.pitch + 12) < 1e-6, `pitch ${start.pitch} → ${dragged.pitch}`);
   await page.mouse.wheel(0, 400);
-  await page.waitForFunction((d) => window.metaballs.state.dist > d, start.dist);
+  await page.waitForFunction((d) => window.metaballs.element.distance > d, start.dist);
   await page.focus('#view');
   await page.keyboard.press('ArrowLeft');
   await page.keyboard.press('+');

@@ -1,0 +1,162 @@
+// Shared by the end-to-end tests: a static server over the repository on 127.0.0.1, headless Chromium
+// with real WebGPU (SwiftShader), and checks of what a person sees, computed on decoded pixels.
+
+import { before, after } from 'node:test';
+import { spawn } from 'node:child_process';
+import { createServer } from 'node:net';
+import { mkdirSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import path from 'node:path';
+import { chromium } from 'playwright-core';
+
+export const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
+export const outputDir = path.join(root, 'tests/output');
+mkdirSync(outputDir, { recursive: true });
+
+export const CHROMIUM = process.env.CHROMIUM ?? '/usr/bin/chromium';
+export const FLAGS = [
+  '--enable-unsafe-webgpu',
+  '--enable-features=Vulkan',
+  '--use-vulkan=swiftshader',
+  '--use-angle=swiftshader',
+  '--no-sandbox',
+  '--disable-background-networking',
+  '--disable-component-update',
+  '--disable-sync',
+  '--no-first-run',
+  '--disable-quic',
+];
+
+let server;
+export let browser;
+export let baseUrl;
+
+export function freePort() {
+  return new Promise((resolve, reject) => {
+    const probe = createServer();
+    probe.once('error', reject);
+    probe.listen(0, '127.0.0.1', () => {
+      const { port } = probe.address();
+      probe.close(() => resolve(port));
+    });
+  });
+}
+
+export async function waitForServer(url) {
+  for (let i = 0; i < 100; i++) {
+    try {
+      if ((await fetch(url)).ok) return;
+    } catch {
+      // not up yet
+    }
+    await new Promise((r) => setTimeout(r, 100));
+  }
+  throw new Error(`the server at ${url} did not start`);
+}
+
+/** Serves `directory` (the repository by default) and starts the browser before a file's tests. */
+export function useServerAndBrowser({ directory = root, launch = null } = {}) {
+before(async () => {
+  const port = await freePort();
+  server = spawn('python3', ['-m', 'http.server', '--bind', '127.0.0.1', String(port), '--directory', directory], {
+    stdio: 'ignore',
+  });
+  baseUrl = `http://127.0.0.1:${port}/`;
+  await waitForServer(baseUrl);
+  browser = launch ? await launch() : await chromium.launch({ executablePath: CHROMIUM, args: FLAGS, headless: true });
+});
+
+after(async () => {
+  await browser?.close();
+  server?.kill();
+});
+}
+
+// Opens the page and collects console errors and uncaught exceptions.
+export async function open(query = '', { initScript } = {}) {
+  const page = await browser.newPage({ viewport: { width: 960, height: 640 } });
+  const errors = [];
+  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+  page.on('pageerror', (e) => errors.push(String(e)));
+  if (initScript) await page.addInitScript(initScript);
+  await page.goto(`${baseUrl}${query}`);
+  return { page, errors };
+}
+
+export async function waitForTriangles(page, differentFrom = null) {
+  await page.waitForFunction(
+    (prev) => {
+      const text = document.querySelector('metaballs-view').shadowRoot.getElementById('triangles').textContent
+        .replace(/,/g, '');
+      return /^\d+$/.test(text) && Number(text) > 0 && (prev === null || Number(text) !== prev);
+    },
+    differentFrom,
+    { timeout: 60_000 },
+  );
+  return Number((await page.textContent('#triangles')).replace(/,/g, ''));
+}
+
+// Renders settle once the stats for the current settings are in: two HUD updates with the same count.
+export async function settledTriangles(page) {
+  let previous = await waitForTriangles(page);
+  for (let i = 0; i < 20; i++) {
+    await page.waitForTimeout(700);
+    const now = Number((await page.textContent('#triangles')).replace(/,/g, ''));
+    if (now === previous) return now;
+    previous = now;
+  }
+  return previous;
+}
+
+export async function screenshot(page, name) {
+  const file = path.join(outputDir, `e2e-${name}.png`);
+  const png = await page.locator('#view').screenshot({ path: file });
+  console.log(`screenshot: ${file}`);
+  return png;
+}
+
+// Pixel statistics of a canvas screenshot, computed in the page (it decodes PNGs for us).
+export async function pixelStats(page, png) {
+  return page.evaluate(async (b64) => {
+    const image = await createImageBitmap(await (await fetch(`data:image/png;base64,${b64}`)).blob());
+    const canvas = new OffscreenCanvas(image.width, image.height);
+    const context = canvas.getContext('2d');
+    context.drawImage(image, 0, 0);
+    const { data } = context.getImageData(0, 0, image.width, image.height);
+    let surface = 0;
+    let highlight = 0;
+    for (let i = 0; i < data.length; i += 4) {
+      const [r, g, b] = [data[i], data[i + 1], data[i + 2]];
+      if (r > b + 30) surface += 1; // the default surface colour is red; the background is blue-grey
+      if (r > 215 && g > 215 && b > 215) highlight += 1;
+    }
+    const pixels = data.length / 4;
+    return { surface: surface / pixels, highlight, pixels };
+  }, png.toString('base64'));
+}
+
+export async function differingFraction(page, a, b) {
+  return page.evaluate(async ([x, y]) => {
+    const decode = async (b64) => {
+      const image = await createImageBitmap(await (await fetch(`data:image/png;base64,${b64}`)).blob());
+      const canvas = new OffscreenCanvas(image.width, image.height);
+      const context = canvas.getContext('2d');
+      context.drawImage(image, 0, 0);
+      return context.getImageData(0, 0, image.width, image.height).data;
+    };
+    const [p, q] = [await decode(x), await decode(y)];
+    let differing = 0;
+    for (let i = 0; i < p.length; i += 4) {
+      if (Math.abs(p[i] - q[i]) + Math.abs(p[i + 1] - q[i + 1]) + Math.abs(p[i + 2] - q[i + 2]) > 24) differing += 1;
+    }
+    return differing / (p.length / 4);
+  }, [a.toString('base64'), b.toString('base64')]);
+}
+
+export async function setRange(page, id, value) {
+  await page.$eval(`#${id}`, (input, v) => {
+    input.value = String(v);
+    input.dispatchEvent(new Event('input', { bubbles: true }));
+  }, value);
+}
+
