@@ -236,6 +236,27 @@ test('a destroyed device: every visible figure comes back with its settings', as
   await close();
 });
 
+test('a device lost again and again: the figures stop, say so, and can be started again', async () => {
+  const { page, errors, close } = await open(`${FIXTURES}/five.html`);
+  await waitForStats(page, 'a');
+  for (let loss = 1; loss <= 3; loss++) {
+    await page.waitForFunction((n) => customElements.get('metaballs-view').devicesCreated === n, loss, { timeout: 20_000 });
+    await page.evaluate(() => customElements.get('metaballs-view').destroyDevice());
+    await page.waitForTimeout(200);
+  }
+  await page.waitForSelector('#a >> #message', { state: 'visible', timeout: 20_000 });
+  assert.match(await page.textContent('#a >> #message-text'), /lost 3 times/);
+  const created = await page.evaluate(() => customElements.get('metaballs-view').devicesCreated);
+  await page.waitForTimeout(2000);
+  assert.equal(await page.evaluate(() => customElements.get('metaballs-view').devicesCreated), created, 'it kept retrying');
+  const drawn = await frames(page, 'a');
+  await page.click('#a >> #retry');
+  await page.waitForFunction((n) => document.getElementById('a').framesDrawn > n + 3, drawn, { timeout: 20_000 });
+  assert.equal(await page.isVisible('#a >> #message'), false);
+  assert.deepEqual(errors.filter((e) => !/lost|destroy/i.test(e)), []);
+  await close();
+});
+
 test('embed.html shows no panel unless asked', async () => {
   const plain = await open('embed.html?spheres=2');
   await plain.page.waitForFunction(() => document.querySelector('metaballs-view')?.stats?.triangles > 0);

@@ -1,0 +1,100 @@
+// Device loss for real: Chromium's GPU process is killed while figures draw, as a driver reset or a GPU
+// crash would do. Every figure on the page must draw again, with its settings, without a reload.
+
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { readdirSync, readFileSync } from 'node:fs';
+import { chromium } from 'playwright-core';
+import { useServerAndBrowser, baseUrl, browser, CHROMIUM, FLAGS, pixelStats } from './helpers.js';
+
+let server;
+useServerAndBrowser({
+  launch: async () => {
+    server = await chromium.launchServer({ executablePath: CHROMIUM, args: FLAGS, headless: true });
+    return chromium.connect(server.wsEndpoint());
+  },
+});
+after(async () => { await server?.close(); });
+
+// The GPU process: a descendant of the browser process started with --type=gpu-process.
+function gpuProcess() {
+  const browserPid = server.process().pid;
+  const parents = new Map();
+  const commands = new Map();
+  for (const entry of readdirSync('/proc')) {
+    if (!/^\d+$/.test(entry)) continue;
+    try {
+      const stat = readFileSync(`/proc/${entry}/stat`, 'utf8');
+      parents.set(Number(entry), Number(stat.slice(stat.lastIndexOf(')') + 2).split(' ')[1]));
+      commands.set(Number(entry), readFileSync(`/proc/${entry}/cmdline`, 'utf8'));
+    } catch { /* gone */ }
+  }
+  const descends = (pid) => {
+    for (let p = pid, depth = 0; p > 1 && depth < 10; p = parents.get(p), depth++) if (p === browserPid) return true;
+    return false;
+  };
+  for (const [pid, command] of commands) {
+    if (command.includes('--type=gpu-process') && descends(pid)) return pid;
+  }
+  return null;
+}
+
+async function killGpuProcess() {
+  const pid = gpuProcess();
+  assert.ok(pid, 'no GPU process found under the browser');
+  process.kill(pid, 'SIGKILL');
+  return pid;
+}
+
+const waitForDrawing = (page, selector, after = 0) => page.waitForFunction(
+  ([s, n]) => [...document.querySelectorAll(s)].every((e) => e.framesDrawn > n + 5 && e.stats?.triangles > 0),
+  [selector, after], { timeout: 30_000 });
+
+async function surface(page, selector) {
+  const png = await page.locator(selector).screenshot();
+  return (await pixelStats(page, png)).surface;
+}
+
+test('figures draw again after the GPU process is killed', async () => {
+  const context = await browser.newContext({ viewport: { width: 840, height: 600 } });
+  const page = await context.newPage();
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(String(e)));
+  await page.goto(`${baseUrl}tests/e2e/fixtures/five.html`);
+  await waitForDrawing(page, '.row metaballs-view');
+  await page.$eval('#a', (e) => e.setAttribute('iso', '0.8'));
+  await page.$eval('#b', (e) => e.setAttribute('spheres', '7'));
+  await page.waitForTimeout(1000);
+  const drawn = await page.$eval('#a', (e) => e.framesDrawn);
+  const killed = await killGpuProcess();
+  console.log(`killed the GPU process ${killed}`);
+  await page.waitForFunction(() => customElements.get('metaballs-view').devicesCreated >= 2, null, { timeout: 30_000 });
+  const started = Date.now();
+  await waitForDrawing(page, '.row metaballs-view', drawn);
+  console.log(`the figures drew again ${Date.now() - started} ms after the new device`);
+  assert.deepEqual(await page.evaluate(() => [document.getElementById('a').iso, document.getElementById('b').spheres]), [0.8, 7]);
+  for (const id of ['a', 'b']) {
+    const covered = await surface(page, `#${id}`);
+    assert.ok(covered > 0.01, `figure ${id} is blank after the loss (${(covered * 100).toFixed(2)}%)`);
+  }
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('the full page draws again after the GPU process is killed', async () => {
+  const context = await browser.newContext({ viewport: { width: 960, height: 640 } });
+  const page = await context.newPage();
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(String(e)));
+  await page.goto(`${baseUrl}?spheres=9&res=40`);
+  await waitForDrawing(page, 'metaballs-view');
+  const drawn = await page.$eval('metaballs-view', (e) => e.framesDrawn);
+  await killGpuProcess();
+  await page.waitForFunction(() => customElements.get('metaballs-view').devicesCreated >= 2, null, { timeout: 30_000 });
+  await waitForDrawing(page, 'metaballs-view', drawn);
+  assert.deepEqual(await page.$eval('metaballs-view', (e) => [e.spheres, e.resolution]), [9, 40]);
+  assert.ok(await surface(page, 'metaballs-view') > 0.01, 'the page is blank after the loss');
+  assert.equal(await page.isVisible('#message'), false, 'the page shows an error instead of drawing');
+  assert.deepEqual(errors, []);
+  await context.close();
+});
