@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# Builds the demo and serves the repository on 127.0.0.1 (a secure context, as WebGPU requires).
+# Builds the demo into dist/ (what an author copies to a static host) and serves it on 127.0.0.1 (a
+# secure context, as WebGPU requires).
 # PORT picks the port (default 8000, or the next free one).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-bash www/build.sh
+bash www/dist.sh
 if ! command -v python3 >/dev/null; then
     if [ "$(id -u)" -eq 0 ]; then apt-get update -q && apt-get install -y -q python3; else sudo apt-get update -q && sudo apt-get install -y -q python3; fi
 fi
@@ -25,6 +26,7 @@ PY
 )
 echo
 echo "  metaballs is served at  http://127.0.0.1:$port/"
+echo "  example lecture page:   http://127.0.0.1:$port/www/examples/lecture.html"
 echo "  (open it in a browser with WebGPU; Ctrl-C stops the server)"
 echo
-exec python3 -m http.server --bind 127.0.0.1 "$port"
+exec python3 -m http.server --bind 127.0.0.1 "$port" --directory dist

@@ -86,8 +86,9 @@ export async function open(query = '', { initScript } = {}) {
 export async function waitForTriangles(page, differentFrom = null) {
   await page.waitForFunction(
     (prev) => {
-      const text = document.querySelector('metaballs-view').shadowRoot.getElementById('triangles').textContent
-        .replace(/,/g, '');
+      // Before the element is defined (the wasm still loading) it has no shadow root yet.
+      const readout = document.querySelector('metaballs-view')?.shadowRoot?.getElementById('triangles');
+      const text = (readout?.textContent ?? '').replace(/,/g, '');
       return /^\d+$/.test(text) && Number(text) > 0 && (prev === null || Number(text) !== prev);
     },
     differentFrom,
