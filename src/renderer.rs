@@ -2,70 +2,27 @@
 //! any texture view of its format (a canvas's current texture or an offscreen texture).
 
 use crate::blocks::BlockPass;
+mod limits;
+mod readback;
+mod stats;
+
+pub use limits::max_resolution;
+pub use stats::FrameStats;
+
 use crate::context::{GpuContext, RendererToken};
 use crate::field_pass::FieldPass;
-use crate::gpu::read_buffer;
 use crate::marching_cubes::MarchingCubesPass;
-use crate::mesh::IndexedMesh;
-use crate::mesh_buffers::{BLOCK_CELLS, Capacity, INDEX_BYTES, MeshBuffers, VERTEX_BYTES};
-use crate::params::{self, Camera, MAX_RESOLUTION, MIN_RESOLUTION, Material, ParamError, Settings};
+use crate::mesh_buffers::{Capacity, MeshBuffers};
+use crate::params::{self, Camera, Material, ParamError, Settings};
 use crate::reference::Grid;
 use crate::scene::{BOX_HALF_EXTENT, Scene};
 use crate::scene_buffers::SceneBuffers;
 use crate::shade::{MULTISAMPLES, ShadePass};
 use crate::timing::{StageTimes, Timing};
-use crate::uniforms::{Counters, GridUniform, ShadingUniform};
-use glam::{UVec3, Vec3};
-use std::sync::Arc;
-use std::sync::atomic::{AtomicU8, Ordering};
-
-/// What the GPU reported for a past frame (a frame or two late; nothing waits for it).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct FrameStats {
-    /// Which frame (counted from 1) these figures are for.
-    pub frame: u64,
-    /// Triangles written and drawn.
-    pub triangles: u32,
-    /// Triangles the surface needed; more than `max_triangles` when the index buffer overflowed.
-    pub triangles_requested: u32,
-    /// Capacity of the index buffer, in triangles.
-    pub max_triangles: u32,
-    /// Shared vertices the surface needed.
-    pub vertices: u32,
-    /// Blocks of 4³ cells the surface may cross (the others were skipped).
-    pub active_blocks: u32,
-    /// Blocks in the grid.
-    pub total_blocks: u32,
-    /// Cells that emitted triangles.
-    pub active_cells: u32,
-    /// Cells in the grid.
-    pub total_cells: u32,
-    /// True when some buffer was too small for this frame, so part of the surface was not drawn (the
-    /// buffers grow for the next frames).
-    pub overflowed: bool,
-    /// GPU memory held by the mesh buffers, in bytes.
-    pub mesh_bytes: u64,
-}
-
-impl FrameStats {
-    /// True when the surface needed more room than the buffers had, so some of it was not drawn.
-    pub fn overflowed(&self) -> bool {
-        self.overflowed
-    }
-}
-
-const SLOT_FREE: u8 = 0;
-const SLOT_PENDING: u8 = 1;
-const SLOT_READY: u8 = 2;
-/// Staging buffers for the statistics: enough that a slow map never makes a frame skip its copy.
-const STATS_SLOTS: usize = 3;
-
-struct StatsSlot {
-    buffer: wgpu::Buffer,
-    state: Arc<AtomicU8>,
-    frame: u64,
-    capacity: Capacity,
-}
+use crate::uniforms::{GridUniform, ShadingUniform};
+use glam::Vec3;
+use limits::{automatic_capacity, check_resolution_fits, check_size, storage_limit};
+use stats::StatsRing;
 
 /// How the buffers are sized.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -95,7 +52,7 @@ pub struct Renderer {
     sizing: Sizing,
     /// Capacity a past frame asked for, applied before the next one.
     pending_capacity: Option<Capacity>,
-    stats_slots: Vec<StatsSlot>,
+    stats: StatsRing,
     latest_stats: Option<FrameStats>,
     frame: u64,
     timing: Option<Timing>,
@@ -144,19 +101,7 @@ impl Renderer {
                 width,
                 height,
             ),
-            stats_slots: (0..STATS_SLOTS)
-                .map(|_| StatsSlot {
-                    buffer: device.create_buffer(&wgpu::BufferDescriptor {
-                        label: Some("stats: staging"),
-                        size: std::mem::size_of::<Counters>() as u64,
-                        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-                        mapped_at_creation: false,
-                    }),
-                    state: Arc::new(AtomicU8::new(SLOT_FREE)),
-                    frame: 0,
-                    capacity: mesh.capacity,
-                })
-                .collect(),
+            stats: StatsRing::new(&device),
             _alive: context.renderer_token(),
             context: context.clone(),
             device,
@@ -231,12 +176,6 @@ impl Renderer {
     /// even with nothing else changed.
     pub fn needs_redraw(&self) -> bool {
         self.pending_capacity.is_some()
-    }
-
-    /// Takes in the statistics that have arrived since the last frame, without drawing (a paused view
-    /// calls this so its figures still come in).
-    pub fn poll_stats(&mut self) {
-        self.collect_stats();
     }
 
     /// The newest statistics the GPU has reported, if any yet.
@@ -452,20 +391,10 @@ impl Renderer {
         if let Some(timing) = timing {
             timing.resolve(&mut encoder);
         }
-        // With every staging buffer still in flight, this frame's figures are skipped.
-        let slot = self.stats_slots.iter_mut().find(|s| s.state.load(Ordering::Acquire) == SLOT_FREE);
-        if let Some(slot) = &slot {
-            encoder.copy_buffer_to_buffer(&self.mesh.counters, 0, &slot.buffer, 0, None);
-        }
+        let slot = self.stats.record(&mut encoder, &self.mesh.counters);
         self.queue.submit([encoder.finish()]);
         if let Some(slot) = slot {
-            slot.frame = self.frame;
-            slot.capacity = self.mesh.capacity;
-            slot.state.store(SLOT_PENDING, Ordering::Release);
-            let state = slot.state.clone();
-            slot.buffer.map_async(wgpu::MapMode::Read, .., move |result| {
-                state.store(if result.is_ok() { SLOT_READY } else { SLOT_FREE }, Ordering::Release);
-            });
+            self.stats.map(slot, self.frame, self.mesh.capacity);
         }
     }
 
@@ -487,67 +416,6 @@ impl Renderer {
         Some(timing.read(&self.device, &self.queue).await)
     }
 
-    /// Reads the statistics whose buffers have been mapped since the last call, and plans larger
-    /// buffers when a frame overflowed.
-    fn collect_stats(&mut self) {
-        #[cfg(not(target_arch = "wasm32"))]
-        let _ = self.device.poll(wgpu::PollType::Poll);
-        let grid = self.grid();
-        let total_blocks = grid.cells_per_axis.div_ceil(BLOCK_CELLS).pow(3);
-        for slot in &mut self.stats_slots {
-            if slot.state.load(Ordering::Acquire) != SLOT_READY {
-                continue;
-            }
-            let counters: Counters = match slot.buffer.get_mapped_range(..) {
-                Ok(bytes) => bytemuck::pod_read_unaligned(&bytes),
-                Err(_) => Counters::default(),
-            };
-            slot.buffer.unmap();
-            slot.state.store(SLOT_FREE, Ordering::Release);
-            let capacity = slot.capacity;
-            let stats = FrameStats {
-                frame: slot.frame,
-                triangles: counters.indices.min(capacity.indices) / 3,
-                triangles_requested: counters.indices / 3,
-                max_triangles: capacity.indices / 3,
-                vertices: counters.vertices,
-                active_blocks: counters.active_blocks,
-                total_blocks,
-                active_cells: counters.active_cells,
-                total_cells: grid.cells_per_axis.pow(3),
-                overflowed: !capacity.holds(&counters),
-                mesh_bytes: self.mesh.bytes(),
-            };
-            if self.latest_stats.is_none_or(|s| s.frame < stats.frame) {
-                self.latest_stats = Some(stats);
-            }
-            // Grow once per size: figures from frames drawn with smaller buffers than now are stale.
-            let current = self.pending_capacity.unwrap_or(self.mesh.capacity);
-            if stats.overflowed && self.sizing == Sizing::Automatic && capacity == self.mesh.capacity {
-                let largest = Capacity::largest(grid, storage_limit(&self.device));
-                let grown = current.grown_for(&counters).min(largest);
-                if grown != current {
-                    self.pending_capacity = Some(grown);
-                }
-            }
-        }
-    }
-
-    /// Waits until the statistics of every submitted frame are in (tests and tools).
-    pub async fn flush_stats(&mut self) {
-        if self.stats_slots.iter().any(|s| s.state.load(Ordering::Acquire) == SLOT_PENDING) {
-            let (sender, receiver) = futures_channel::oneshot::channel::<()>();
-            // Queue work done implies earlier map callbacks have run.
-            self.queue.on_submitted_work_done(move || {
-                let _ = sender.send(());
-            });
-            #[cfg(not(target_arch = "wasm32"))]
-            let _ = self.device.poll(wgpu::PollType::wait_indefinitely());
-            let _ = receiver.await;
-        }
-        self.collect_stats();
-    }
-
     /// Runs the mesh generation passes alone for the current state, without drawing or waiting
     /// (benchmarks time it against `Queue::on_submitted_work_done`).
     pub fn extract(&mut self) {
@@ -557,67 +425,6 @@ impl Renderer {
             .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("extract: encoder") });
         self.encode_extraction(&mut encoder, false);
         self.queue.submit([encoder.finish()]);
-    }
-
-    async fn run_extraction(&mut self) -> Counters {
-        self.extract();
-        let bytes = read_buffer(&self.device, &self.queue, &self.mesh.counters, 0, 16).await;
-        bytemuck::pod_read_unaligned(&bytes)
-    }
-
-    /// Extracts the surface for the current state and reads the indexed mesh back, growing the buffers
-    /// first if the surface needs it (unless the budget is fixed). Waits for the GPU: for tests and
-    /// tools, not the frame loop.
-    pub async fn extract_mesh(&mut self) -> IndexedMesh {
-        let mut counters = self.run_extraction().await;
-        while self.sizing == Sizing::Automatic && !self.mesh.capacity.holds(&counters) {
-            let largest = Capacity::largest(self.grid(), storage_limit(&self.device));
-            let grown = self.mesh.capacity.grown_for(&counters).min(largest);
-            if grown == self.mesh.capacity {
-                break;
-            }
-            self.reallocate(grown);
-            counters = self.run_extraction().await;
-        }
-        let capacity = self.mesh.capacity;
-        let vertex_count = counters.vertices.min(capacity.vertices) as u64;
-        let index_count = counters.indices.min(capacity.indices) as u64;
-        let vertex_bytes =
-            read_buffer(&self.device, &self.queue, &self.mesh.vertices, 0, vertex_count * VERTEX_BYTES).await;
-        let index_bytes =
-            read_buffer(&self.device, &self.queue, &self.mesh.indices, 0, index_count * INDEX_BYTES).await;
-        let floats: &[[f32; 6]] = bytemuck::cast_slice(&vertex_bytes);
-        let indices: &[u32] = bytemuck::cast_slice(&index_bytes);
-        IndexedMesh {
-            positions: floats.iter().map(|v| Vec3::new(v[0], v[1], v[2])).collect(),
-            normals: floats.iter().map(|v| Vec3::new(v[3], v[4], v[5])).collect(),
-            triangles: indices.chunks(3).map(|t| [t[0], t[1], t[2]]).collect(),
-        }
-    }
-
-    /// The field values the GPU computed for the current state: every grid point of every active block,
-    /// with its grid coordinates (a point on a face between blocks appears once per block).
-    pub async fn extract_field(&mut self) -> Vec<(UVec3, f32)> {
-        let counters = self.run_extraction().await;
-        let active = counters.active_blocks.min(self.mesh.capacity.blocks) as u64;
-        let blocks = read_buffer(&self.device, &self.queue, &self.mesh.active_blocks, 0, active * 4).await;
-        let values = read_buffer(&self.device, &self.queue, &self.mesh.block_values, 0, active * 500).await;
-        let blocks: &[u32] = bytemuck::cast_slice(&blocks);
-        let values: &[f32] = bytemuck::cast_slice(&values);
-        let n = self.settings.resolution;
-        let per_axis = n.div_ceil(BLOCK_CELLS);
-        let mut points = Vec::new();
-        for (slot, &block) in blocks.iter().enumerate() {
-            let coords =
-                UVec3::new(block % per_axis, (block / per_axis) % per_axis, block / (per_axis * per_axis));
-            for i in 0..125u32 {
-                let id = coords * BLOCK_CELLS + UVec3::new(i % 5, (i / 5) % 5, i / 25);
-                if id.max_element() <= n {
-                    points.push((id, values[slot * 125 + i as usize]));
-                }
-            }
-        }
-        points
     }
 }
 
@@ -631,59 +438,4 @@ impl Drop for Renderer {
 
 fn sample_count(antialiasing: bool) -> u32 {
     if antialiasing { MULTISAMPLES } else { 1 }
-}
-
-fn storage_limit(device: &wgpu::Device) -> u64 {
-    let limits = device.limits();
-    limits.max_storage_buffer_binding_size.min(limits.max_buffer_size)
-}
-
-fn automatic_capacity(device: &wgpu::Device, grid: Grid) -> Capacity {
-    Capacity::for_grid(grid).min(Capacity::largest(grid, storage_limit(device)))
-}
-
-/// The largest resolution this device can run: its block table must fit one storage binding and its
-/// block pass one dispatch.
-pub fn max_resolution(device: &wgpu::Device) -> u32 {
-    (MIN_RESOLUTION..=MAX_RESOLUTION)
-        .rev()
-        .find(|&n| resolution_fits(device, n).is_ok())
-        .unwrap_or(MIN_RESOLUTION)
-}
-
-fn resolution_fits(device: &wgpu::Device, cells_per_axis: u32) -> Result<(), String> {
-    let blocks = (cells_per_axis.div_ceil(BLOCK_CELLS) as u64).pow(3);
-    let needed = blocks * 4;
-    if needed > storage_limit(device) {
-        return Err(format!(
-            "its block table needs {:.1} MiB but the device's max_storage_buffer_binding_size is {:.1} MiB",
-            needed as f64 / 1048576.0,
-            storage_limit(device) as f64 / 1048576.0
-        ));
-    }
-    let groups = blocks.div_ceil(64);
-    let max_groups = device.limits().max_compute_workgroups_per_dimension as u64;
-    if groups > max_groups {
-        return Err(format!(
-            "it needs {groups} workgroups in one dispatch but the device's max_compute_workgroups_per_dimension \
-             is {max_groups}"
-        ));
-    }
-    Ok(())
-}
-
-fn check_resolution_fits(device: &wgpu::Device, cells_per_axis: u32) -> Result<(), ParamError> {
-    params::check_resolution(cells_per_axis)?;
-    resolution_fits(device, cells_per_axis).map_err(|detail| ParamError::DeviceLimit {
-        name: "resolution",
-        value: cells_per_axis.to_string(),
-        detail: format!("{detail}; the largest resolution it holds is {}", max_resolution(device)),
-    })
-}
-
-fn check_size(device: &wgpu::Device, width: u32, height: u32) -> Result<(), ParamError> {
-    let max = device.limits().max_texture_dimension_2d;
-    params::check_u32("output width (pixels)", width, 1, max)?;
-    params::check_u32("output height (pixels)", height, 1, max)?;
-    Ok(())
 }

@@ -6,7 +6,10 @@
 import { hub, loadWasm, parameterTable, parseParameter, View, within, WEBGPU_HELP } from './lib/engine.js';
 import { wireCameraInput } from './lib/camera-input.js';
 import { buildPanel, listedControls } from './lib/panel.js';
-import { elementStyle } from './lib/element-style.js';
+import { elementStyle, TEMPLATE } from './lib/element-dom.js';
+import { Hud } from './lib/hud.js';
+import { applySetting, isRendererSetting } from './lib/view-settings.js';
+import { canvasPixels, pixelRatio } from './lib/canvas-size.js';
 
 const wasmError = await loadWasm().then(() => null, (error) => error);
 const TABLE = wasmError ? [] : parameterTable();
@@ -30,35 +33,6 @@ const visibleObserver = new IntersectionObserver((entries) => {
 document.addEventListener('visibilitychange', () => hub.requestFrame());
 
 const reducedMotion = matchMedia('(prefers-reduced-motion: reduce)');
-const numberFormat = new Intl.NumberFormat('en');
-
-function hexToLinear(hex) {
-  const channel = (i) => {
-    const c = parseInt(hex.slice(1 + 2 * i, 3 + 2 * i), 16) / 255;
-    return c <= 0.04045 ? c / 12.92 : ((c + 0.055) / 1.055) ** 2.4;
-  };
-  return [channel(0), channel(1), channel(2)];
-}
-
-const TEMPLATE = `
-  <canvas id="view" tabindex="0" part="canvas"
-    aria-label="Merging spheres drawn with marching cubes; drag to orbit, click then wheel to zoom"></canvas>
-  <aside id="panel" aria-label="Controls" hidden></aside>
-  <section id="hud" aria-label="Statistics" aria-live="off" hidden>
-    <div><span class="key">FPS</span> <span id="fps">–</span></div>
-    <div><span class="key">Frame</span> <span id="frame-time">–</span></div>
-    <div><span class="key">Triangles</span> <span id="triangles">–</span></div>
-    <div><span class="key">Adapter</span> <span id="adapter">–</span></div>
-    <div id="overflow" role="alert" hidden>Triangle budget full: part of the surface is not drawn. Lower the resolution or raise the iso level.</div>
-  </section>
-  <button id="play" type="button" hidden>▶ Play</button>
-  <div id="wheel-hint" hidden></div>
-  <div id="notice" role="status" hidden></div>
-  <div id="message" role="alert" hidden>
-    <h2 id="message-title"></h2>
-    <p id="message-text"></p>
-    <button id="retry" type="button" hidden>Try again</button>
-  </div>`;
 
 export class MetaballsView extends HTMLElement {
   static get observedAttributes() {
@@ -97,14 +71,19 @@ export class MetaballsView extends HTMLElement {
   #stepRequested = false;
   #last = 0;
   #framesDrawn = 0;
-  #hud = { frames: 0, since: 0, overflows: 0, fps: 0, frameTime: 0 };
-  #stats = { triangles: 0, fps: 0, frameTime: 0, adapter: '' };
+  #hud;
   #held = false;
   #reflecting = false;
   #showPanel = () => {};
   #timers = {};
   #root;
   #canvas;
+  // What the panel's buttons and the keys do.
+  #actions = {
+    togglePause: () => (this.#state.paused ? this.play() : this.pause()),
+    reseed: () => this.#set('seed', 1 + Math.floor(Math.random() * 1e6)),
+    resetView: () => this.resetView(),
+  };
   #started = false;
 
   constructor() {
@@ -113,6 +92,7 @@ export class MetaballsView extends HTMLElement {
     this.#root.adoptedStyleSheets = [elementStyle];
     this.#root.innerHTML = TEMPLATE;
     this.#canvas = this.#root.getElementById('view');
+    this.#hud = new Hud(this.#root);
     const $ = (id) => this.#root.getElementById(id);
     $('play').addEventListener('click', () => { this.play(); this.#canvas.focus(); });
     $('retry').addEventListener('click', () => hub.retry());
@@ -121,13 +101,7 @@ export class MetaballsView extends HTMLElement {
       set: (camera) => {
         for (const [name, value] of Object.entries(camera)) this.#set(name, Number(value.toFixed(3)));
       },
-    }, {
-      togglePause: () => (this.#state.paused ? this.play() : this.pause()),
-      reseed: () => this.#set('seed', 1 + Math.floor(Math.random() * 1e6)),
-      resetView: () => this.resetView(),
-      step: () => this.step(),
-      hint: (text) => this.#flash('wheel-hint', text, 1500),
-    });
+    }, { ...this.#actions, step: () => this.step(), hint: (text) => this.#flash('wheel-hint', text, 1500) });
     new ResizeObserver(([entry]) => this.#resize(entry)).observe(this.#canvas);
   }
 
@@ -205,12 +179,7 @@ export class MetaballsView extends HTMLElement {
 
   // A change from inside (gestures, panel, methods): reflected to the attribute, then accepted.
   #set(name, value) {
-    this.#reflecting = true;
-    try {
-      this.setAttribute(name, String(value));
-    } finally {
-      this.#reflecting = false;
-    }
+    this.#reflect(name, value);
     this.#given.add(name);
     this.#accept(name, value);
   }
@@ -228,11 +197,7 @@ export class MetaballsView extends HTMLElement {
     const names = listedControls(this.#state.controls, CONTROL_NAMES);
     const maxResolution = hub.gpu?.max_resolution() ?? 512;
     this.#showPanel = buildPanel(this.#root.getElementById('panel'), names, TABLE, this.#state,
-      (name, value) => this.#set(name, value), {
-        togglePause: () => (this.#state.paused ? this.play() : this.pause()),
-        reseed: () => this.#set('seed', 1 + Math.floor(Math.random() * 1e6)),
-        resetView: () => this.resetView(),
-      }, {
+      (name, value) => this.#set(name, value), this.#actions, {
         maxResolution: this.#software ? Math.min(256, maxResolution) : maxResolution,
         small: this.clientWidth > 0 && this.clientWidth < 560,
       });
@@ -271,8 +236,7 @@ export class MetaballsView extends HTMLElement {
     }
     if (!this.isConnected || this.#view) return;
     this.#software = hub.adapter?.software || gpu.is_fallback();
-    this.#stats.adapter = hub.adapter?.label ?? 'WebGPU';
-    this.#root.getElementById('adapter').textContent = this.#stats.adapter;
+    this.#hud.setAdapter(hub.adapter?.label ?? 'WebGPU');
     if (this.#software && !this.#given.has('antialiasing')) this.#state.antialiasing = false;
     this.#sizeCanvas();
     const s = this.#state;
@@ -361,23 +325,11 @@ export class MetaballsView extends HTMLElement {
   #apply() {
     const view = this.#view;
     if (!view) return;
+    const s = this.#state;
     for (const name of this.#changed) {
-      const s = this.#state;
-      const run = {
-        spheres: () => view.set_sphere_count(s.spheres),
-        iso: () => view.set_iso(s.iso),
-        resolution: () => view.set_resolution(s.resolution),
-        seed: () => view.set_seed(s.seed),
-        yaw: () => view.set_camera(s.yaw, s.pitch, s.distance),
-        pitch: () => view.set_camera(s.yaw, s.pitch, s.distance),
-        distance: () => view.set_camera(s.yaw, s.pitch, s.distance),
-        shininess: () => view.set_shininess(s.shininess),
-        color: () => view.set_color(...hexToLinear(s.color)),
-        antialiasing: () => view.set_antialiasing(s.antialiasing),
-      }[name];
-      if (!run) continue;
+      if (!isRendererSetting(name)) continue;
       try {
-        within(this, run);
+        within(this, () => applySetting(view, name, s));
         this.#applied[name] = s[name];
       } catch (error) {
         this.#notice(`${name} ${s[name]}: ${error.message}`);
@@ -390,10 +342,14 @@ export class MetaballsView extends HTMLElement {
     this.#changed.clear();
   }
 
-  #reflect(name) {
+  // Writes a value to its attribute without taking it in again.
+  #reflect(name, value = this.#state[name]) {
     this.#reflecting = true;
-    this.setAttribute(name, String(this.#state[name]));
-    this.#reflecting = false;
+    try {
+      this.setAttribute(name, String(value));
+    } finally {
+      this.#reflecting = false;
+    }
   }
 
   /**
@@ -415,7 +371,7 @@ export class MetaballsView extends HTMLElement {
         this.#stepRequested = false;
         within(this, () => view.frame(dt));
         this.#framesDrawn += 1;
-        this.#hud.frames += 1;
+        this.#hud.countFrame();
         this.#dirty = Math.max(0, this.#dirty - 1);
       } else {
         view.poll();
@@ -424,7 +380,7 @@ export class MetaballsView extends HTMLElement {
       this.fail('The renderer stopped', error?.message ?? String(error));
       return false;
     }
-    this.#updateHud(now);
+    this.#hud.update(now, view);
     const error = view.gpu_error();
     if (error) {
       this.fail('The GPU reported an error', error);
@@ -433,61 +389,18 @@ export class MetaballsView extends HTMLElement {
     return true;
   }
 
-  #updateHud(now) {
-    const hud = this.#hud;
-    if (!hud.since) hud.since = now;
-    const elapsed = now - hud.since;
-    if (elapsed < 500) return;
-    const $ = (id) => this.#root.getElementById(id);
-    this.#stats.fps = (hud.frames * 1000) / elapsed;
-    this.#stats.frameTime = hud.frames ? elapsed / hud.frames : 0;
-    $('fps').textContent = this.#stats.fps.toFixed(1);
-    $('frame-time').textContent = hud.frames ? `${this.#stats.frameTime.toFixed(1)} ms` : 'idle';
-    hud.frames = 0;
-    hud.since = now;
-    const stats = this.#view.stats();
-    if (stats) {
-      this.#stats.triangles = stats.triangles;
-      $('triangles').textContent = numberFormat.format(stats.triangles);
-      $('triangles').title = `budget ${numberFormat.format(stats.max_triangles)} triangles`;
-      // The buffers grow a frame after an overflow; warn only when it lasts (they hit the device's limit).
-      hud.overflows = stats.overflowed ? hud.overflows + 1 : 0;
-      this.#stats.overflowed = hud.overflows >= 2;
-      $('overflow').hidden = !this.#stats.overflowed;
-      stats.free();
-    }
-  }
-
   // ---------------------------------------------------------------- size
 
   #ratio() {
-    const cap = this.#state['max-pixel-ratio'];
-    // Software adapters shade every pixel on the CPU: no more than one pixel per CSS pixel there.
-    return Math.min(devicePixelRatio, cap, this.#software ? 1 : Infinity);
+    return pixelRatio(this.#state['max-pixel-ratio'], this.#software);
   }
 
   #sizeCanvas() {
-    const rect = this.#canvas.getBoundingClientRect();
-    const ratio = this.#ratio();
-    this.#canvas.width = Math.max(1, Math.round(rect.width * ratio));
-    this.#canvas.height = Math.max(1, Math.round(rect.height * ratio));
+    [this.#canvas.width, this.#canvas.height] = canvasPixels(this.#canvas, this.#ratio());
   }
 
   #resize(entry) {
-    let width;
-    let height;
-    const ratio = this.#ratio();
-    const box = entry?.devicePixelContentBoxSize?.[0];
-    if (box) {
-      width = (box.inlineSize * ratio) / devicePixelRatio;
-      height = (box.blockSize * ratio) / devicePixelRatio;
-    } else {
-      const rect = this.#canvas.getBoundingClientRect();
-      width = rect.width * ratio;
-      height = rect.height * ratio;
-    }
-    width = Math.max(1, Math.round(width));
-    height = Math.max(1, Math.round(height));
+    const [width, height] = canvasPixels(this.#canvas, this.#ratio(), entry);
     if (this.#canvas.width === width && this.#canvas.height === height) return;
     this.#canvas.width = width;
     this.#canvas.height = height;
@@ -540,7 +453,7 @@ export class MetaballsView extends HTMLElement {
   }
 
   /** Figures of the newest frames: triangles, fps, frame time (ms), adapter, overflowed. */
-  get stats() { return { ...this.#stats }; }
+  get stats() { return { ...this.#hud.stats }; }
 
   /** Frames this element has drawn (none while off screen). */
   get framesDrawn() { return this.#framesDrawn; }

@@ -1,5 +1,5 @@
-// The element's own styles, adopted by every shadow root (one stylesheet per page). Shadow DOM keeps the
-// host page's rules out and these in.
+// The element's shadow DOM: its markup, and its own styles adopted by every shadow root (one stylesheet
+// per page). Shadow DOM keeps the host page's rules out and these in.
 
 export const elementStyle = new CSSStyleSheet();
 elementStyle.replaceSync(`
@@ -141,3 +141,24 @@ button:focus-visible, input:focus-visible { outline: 2px solid var(--accent); ou
 #message p { margin: 0 0 8px; max-width: 620px; color: var(--muted); white-space: pre-line; }
 #message button { flex: none; }
 `);
+
+/** The markup of every figure's shadow root. */
+export const TEMPLATE = `
+  <canvas id="view" tabindex="0" part="canvas"
+    aria-label="Merging spheres drawn with marching cubes; drag to orbit, click then wheel to zoom"></canvas>
+  <aside id="panel" aria-label="Controls" hidden></aside>
+  <section id="hud" aria-label="Statistics" aria-live="off" hidden>
+    <div><span class="key">FPS</span> <span id="fps">–</span></div>
+    <div><span class="key">Frame</span> <span id="frame-time">–</span></div>
+    <div><span class="key">Triangles</span> <span id="triangles">–</span></div>
+    <div><span class="key">Adapter</span> <span id="adapter">–</span></div>
+    <div id="overflow" role="alert" hidden>Triangle budget full: part of the surface is not drawn. Lower the resolution or raise the iso level.</div>
+  </section>
+  <button id="play" type="button" hidden>▶ Play</button>
+  <div id="wheel-hint" hidden></div>
+  <div id="notice" role="status" hidden></div>
+  <div id="message" role="alert" hidden>
+    <h2 id="message-title"></h2>
+    <p id="message-text"></p>
+    <button id="retry" type="button" hidden>Try again</button>
+  </div>`;

@@ -1,0 +1,60 @@
+//! What the device holds: the largest grid, buffer and output sizes, and the checks that say so.
+
+use crate::mesh_buffers::{BLOCK_CELLS, Capacity};
+use crate::params::{self, MAX_RESOLUTION, MIN_RESOLUTION, ParamError};
+use crate::reference::Grid;
+
+pub(super) fn storage_limit(device: &wgpu::Device) -> u64 {
+    let limits = device.limits();
+    limits.max_storage_buffer_binding_size.min(limits.max_buffer_size)
+}
+
+pub(super) fn automatic_capacity(device: &wgpu::Device, grid: Grid) -> Capacity {
+    Capacity::for_grid(grid).min(Capacity::largest(grid, storage_limit(device)))
+}
+
+/// The largest resolution this device can run: its block table must fit one storage binding and its
+/// block pass one dispatch.
+pub fn max_resolution(device: &wgpu::Device) -> u32 {
+    (MIN_RESOLUTION..=MAX_RESOLUTION)
+        .rev()
+        .find(|&n| resolution_fits(device, n).is_ok())
+        .unwrap_or(MIN_RESOLUTION)
+}
+
+fn resolution_fits(device: &wgpu::Device, cells_per_axis: u32) -> Result<(), String> {
+    let blocks = (cells_per_axis.div_ceil(BLOCK_CELLS) as u64).pow(3);
+    let needed = blocks * 4;
+    if needed > storage_limit(device) {
+        return Err(format!(
+            "its block table needs {:.1} MiB but the device's max_storage_buffer_binding_size is {:.1} MiB",
+            needed as f64 / 1048576.0,
+            storage_limit(device) as f64 / 1048576.0
+        ));
+    }
+    let groups = blocks.div_ceil(64);
+    let max_groups = device.limits().max_compute_workgroups_per_dimension as u64;
+    if groups > max_groups {
+        return Err(format!(
+            "it needs {groups} workgroups in one dispatch but the device's max_compute_workgroups_per_dimension \
+             is {max_groups}"
+        ));
+    }
+    Ok(())
+}
+
+pub(super) fn check_resolution_fits(device: &wgpu::Device, cells_per_axis: u32) -> Result<(), ParamError> {
+    params::check_resolution(cells_per_axis)?;
+    resolution_fits(device, cells_per_axis).map_err(|detail| ParamError::DeviceLimit {
+        name: "resolution",
+        value: cells_per_axis.to_string(),
+        detail: format!("{detail}; the largest resolution it holds is {}", max_resolution(device)),
+    })
+}
+
+pub(super) fn check_size(device: &wgpu::Device, width: u32, height: u32) -> Result<(), ParamError> {
+    let max = device.limits().max_texture_dimension_2d;
+    params::check_u32("output width (pixels)", width, 1, max)?;
+    params::check_u32("output height (pixels)", height, 1, max)?;
+    Ok(())
+}

@@ -1,0 +1,73 @@
+//! Reading the mesh and the field back from the GPU: for tests and tools, never the frame loop.
+
+use super::Renderer;
+use super::Sizing;
+use super::limits::storage_limit;
+use crate::gpu::read_buffer;
+use crate::mesh::IndexedMesh;
+use crate::mesh_buffers::{BLOCK_CELLS, Capacity, INDEX_BYTES, VERTEX_BYTES};
+use crate::uniforms::Counters;
+use glam::{UVec3, Vec3};
+
+impl Renderer {
+    async fn run_extraction(&mut self) -> Counters {
+        self.extract();
+        let bytes = read_buffer(&self.device, &self.queue, &self.mesh.counters, 0, 16).await;
+        bytemuck::pod_read_unaligned(&bytes)
+    }
+
+    /// Extracts the surface for the current state and reads the indexed mesh back, growing the buffers
+    /// first if the surface needs it (unless the budget is fixed). Waits for the GPU: for tests and
+    /// tools, not the frame loop.
+    pub async fn extract_mesh(&mut self) -> IndexedMesh {
+        let mut counters = self.run_extraction().await;
+        while self.sizing == Sizing::Automatic && !self.mesh.capacity.holds(&counters) {
+            let largest = Capacity::largest(self.grid(), storage_limit(&self.device));
+            let grown = self.mesh.capacity.grown_for(&counters).min(largest);
+            if grown == self.mesh.capacity {
+                break;
+            }
+            self.reallocate(grown);
+            counters = self.run_extraction().await;
+        }
+        let capacity = self.mesh.capacity;
+        let vertex_count = counters.vertices.min(capacity.vertices) as u64;
+        let index_count = counters.indices.min(capacity.indices) as u64;
+        let vertex_bytes =
+            read_buffer(&self.device, &self.queue, &self.mesh.vertices, 0, vertex_count * VERTEX_BYTES).await;
+        let index_bytes =
+            read_buffer(&self.device, &self.queue, &self.mesh.indices, 0, index_count * INDEX_BYTES).await;
+        let floats: &[[f32; 6]] = bytemuck::cast_slice(&vertex_bytes);
+        let indices: &[u32] = bytemuck::cast_slice(&index_bytes);
+        IndexedMesh {
+            positions: floats.iter().map(|v| Vec3::new(v[0], v[1], v[2])).collect(),
+            normals: floats.iter().map(|v| Vec3::new(v[3], v[4], v[5])).collect(),
+            triangles: indices.chunks(3).map(|t| [t[0], t[1], t[2]]).collect(),
+        }
+    }
+
+    /// The field values the GPU computed for the current state: every grid point of every active block,
+    /// with its grid coordinates (a point on a face between blocks appears once per block).
+    pub async fn extract_field(&mut self) -> Vec<(UVec3, f32)> {
+        let counters = self.run_extraction().await;
+        let active = counters.active_blocks.min(self.mesh.capacity.blocks) as u64;
+        let blocks = read_buffer(&self.device, &self.queue, &self.mesh.active_blocks, 0, active * 4).await;
+        let values = read_buffer(&self.device, &self.queue, &self.mesh.block_values, 0, active * 500).await;
+        let blocks: &[u32] = bytemuck::cast_slice(&blocks);
+        let values: &[f32] = bytemuck::cast_slice(&values);
+        let n = self.settings.resolution;
+        let per_axis = n.div_ceil(BLOCK_CELLS);
+        let mut points = Vec::new();
+        for (slot, &block) in blocks.iter().enumerate() {
+            let coords =
+                UVec3::new(block % per_axis, (block / per_axis) % per_axis, block / (per_axis * per_axis));
+            for i in 0..125u32 {
+                let id = coords * BLOCK_CELLS + UVec3::new(i % 5, (i / 5) % 5, i / 25);
+                if id.max_element() <= n {
+                    points.push((id, values[slot * 125 + i as usize]));
+                }
+            }
+        }
+        points
+    }
+}

@@ -1,0 +1,190 @@
+//! Frame statistics: each frame copies the GPU's counters into a free staging buffer and maps it; later
+//! frames read whichever have arrived (nothing waits for them) and plan larger buffers after an overflow.
+
+use super::limits::storage_limit;
+use super::{Renderer, Sizing};
+use crate::mesh_buffers::{BLOCK_CELLS, Capacity};
+use crate::uniforms::Counters;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicU8, Ordering};
+
+/// What the GPU reported for a past frame (a frame or two late; nothing waits for it).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct FrameStats {
+    /// Which frame (counted from 1) these figures are for.
+    pub frame: u64,
+    /// Triangles written and drawn.
+    pub triangles: u32,
+    /// Triangles the surface needed; more than `max_triangles` when the index buffer overflowed.
+    pub triangles_requested: u32,
+    /// Capacity of the index buffer, in triangles.
+    pub max_triangles: u32,
+    /// Shared vertices the surface needed.
+    pub vertices: u32,
+    /// Blocks of 4³ cells the surface may cross (the others were skipped).
+    pub active_blocks: u32,
+    /// Blocks in the grid.
+    pub total_blocks: u32,
+    /// Cells that emitted triangles.
+    pub active_cells: u32,
+    /// Cells in the grid.
+    pub total_cells: u32,
+    /// True when some buffer was too small for this frame, so part of the surface was not drawn (the
+    /// buffers grow for the next frames).
+    pub overflowed: bool,
+    /// GPU memory held by the mesh buffers, in bytes.
+    pub mesh_bytes: u64,
+}
+
+impl FrameStats {
+    /// True when the surface needed more room than the buffers had, so some of it was not drawn.
+    pub fn overflowed(&self) -> bool {
+        self.overflowed
+    }
+}
+
+const SLOT_FREE: u8 = 0;
+const SLOT_PENDING: u8 = 1;
+const SLOT_READY: u8 = 2;
+/// Staging buffers for the statistics: enough that a slow map never makes a frame skip its copy.
+const STATS_SLOTS: usize = 3;
+
+struct StatsSlot {
+    buffer: wgpu::Buffer,
+    state: Arc<AtomicU8>,
+    frame: u64,
+    capacity: Capacity,
+}
+
+/// Counters of one past frame, with the capacity its buffers had.
+pub(super) struct Reading {
+    pub frame: u64,
+    pub capacity: Capacity,
+    pub counters: Counters,
+}
+
+/// A few mappable buffers the counters are copied into, frame after frame.
+pub(super) struct StatsRing {
+    slots: Vec<StatsSlot>,
+}
+
+impl StatsRing {
+    pub fn new(device: &wgpu::Device) -> Self {
+        let slots = (0..STATS_SLOTS)
+            .map(|_| StatsSlot {
+                buffer: device.create_buffer(&wgpu::BufferDescriptor {
+                    label: Some("stats: staging"),
+                    size: std::mem::size_of::<Counters>() as u64,
+                    usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+                    mapped_at_creation: false,
+                }),
+                state: Arc::new(AtomicU8::new(SLOT_FREE)),
+                frame: 0,
+                capacity: Capacity { blocks: 0, cells: 0, vertices: 0, indices: 0 },
+            })
+            .collect();
+        Self { slots }
+    }
+
+    /// Records a copy of `counters` into a free staging buffer, if one is free (with every buffer still
+    /// in flight, this frame's figures are skipped). Returns the slot to `map` once submitted.
+    pub fn record(&self, encoder: &mut wgpu::CommandEncoder, counters: &wgpu::Buffer) -> Option<usize> {
+        let slot = self.slots.iter().position(|s| s.state.load(Ordering::Acquire) == SLOT_FREE)?;
+        encoder.copy_buffer_to_buffer(counters, 0, &self.slots[slot].buffer, 0, None);
+        Some(slot)
+    }
+
+    /// Maps the slot `record` returned, after its frame was submitted.
+    pub fn map(&mut self, slot: usize, frame: u64, capacity: Capacity) {
+        let slot = &mut self.slots[slot];
+        slot.frame = frame;
+        slot.capacity = capacity;
+        slot.state.store(SLOT_PENDING, Ordering::Release);
+        let state = slot.state.clone();
+        slot.buffer.map_async(wgpu::MapMode::Read, .., move |result| {
+            state.store(if result.is_ok() { SLOT_READY } else { SLOT_FREE }, Ordering::Release);
+        });
+    }
+
+    /// True while some copy has not been mapped yet.
+    pub fn pending(&self) -> bool {
+        self.slots.iter().any(|s| s.state.load(Ordering::Acquire) == SLOT_PENDING)
+    }
+
+    /// The readings mapped since the last call; their buffers are free again.
+    pub fn take_ready(&mut self) -> Vec<Reading> {
+        let mut readings = Vec::new();
+        for slot in &mut self.slots {
+            if slot.state.load(Ordering::Acquire) != SLOT_READY {
+                continue;
+            }
+            let counters: Counters = match slot.buffer.get_mapped_range(..) {
+                Ok(bytes) => bytemuck::pod_read_unaligned(&bytes),
+                Err(_) => Counters::default(),
+            };
+            slot.buffer.unmap();
+            slot.state.store(SLOT_FREE, Ordering::Release);
+            readings.push(Reading { frame: slot.frame, capacity: slot.capacity, counters });
+        }
+        readings
+    }
+}
+
+impl Renderer {
+    /// Takes in the statistics that have arrived since the last frame, without drawing (a paused view
+    /// calls this so its figures still come in).
+    pub fn poll_stats(&mut self) {
+        self.collect_stats();
+    }
+
+    /// Reads the statistics whose buffers have been mapped since the last call, and plans larger
+    /// buffers when a frame overflowed.
+    pub(super) fn collect_stats(&mut self) {
+        #[cfg(not(target_arch = "wasm32"))]
+        let _ = self.device.poll(wgpu::PollType::Poll);
+        let grid = self.grid();
+        let total_blocks = grid.cells_per_axis.div_ceil(BLOCK_CELLS).pow(3);
+        for Reading { frame, capacity, counters } in self.stats.take_ready() {
+            let stats = FrameStats {
+                frame,
+                triangles: counters.indices.min(capacity.indices) / 3,
+                triangles_requested: counters.indices / 3,
+                max_triangles: capacity.indices / 3,
+                vertices: counters.vertices,
+                active_blocks: counters.active_blocks,
+                total_blocks,
+                active_cells: counters.active_cells,
+                total_cells: grid.cells_per_axis.pow(3),
+                overflowed: !capacity.holds(&counters),
+                mesh_bytes: self.mesh.bytes(),
+            };
+            if self.latest_stats.is_none_or(|s| s.frame < stats.frame) {
+                self.latest_stats = Some(stats);
+            }
+            // Grow once per size: figures from frames drawn with smaller buffers than now are stale.
+            let current = self.pending_capacity.unwrap_or(self.mesh.capacity);
+            if stats.overflowed && self.sizing == Sizing::Automatic && capacity == self.mesh.capacity {
+                let largest = Capacity::largest(grid, storage_limit(&self.device));
+                let grown = current.grown_for(&counters).min(largest);
+                if grown != current {
+                    self.pending_capacity = Some(grown);
+                }
+            }
+        }
+    }
+
+    /// Waits until the statistics of every submitted frame are in (tests and tools).
+    pub async fn flush_stats(&mut self) {
+        if self.stats.pending() {
+            let (sender, receiver) = futures_channel::oneshot::channel::<()>();
+            // Queue work done implies earlier map callbacks have run.
+            self.queue.on_submitted_work_done(move || {
+                let _ = sender.send(());
+            });
+            #[cfg(not(target_arch = "wasm32"))]
+            let _ = self.device.poll(wgpu::PollType::wait_indefinitely());
+            let _ = receiver.await;
+        }
+        self.collect_stats();
+    }
+}

@@ -1,0 +1,31 @@
+// How each parameter reaches the wasm view: one setter call per renderer setting. The others (speed,
+// paused, controls, hud, autoplay, max-pixel-ratio) live in the element alone.
+
+function hexToLinear(hex) {
+  const channel = (i) => {
+    const c = parseInt(hex.slice(1 + 2 * i, 3 + 2 * i), 16) / 255;
+    return c <= 0.04045 ? c / 12.92 : ((c + 0.055) / 1.055) ** 2.4;
+  };
+  return [channel(0), channel(1), channel(2)];
+}
+
+const SETTERS = {
+  spheres: (view, s) => view.set_sphere_count(s.spheres),
+  iso: (view, s) => view.set_iso(s.iso),
+  resolution: (view, s) => view.set_resolution(s.resolution),
+  seed: (view, s) => view.set_seed(s.seed),
+  yaw: (view, s) => view.set_camera(s.yaw, s.pitch, s.distance),
+  pitch: (view, s) => view.set_camera(s.yaw, s.pitch, s.distance),
+  distance: (view, s) => view.set_camera(s.yaw, s.pitch, s.distance),
+  shininess: (view, s) => view.set_shininess(s.shininess),
+  color: (view, s) => view.set_color(...hexToLinear(s.color)),
+  antialiasing: (view, s) => view.set_antialiasing(s.antialiasing),
+};
+
+/** True when parameter `name` is a setting of the renderer (one `applySetting` passes on). */
+export const isRendererSetting = (name) => name in SETTERS;
+
+/** Gives `view` the value of `name` in `state`; throws with the renderer's message when it refuses. */
+export function applySetting(view, name, state) {
+  SETTERS[name](view, state);
+}
