@@ -1,7 +1,6 @@
 //! One renderer for every output: it owns the scene, the settings and the passes, and draws a frame into
 //! any texture view of its format (a canvas's current texture or an offscreen texture).
 
-use crate::blocks::BlockPass;
 mod limits;
 mod readback;
 mod stats;
@@ -9,6 +8,7 @@ mod stats;
 pub use limits::max_resolution;
 pub use stats::FrameStats;
 
+use crate::blocks::BlockPass;
 use crate::context::{GpuContext, RendererToken};
 use crate::field_pass::FieldPass;
 use crate::marching_cubes::MarchingCubesPass;

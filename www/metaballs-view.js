@@ -3,7 +3,9 @@
 // page shares one GPU device, starts when it first comes near the viewport, draws only while on screen,
 // takes keys only while focused, and survives a lost GPU.
 
-import { hub, loadWasm, parameterTable, parseParameter, View, within, WEBGPU_HELP } from './lib/engine.js';
+import {
+  hub, loadWasm, parameterTable, parseParameter, propertyName, View, within, WEBGPU_HELP,
+} from './lib/engine.js';
 import { wireCameraInput } from './lib/camera-input.js';
 import { buildPanel, listedControls } from './lib/panel.js';
 import { elementStyle, TEMPLATE } from './lib/element-dom.js';
@@ -15,7 +17,6 @@ const wasmError = await loadWasm().then(() => null, (error) => error);
 const TABLE = wasmError ? [] : parameterTable();
 const NAMES = TABLE.map((p) => p.name);
 const CONTROL_NAMES = TABLE.find((p) => p.name === 'controls')?.words ?? [];
-const camelCase = (name) => name.replace(/-([a-z])/g, (_, c) => c.toUpperCase());
 
 /** The default values of every parameter, typed. */
 function defaults() {
@@ -109,7 +110,7 @@ export class MetaballsView extends HTMLElement {
   // writing goes through the same checks as the attribute.
   static {
     for (const name of NAMES) {
-      Object.defineProperty(this.prototype, camelCase(name), {
+      Object.defineProperty(this.prototype, propertyName(name), {
         get() { return this.#state[name]; },
         set(value) { this.setAttribute(name, String(value)); },
       });
@@ -173,7 +174,7 @@ export class MetaballsView extends HTMLElement {
     if (name === 'max-pixel-ratio') this.#resize();
     if (name === 'paused') this.#root.getElementById('play').hidden = !this.#showsPlayButton();
     this.#showPanel(this.#state);
-    this.dispatchEvent(new CustomEvent('metaballs-change', { detail: { property: camelCase(name), value } }));
+    this.dispatchEvent(new CustomEvent('metaballs-change', { detail: { property: propertyName(name), value } }));
     hub.requestFrame();
   }
 

@@ -3,7 +3,7 @@
 // person changes them, plus the benchmark mode (`?bench`). Bad values in a link are reported inside the
 // figure and replaced by defaults.
 
-import { loadWasm, parameterTable, parseParameter } from './lib/engine.js';
+import { loadWasm, parameterTable, parseParameter, propertyName } from './lib/engine.js';
 import { runBenchmark } from './bench.js';
 
 await loadWasm();
@@ -11,12 +11,13 @@ await customElements.whenDefined('metaballs-view');
 const element = document.querySelector('metaballs-view');
 const table = parameterTable();
 const query = new URLSearchParams(location.search);
-// The iframe page shows what the link asks for and nothing more; the full page has everything.
+// The iframe page shows what the link asks for and nothing more; the full page always has every
+// control and the statistics, so its links do not carry `controls` or `hud`.
 const chromeless = document.body.dataset.page === 'embed';
+const inLinks = (spec) => chromeless || (spec.name !== 'controls' && spec.name !== 'hud');
 
 const problems = [];
-for (const spec of table) {
-  if (chromeless === false && (spec.name === 'controls' || spec.name === 'hud')) continue;
+for (const spec of table.filter(inLinks)) {
   const key = query.has(spec.url) ? spec.url : query.has(spec.name) ? spec.name : null;
   if (key === null) continue;
   const raw = query.get(key);
@@ -38,9 +39,8 @@ function saveUrl() {
   clearTimeout(urlTimer);
   urlTimer = setTimeout(() => {
     const next = new URLSearchParams();
-    for (const spec of table) {
-      if (!chromeless && (spec.name === 'controls' || spec.name === 'hud')) continue;
-      const value = element[spec.name.replace(/-([a-z])/g, (_, c) => c.toUpperCase())];
+    for (const spec of table.filter(inLinks)) {
+      const value = element[propertyName(spec.name)];
       if (value === parseParameter(spec.name, spec.default)) continue;
       const text = typeof value === 'boolean' ? (value ? '1' : '0') : String(value);
       next.set(spec.url, text);

@@ -21,6 +21,9 @@ export function parameterTable() {
   return table;
 }
 
+/** The property name of an attribute (`max-pixel-ratio` → `maxPixelRatio`). */
+export const propertyName = (name) => name.replace(/-([a-z])/g, (_, c) => c.toUpperCase());
+
 /** Reads `text` as parameter `name`'s value; throws an Error with a message saying what is accepted. */
 export function parseParameter(name, text) {
   return parse_parameter(name, text);
