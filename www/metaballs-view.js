@@ -127,6 +127,8 @@ export class MetaballsView extends HTMLElement {
     if (!this.#started) {
       this.#started = true;
       if (this.#state.autoplay === 'off' || reducedMotion.matches) this.#set('paused', true);
+      // Very small figures start with their statistics folded, like the panel.
+      this.#root.querySelector('#hud details').open = !(this.clientWidth > 0 && this.clientWidth < 300);
     }
     this.#buildPanel();
     this.#root.getElementById('hud').hidden = this.#state.hud !== 'on';

@@ -18,6 +18,7 @@ elementStyle.replaceSync(`
   font: 13px/1.4 system-ui, -apple-system, "Segoe UI", Roboto, sans-serif;
   color-scheme: dark;
   contain: layout paint;
+  container-type: inline-size;
   border-radius: 6px;
 }
 :host([hidden]) { display: none; }
@@ -88,17 +89,21 @@ button:focus-visible, input:focus-visible { outline: 2px solid var(--accent); ou
   position: absolute;
   top: 8px;
   right: 8px;
-  max-width: 33%;
-  padding: 6px 10px;
+  max-width: 50%;
+  padding: 4px 10px 6px;
   background: var(--panel);
   border-radius: 8px;
   font-variant-numeric: tabular-nums;
   font-size: 12px;
 }
 #hud[hidden] { display: none; }
+#hud summary { padding: 0 0 2px; font-size: 11.5px; }
+#hud details:not([open]) summary { padding: 0; }
 #hud div { white-space: nowrap; overflow: hidden; text-overflow: ellipsis; }
-#hud .key { display: inline-block; width: 64px; color: var(--muted); }
+#hud .key { display: inline-block; width: 56px; color: var(--muted); }
 #overflow { color: #ffb347; white-space: normal !important; }
+/* Small figures keep the statistics to frames per second and triangles. */
+@container (max-width: 480px) { #hud .wide { display: none; } }
 
 #play {
   position: absolute;
@@ -148,11 +153,13 @@ export const TEMPLATE = `
     aria-label="Merging spheres drawn with marching cubes; drag to orbit, click then wheel to zoom"></canvas>
   <aside id="panel" aria-label="Controls" hidden></aside>
   <section id="hud" aria-label="Statistics" aria-live="off" hidden>
+    <details open><summary>Statistics</summary>
     <div><span class="key">FPS</span> <span id="fps">–</span></div>
-    <div><span class="key">Frame</span> <span id="frame-time">–</span></div>
+    <div class="wide"><span class="key">Frame</span> <span id="frame-time">–</span></div>
     <div><span class="key">Triangles</span> <span id="triangles">–</span></div>
-    <div><span class="key">Adapter</span> <span id="adapter">–</span></div>
+    <div class="wide"><span class="key">Adapter</span> <span id="adapter">–</span></div>
     <div id="overflow" role="alert" hidden>Triangle budget full: part of the surface is not drawn. Lower the resolution or raise the iso level.</div>
+    </details>
   </section>
   <button id="play" type="button" hidden>▶ Play</button>
   <div id="wheel-hint" hidden></div>

@@ -31,7 +31,7 @@ export class Hud {
     const $ = (id) => this.root.getElementById(id);
     this.stats.fps = (this.frames * 1000) / elapsed;
     this.stats.frameTime = this.frames ? elapsed / this.frames : 0;
-    $('fps').textContent = this.stats.fps.toFixed(1);
+    $('fps').textContent = this.frames ? this.stats.fps.toFixed(1) : '–';
     $('frame-time').textContent = this.frames ? `${this.stats.frameTime.toFixed(1)} ms` : 'idle';
     this.frames = 0;
     this.since = now;
