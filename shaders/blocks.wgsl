@@ -34,12 +34,21 @@ fn classify_blocks(@builtin(global_invocation_id) id: vec3<u32>) {
         let s = spheres[i];
         let d = length(centre - s.xyz);
         let r2 = s.w * s.w;
-        lower += r2 / ((d + h) * (d + h));
+        let low_term = r2 / ((d + h) * (d + h));
         let gap = d - h;
+        var high_term = 0.0;
         if (gap <= 0.0) {
             unbounded = true;
         } else {
-            upper += r2 / (gap * gap);
+            high_term = r2 / (gap * gap);
+        }
+        // With blend by max the bounds of the largest term are the largest bounds.
+        if (blend_max()) {
+            lower = max(lower, low_term);
+            upper = max(upper, high_term);
+        } else {
+            lower += low_term;
+            upper += high_term;
         }
     }
     let touches_walls = any(first == vec3<u32>(0u)) || any(last >= vec3<u32>(grid.cells_per_axis));

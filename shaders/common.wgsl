@@ -13,7 +13,23 @@ struct Grid {
     max_vertices: u32,
     max_indices: u32,
     max_cells: u32,
-    _pad0: u32,
+    // Bit 0: vertices at edge midpoints (else interpolated); bit 1: blend by max (else sum).
+    flags: u32,
+}
+
+const FLAG_MIDPOINT: u32 = 1u;
+const FLAG_MAX: u32 = 2u;
+
+fn blend_max() -> bool {
+    return (grid.flags & FLAG_MAX) != 0u;
+}
+
+// Where on an edge from value fa to value fb the vertex lands.
+fn edge_parameter(fa: f32, fb: f32) -> f32 {
+    if ((grid.flags & FLAG_MIDPOINT) != 0u) {
+        return 0.5;
+    }
+    return (grid.iso - fa) / (fb - fa);
 }
 
 // Counts the passes append with. A count above its capacity means the buffer overflowed.
@@ -75,25 +91,42 @@ fn slot_of(workgroup: vec3<u32>) -> u32 {
     return workgroup.x + workgroup.y * DISPATCH_ROW;
 }
 
-// f(p) = Σ r² / |p − c|²
+// f(p) = Σ r² / |p − c|² (or the largest term, with blend by max: the union of separate spheres)
 fn field_at(p: vec3<f32>) -> f32 {
     var f = 0.0;
+    let largest = blend_max();
     for (var i = 0u; i < grid.sphere_count; i++) {
         let s = spheres[i];
         let d = p - s.xyz;
-        f += s.w * s.w / max(dot(d, d), MIN_DISTANCE_SQUARED);
+        let term = s.w * s.w / max(dot(d, d), MIN_DISTANCE_SQUARED);
+        if (largest) {
+            f = max(f, term);
+        } else {
+            f += term;
+        }
     }
     return f;
 }
 
-// −∇f / 2 = Σ r² (p − c) / |p − c|⁴, pointing out of the surface.
+// −∇f / 2 = Σ r² (p − c) / |p − c|⁴, pointing out of the surface (with blend by max, the largest
+// term's alone).
 fn outward_gradient(p: vec3<f32>) -> vec3<f32> {
     var g = vec3<f32>(0.0);
+    var largest = -1.0;
     for (var i = 0u; i < grid.sphere_count; i++) {
         let s = spheres[i];
         let d = p - s.xyz;
         let d2 = max(dot(d, d), MIN_DISTANCE_SQUARED);
-        g += d * (s.w * s.w / (d2 * d2));
+        let term = d * (s.w * s.w / (d2 * d2));
+        if (blend_max()) {
+            let value = s.w * s.w / d2;
+            if (value > largest) {
+                largest = value;
+                g = term;
+            }
+        } else {
+            g += term;
+        }
     }
     return g;
 }

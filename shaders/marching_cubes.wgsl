@@ -116,7 +116,7 @@ fn make_vertices(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_inv
                 let pa = grid_point(cell);
                 let pb = grid_point(ib);
                 let fb = value_at(slot, at + unit(axis));
-                let t = (grid.iso - f0) / (fb - f0);
+                let t = edge_parameter(f0, fb);
                 let p = pa + (pb - pa) * t;
                 var n: vec3<f32>;
                 if (is_boundary(cell)) {

@@ -1,23 +1,87 @@
-// Shading pass: a background gradient, the box's edges, then the surface lit by one point light with
-// Blinn-Phong.
-// Mirrors `ShadingUniform` in src/uniforms.rs.
+// Shading pass: a background gradient, the box's edges, then the surface lit by up to three lights
+// (point, directional, spot) with Blinn-Phong. The teaching views (shaders/views.wgsl) share the
+// uniforms and the lighting defined here.
+// Mirrors `ShadingUniform` and `LightUniform` in src/uniforms.rs.
+
+const LIGHT_POINT: u32 = 1u;
+const LIGHT_DIRECTIONAL: u32 = 2u;
+const LIGHT_SPOT: u32 = 3u;
+
+struct Light {
+    position: vec3<f32>,
+    kind: u32,
+    direction: vec3<f32>,
+    cos_outer: f32,
+    color: vec3<f32>,
+    cos_inner: f32,
+}
 
 struct Shading {
     view_proj: mat4x4<f32>,
+    view: mat4x4<f32>,
     camera_position: vec3<f32>,
     ambient: f32,
-    light_position: vec3<f32>,
-    diffuse: f32,
+    camera_forward: vec3<f32>,
+    orthographic: u32,
     base_color: vec3<f32>,
+    diffuse: f32,
     specular: f32,
     shininess: f32,
     // 1 when the target is not an sRGB format and the shader must encode.
     encode_srgb: u32,
     box_half_extent: f32,
+    display: u32,
+    color_by: u32,
+    grid_view: u32,
+    cells_per_axis: u32,
+    viewport: vec2<f32>,
+    cell_size: f32,
+    iso: f32,
+    slice_axis: u32,
+    slice_plane: u32,
+    selected: u32,
+    lattice_alpha: f32,
+    selected_cell: vec3<u32>,
     _pad: u32,
+    lights: array<Light, 3>,
 }
 
-@group(0) @binding(0) var<uniform> shading: Shading;
+@group(0) @binding(20) var<uniform> shading: Shading;
+
+// The direction from `world` towards the eye.
+fn view_direction(world: vec3<f32>) -> vec3<f32> {
+    if (shading.orthographic == 1u) {
+        return -shading.camera_forward;
+    }
+    return normalize(shading.camera_position - world);
+}
+
+// Blinn-Phong for surface colour `albedo` at `world` with unit normal `n`, summed over the lights.
+fn lit(albedo: vec3<f32>, world: vec3<f32>, n: vec3<f32>) -> vec3<f32> {
+    let v = view_direction(world);
+    var color = albedo * shading.ambient;
+    for (var i = 0u; i < 3u; i++) {
+        let light = shading.lights[i];
+        if (light.kind == 0u) {
+            continue;
+        }
+        var l = -light.direction;
+        var strength = 1.0;
+        if (light.kind != LIGHT_DIRECTIONAL) {
+            l = normalize(light.position - world);
+        }
+        if (light.kind == LIGHT_SPOT) {
+            strength = smoothstep(light.cos_outer, light.cos_inner, dot(-l, light.direction));
+        }
+        let lambert = max(dot(n, l), 0.0);
+        var highlight = 0.0;
+        if (lambert > 0.0) {
+            highlight = pow(max(dot(n, normalize(l + v)), 0.0), shading.shininess);
+        }
+        color += strength * light.color * (albedo * shading.diffuse * lambert + vec3<f32>(shading.specular * highlight));
+    }
+    return color;
+}
 
 fn to_output(linear: vec3<f32>) -> vec4<f32> {
     var c = clamp(linear, vec3<f32>(0.0), vec3<f32>(1.0));
@@ -97,15 +161,5 @@ fn surface_fragment(in: SurfaceOut, @builtin(front_facing) front: bool) -> @loca
     if (!front) {
         n = -n;
     }
-    let v = normalize(shading.camera_position - in.world);
-    let l = normalize(shading.light_position - in.world);
-    let h = normalize(l + v);
-    let lambert = max(dot(n, l), 0.0);
-    var highlight = 0.0;
-    if (lambert > 0.0) {
-        highlight = pow(max(dot(n, h), 0.0), shading.shininess);
-    }
-    let color = shading.base_color * (shading.ambient + shading.diffuse * lambert)
-        + vec3<f32>(shading.specular * highlight);
-    return to_output(color);
+    return to_output(lit(shading.base_color, in.world, n));
 }

@@ -8,9 +8,11 @@
 #[cfg(not(target_arch = "wasm32"))]
 pub mod bench;
 pub mod blocks;
+pub mod case_classes;
 pub mod context;
 pub mod field_pass;
 pub mod gpu;
+pub mod inspect;
 pub mod marching_cubes;
 pub mod mesh;
 pub mod mesh_buffers;
@@ -22,9 +24,11 @@ pub mod renderer;
 pub mod scene;
 pub mod scene_buffers;
 pub mod shade;
+pub mod slice;
 pub mod tables;
 pub mod timing;
 pub mod uniforms;
+pub mod views;
 #[cfg(target_arch = "wasm32")]
 mod web;
 

@@ -190,6 +190,8 @@ pub struct Settings {
     pub camera: Camera,
     /// 4× multisampling; software adapters draw much faster without it.
     pub antialiasing: bool,
+    /// Display mode, overlays, lights, projection and the construction toggles.
+    pub view: ViewOptions,
 }
 
 impl Default for Settings {
@@ -203,6 +205,7 @@ impl Default for Settings {
             light_position: Vec3::new(3.0, 4.0, 3.5),
             camera: Camera::default(),
             antialiasing: true,
+            view: ViewOptions::default(),
         }
     }
 }
@@ -216,7 +219,36 @@ impl Settings {
         self.material.validated()?;
         check_light_position(self.light_position)?;
         self.camera.validated()?;
+        self.view.validated()?;
         Ok(self)
+    }
+
+    /// These settings with parameter `name` (a table name or short name) read from `text`: the view
+    /// options, the light strengths and the field of view. The error says what is accepted.
+    pub fn with_parameter(&self, name: &str, text: &str) -> Result<Settings, ParamError> {
+        let value = parse_parameter(name, text)?;
+        let name = parameter(name).map_or(name, |p| p.name);
+        let mut next = *self;
+        let number = match value {
+            Value::Number(n) => n as f32,
+            _ => f32::NAN,
+        };
+        match name {
+            "ambient" => next.material.ambient = number,
+            "diffuse" => next.material.diffuse = number,
+            "specular" => next.material.specular = number,
+            "fov" => next.camera.fov_y_degrees = number,
+            _ => {
+                if !next.view.set(name, &value)? {
+                    return Err(ParamError::Invalid {
+                        name: "parameter name",
+                        value: name.to_string(),
+                        expected: "a view, light or camera option".into(),
+                    });
+                }
+            }
+        }
+        next.validated()
     }
 }
 
@@ -241,7 +273,9 @@ pub fn check_light_position(position: Vec3) -> Result<Vec3, ParamError> {
 }
 
 mod table;
+pub mod view;
 pub use table::{CONTROLS, Kind, PARAMETERS, Parameter, Value, parameter, parse_parameter};
+pub use view::ViewOptions;
 
 #[cfg(test)]
 mod tests {

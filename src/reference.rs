@@ -2,6 +2,7 @@
 //! and tools. It favours being obviously right over being fast.
 
 use crate::mesh::Mesh;
+use crate::params::view::{Blend, Interpolation};
 use crate::scene::{BOX_HALF_EXTENT, Sphere};
 use crate::tables::{CORNER_OFFSETS, EDGE_CORNERS, EDGE_TABLE, TRI_TABLE};
 use glam::{UVec3, Vec3};
@@ -44,29 +45,72 @@ impl Grid {
     }
 }
 
+/// How the surface is built: where vertices land on edges and how the spheres' fields combine.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Construction {
+    pub interpolation: Interpolation,
+    pub blend: Blend,
+}
+
+impl Construction {
+    /// Where on an edge from value `fa` to value `fb` the vertex for level `iso` lands.
+    pub fn edge_parameter(&self, iso: f32, fa: f32, fb: f32) -> f32 {
+        match self.interpolation {
+            Interpolation::Linear => (iso - fa) / (fb - fa),
+            Interpolation::Midpoint => 0.5,
+        }
+    }
+}
+
 /// f(p) = Σ rᵢ² / |p − cᵢ|², summed in sphere order in `f32` like the GPU.
 pub fn field_at(spheres: &[Sphere], p: Vec3) -> f32 {
+    blended_field_at(spheres, p, Blend::Sum)
+}
+
+/// f(p) with the spheres' terms summed or, with `Blend::Max`, the largest term alone.
+pub fn blended_field_at(spheres: &[Sphere], p: Vec3, blend: Blend) -> f32 {
     let mut f = 0.0f32;
     for s in spheres {
         let d = p - s.center;
-        f += s.radius * s.radius / d.dot(d).max(MIN_DISTANCE_SQUARED);
+        let term = s.radius * s.radius / d.dot(d).max(MIN_DISTANCE_SQUARED);
+        f = match blend {
+            Blend::Sum => f + term,
+            Blend::Max => f.max(term),
+        };
     }
     f
 }
 
 /// −∇f / 2 = Σ rᵢ² (p − cᵢ) / |p − cᵢ|⁴: it points out of the surface (the field falls outwards).
-pub fn outward_gradient(spheres: &[Sphere], p: Vec3) -> Vec3 {
+/// With `Blend::Max`, the largest term's alone.
+pub fn outward_gradient(spheres: &[Sphere], p: Vec3, blend: Blend) -> Vec3 {
     let mut g = Vec3::ZERO;
+    let mut largest = -1.0f32;
     for s in spheres {
         let d = p - s.center;
         let d2 = d.dot(d).max(MIN_DISTANCE_SQUARED);
-        g += d * (s.radius * s.radius / (d2 * d2));
+        let term = d * (s.radius * s.radius / (d2 * d2));
+        match blend {
+            Blend::Sum => g += term,
+            Blend::Max => {
+                let value = s.radius * s.radius / d2;
+                if value > largest {
+                    largest = value;
+                    g = term;
+                }
+            }
+        }
     }
     g
 }
 
 /// Field values at every grid point, boundary points forced to 0 (outside).
 pub fn sample_field(spheres: &[Sphere], grid: Grid) -> Vec<f32> {
+    sample_blended_field(spheres, grid, Blend::Sum)
+}
+
+/// Field values at every grid point with `blend`, boundary points forced to 0 (outside).
+pub fn sample_blended_field(spheres: &[Sphere], grid: Grid, blend: Blend) -> Vec<f32> {
     let n = grid.points_per_axis();
     let mut values = vec![0.0; (n as usize).pow(3)];
     for z in 0..n {
@@ -74,7 +118,7 @@ pub fn sample_field(spheres: &[Sphere], grid: Grid) -> Vec<f32> {
             for x in 0..n {
                 let id = UVec3::new(x, y, z);
                 if !grid.is_boundary(id) {
-                    values[grid.point_index(id)] = field_at(spheres, grid.point(id));
+                    values[grid.point_index(id)] = blended_field_at(spheres, grid.point(id), blend);
                 }
             }
         }
@@ -86,7 +130,12 @@ pub fn sample_field(spheres: &[Sphere], grid: Grid) -> Vec<f32> {
 /// triangles in table order with counter-clockwise winding seen from outside. Each vertex carries the
 /// id of the grid edge it lies on (`Mesh::edge_ids`).
 pub fn extract(spheres: &[Sphere], iso: f32, grid: Grid) -> Mesh {
-    let values = sample_field(spheres, grid);
+    extract_with(spheres, iso, grid, Construction::default())
+}
+
+/// `extract` with the vertex placement and blend of `construction`.
+pub fn extract_with(spheres: &[Sphere], iso: f32, grid: Grid, construction: Construction) -> Mesh {
+    let values = sample_blended_field(spheres, grid, construction.blend);
     let mut mesh = Mesh::default();
     let n = grid.cells_per_axis;
     for z in 0..n {
@@ -104,14 +153,14 @@ pub fn extract(spheres: &[Sphere], iso: f32, grid: Grid) -> Mesh {
                     let (ia, ib) = (corner(a), corner(b));
                     let (pa, pb) = (grid.point(ia), grid.point(ib));
                     let (fa, fb) = (value(a), value(b));
-                    let t = (iso - fa) / (fb - fa);
+                    let t = construction.edge_parameter(iso, fa, fb);
                     let p = pa + (pb - pa) * t;
                     let normal = if grid.is_boundary(ia) {
                         (pa - pb).normalize()
                     } else if grid.is_boundary(ib) {
                         (pb - pa).normalize()
                     } else {
-                        let g = outward_gradient(spheres, p);
+                        let g = outward_gradient(spheres, p, construction.blend);
                         let fallback = if fa > iso { pb - pa } else { pa - pb };
                         g.try_normalize().unwrap_or(fallback.normalize())
                     };

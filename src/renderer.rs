@@ -6,21 +6,26 @@ mod readback;
 mod stats;
 
 pub use limits::max_resolution;
+pub use readback::OverlayReadback;
 pub use stats::FrameStats;
 
 use crate::blocks::BlockPass;
 use crate::context::{GpuContext, RendererToken};
 use crate::field_pass::FieldPass;
+use crate::inspect::{self, CellReport};
 use crate::marching_cubes::MarchingCubesPass;
 use crate::mesh_buffers::{Capacity, MeshBuffers};
+use crate::params::view::{Blend, Interpolation, Projection};
 use crate::params::{self, Camera, Material, ParamError, Settings};
+use crate::reference::Construction;
 use crate::reference::Grid;
 use crate::scene::{BOX_HALF_EXTENT, Scene};
 use crate::scene_buffers::SceneBuffers;
-use crate::shade::{MULTISAMPLES, ShadePass};
+use crate::shade::{MULTISAMPLES, ShadePass, ViewFrame};
 use crate::timing::{StageTimes, Timing};
-use crate::uniforms::{GridUniform, ShadingUniform};
-use glam::Vec3;
+use crate::uniforms::{GridUniform, LightUniform, ShadingUniform};
+use crate::views::{self, ViewState};
+use glam::{Mat4, UVec3, Vec3};
 use limits::{automatic_capacity, check_resolution_fits, check_size, storage_limit};
 use stats::StatsRing;
 
@@ -56,6 +61,10 @@ pub struct Renderer {
     latest_stats: Option<FrameStats>,
     frame: u64,
     timing: Option<Timing>,
+    /// The teaching views' buffers, made when a view needs them.
+    views: Option<ViewState>,
+    /// The cell the inspector shows, if any.
+    selected: Option<UVec3>,
 }
 
 impl Renderer {
@@ -117,6 +126,8 @@ impl Renderer {
             latest_stats: None,
             frame: 0,
             timing: None,
+            views: None,
+            selected: None,
         };
         renderer.bind_passes();
         Ok(renderer)
@@ -164,7 +175,7 @@ impl Renderer {
 
     /// GPU memory held by this renderer's own buffers and targets (not the shared pipelines), in bytes.
     pub fn gpu_bytes(&self) -> u64 {
-        self.mesh.bytes() + self.shade.bytes()
+        self.mesh.bytes() + self.shade.bytes() + self.views.as_ref().map_or(0, ViewState::bytes)
     }
 
     /// The device context this renderer draws on.
@@ -213,12 +224,65 @@ impl Renderer {
             let pipelines = self.context.shade_pipelines(self.format, sample_count(settings.antialiasing));
             self.shade.destroy();
             self.shade = ShadePass::new(&self.device, pipelines, width, height);
+            self.drop_views();
         }
         self.settings = settings;
         if resolution_changed {
+            self.selected = None;
             self.reallocate(self.starting_capacity());
         }
         Ok(())
+    }
+
+    /// Sets parameter `name` (a view option, light strength or the field of view; see
+    /// `Settings::with_parameter`) from its text.
+    pub fn set_parameter(&mut self, name: &str, text: &str) -> Result<(), ParamError> {
+        self.set_settings(self.settings.with_parameter(name, text)?)
+    }
+
+    /// How the surface is built (vertex placement and blend), as the oracle takes it.
+    pub fn construction(&self) -> Construction {
+        Construction { interpolation: self.settings.view.interpolation, blend: self.settings.view.blend }
+    }
+
+    /// The cell under pixel (`x`, `y`) of the output (origin top left): the first cell the surface
+    /// crosses along the ray from the eye, or `None` over the background.
+    pub fn pick(&self, x: f32, y: f32) -> Option<UVec3> {
+        let (width, height) = (self.size.0 as f32, self.size.1 as f32);
+        let ndc = glam::Vec2::new(2.0 * x / width - 1.0, 1.0 - 2.0 * y / height);
+        let inverse = self.view_projection().inverse();
+        let near = inverse.project_point3(ndc.extend(0.0));
+        let far = inverse.project_point3(ndc.extend(1.0));
+        let s = &self.settings;
+        inspect::pick(self.scene.spheres(), s.iso, self.grid(), self.construction(), near, far - near)
+    }
+
+    /// Where world point `p` lands in the output, in pixels from the top left.
+    pub fn project(&self, p: Vec3) -> glam::Vec2 {
+        let ndc = self.view_projection().project_point3(p);
+        glam::Vec2::new((ndc.x + 1.0) * 0.5 * self.size.0 as f32, (1.0 - ndc.y) * 0.5 * self.size.1 as f32)
+    }
+
+    /// Shows `cell` in the inspector (highlighted in the view every frame), or nothing.
+    pub fn select_cell(&mut self, cell: Option<UVec3>) {
+        let n = self.settings.resolution;
+        self.selected = cell.filter(|c| c.max_element() < n);
+    }
+
+    /// The cell the inspector shows.
+    pub fn selected_cell(&self) -> Option<UVec3> {
+        self.selected
+    }
+
+    /// What marching cubes decides in `cell` now.
+    pub fn inspect(&self, cell: UVec3) -> CellReport {
+        inspect::inspect(self.scene.spheres(), self.settings.iso, self.grid(), self.construction(), cell)
+    }
+
+    fn drop_views(&mut self) {
+        if let Some(views) = self.views.take() {
+            views.destroy();
+        }
     }
 
     /// Puts `count` spheres in play (1 to `MAX_SPHERES`).
@@ -310,6 +374,7 @@ impl Renderer {
     }
 
     fn bind_passes(&mut self) {
+        self.drop_views();
         self.blocks.bind(&self.device, &self.scene_buffers, &self.mesh);
         self.field.bind(&self.device, &self.scene_buffers, &self.mesh);
         self.marching.bind(&self.device, &self.scene_buffers, &self.mesh);
@@ -329,7 +394,8 @@ impl Renderer {
             max_vertices: capacity.vertices,
             max_indices: capacity.indices,
             max_cells: capacity.cells,
-            _pad: 0,
+            flags: (self.settings.view.interpolation == Interpolation::Midpoint) as u32
+                | ((self.settings.view.blend == Blend::Max) as u32) << 1,
         };
         self.queue.write_buffer(&self.scene_buffers.grid, 0, bytemuck::bytes_of(&grid_uniform));
         let packed: Vec<[f32; 4]> = spheres.iter().map(|s| s.to_gpu()).collect();
@@ -337,28 +403,52 @@ impl Renderer {
 
         let s = &self.settings;
         let eye = s.camera.eye();
-        let aspect = self.size.0 as f32 / self.size.1 as f32;
-        let projection = glam::camera::rh::proj::directx::perspective(
-            s.camera.fov_y_degrees.to_radians(),
-            aspect,
-            0.05,
-            100.0,
-        );
-        let view = glam::camera::rh::view::look_at_mat4(eye, Vec3::ZERO, Vec3::Y);
-        let shading = ShadingUniform {
-            view_proj: (projection * view).to_cols_array_2d(),
+        let mut shading = ShadingUniform {
+            view_proj: self.view_projection().to_cols_array_2d(),
+            view: view_matrix(eye).to_cols_array_2d(),
             camera_position: eye.to_array(),
             ambient: s.material.ambient,
-            light_position: s.light_position.to_array(),
-            diffuse: s.material.diffuse,
+            camera_forward: (-eye).normalize().to_array(),
+            orthographic: (s.view.projection == Projection::Orthographic) as u32,
             base_color: s.material.base_color.to_array(),
+            diffuse: s.material.diffuse,
             specular: s.material.specular,
             shininess: s.material.shininess,
             encode_srgb: (!self.format.is_srgb()) as u32,
             box_half_extent: BOX_HALF_EXTENT,
-            _pad: 0,
+            viewport: [self.size.0 as f32, self.size.1 as f32],
+            iso: s.iso,
+            selected: self.selected.is_some() as u32,
+            selected_cell: self.selected.unwrap_or(UVec3::ZERO).to_array(),
+            lights: lights(&self.settings),
+            ..Default::default()
         };
+        views::view_fields(&mut shading, &s.view, grid);
         self.queue.write_buffer(self.shade.uniform(), 0, bytemuck::bytes_of(&shading));
+    }
+
+    /// The camera's projection times its view: perspective, or orthographic with the same framing at
+    /// the box's centre.
+    fn view_projection(&self) -> Mat4 {
+        let camera = &self.settings.camera;
+        let aspect = self.size.0 as f32 / self.size.1 as f32;
+        let fov = camera.fov_y_degrees.to_radians();
+        let projection = match self.settings.view.projection {
+            Projection::Perspective => glam::camera::rh::proj::directx::perspective(fov, aspect, 0.05, 100.0),
+            Projection::Orthographic => {
+                let half_height = camera.distance * (fov / 2.0).tan();
+                let half_width = half_height * aspect;
+                glam::camera::rh::proj::directx::orthographic(
+                    -half_width,
+                    half_width,
+                    -half_height,
+                    half_height,
+                    0.05,
+                    100.0,
+                )
+            }
+        };
+        projection * view_matrix(camera.eye())
     }
 
     /// Records the extraction passes: blocks, field, marching cubes.
@@ -386,8 +476,32 @@ impl Renderer {
             .device
             .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("frame: encoder") });
         self.encode_extraction(&mut encoder, timed);
+        let show_views = views::needed(&self.settings.view, self.selected.is_some());
+        if show_views && self.views.is_none() {
+            let pipelines = self.shade.pipelines().views(&self.device);
+            self.views = Some(ViewState::new(
+                &self.device,
+                pipelines,
+                &self.scene_buffers,
+                &self.mesh,
+                self.shade.uniform(),
+            ));
+        }
+        let frame_views = match (&self.views, show_views) {
+            (Some(state), true) => {
+                let pipelines = self.shade.pipelines().views(&self.device);
+                state.encode(&mut encoder, pipelines, &self.settings.view);
+                Some(ViewFrame {
+                    state,
+                    pipelines,
+                    options: &self.settings.view,
+                    selected: self.selected.is_some(),
+                })
+            }
+            _ => None,
+        };
         let timing = self.timing.as_ref().filter(|_| timed);
-        self.shade.encode(&mut encoder, view, &self.mesh, timing.map(|t| t.render_writes(3)));
+        self.shade.encode(&mut encoder, view, &self.mesh, frame_views, timing.map(|t| t.render_writes(3)));
         if let Some(timing) = timing {
             timing.resolve(&mut encoder);
         }
@@ -433,7 +547,42 @@ impl Drop for Renderer {
     fn drop(&mut self) {
         self.mesh.destroy();
         self.shade.destroy();
+        self.drop_views();
     }
+}
+
+fn view_matrix(eye: Vec3) -> Mat4 {
+    glam::camera::rh::view::look_at_mat4(eye, Vec3::ZERO, Vec3::Y)
+}
+
+/// The lights `settings` turn on: the point light where the settings put it, in white; a cool
+/// directional light from the upper left; a warm spot from the front left aimed at the box's centre.
+fn lights(settings: &Settings) -> [LightUniform; 3] {
+    let on = settings.view.lights;
+    let spot_position = Vec3::new(-1.8, 2.6, 2.6);
+    let half_angle = settings.view.spot_angle.to_radians();
+    [
+        LightUniform {
+            position: settings.light_position.to_array(),
+            kind: if on.point { 1 } else { 0 },
+            color: [1.0; 3],
+            ..Default::default()
+        },
+        LightUniform {
+            kind: if on.directional { 2 } else { 0 },
+            direction: Vec3::new(0.8, -1.0, -0.3).normalize().to_array(),
+            color: [0.55, 0.62, 0.85],
+            ..Default::default()
+        },
+        LightUniform {
+            position: spot_position.to_array(),
+            kind: if on.spot { 3 } else { 0 },
+            direction: (-spot_position).normalize().to_array(),
+            cos_outer: half_angle.cos(),
+            color: [1.0, 0.8, 0.5],
+            cos_inner: (half_angle * (1.0 - settings.view.spot_softness)).cos(),
+        },
+    ]
 }
 
 fn sample_count(antialiasing: bool) -> u32 {

@@ -2,7 +2,10 @@
 //! Blinn-Phong, depth-tested and (with antialiasing) multisampled and resolved into the caller's view.
 
 use crate::mesh_buffers::{MeshBuffers, VERTEX_BYTES};
+use crate::params::ViewOptions;
 use crate::uniforms::ShadingUniform;
+use crate::views::{ViewPipelines, ViewState};
+use std::sync::{Arc, OnceLock};
 
 /// Samples per pixel with antialiasing on; 4 is supported for every renderable format WebGPU guarantees.
 pub const MULTISAMPLES: u32 = 4;
@@ -18,6 +21,8 @@ pub struct ShadePipelines {
     layout: wgpu::BindGroupLayout,
     format: wgpu::TextureFormat,
     sample_count: u32,
+    /// The teaching views' pipelines, built the first time a renderer shows one.
+    views: Arc<OnceLock<ViewPipelines>>,
 }
 
 impl ShadePipelines {
@@ -30,7 +35,7 @@ impl ShadePipelines {
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("shade: bind group layout"),
             entries: &[wgpu::BindGroupLayoutEntry {
-                binding: 0,
+                binding: 20,
                 visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
                 ty: wgpu::BindingType::Buffer {
                     ty: wgpu::BufferBindingType::Uniform,
@@ -112,8 +117,24 @@ impl ShadePipelines {
             TriangleList,
             true,
         );
-        Self { background, box_edges, surface, layout, format, sample_count }
+        // On wasm32 wgpu's objects are not Send: a page runs them on one thread.
+        #[allow(clippy::arc_with_non_send_sync)]
+        let views = Arc::new(OnceLock::new());
+        Self { background, box_edges, surface, layout, format, sample_count, views }
     }
+
+    /// The teaching views' pipelines for this format and sample count, built on first use.
+    pub fn views(&self, device: &wgpu::Device) -> &ViewPipelines {
+        self.views.get_or_init(|| ViewPipelines::new(device, self.format, self.sample_count, DEPTH_FORMAT))
+    }
+}
+
+/// What the shading pass draws of the teaching views this frame.
+pub struct ViewFrame<'a> {
+    pub state: &'a ViewState,
+    pub pipelines: &'a ViewPipelines,
+    pub options: &'a ViewOptions,
+    pub selected: bool,
 }
 
 /// Draws a renderer's frames: shared pipelines, plus its own uniform buffer and colour and depth
@@ -137,7 +158,7 @@ impl ShadePass {
         let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("shade: bind group"),
             layout: &pipelines.layout,
-            entries: &[wgpu::BindGroupEntry { binding: 0, resource: uniform.as_entire_binding() }],
+            entries: &[wgpu::BindGroupEntry { binding: 20, resource: uniform.as_entire_binding() }],
         });
         let targets = Targets::new(device, &pipelines, width, height);
         Self { pipelines, uniform, bind_group, targets }
@@ -160,6 +181,11 @@ impl ShadePass {
         self.uniform.destroy();
     }
 
+    /// The pipelines this pass draws with.
+    pub fn pipelines(&self) -> &ShadePipelines {
+        &self.pipelines
+    }
+
     /// The uniform buffer the renderer writes each frame.
     pub fn uniform(&self) -> &wgpu::Buffer {
         &self.uniform
@@ -171,6 +197,7 @@ impl ShadePass {
         encoder: &mut wgpu::CommandEncoder,
         view: &wgpu::TextureView,
         mesh: &MeshBuffers,
+        views: Option<ViewFrame>,
         timestamp_writes: Option<wgpu::RenderPassTimestampWrites>,
     ) {
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
@@ -204,10 +231,20 @@ impl ShadePass {
         pass.draw(0..3, 0..1);
         pass.set_pipeline(&self.pipelines.box_edges);
         pass.draw(0..24, 0..1);
-        pass.set_pipeline(&self.pipelines.surface);
-        pass.set_vertex_buffer(0, mesh.vertices.slice(..));
-        pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
-        pass.draw_indexed_indirect(&mesh.draw_args, 0);
+        if let Some(v) = &views {
+            v.state.draw_before_surface(&mut pass, v.pipelines, v.options);
+        }
+        if views.as_ref().is_none_or(|v| ViewState::draws_plain_surface(v.options)) {
+            pass.set_bind_group(0, &self.bind_group, &[]);
+            pass.set_pipeline(&self.pipelines.surface);
+            pass.set_vertex_buffer(0, mesh.vertices.slice(..));
+            pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
+            pass.draw_indexed_indirect(&mesh.draw_args, 0);
+        }
+        if let Some(v) = &views {
+            let size = (self.targets.depth.width(), self.targets.depth.height());
+            v.state.draw_after_surface(&mut pass, v.pipelines, v.options, v.selected, size);
+        }
     }
 }
 

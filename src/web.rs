@@ -11,6 +11,8 @@ use std::rc::Rc;
 use wasm_bindgen::prelude::*;
 use web_sys::HtmlCanvasElement;
 
+mod teaching;
+
 #[wasm_bindgen]
 extern "C" {
     /// Reports a panic to the page (defined by the page's script before the module starts).
@@ -51,6 +53,7 @@ pub fn parameters() -> js_sys::Array {
                 Kind::Color => ("color", &[]),
                 Kind::Choice(words) => ("choice", words),
                 Kind::List(words) => ("list", words),
+                Kind::Slice => ("slice", &[]),
             };
             set(&object, "kind", kind.into());
             set(

@@ -6,26 +6,8 @@ mod common;
 
 use common::*;
 use glam::Vec3;
-use metaballs::offscreen::{read_png, write_png};
+use metaballs::offscreen::write_png;
 use metaballs::{Camera, Scene, Settings};
-use std::path::{Path, PathBuf};
-
-/// Largest mean FLIP error accepted against the reference (0 = identical, 1 = opposite). Rendering
-/// differences between driver versions stay well below it; a wrong colour, a moved sphere or a broken
-/// surface goes well above it.
-const MEAN_FLIP_TOLERANCE: f32 = 0.02;
-/// Fewest pixels per degree FLIP assumes: a 0.7 m wide 4K monitor seen from 0.7 m.
-const PIXELS_PER_DEGREE: f32 = 67.0;
-
-fn output_dir() -> PathBuf {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/output");
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
-fn luminance(p: &[u8]) -> f32 {
-    0.2126 * p[0] as f32 + 0.7152 * p[1] as f32 + 0.0722 * p[2] as f32
-}
 
 #[test]
 fn five_spheres_match_the_reference_image() {
@@ -35,36 +17,7 @@ fn five_spheres_match_the_reference_image() {
         o.renderer.update(2.0).unwrap();
         o.render_rgba()
     });
-    let reference = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/reference/five_spheres.png");
-    if std::env::var_os("METABALLS_UPDATE_REFERENCE").is_some() {
-        write_png(&reference, width, height, &pixels).unwrap();
-    }
-    let (rw, rh, expected) = read_png(&reference).unwrap_or_else(|e| {
-        panic!("cannot read {}: {e} (METABALLS_UPDATE_REFERENCE=1 writes it)", reference.display())
-    });
-    assert_eq!((rw, rh), (width, height), "reference size");
-    let rgb = |rgba: &[u8]| rgba.chunks(4).flat_map(|p| &p[..3]).copied().collect::<Vec<u8>>();
-    let error_map = nv_flip::flip(
-        nv_flip::FlipImageRgb8::with_data(width, height, &rgb(&expected)),
-        nv_flip::FlipImageRgb8::with_data(width, height, &rgb(&pixels)),
-        PIXELS_PER_DEGREE,
-    );
-    let mean = nv_flip::FlipPool::from_image(&error_map).mean();
-    println!("mean FLIP error against the reference: {mean:.5} (tolerance {MEAN_FLIP_TOLERANCE})");
-    if mean > MEAN_FLIP_TOLERANCE {
-        let dir = output_dir();
-        let actual = dir.join("five_spheres.actual.png");
-        let diff = dir.join("five_spheres.flip.png");
-        write_png(&actual, width, height, &pixels).unwrap();
-        let diff_rgb = error_map.apply_color_lut(&nv_flip::magma_lut()).to_vec();
-        let diff_rgba: Vec<u8> = diff_rgb.chunks(3).flat_map(|p| [p[0], p[1], p[2], 255]).collect();
-        write_png(&diff, width, height, &diff_rgba).unwrap();
-        panic!(
-            "mean FLIP error {mean:.4} exceeds {MEAN_FLIP_TOLERANCE}; actual: {}, difference: {}",
-            actual.display(),
-            diff.display()
-        );
-    }
+    assert_matches_reference("five_spheres", width, height, &pixels);
 }
 
 /// One sphere seen head-on with the light to the right: where is it, how bright is each side, and

@@ -2,6 +2,9 @@
 //! their text is read. The page and the element read it from the wasm, so names, ranges and defaults
 //! live here once.
 
+use super::view::{
+    Blend, ColorBy, Display, GridView, Interpolation, LIGHT_KINDS, Projection, SPOT_ANGLE_RANGE, Slice,
+};
 use super::{
     DISTANCE_RANGE, ISO_RANGE, MAX_RESOLUTION, MAX_SPHERES, MIN_RESOLUTION, PITCH_RANGE, ParamError,
     SHININESS_RANGE, YAW_RANGE, check_f32, check_range,
@@ -22,6 +25,8 @@ pub enum Kind {
     Choice(&'static [&'static str]),
     /// `all`, `none`, or a comma list of words from a fixed list.
     List(&'static [&'static str]),
+    /// `off`, or an axis and a position in the box: `z:0.25`.
+    Slice,
 }
 
 /// One parameter a person can set: from a link, an element attribute or a control. This table is the
@@ -58,6 +63,23 @@ pub const CONTROLS: &[&str] = &[
     "paused",
     "seed",
     "view",
+    "step",
+    "display",
+    "grid",
+    "color_by",
+    "slice",
+    "ambiguous",
+    "interpolation",
+    "blend",
+    "inspector",
+    "light",
+    "spot_angle",
+    "spot_softness",
+    "ambient",
+    "diffuse",
+    "specular",
+    "projection",
+    "fov",
 ];
 
 #[allow(clippy::too_many_arguments)] // one row of the table
@@ -148,6 +170,57 @@ pub const PARAMETERS: &[Parameter] = &[
     ),
     other("color", "color", "Colour", Kind::Color, "#e77661"),
     other("antialiasing", "aa", "Antialiasing", Kind::Boolean, "true"),
+    other("display", "display", "Display", Kind::Choice(Display::WORDS), "shaded"),
+    other("grid", "grid", "Grid", Kind::Choice(GridView::WORDS), "none"),
+    other("color_by", "color_by", "Colour by", Kind::Choice(ColorBy::WORDS), "none"),
+    other("slice", "slice", "Field slice", Kind::Slice, "off"),
+    other("ambiguous", "ambiguous", "Ambiguous faces", Kind::Boolean, "false"),
+    other("interpolation", "interp", "Vertices", Kind::Choice(Interpolation::WORDS), "linear"),
+    other("blend", "blend", "Blend", Kind::Choice(Blend::WORDS), "sum"),
+    other("light", "light", "Lights", Kind::List(LIGHT_KINDS), "point"),
+    number(
+        "spot_angle",
+        "spot_angle",
+        "Spot cone",
+        "spot cone angle (degrees)",
+        false,
+        wide(SPOT_ANGLE_RANGE),
+        (5.0, 60.0, 1.0),
+        "15",
+    ),
+    number(
+        "spot_softness",
+        "spot_soft",
+        "Spot edge",
+        "spot softness",
+        false,
+        (0.0, 1.0),
+        (0.0, 1.0, 0.05),
+        "0.3",
+    ),
+    number("ambient", "ambient", "Ambient", "ambient strength", false, (0.0, 1.0), (0.0, 1.0, 0.01), "0.15"),
+    number("diffuse", "diffuse", "Diffuse", "diffuse strength", false, (0.0, 2.0), (0.0, 2.0, 0.01), "0.85"),
+    number(
+        "specular",
+        "specular",
+        "Specular",
+        "specular strength",
+        false,
+        (0.0, 2.0),
+        (0.0, 2.0, 0.01),
+        "0.6",
+    ),
+    other("projection", "proj", "Projection", Kind::Choice(Projection::WORDS), "perspective"),
+    number(
+        "fov",
+        "fov",
+        "Field of view",
+        "field of view (degrees)",
+        false,
+        (10.0, 120.0),
+        (20.0, 100.0, 1.0),
+        "45",
+    ),
     other("controls", "controls", "Controls", Kind::List(CONTROLS), "none"),
     other("hud", "hud", "Statistics", Kind::Choice(&["on", "off"]), "off"),
     other("autoplay", "autoplay", "Autoplay", Kind::Choice(&["visible", "off"]), "visible"),
@@ -231,6 +304,7 @@ impl Parameter {
                 }
                 Ok(Value::Text(items.join(",")))
             }
+            Kind::Slice => Slice::parse(trimmed).map(|slice| Value::Text(Slice::text(slice))),
         }
     }
 }

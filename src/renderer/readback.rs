@@ -71,3 +71,33 @@ impl Renderer {
         points
     }
 }
+
+/// What the overlay pass planned for the last frame drawn with teaching views.
+#[derive(Clone, Debug, PartialEq)]
+pub struct OverlayReadback {
+    /// (vertices, instances) of the triangle, point, normal, cell, block, ambiguous-face and contour
+    /// draws, in that order.
+    pub draws: [(u32, u32); 7],
+    /// The slice's contour segments.
+    pub segments: Vec<[Vec3; 2]>,
+}
+
+impl Renderer {
+    /// Reads back what the overlay pass planned in the last frame (`None` when no teaching view was
+    /// drawn). Waits for the GPU: for tests and tools.
+    pub async fn read_overlays(&self) -> Option<OverlayReadback> {
+        let views = self.views.as_ref()?;
+        let (segments, overlays) = views.contour_buffers();
+        let bytes = read_buffer(&self.device, &self.queue, overlays, 0, overlays.size()).await;
+        let words: Vec<u32> = bytemuck::pod_collect_to_vec(&bytes);
+        let draws: [(u32, u32); 7] = std::array::from_fn(|k| (words[4 + 4 * k], words[5 + 4 * k]));
+        let count = draws[6].1 as u64;
+        let bytes = read_buffer(&self.device, &self.queue, segments, 0, count * 32).await;
+        let points: Vec<[f32; 4]> = bytemuck::pod_collect_to_vec(&bytes);
+        let segments = points
+            .chunks(2)
+            .map(|pair| [Vec3::from_slice(&pair[0][..3]), Vec3::from_slice(&pair[1][..3])])
+            .collect();
+        Some(OverlayReadback { draws, segments })
+    }
+}

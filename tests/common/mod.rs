@@ -2,6 +2,7 @@
 #![allow(dead_code)]
 
 pub mod conditioning;
+pub mod pictures;
 
 #[allow(unused_imports)]
 pub use conditioning::*;
@@ -9,6 +10,8 @@ use glam::{UVec3, Vec3};
 use metaballs::offscreen::Offscreen;
 use metaballs::reference::{Grid, sample_field};
 use metaballs::{Settings, Sphere};
+#[allow(unused_imports)]
+pub use pictures::*;
 
 /// A device from the adapter at hand (lavapipe in CI). Fails, never skips, when there is none.
 pub fn device() -> (wgpu::Adapter, wgpu::Device, wgpu::Queue) {

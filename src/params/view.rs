@@ -1,0 +1,315 @@
+//! How the surface is shown and built, for teaching: display modes, grid overlays, a field slice,
+//! triangle colouring, lights, projection, and the two construction toggles (interpolation, blend).
+
+use super::{ParamError, Value, check_f32};
+
+/// Declares a choice among words: the enum, its words in order, and the conversions.
+macro_rules! choice {
+    ($(#[$doc:meta])* $name:ident { $($(#[$vdoc:meta])* $variant:ident = $word:literal),+ $(,)? }) => {
+        $(#[$doc])*
+        #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+        pub enum $name {
+            #[default]
+            $($(#[$vdoc])* $variant),+
+        }
+
+        impl $name {
+            /// The words a link or attribute uses, in order.
+            pub const WORDS: &'static [&'static str] = &[$($word),+];
+
+            /// The word for this choice.
+            pub fn word(self) -> &'static str {
+                match self { $(Self::$variant => $word),+ }
+            }
+
+            /// The choice a word names.
+            pub fn from_word(word: &str) -> Option<Self> {
+                match word { $($word => Some(Self::$variant),)+ _ => None }
+            }
+
+            /// Its position in `WORDS`, as the shaders number it.
+            pub fn index(self) -> u32 {
+                self as u32
+            }
+        }
+    };
+}
+
+choice!(
+    /// How the mesh is drawn. The triangle count is the same in every mode.
+    Display {
+        /// Smooth Blinn-Phong with the analytic vertex normals.
+        Shaded = "shaded",
+        /// One normal per face, so the facets show.
+        Flat = "flat",
+        /// The triangles' edges over a faint surface.
+        Wireframe = "wireframe",
+        /// The shared vertices alone.
+        Points = "points",
+        /// Short segments along each vertex normal over the shaded surface.
+        Normals = "normals",
+    }
+);
+
+choice!(
+    /// What of the sampling grid is drawn over the surface.
+    GridView {
+        None = "none",
+        /// The grid's lines, faint and fading with distance.
+        Lattice = "lattice",
+        /// The cells the surface crosses, coloured by their case's class.
+        Cells = "cells",
+        /// The 4³-cell blocks empty-space skipping kept.
+        Blocks = "blocks",
+    }
+);
+
+choice!(
+    /// What colours the triangles.
+    ColorBy {
+        /// The material's colour.
+        None = "none",
+        /// Area relative to a cell face's area.
+        Area = "area",
+        /// Shape: the ratio of inscribed to circumscribed radius (1 equilateral, 0 a sliver).
+        Quality = "quality",
+        /// The emitting cell's case class among the 15.
+        Case = "case",
+    }
+);
+
+choice!(
+    /// Where a vertex lands on a crossed edge.
+    Interpolation {
+        /// Where the field, interpolated linearly between the edge's ends, equals the iso level.
+        Linear = "linear",
+        /// At the edge's midpoint, whatever the values.
+        Midpoint = "midpoint",
+    }
+);
+
+choice!(
+    /// How the spheres' fields combine.
+    Blend {
+        /// The metaball sum: nearby spheres merge.
+        Sum = "sum",
+        /// The largest term: the union of separate spheres.
+        Max = "max",
+    }
+);
+
+choice!(
+    /// Perspective or orthographic camera; the orthographic view keeps the perspective one's framing.
+    Projection {
+        Perspective = "perspective",
+        Orthographic = "orthographic",
+    }
+);
+
+/// Light kinds a scene can have at once (up to one of each).
+pub const LIGHT_KINDS: &[&str] = &["point", "directional", "spot"];
+
+/// A plane through the box, perpendicular to an axis, showing the field on it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Slice {
+    /// 0, 1, 2 for x, y, z.
+    pub axis: u32,
+    /// Where it cuts the axis, in [-1, 1] (the box's extent); it snaps to the nearest grid plane.
+    pub position: f32,
+}
+
+impl Slice {
+    /// Reads `off` or `x|y|z:position`.
+    pub fn parse(text: &str) -> Result<Option<Slice>, ParamError> {
+        let text = text.trim().to_ascii_lowercase();
+        if text.is_empty() || text == "off" || text == "none" {
+            return Ok(None);
+        }
+        let invalid = || ParamError::Invalid {
+            name: "slice",
+            value: text.clone(),
+            expected: "off, or an axis and a position such as z:0.25 (x, y or z; -1 to 1)".into(),
+        };
+        let (axis, position) = text.split_once(':').unwrap_or((&text, "0"));
+        let axis = ["x", "y", "z"].iter().position(|a| *a == axis.trim()).ok_or_else(invalid)? as u32;
+        let position: f32 = position.trim().parse().map_err(|_| invalid())?;
+        check_f32("slice position", position, -1.0, 1.0)?;
+        Ok(Some(Slice { axis, position }))
+    }
+
+    /// The text `parse` reads.
+    pub fn text(slice: Option<Slice>) -> String {
+        match slice {
+            None => "off".into(),
+            Some(s) => format!("{}:{}", ["x", "y", "z"][s.axis as usize], s.position),
+        }
+    }
+
+    /// The grid plane (0 ..= cells) the slice snaps to.
+    pub fn plane(&self, cells_per_axis: u32) -> u32 {
+        (((self.position + 1.0) * 0.5 * cells_per_axis as f32).round() as u32).min(cells_per_axis)
+    }
+}
+
+/// The lights in the scene, up to one of each kind.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Lights {
+    pub point: bool,
+    pub directional: bool,
+    pub spot: bool,
+}
+
+impl Default for Lights {
+    fn default() -> Self {
+        Self { point: true, directional: false, spot: false }
+    }
+}
+
+impl Lights {
+    /// From a normalised list value (`all`, `none` or kinds).
+    pub fn from_list(list: &str) -> Self {
+        let has = |kind| list == "all" || list.split(',').any(|k| k == kind);
+        Self { point: has("point"), directional: has("directional"), spot: has("spot") }
+    }
+
+    /// The list text (`none` when no light is on).
+    pub fn text(&self) -> String {
+        let on: Vec<&str> = [(self.point, "point"), (self.directional, "directional"), (self.spot, "spot")]
+            .iter()
+            .filter(|(on, _)| *on)
+            .map(|(_, k)| *k)
+            .collect();
+        if on.is_empty() { "none".into() } else { on.join(",") }
+    }
+}
+
+/// Everything about how the surface is shown and built beyond the basic settings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ViewOptions {
+    pub display: Display,
+    pub grid: GridView,
+    pub color_by: ColorBy,
+    pub slice: Option<Slice>,
+    /// Marks the cell faces whose two inside corners sit on a diagonal (the ambiguous faces).
+    pub ambiguous: bool,
+    pub interpolation: Interpolation,
+    pub blend: Blend,
+    pub lights: Lights,
+    /// The spot light's cone half-angle, degrees.
+    pub spot_angle: f32,
+    /// The spot light's soft edge, as a fraction of the cone (0 hard, 1 all soft).
+    pub spot_softness: f32,
+    pub projection: Projection,
+}
+
+impl Default for ViewOptions {
+    fn default() -> Self {
+        Self {
+            display: Display::Shaded,
+            grid: GridView::None,
+            color_by: ColorBy::None,
+            slice: None,
+            ambiguous: false,
+            interpolation: Interpolation::Linear,
+            blend: Blend::Sum,
+            lights: Lights::default(),
+            spot_angle: 15.0,
+            spot_softness: 0.3,
+            projection: Projection::Perspective,
+        }
+    }
+}
+
+/// Spot cone half-angles accepted, degrees.
+pub const SPOT_ANGLE_RANGE: (f32, f32) = (2.0, 80.0);
+
+impl ViewOptions {
+    /// Returns the options if every number is in range.
+    pub fn validated(self) -> Result<Self, ParamError> {
+        check_f32("spot cone angle (degrees)", self.spot_angle, SPOT_ANGLE_RANGE.0, SPOT_ANGLE_RANGE.1)?;
+        check_f32("spot softness", self.spot_softness, 0.0, 1.0)?;
+        if let Some(slice) = self.slice {
+            check_f32("slice position", slice.position, -1.0, 1.0)?;
+        }
+        Ok(self)
+    }
+
+    /// Sets the option `name` (a parameter table name) from its parsed value; `Ok(false)` when `name`
+    /// is not one of these options.
+    pub fn set(&mut self, name: &str, value: &Value) -> Result<bool, ParamError> {
+        let text = || match value {
+            Value::Text(t) => t.as_str(),
+            _ => "",
+        };
+        let number = || match value {
+            Value::Number(n) => *n as f32,
+            _ => f32::NAN,
+        };
+        let wrong = |expected: &[&str]| ParamError::Invalid {
+            name: "option",
+            value: format!("{value:?}"),
+            expected: format!("one of {}", expected.join(", ")),
+        };
+        macro_rules! pick {
+            ($field:ident, $ty:ty) => {
+                self.$field = <$ty>::from_word(text()).ok_or_else(|| wrong(<$ty>::WORDS))?
+            };
+        }
+        match name {
+            "display" => pick!(display, Display),
+            "grid" => pick!(grid, GridView),
+            "color_by" => pick!(color_by, ColorBy),
+            "interpolation" => pick!(interpolation, Interpolation),
+            "blend" => pick!(blend, Blend),
+            "projection" => pick!(projection, Projection),
+            "slice" => self.slice = Slice::parse(text())?,
+            "light" => self.lights = Lights::from_list(text()),
+            "ambiguous" => self.ambiguous = matches!(value, Value::Boolean(true)),
+            "spot_angle" => {
+                self.spot_angle =
+                    check_f32("spot cone angle (degrees)", number(), SPOT_ANGLE_RANGE.0, SPOT_ANGLE_RANGE.1)?
+            }
+            "spot_softness" => self.spot_softness = check_f32("spot softness", number(), 0.0, 1.0)?,
+            _ => return Ok(false),
+        }
+        Ok(true)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn slices_read_an_axis_and_a_position_inside_the_box() {
+        assert_eq!(Slice::parse("z:0.25"), Ok(Some(Slice { axis: 2, position: 0.25 })));
+        assert_eq!(Slice::parse("off"), Ok(None));
+        assert_eq!(Slice::parse("x"), Ok(Some(Slice { axis: 0, position: 0.0 })));
+        let e = Slice::parse("y:1.5").unwrap_err().to_string();
+        assert_eq!(e, "slice position must be between -1 and 1, got 1.5");
+        assert!(Slice::parse("w:0").unwrap_err().to_string().contains("x, y or z"));
+        assert!(Slice::parse("z:NaN").unwrap_err().to_string().contains("NaN"));
+        assert_eq!(Slice { axis: 0, position: -1.0 }.plane(16), 0);
+        assert_eq!(Slice { axis: 0, position: 0.0 }.plane(16), 8);
+        assert_eq!(Slice { axis: 0, position: 1.0 }.plane(16), 16);
+        assert_eq!(Slice::text(Slice::parse("y:-0.5").unwrap()), "y:-0.5");
+    }
+
+    #[test]
+    fn lights_are_a_set_of_kinds() {
+        assert_eq!(Lights::from_list("spot,point"), Lights { point: true, directional: false, spot: true });
+        assert_eq!(Lights::from_list("all").text(), "point,directional,spot");
+        assert_eq!(Lights::from_list("none").text(), "none");
+    }
+
+    #[test]
+    fn options_are_set_by_name_and_refuse_bad_values() {
+        let mut o = ViewOptions::default();
+        assert_eq!(o.set("display", &Value::Text("wireframe".into())), Ok(true));
+        assert_eq!(o.display, Display::Wireframe);
+        assert!(o.set("display", &Value::Text("sketch".into())).is_err());
+        assert_eq!(o.display, Display::Wireframe);
+        assert!(o.set("spot_angle", &Value::Number(f64::NAN)).is_err());
+        assert_eq!(o.set("iso", &Value::Number(1.0)), Ok(false));
+    }
+}

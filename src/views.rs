@@ -1,0 +1,487 @@
+//! The teaching views (`shaders/views.wgsl`, `shaders/overlays.wgsl`): display modes, the lattice,
+//! crossed cells and kept blocks, ambiguous faces, the field slice with its contour, the selected cell
+//! and an axis gizmo. Everything is drawn from the buffers the compute passes fill, with indirect draws
+//! whose counts a one-invocation pass writes on the GPU: no readback.
+
+use crate::case_classes::case_classes;
+use crate::mesh_buffers::MeshBuffers;
+use crate::params::view::{ColorBy, Display, GridView, ViewOptions};
+use crate::reference::Grid;
+use crate::scene_buffers::SceneBuffers;
+use crate::slice::packed_square_segments;
+use crate::uniforms::ShadingUniform;
+use wgpu::util::DeviceExt;
+
+/// The indirect draws the overlay pass plans, in order (`plan_overlays`).
+#[derive(Clone, Copy)]
+enum Draw {
+    Triangles = 0,
+    Points = 1,
+    Normals = 2,
+    Cells = 3,
+    Blocks = 4,
+    Ambiguous = 5,
+    Contour = 6,
+}
+
+/// Bytes before the draws in the overlay buffer (the segment counter, padded).
+const DRAWS_OFFSET: u64 = 16;
+const OVERLAY_BYTES: u64 = DRAWS_OFFSET + 7 * 16;
+/// Side of the axis gizmo's square, in pixels.
+const GIZMO_PIXELS: f32 = 72.0;
+
+/// The lattice draw for `cells_per_axis` cells: (vertices per instance, instances). Instance i draws
+/// the n + 1 grid lines along axis i / (n + 1) whose third coordinate is i % (n + 1): one instanced
+/// draw, both counts linear in n, 3 (n + 1)² lines in all.
+pub fn lattice_draw(cells_per_axis: u32) -> (u32, u32) {
+    let points = cells_per_axis + 1;
+    (2 * points, 3 * points)
+}
+
+/// True when `options` draw anything beyond the plain shaded surface.
+pub fn needed(options: &ViewOptions, selected: bool) -> bool {
+    selected
+        || options.display != Display::Shaded
+        || options.grid != GridView::None
+        || options.color_by != ColorBy::None
+        || options.slice.is_some()
+        || options.ambiguous
+}
+
+/// The pipelines of the views for one output format and sample count, with the compute pipelines of
+/// the overlay pass and the tables they read.
+pub struct ViewPipelines {
+    layout: wgpu::BindGroupLayout,
+    triangles: wgpu::RenderPipeline,
+    points: wgpu::RenderPipeline,
+    normals: wgpu::RenderPipeline,
+    lattice: wgpu::RenderPipeline,
+    cells: wgpu::RenderPipeline,
+    blocks: wgpu::RenderPipeline,
+    ambiguous: wgpu::RenderPipeline,
+    contour: wgpu::RenderPipeline,
+    slice: wgpu::RenderPipeline,
+    selected_edges: wgpu::RenderPipeline,
+    selected_corners: wgpu::RenderPipeline,
+    gizmo: wgpu::RenderPipeline,
+    sample_slice: wgpu::ComputePipeline,
+    contour_slice: wgpu::ComputePipeline,
+    plan: wgpu::ComputePipeline,
+    case_classes: wgpu::Buffer,
+    square_segments: wgpu::Buffer,
+}
+
+impl ViewPipelines {
+    pub fn new(
+        device: &wgpu::Device,
+        format: wgpu::TextureFormat,
+        sample_count: u32,
+        depth: wgpu::TextureFormat,
+    ) -> Self {
+        let prelude = format!(
+            "const MAX_SPHERES: u32 = {}u;\n{}\n{}\n",
+            crate::params::MAX_SPHERES,
+            include_str!("../shaders/common.wgsl"),
+            include_str!("../shaders/shade.wgsl"),
+        );
+        let module = |label, source: &str| {
+            device.create_shader_module(wgpu::ShaderModuleDescriptor {
+                label: Some(label),
+                source: wgpu::ShaderSource::Wgsl(format!("{prelude}{source}").into()),
+            })
+        };
+        let views = module("views: shader", include_str!("../shaders/views.wgsl"));
+        let overlays = module("overlays: shader", include_str!("../shaders/overlays.wgsl"));
+
+        use wgpu::ShaderStages as S;
+        let entry =
+            |binding, visibility, ty| wgpu::BindGroupLayoutEntry { binding, visibility, ty, count: None };
+        let uniform = wgpu::BindingType::Buffer {
+            ty: wgpu::BufferBindingType::Uniform,
+            has_dynamic_offset: false,
+            min_binding_size: None,
+        };
+        let storage = wgpu::BindingType::Buffer {
+            ty: wgpu::BufferBindingType::Storage { read_only: true },
+            has_dynamic_offset: false,
+            min_binding_size: None,
+        };
+        let both = S::VERTEX_FRAGMENT;
+        let mut entries = vec![
+            entry(0, both, uniform),
+            entry(1, both, uniform),
+            entry(20, both, uniform),
+            entry(23, both, uniform),
+            entry(21, S::FRAGMENT, storage),
+        ];
+        entries.extend([3, 4, 8, 10, 11, 13, 22].map(|b| entry(b, S::VERTEX, storage)));
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("views: bind group layout"),
+            entries: &entries,
+        });
+        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("views: pipeline layout"),
+            bind_group_layouts: &[Some(&layout)],
+            immediate_size: 0,
+        });
+        let blend = wgpu::BlendState::ALPHA_BLENDING;
+        let pipeline = |label, vertex, fragment, topology, depth_write: bool, compare| {
+            device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                label: Some(label),
+                layout: Some(&pipeline_layout),
+                vertex: wgpu::VertexState {
+                    module: &views,
+                    entry_point: Some(vertex),
+                    compilation_options: Default::default(),
+                    buffers: &[],
+                },
+                fragment: Some(wgpu::FragmentState {
+                    module: &views,
+                    entry_point: Some(fragment),
+                    compilation_options: Default::default(),
+                    targets: &[Some(wgpu::ColorTargetState {
+                        format,
+                        blend: Some(blend),
+                        write_mask: wgpu::ColorWrites::ALL,
+                    })],
+                }),
+                primitive: wgpu::PrimitiveState { topology, cull_mode: None, ..Default::default() },
+                depth_stencil: Some(wgpu::DepthStencilState {
+                    format: depth,
+                    depth_write_enabled: Some(depth_write),
+                    depth_compare: Some(compare),
+                    stencil: Default::default(),
+                    bias: Default::default(),
+                }),
+                multisample: wgpu::MultisampleState { count: sample_count, ..Default::default() },
+                multiview_mask: None,
+                cache: None,
+            })
+        };
+        use wgpu::CompareFunction::{Always, LessEqual};
+        use wgpu::PrimitiveTopology::{LineList, TriangleList};
+        let line = |label, vertex| pipeline(label, vertex, "mark_fragment", LineList, false, LessEqual);
+        let on_top =
+            |label, vertex, topology| pipeline(label, vertex, "mark_fragment", topology, false, Always);
+        let compute = |label, entry| {
+            device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+                label: Some(label),
+                layout: None,
+                module: &overlays,
+                entry_point: Some(entry),
+                compilation_options: Default::default(),
+                cache: None,
+            })
+        };
+        let classes: Vec<u32> = case_classes().iter().map(|&c| c as u32).collect();
+        Self {
+            triangles: pipeline(
+                "views: triangle pipeline",
+                "triangle_vertex",
+                "triangle_fragment",
+                TriangleList,
+                true,
+                wgpu::CompareFunction::Less,
+            ),
+            points: pipeline(
+                "views: point pipeline",
+                "point_vertex",
+                "mark_fragment",
+                TriangleList,
+                true,
+                LessEqual,
+            ),
+            normals: line("views: normal pipeline", "normal_vertex"),
+            lattice: line("views: lattice pipeline", "lattice_vertex"),
+            cells: line("views: cell pipeline", "cell_vertex"),
+            blocks: line("views: block pipeline", "block_vertex"),
+            ambiguous: line("views: ambiguous face pipeline", "ambiguous_vertex"),
+            contour: line("views: contour pipeline", "contour_vertex"),
+            slice: pipeline(
+                "views: slice pipeline",
+                "slice_vertex",
+                "slice_fragment",
+                TriangleList,
+                true,
+                LessEqual,
+            ),
+            selected_edges: on_top("views: selected edge pipeline", "selected_edge_vertex", LineList),
+            selected_corners: on_top(
+                "views: selected corner pipeline",
+                "selected_corner_vertex",
+                TriangleList,
+            ),
+            gizmo: on_top("views: gizmo pipeline", "gizmo_vertex", LineList),
+            sample_slice: compute("overlays: slice sample pipeline", "sample_slice"),
+            contour_slice: compute("overlays: slice contour pipeline", "contour_slice"),
+            plan: compute("overlays: plan pipeline", "plan_overlays"),
+            case_classes: device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some("views: case classes"),
+                contents: bytemuck::cast_slice(&classes),
+                usage: wgpu::BufferUsages::UNIFORM,
+            }),
+            square_segments: device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some("overlays: marching squares table"),
+                contents: bytemuck::cast_slice(&packed_square_segments()),
+                usage: wgpu::BufferUsages::UNIFORM,
+            }),
+            layout,
+        }
+    }
+}
+
+/// One renderer's view resources for one grid: the slice's samples and contour, the overlay counts
+/// and draws, and the bind groups over its mesh buffers.
+pub struct ViewState {
+    grid: Grid,
+    slice_values: wgpu::Buffer,
+    segments: wgpu::Buffer,
+    overlays: wgpu::Buffer,
+    draw_group: wgpu::BindGroup,
+    sample_group: wgpu::BindGroup,
+    contour_group: wgpu::BindGroup,
+    plan_group: wgpu::BindGroup,
+}
+
+impl ViewState {
+    pub fn new(
+        device: &wgpu::Device,
+        pipelines: &ViewPipelines,
+        scene: &SceneBuffers,
+        mesh: &MeshBuffers,
+        shading: &wgpu::Buffer,
+    ) -> Self {
+        let grid = mesh.grid;
+        let n = grid.cells_per_axis as u64;
+        let buffer = |label, size: u64, usage| {
+            device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some(label),
+                size,
+                usage: wgpu::BufferUsages::STORAGE | usage,
+                mapped_at_creation: false,
+            })
+        };
+        use wgpu::BufferUsages as U;
+        let slice_values = buffer("overlays: slice samples", (n + 1) * (n + 1) * 4, U::empty());
+        let segments = buffer("overlays: slice contour", 2 * n * n * 32, U::COPY_SRC);
+        let overlays =
+            buffer("overlays: counts and draws", OVERLAY_BYTES, U::INDIRECT | U::COPY_DST | U::COPY_SRC);
+        let group = |label, layout: &wgpu::BindGroupLayout, buffers: &[(u32, &wgpu::Buffer)]| {
+            let entries: Vec<wgpu::BindGroupEntry> = buffers
+                .iter()
+                .map(|&(binding, b)| wgpu::BindGroupEntry { binding, resource: b.as_entire_binding() })
+                .collect();
+            device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some(label),
+                layout,
+                entries: &entries,
+            })
+        };
+        let p = pipelines;
+        Self {
+            draw_group: group(
+                "views: bind group",
+                &p.layout,
+                &[
+                    (0, &scene.grid),
+                    (1, &scene.spheres),
+                    (3, &mesh.active_blocks),
+                    (4, &mesh.block_slots),
+                    (8, &mesh.cell_cases),
+                    (10, &mesh.vertices),
+                    (11, &mesh.indices),
+                    (13, &mesh.active_cells),
+                    (20, shading),
+                    (21, &slice_values),
+                    (22, &segments),
+                    (23, &p.case_classes),
+                ],
+            ),
+            sample_group: group(
+                "overlays: slice sample bind group",
+                &p.sample_slice.get_bind_group_layout(0),
+                &[(0, &scene.grid), (1, &scene.spheres), (20, shading), (21, &slice_values)],
+            ),
+            contour_group: group(
+                "overlays: slice contour bind group",
+                &p.contour_slice.get_bind_group_layout(0),
+                &[
+                    (0, &scene.grid),
+                    (20, shading),
+                    (21, &slice_values),
+                    (22, &segments),
+                    (24, &overlays),
+                    (25, &p.square_segments),
+                ],
+            ),
+            plan_group: group(
+                "overlays: plan bind group",
+                &p.plan.get_bind_group_layout(0),
+                &[(0, &scene.grid), (2, &mesh.counters), (24, &overlays)],
+            ),
+            grid,
+            slice_values,
+            segments,
+            overlays,
+        }
+    }
+
+    /// The grid these resources were made for.
+    pub fn grid(&self) -> Grid {
+        self.grid
+    }
+
+    /// The contour's segments and their count (tests read them back).
+    pub fn contour_buffers(&self) -> (&wgpu::Buffer, &wgpu::Buffer) {
+        (&self.segments, &self.overlays)
+    }
+
+    /// GPU memory held, in bytes.
+    pub fn bytes(&self) -> u64 {
+        self.slice_values.size() + self.segments.size() + self.overlays.size()
+    }
+
+    pub fn destroy(&self) {
+        self.slice_values.destroy();
+        self.segments.destroy();
+        self.overlays.destroy();
+    }
+
+    /// Records the overlay pass: the slice (when shown) and the draws' counts.
+    pub fn encode(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        pipelines: &ViewPipelines,
+        options: &ViewOptions,
+    ) {
+        encoder.clear_buffer(&self.overlays, 0, Some(DRAWS_OFFSET));
+        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+            label: Some("overlays: pass"),
+            timestamp_writes: None,
+        });
+        if options.slice.is_some() {
+            let n = self.grid.cells_per_axis;
+            pass.set_pipeline(&pipelines.sample_slice);
+            pass.set_bind_group(0, &self.sample_group, &[]);
+            let groups = (n + 1).div_ceil(8);
+            pass.dispatch_workgroups(groups, groups, 1);
+            pass.set_pipeline(&pipelines.contour_slice);
+            pass.set_bind_group(0, &self.contour_group, &[]);
+            pass.dispatch_workgroups(n.div_ceil(8), n.div_ceil(8), 1);
+        }
+        pass.set_pipeline(&pipelines.plan);
+        pass.set_bind_group(0, &self.plan_group, &[]);
+        pass.dispatch_workgroups(1, 1, 1);
+    }
+
+    fn indirect(&self, pass: &mut wgpu::RenderPass, pipeline: &wgpu::RenderPipeline, draw: Draw) {
+        pass.set_pipeline(pipeline);
+        pass.draw_indirect(&self.overlays, DRAWS_OFFSET + 16 * draw as u64);
+    }
+
+    /// True when the shading pass should draw the indexed, smooth surface itself.
+    pub fn draws_plain_surface(options: &ViewOptions) -> bool {
+        matches!(options.display, Display::Shaded | Display::Normals) && options.color_by == ColorBy::None
+    }
+
+    /// Draws what goes before the surface (the slice plane).
+    pub fn draw_before_surface(
+        &self,
+        pass: &mut wgpu::RenderPass,
+        pipelines: &ViewPipelines,
+        options: &ViewOptions,
+    ) {
+        pass.set_bind_group(0, &self.draw_group, &[]);
+        if options.slice.is_some() {
+            pass.set_pipeline(&pipelines.slice);
+            pass.draw(0..6, 0..1);
+        }
+    }
+
+    /// Draws the surface in its display mode (unless the shading pass draws it) and the overlays.
+    pub fn draw_after_surface(
+        &self,
+        pass: &mut wgpu::RenderPass,
+        pipelines: &ViewPipelines,
+        options: &ViewOptions,
+        selected: bool,
+        size: (u32, u32),
+    ) {
+        let p = pipelines;
+        pass.set_bind_group(0, &self.draw_group, &[]);
+        if options.display == Display::Points {
+            self.indirect(pass, &p.points, Draw::Points);
+        } else if !Self::draws_plain_surface(options) {
+            self.indirect(pass, &p.triangles, Draw::Triangles);
+        }
+        if options.display == Display::Normals {
+            self.indirect(pass, &p.normals, Draw::Normals);
+        }
+        match options.grid {
+            GridView::None => {}
+            GridView::Lattice => {
+                let (vertices, instances) = lattice_draw(self.grid.cells_per_axis);
+                pass.set_pipeline(&p.lattice);
+                pass.draw(0..vertices, 0..instances);
+            }
+            GridView::Cells => self.indirect(pass, &p.cells, Draw::Cells),
+            GridView::Blocks => self.indirect(pass, &p.blocks, Draw::Blocks),
+        }
+        if options.ambiguous {
+            self.indirect(pass, &p.ambiguous, Draw::Ambiguous);
+        }
+        if options.slice.is_some() {
+            self.indirect(pass, &p.contour, Draw::Contour);
+        }
+        if selected {
+            pass.set_pipeline(&p.selected_edges);
+            pass.draw(0..24, 0..1);
+            pass.set_pipeline(&p.selected_corners);
+            pass.draw(0..6, 0..8);
+        }
+        let side = GIZMO_PIXELS.min(size.0 as f32 / 4.0).min(size.1 as f32 / 4.0);
+        if side >= 16.0 {
+            pass.set_viewport(4.0, size.1 as f32 - side - 4.0, side, side, 0.0, 1.0);
+            pass.set_pipeline(&p.gizmo);
+            pass.draw(0..6, 0..1);
+            pass.set_viewport(0.0, 0.0, size.0 as f32, size.1 as f32, 0.0, 1.0);
+        }
+    }
+}
+
+/// The shading uniform's view fields for `options` (the renderer fills the rest).
+pub fn view_fields(uniform: &mut ShadingUniform, options: &ViewOptions, grid: Grid) {
+    uniform.display = options.display.index();
+    uniform.color_by = options.color_by.index();
+    uniform.grid_view = options.grid.index();
+    uniform.cells_per_axis = grid.cells_per_axis;
+    uniform.cell_size = grid.cell_size();
+    uniform.lattice_alpha = (4.0 / grid.cells_per_axis as f32).clamp(0.03, 0.25);
+    match options.slice {
+        Some(slice) => {
+            uniform.slice_axis = slice.axis;
+            uniform.slice_plane = slice.plane(grid.cells_per_axis);
+        }
+        None => uniform.slice_axis = 3,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_lattice_is_one_instanced_draw_linear_in_the_resolution() {
+        for n in [8u32, 16, 64, 128, 512] {
+            let (vertices, instances) = lattice_draw(n);
+            assert_eq!(instances, 3 * (n + 1));
+            assert_eq!(vertices, 2 * (n + 1));
+            // Lines: vertices / 2 per instance, 3 (n + 1)² in all (each grid line once).
+            assert_eq!(vertices / 2 * instances, 3 * (n + 1) * (n + 1));
+        }
+        let (_, i16) = lattice_draw(16);
+        let (_, i32) = lattice_draw(32);
+        let (_, i64) = lattice_draw(64);
+        assert_eq!(i64 - i32, 2 * (i32 - i16), "instances grow linearly");
+    }
+}

@@ -1,0 +1,110 @@
+//! The teaching views from the page: every view option by name, the cell inspector (pick, select,
+//! report) and the case gallery's data.
+
+use super::{View, js_error};
+use crate::case_classes::{CLASS_NAMES, CLASS_REPRESENTATIVES, case_classes};
+use crate::inspect::CellReport;
+use crate::tables::{CASE_TRIANGLES, TRI_TABLE};
+use glam::UVec3;
+use wasm_bindgen::prelude::*;
+
+fn set(object: &js_sys::Object, key: &str, value: JsValue) {
+    let _ = js_sys::Reflect::set(object, &key.into(), &value);
+}
+
+fn numbers<T: Into<JsValue> + Copy>(values: &[T]) -> JsValue {
+    values.iter().map(|&v| v.into()).collect::<js_sys::Array>().into()
+}
+
+/// The triangles of `case` as edge numbers, wound as drawn.
+fn case_triangles(case: u8) -> JsValue {
+    TRI_TABLE[case as usize]
+        .chunks(3)
+        .take_while(|t| t[0] >= 0)
+        .map(|t| numbers(&[t[0] as u32, t[2] as u32, t[1] as u32]))
+        .collect::<js_sys::Array>()
+        .into()
+}
+
+fn report_object(report: &CellReport) -> JsValue {
+    let object = js_sys::Object::new();
+    set(&object, "cell", numbers(&report.cell.to_array()));
+    set(&object, "corners", numbers(&report.corners));
+    set(&object, "case", report.case.into());
+    set(&object, "bits", format!("{:08b}", report.case).into());
+    set(&object, "class", report.class.into());
+    set(&object, "className", CLASS_NAMES[report.class as usize].into());
+    set(&object, "triangles", case_triangles(report.case));
+    let edges: js_sys::Array = report
+        .edges
+        .iter()
+        .map(|e| {
+            let edge = js_sys::Object::new();
+            set(&edge, "edge", e.edge.into());
+            set(&edge, "t", e.t.into());
+            set(&edge, "vertex", numbers(&e.vertex.to_array()));
+            JsValue::from(edge)
+        })
+        .collect();
+    set(&object, "edges", edges.into());
+    object.into()
+}
+
+/// The 15 classes of cases for the gallery: number, name, representative case, its inside corners and
+/// its triangles (as edge numbers), and how many of the 256 cases fall in it.
+#[wasm_bindgen]
+pub fn case_gallery() -> js_sys::Array {
+    let classes = case_classes();
+    CLASS_REPRESENTATIVES
+        .iter()
+        .enumerate()
+        .map(|(k, &case)| {
+            let object = js_sys::Object::new();
+            set(&object, "class", (k as u32).into());
+            set(&object, "name", CLASS_NAMES[k].into());
+            set(&object, "case", case.into());
+            let inside: Vec<u32> = (0..8).filter(|c| case >> c & 1 == 1).collect();
+            set(&object, "inside", numbers(&inside));
+            set(&object, "triangles", case_triangles(case));
+            set(&object, "triangleCount", CASE_TRIANGLES[case as usize].into());
+            set(&object, "cases", (classes.iter().filter(|&&c| c as usize == k).count() as u32).into());
+            JsValue::from(object)
+        })
+        .collect()
+}
+
+#[wasm_bindgen]
+impl View {
+    /// Sets a view option, light strength or the field of view by its parameter name, from text;
+    /// throws with what is accepted and keeps the previous value.
+    pub fn set_parameter(&mut self, name: &str, text: &str) -> Result<(), JsError> {
+        self.renderer.set_parameter(name, text).map_err(js_error)
+    }
+
+    /// Selects the cell under canvas pixel (`x`, `y`) (device pixels from the top left), or nothing
+    /// over the background; returns the cell's report, or null.
+    pub fn pick_cell(&mut self, x: f32, y: f32) -> JsValue {
+        let cell = self.renderer.pick(x, y);
+        self.renderer.select_cell(cell);
+        self.inspect()
+    }
+
+    /// Selects cell (`x`, `y`, `z`); returns its report, or null when it is outside the grid.
+    pub fn select_cell(&mut self, x: u32, y: u32, z: u32) -> JsValue {
+        self.renderer.select_cell(Some(UVec3::new(x, y, z)));
+        self.inspect()
+    }
+
+    /// Deselects the cell.
+    pub fn clear_selection(&mut self) {
+        self.renderer.select_cell(None);
+    }
+
+    /// What marching cubes decides in the selected cell now (it changes as the spheres move), or null.
+    pub fn inspect(&self) -> JsValue {
+        match self.renderer.selected_cell() {
+            Some(cell) => report_object(&self.renderer.inspect(cell)),
+            None => JsValue::NULL,
+        }
+    }
+}
