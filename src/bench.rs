@@ -12,6 +12,8 @@ use std::time::Instant;
 /// One row of the table.
 #[derive(Clone, Debug, Serialize)]
 pub struct Record {
+    /// The teaching view measured (`display=wireframe&grid=cells`), empty for the plain surface.
+    pub view: String,
     pub resolution: u32,
     pub spheres: u32,
     /// Median wall time of a whole frame, submission to GPU idle, in milliseconds.
@@ -42,6 +44,23 @@ pub struct Plan {
     pub size: (u32, u32),
     pub oracle: bool,
     pub antialiasing: bool,
+    /// Teaching views to measure, each as `name=value` pairs joined by `&` (as in a link); empty for
+    /// the plain shaded surface alone.
+    pub views: Vec<String>,
+}
+
+/// `base` with the view `spec` (`display=wireframe&grid=cells`) applied.
+pub fn with_view(base: Settings, spec: &str) -> Result<Settings, ParamError> {
+    let mut settings = base;
+    for pair in spec.split('&').filter(|p| !p.is_empty()) {
+        let (name, value) = pair.split_once('=').ok_or_else(|| ParamError::Invalid {
+            name: "view",
+            value: pair.to_string(),
+            expected: "name=value pairs joined by &, such as display=wireframe&grid=cells".into(),
+        })?;
+        settings = settings.with_parameter(name, value)?;
+    }
+    Ok(settings)
 }
 
 fn median(values: &mut [f64]) -> f64 {
@@ -68,13 +87,18 @@ pub fn run(
     });
     let adapter = info.name;
     let mut records = Vec::new();
-    for &resolution in &resolutions {
-        for &spheres in &plan.sphere_counts {
-            let settings = Settings { resolution, sphere_count: spheres, ..base };
-            offscreen.renderer.set_settings(settings)?;
-            let record = measure(&mut offscreen, plan, timed)?;
-            report(&record);
-            records.push(record);
+    let plain = [String::new()];
+    let views = if plan.views.is_empty() { &plain[..] } else { &plan.views[..] };
+    for view in views {
+        for &resolution in &resolutions {
+            for &spheres in &plan.sphere_counts {
+                let settings = with_view(Settings { resolution, sphere_count: spheres, ..base }, view)?;
+                offscreen.renderer.set_settings(settings)?;
+                let mut record = measure(&mut offscreen, plan, timed)?;
+                record.view = view.clone();
+                report(&record);
+                records.push(record);
+            }
         }
     }
     Ok((adapter, timed, records))
@@ -118,6 +142,7 @@ fn measure(offscreen: &mut Offscreen, plan: &Plan, timed: bool) -> Result<Record
         started.elapsed().as_secs_f64() * 1e3
     });
     Ok(Record {
+        view: String::new(),
         resolution: settings.resolution,
         spheres: settings.sphere_count,
         frame_ms: median(&mut frame_ms),
@@ -140,7 +165,8 @@ pub fn header(timed: bool) -> String {
         String::new()
     };
     format!(
-        "{:>5} {:>7} {:>9} {} {:>9} {:>10} {:>9} {:>8} {:>8} {:>9} {:>10}",
+        "{:<28} {:>5} {:>7} {:>9} {} {:>9} {:>10} {:>9} {:>8} {:>8} {:>9} {:>10}",
+        "view",
         "cells",
         "spheres",
         "frame ms",
@@ -163,7 +189,8 @@ fn truncate(s: &str) -> &str {
 pub fn row(r: &Record) -> String {
     let stages = r.stage_ms.map(|s| s.iter().map(|v| format!("{v:>9.2}")).collect::<Vec<_>>().join(" "));
     format!(
-        "{:>5} {:>7} {:>9.2} {} {:>9} {:>10} {:>9} {:>8.3} {:>8.2} {:>9.1} {:>10}",
+        "{:<28} {:>5} {:>7} {:>9.2} {} {:>9} {:>10} {:>9} {:>8.3} {:>8.2} {:>9.1} {:>10}",
+        if r.view.is_empty() { "shaded" } else { &r.view },
         r.resolution,
         r.spheres,
         r.frame_ms,

@@ -50,6 +50,10 @@ mod cli {
         /// Draw without 4× multisampling.
         #[arg(long)]
         no_antialiasing: bool,
+        /// A teaching view to measure, as name=value pairs joined by & (display=wireframe&grid=cells);
+        /// repeat the flag for several. Without it, the plain shaded surface.
+        #[arg(long = "view")]
+        views: Vec<String>,
     }
 
     #[derive(clap::Args)]
@@ -81,6 +85,9 @@ mod cli {
         /// Frames to render, 1/60 s of animation apart, timing each; the last is written.
         #[arg(long, default_value_t = 1, allow_negative_numbers = true)]
         frames: u32,
+        /// Teaching view, as name=value pairs joined by & (display=wireframe&grid=cells&slice=z:0).
+        #[arg(long, default_value = "")]
+        view: String,
     }
 
     fn parse_size(text: &str) -> Result<(u32, u32), String> {
@@ -105,8 +112,8 @@ mod cli {
             seed: args.seed,
             antialiasing: !args.no_antialiasing,
             ..Settings::default()
-        }
-        .validated()?;
+        };
+        let settings = bench::with_view(settings, &args.view)?.validated()?;
         check_f32("time (seconds)", args.time, 0.0, 3600.0)?;
         check_u32("frames", args.frames, 1, 100_000)?;
         let (width, height) = args.size;
@@ -160,7 +167,11 @@ mod cli {
             size: args.size,
             oracle: !args.no_oracle,
             antialiasing: !args.no_antialiasing,
+            views: args.views,
         };
+        for view in &plan.views {
+            bench::with_view(metaballs::Settings::default(), view)?;
+        }
         let mut printed_header = false;
         let (adapter, timed, records) = bench::run(&plan, |record| {
             if !printed_header {

@@ -441,7 +441,8 @@ impl ViewState {
         }
         let side = GIZMO_PIXELS.min(size.0 as f32 / 4.0).min(size.1 as f32 / 4.0);
         if side >= 16.0 {
-            pass.set_viewport(4.0, size.1 as f32 - side - 4.0, side, side, 0.0, 1.0);
+            // Bottom right: the panel sits top left, the statistics top right.
+            pass.set_viewport(size.0 as f32 - side - 4.0, size.1 as f32 - side - 4.0, side, side, 0.0, 1.0);
             pass.set_pipeline(&p.gizmo);
             pass.draw(0..6, 0..1);
             pass.set_viewport(0.0, 0.0, size.0 as f32, size.1 as f32, 0.0, 1.0);

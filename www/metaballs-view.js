@@ -4,8 +4,9 @@
 // takes keys only while focused, and survives a lost GPU.
 
 import {
-  hub, loadWasm, parameterTable, parseParameter, propertyName, View, within, WEBGPU_HELP,
+  caseGallery, hub, loadWasm, parameterTable, parseParameter, propertyName, View, within, WEBGPU_HELP,
 } from './lib/engine.js';
+import { Inspector } from './lib/inspector.js';
 import { wireCameraInput } from './lib/camera-input.js';
 import { buildPanel, listedControls } from './lib/panel.js';
 import { elementStyle, TEMPLATE } from './lib/element-dom.js';
@@ -17,6 +18,11 @@ const wasmError = await loadWasm().then(() => null, (error) => error);
 const TABLE = wasmError ? [] : parameterTable();
 const NAMES = TABLE.map((p) => p.name);
 const CONTROL_NAMES = TABLE.find((p) => p.name === 'controls')?.words ?? [];
+const GALLERY = wasmError ? { classes: [], cube: { corners: [], edges: [] } } : caseGallery();
+// Settings a renderer takes at creation; every other renderer setting is applied after.
+const CREATION = new Set(['spheres', 'iso', 'resolution', 'seed', 'antialiasing']);
+// How often the inspector's figures are refreshed while the spheres move, in ms.
+const INSPECT_INTERVAL_MS = 200;
 
 /** The default values of every parameter, typed. */
 function defaults() {
@@ -79,11 +85,15 @@ export class MetaballsView extends HTMLElement {
   #timers = {};
   #root;
   #canvas;
+  #inspector;
+  #inspected = null;
+  #inspectedAt = 0;
   // What the panel's buttons and the keys do.
   #actions = {
     togglePause: () => (this.#state.paused ? this.play() : this.pause()),
     reseed: () => this.#set('seed', 1 + Math.floor(Math.random() * 1e6)),
     resetView: () => this.resetView(),
+    step: () => this.step(),
   };
   #started = false;
 
@@ -97,12 +107,21 @@ export class MetaballsView extends HTMLElement {
     const $ = (id) => this.#root.getElementById(id);
     $('play').addEventListener('click', () => { this.play(); this.#canvas.focus(); });
     $('retry').addEventListener('click', () => hub.retry());
+    this.#inspector = new Inspector(this.#root, GALLERY.cube, {
+      onClose: () => this.deselect(),
+      onClass: (k) => this.#showPanel(this.#state, k),
+    });
     wireCameraInput(this, this.#canvas, {
       get: () => ({ yaw: this.#state.yaw, pitch: this.#state.pitch, distance: this.#state.distance }),
       set: (camera) => {
         for (const [name, value] of Object.entries(camera)) this.#set(name, Number(value.toFixed(3)));
       },
-    }, { ...this.#actions, step: () => this.step(), hint: (text) => this.#flash('wheel-hint', text, 1500) });
+    }, {
+      ...this.#actions,
+      hint: (text) => this.#flash('wheel-hint', text, 1500),
+      pick: (x, y) => this.#pick(x, y),
+      deselect: () => this.deselect(),
+    });
     new ResizeObserver(([entry]) => this.#resize(entry)).observe(this.#canvas);
   }
 
@@ -203,6 +222,7 @@ export class MetaballsView extends HTMLElement {
       (name, value) => this.#set(name, value), this.#actions, {
         maxResolution: this.#software ? Math.min(256, maxResolution) : maxResolution,
         small: this.clientWidth > 0 && this.clientWidth < 560,
+        gallery: GALLERY,
       });
     this.#root.getElementById('play').hidden = !this.#showsPlayButton();
   }
@@ -260,7 +280,7 @@ export class MetaballsView extends HTMLElement {
       }
     }
     this.#applied = { ...s };
-    this.#changed = new Set(['yaw', 'shininess', 'color']);
+    this.#changed = new Set(NAMES.filter((name) => isRendererSetting(name) && !CREATION.has(name)));
     this.#apply();
     if (this.#savedSpheres) {
       try {
@@ -384,6 +404,7 @@ export class MetaballsView extends HTMLElement {
       return false;
     }
     this.#hud.update(now, view);
+    if (this.#inspected && now - this.#inspectedAt > INSPECT_INTERVAL_MS) this.#showInspection(view.inspect(), now);
     const error = view.gpu_error();
     if (error) {
       this.fail('The GPU reported an error', error);
@@ -391,6 +412,41 @@ export class MetaballsView extends HTMLElement {
     }
     return true;
   }
+
+  // ---------------------------------------------------------------- the cell inspector
+
+  // Selects the cell under CSS pixel (x, y) of the canvas, or deselects over the background.
+  #pick(x, y) {
+    const view = this.#view;
+    if (!view) return;
+    const ratio = this.#canvas.width / Math.max(1, this.#canvas.clientWidth);
+    this.#showInspection(view.pick_cell(x * ratio, y * ratio));
+  }
+
+  #showInspection(report, now = performance.now()) {
+    this.#inspected = report ?? null;
+    this.#inspectedAt = now;
+    this.#inspector.show(this.#inspected, this.#state.iso);
+    this.#dirty = Math.max(this.#dirty, 2);
+    hub.requestFrame();
+    this.dispatchEvent(new CustomEvent('metaballs-inspect', { detail: { cell: this.#inspected } }));
+  }
+
+  /** Selects cell (x, y, z) for the inspector; returns its report (null outside the grid). */
+  inspectCell(x, y, z) {
+    if (!this.#view) return null;
+    this.#showInspection(this.#view.select_cell(x, y, z));
+    return this.#inspected;
+  }
+
+  /** Lets go of the inspected cell (also Esc, the × button, or a click on the background). */
+  deselect() {
+    this.#view?.clear_selection();
+    if (this.#inspected) this.#showInspection(null);
+  }
+
+  /** What marching cubes decided in the inspected cell, as last shown; null when none is selected. */
+  get inspected() { return this.#inspected; }
 
   // ---------------------------------------------------------------- size
 

@@ -174,7 +174,7 @@ pub const PARAMETERS: &[Parameter] = &[
     other("grid", "grid", "Grid", Kind::Choice(GridView::WORDS), "none"),
     other("color_by", "color_by", "Colour by", Kind::Choice(ColorBy::WORDS), "none"),
     other("slice", "slice", "Field slice", Kind::Slice, "off"),
-    other("ambiguous", "ambiguous", "Ambiguous faces", Kind::Boolean, "false"),
+    other("ambiguous", "ambiguous", "Ambiguous", Kind::Boolean, "false"),
     other("interpolation", "interp", "Vertices", Kind::Choice(Interpolation::WORDS), "linear"),
     other("blend", "blend", "Blend", Kind::Choice(Blend::WORDS), "sum"),
     other("light", "light", "Lights", Kind::List(LIGHT_KINDS), "point"),

@@ -4,7 +4,7 @@
 use super::{View, js_error};
 use crate::case_classes::{CLASS_NAMES, CLASS_REPRESENTATIVES, case_classes};
 use crate::inspect::CellReport;
-use crate::tables::{CASE_TRIANGLES, TRI_TABLE};
+use crate::tables::{CASE_TRIANGLES, CORNER_OFFSETS, EDGE_CORNERS, TRI_TABLE};
 use glam::UVec3;
 use wasm_bindgen::prelude::*;
 
@@ -71,6 +71,18 @@ pub fn case_gallery() -> js_sys::Array {
             JsValue::from(object)
         })
         .collect()
+}
+
+/// A cell's corners (offsets from its lowest corner) and edges (pairs of corners), numbered as the
+/// case table numbers them.
+#[wasm_bindgen]
+pub fn cube_geometry() -> js_sys::Object {
+    let object = js_sys::Object::new();
+    let corners: js_sys::Array = CORNER_OFFSETS.iter().map(|c| numbers(c)).collect();
+    let edges: js_sys::Array = EDGE_CORNERS.iter().map(|e| numbers(&e.map(|c| c as u32))).collect();
+    set(&object, "corners", corners.into());
+    set(&object, "edges", edges.into());
+    object
 }
 
 #[wasm_bindgen]

@@ -1,13 +1,15 @@
 // Camera gestures scoped to one element: drag to orbit (mouse, pen, touch), pinch or wheel to zoom,
-// keys while it has focus, double-click to reset. The wheel zooms only while the figure has focus or
-// with Ctrl held; otherwise it scrolls the page and a one-line hint says how to zoom.
+// keys while it has focus, double-click to reset, click (a press that does not move) to pick a cell.
+// The wheel zooms only while the figure has focus or with Ctrl held; otherwise it scrolls the page and
+// a one-line hint says how to zoom.
 
 const PITCH_LIMIT = 89;
 const DISTANCE_RANGE = [1.5, 20];
 
 /**
  * Wires gestures on `surface` (the canvas) and keys on `host`. `camera` has get() → {yaw, pitch,
- * distance} and set(partial); `actions` has togglePause, reseed, resetView, step, hint(text).
+ * distance} and set(partial); `actions` has togglePause, reseed, resetView, step, hint(text),
+ * pick(x, y) (CSS pixels from the canvas's top left) and deselect.
  */
 export function wireCameraInput(host, surface, camera, actions) {
   const focused = () => host.matches(':focus-within');
@@ -31,6 +33,8 @@ export function wireCameraInput(host, surface, camera, actions) {
 
   const pointers = new Map();
   let pinchSpan = 0;
+  // A press that stays within a few pixels and ends soon is a click, not a drag.
+  let press = null;
   const span = () => {
     const [a, b] = [...pointers.values()];
     return Math.hypot(a.x - b.x, a.y - b.y);
@@ -39,6 +43,8 @@ export function wireCameraInput(host, surface, camera, actions) {
     surface.setPointerCapture?.(e.pointerId);
     pointers.set(e.pointerId, { x: e.clientX, y: e.clientY });
     if (pointers.size === 2) pinchSpan = span();
+    press = pointers.size === 1 && e.button === 0
+      ? { x: e.clientX, y: e.clientY, offsetX: e.offsetX, offsetY: e.offsetY, time: e.timeStamp } : null;
   });
   surface.addEventListener('pointermove', (e) => {
     const p = pointers.get(e.pointerId);
@@ -56,6 +62,11 @@ export function wireCameraInput(host, surface, camera, actions) {
     }
   });
   const release = (e) => {
+    if (press && e.type === 'pointerup' && pointers.size === 1
+      && Math.hypot(e.clientX - press.x, e.clientY - press.y) < 4 && e.timeStamp - press.time < 500) {
+      actions.pick(press.offsetX, press.offsetY);
+    }
+    press = null;
     pointers.delete(e.pointerId);
     pinchSpan = pointers.size === 2 ? span() : 0;
   };
@@ -86,7 +97,7 @@ export function wireCameraInput(host, surface, camera, actions) {
       '+': () => zoom(0.9), '=': () => zoom(0.9),
       '-': () => zoom(1 / 0.9), _: () => zoom(1 / 0.9),
       p: actions.togglePause, ' ': actions.togglePause,
-      n: actions.reseed, r: actions.resetView, '.': actions.step,
+      n: actions.reseed, r: actions.resetView, '.': actions.step, Escape: actions.deselect,
     };
     const action = keys[e.key.length === 1 ? e.key.toLowerCase() : e.key];
     if (action) {

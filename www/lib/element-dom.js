@@ -129,6 +129,64 @@ button:focus-visible, input:focus-visible { outline: 2px solid var(--accent); ou
 #wheel-hint { background: var(--panel); color: var(--text); pointer-events: none; }
 #notice[hidden], #wheel-hint[hidden] { display: none; }
 
+select {
+  width: 100%;
+  min-width: 0;
+  padding: 2px 4px;
+  color: var(--text);
+  background: #232838;
+  border: 1px solid #343b50;
+  border-radius: 4px;
+  font: inherit;
+}
+select:focus-visible { outline: 2px solid var(--accent); outline-offset: 1px; }
+details.group { border-top: 1px solid #2a3042; }
+details.group > summary { padding: 5px 0; font-weight: 600; color: var(--text); }
+.control.slice { grid-template-columns: minmax(48px, 78px) 44px minmax(40px, 1fr) 32px; }
+.control.list { grid-template-columns: minmax(48px, 78px) 1fr; align-items: start; }
+.control .label { color: var(--muted); }
+.checks { display: flex; flex-wrap: wrap; gap: 2px 10px; }
+.checks label { white-space: nowrap; color: var(--text); }
+.legend { margin: 2px 0 6px; font-size: 11px; color: var(--muted); }
+.legend .ramp { display: block; height: 8px; border-radius: 2px; }
+.legend .ends { display: flex; justify-content: space-between; }
+.legend.classes { display: flex; flex-wrap: wrap; gap: 2px 8px; }
+.legend.classes i { display: inline-block; width: 9px; height: 9px; margin-right: 3px; border-radius: 2px; }
+.gallery { display: grid; grid-template-columns: repeat(auto-fill, minmax(76px, 1fr)); gap: 6px; }
+.gallery figure { margin: 0; padding: 3px; border: 1px solid transparent; border-radius: 6px; text-align: center; }
+.gallery figure.current { border-color: var(--accent); background: #2c2220; }
+.gallery figcaption { font-size: 10.5px; color: var(--muted); line-height: 1.25; }
+svg .edge { stroke: #6b7488; stroke-width: 1; }
+svg .triangle { stroke: #11141b; stroke-width: 0.6; fill-opacity: 0.85; }
+svg .inside { fill: #ff8c1a; stroke: #11141b; }
+svg .outside { fill: #11141b; stroke: #4d8dff; stroke-width: 1.2; }
+svg .corner-number { fill: var(--muted); font-size: 9px; }
+#inspector {
+  position: absolute;
+  right: 8px;
+  bottom: 8px;
+  width: min(330px, 45%);
+  max-height: calc(100% - 16px);
+  overflow-y: auto;
+  padding: 6px 10px 8px;
+  background: var(--panel);
+  border-radius: 8px;
+  font-size: 12px;
+  font-variant-numeric: tabular-nums;
+  z-index: 1;
+}
+#inspector[hidden] { display: none; }
+#inspector header { display: flex; justify-content: space-between; align-items: center; }
+#inspector h3 { margin: 0; font-size: 13px; }
+#inspector .close { flex: none; padding: 0 8px; }
+#inspector p { margin: 4px 0; }
+#inspector table { border-collapse: collapse; font-size: 11.5px; }
+#inspector td, #inspector th { padding: 0 6px 0 0; text-align: left; font-weight: normal; color: var(--text); }
+#inspector th { color: var(--muted); }
+#inspector .inspector-body { display: flex; gap: 8px; align-items: flex-start; }
+#inspector .in { color: #ff9a3d; }
+#inspector .out { color: #7aa7ff; }
+
 #message {
   position: absolute;
   inset: 0;
@@ -161,6 +219,7 @@ export const TEMPLATE = `
     <div id="overflow" role="alert" hidden>Triangle budget full: part of the surface is not drawn. Lower the resolution or raise the iso level.</div>
     </details>
   </section>
+  <section id="inspector" aria-label="Cell inspector" hidden></section>
   <button id="play" type="button" hidden>▶ Play</button>
   <div id="wheel-hint" hidden></div>
   <div id="notice" role="status" hidden></div>

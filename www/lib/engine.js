@@ -2,9 +2,18 @@
 // <metaballs-view> on the page draws with, drives all of them from one requestAnimationFrame loop (which
 // stops when none needs a frame), and rebuilds every view on a new device when the device is lost.
 
-import init, { Gpu, View, parameters as wasmParameters, parse_parameter } from '../../pkg/metaballs.js';
+import init, {
+  Gpu, View, case_gallery, cube_geometry, parameters as wasmParameters, parse_parameter,
+} from '../../pkg/metaballs.js';
 
 export { View };
+
+let gallery = null;
+/** The 15 classes of cases (representative, inside corners, triangles) and the cube's numbering. */
+export function caseGallery() {
+  gallery ??= { classes: case_gallery(), cube: cube_geometry() };
+  return gallery;
+}
 
 let wasmReady = null;
 

@@ -1,15 +1,28 @@
 // The element's control panel, built from the parameter table for the controls an author lists
-// (`controls="iso,resolution"`, `all` or `none`). Compact and collapsible: small figures start with it
-// folded, and it never takes more than a third of the figure's width.
+// (`controls="iso,resolution"`, `all` or `none`), in groups — Surface, Display, Teaching, Light, Camera
+// — that fold. Compact and collapsible: small figures start with it folded, and it never takes more
+// than a third of the figure's width.
+
+import { colorKey, sliceKey } from './legends.js';
+import { buildGallery } from './inspector.js';
+
+const GROUPS = [
+  ['Surface', ['spheres', 'iso', 'resolution', 'speed', 'seed', 'paused', 'step']],
+  ['Display', ['display', 'grid', 'color_by', 'ambiguous', 'color', 'antialiasing']],
+  ['Teaching', ['slice', 'interpolation', 'blend', 'inspector']],
+  ['Light', ['light', 'spot_angle', 'spot_softness', 'ambient', 'diffuse', 'specular', 'shininess']],
+  ['Camera', ['projection', 'fov', 'view']],
+];
 
 const FORMATS = {
   spheres: (v) => String(v),
-  iso: (v) => v.toFixed(2),
   resolution: (v) => `${v}³`,
   speed: (v) => `${v.toFixed(2)}×`,
   shininess: (v) => String(Math.round(v)),
-  color: (v) => v,
+  spot_angle: (v) => `${Math.round(v)}°`,
+  fov: (v) => `${Math.round(v)}°`,
 };
+const formatNumber = (name, v) => (FORMATS[name] ?? ((x) => x.toFixed(2)))(v);
 
 /** The control names `list` (the `controls` value) asks for, in the table's order. */
 export function listedControls(list, all) {
@@ -19,118 +32,210 @@ export function listedControls(list, all) {
   return all.filter((name) => wanted.has(name));
 }
 
+function element(tag, properties = {}, ...children) {
+  const node = Object.assign(document.createElement(tag), properties);
+  node.append(...children);
+  return node;
+}
+
+function makeButton(id, text, title, onClick) {
+  const button = element('button', { type: 'button', id, textContent: text, title });
+  button.addEventListener('click', onClick);
+  return button;
+}
+
+// One labelled row: label, input, output.
+function row(id, labelText, input, output = element('output')) {
+  const label = element('label', { htmlFor: id, textContent: labelText });
+  input.id = id;
+  output.id = `${id}-value`;
+  output.htmlFor = id;
+  return element('div', { className: 'control' }, label, input, output);
+}
+
 /**
  * Builds the panel into `container` (emptied first) for `names`. `table` is the parameter table,
  * `state` the element's values, `onChange(name, value)` receives the person's edits and `actions` the
- * buttons (togglePause, reseed, resetView). Returns `show(state)` to bring the controls up to date.
+ * buttons (togglePause, reseed, resetView, step). `gallery` is the case gallery's data. Returns
+ * `show(state, inspectedClass)` to bring the controls up to date.
  */
-export function buildPanel(container, names, table, state, onChange, actions, { maxResolution, small }) {
+export function buildPanel(container, names, table, state, onChange, actions, options) {
+  const { maxResolution, small, gallery } = options;
   container.replaceChildren();
   container.hidden = names.length === 0;
   if (!names.length) return () => {};
-  const details = document.createElement('details');
-  details.open = !small;
-  const summary = document.createElement('summary');
-  summary.textContent = 'Controls';
-  details.append(summary);
-  const body = document.createElement('div');
-  body.className = 'controls';
-  details.append(body);
+  const body = element('div', { className: 'controls' });
+  const details = element('details', { open: !small }, element('summary', { textContent: 'Controls' }), body);
   container.append(details);
 
   const byName = Object.fromEntries(table.map((p) => [p.name, p]));
+  const wanted = new Set(names);
   const updates = [];
-  const buttons = document.createElement('div');
-  buttons.className = 'buttons';
 
-  for (const name of names) {
-    const spec = byName[name];
-    if (name in FORMATS) {
-      const row = document.createElement('div');
-      row.className = 'control';
-      const label = document.createElement('label');
-      label.htmlFor = name;
-      label.textContent = spec.label;
-      const input = document.createElement('input');
-      input.id = name;
-      const output = document.createElement('output');
-      output.id = `${name}-value`;
-      output.htmlFor = name;
-      if (spec.kind === 'color') {
-        input.type = 'color';
-      } else {
-        input.type = 'range';
-        input.min = String(spec.sliderMin);
-        input.max = String(name === 'resolution' ? Math.min(spec.sliderMax, maxResolution) : spec.sliderMax);
-        input.step = String(spec.step);
-      }
-      input.addEventListener('input', () => {
-        const value = spec.kind === 'color' ? input.value : Number(input.value);
-        output.textContent = FORMATS[name](value);
-        onChange(name, value);
+  const controls = {
+    number(name, spec) {
+      const input = element('input', {
+        type: 'range',
+        min: String(spec.sliderMin),
+        max: String(name === 'resolution' ? Math.min(spec.sliderMax, maxResolution) : spec.sliderMax),
+        step: String(spec.step),
       });
-      row.append(label, input, output);
-      body.append(row);
+      const control = row(name, spec.label, input);
+      const output = control.querySelector('output');
+      input.addEventListener('input', () => {
+        output.textContent = formatNumber(name, Number(input.value));
+        onChange(name, Number(input.value));
+      });
       updates.push((s) => {
         input.value = String(s[name]);
-        output.textContent = FORMATS[name](s[name]);
+        output.textContent = formatNumber(name, s[name]);
       });
-    } else if (name === 'antialiasing') {
-      const row = document.createElement('div');
-      row.className = 'control';
-      const label = document.createElement('label');
-      label.htmlFor = 'antialiasing';
-      label.textContent = spec.label;
-      const input = document.createElement('input');
-      input.type = 'checkbox';
-      input.id = 'antialiasing';
-      const output = document.createElement('output');
-      output.id = 'antialiasing-value';
-      input.addEventListener('change', () => onChange('antialiasing', input.checked));
-      row.append(label, input, output);
-      body.append(row);
+      return control;
+    },
+    color(name, spec) {
+      const input = element('input', { type: 'color' });
+      const control = row(name, spec.label, input);
+      const output = control.querySelector('output');
+      input.addEventListener('input', () => {
+        output.textContent = input.value;
+        onChange(name, input.value);
+      });
       updates.push((s) => {
-        input.checked = s.antialiasing;
-        output.textContent = s.antialiasing ? '4×' : 'off';
+        input.value = s[name];
+        output.textContent = s[name];
       });
-    } else if (name === 'paused') {
+      return control;
+    },
+    boolean(name, spec) {
+      const input = element('input', { type: 'checkbox' });
+      const control = row(name, spec.label, input);
+      const output = control.querySelector('output');
+      input.addEventListener('change', () => onChange(name, input.checked));
+      updates.push((s) => {
+        input.checked = s[name];
+        output.textContent = name === 'antialiasing' ? (s[name] ? '4×' : 'off') : (s[name] ? 'on' : 'off');
+      });
+      return control;
+    },
+    choice(name, spec) {
+      const input = element('select', {}, ...spec.words.map((w) => element('option', { value: w, textContent: w })));
+      const control = row(name, spec.label, input);
+      input.addEventListener('change', () => onChange(name, input.value));
+      updates.push((s) => { input.value = s[name]; });
+      return control;
+    },
+    list(name, spec) {
+      // One checkbox per light kind, in a labelled group.
+      const label = element('span', { id: `${name}-label`, className: 'label', textContent: spec.label });
+      const boxes = spec.words.map((word) => element('input', { type: 'checkbox', id: `${name}-${word}`, value: word }));
+      const checks = element('div', { className: 'checks' },
+        ...boxes.map((box) => element('label', { htmlFor: box.id }, box, ` ${box.value}`)));
+      const group = element('div', { className: 'control list', role: 'group' }, label, checks);
+      group.setAttribute('aria-labelledby', label.id);
+      group.addEventListener('change', () => {
+        const on = boxes.filter((b) => b.checked).map((b) => b.value);
+        onChange(name, on.length ? on.join(',') : 'none');
+      });
+      updates.push((s) => {
+        const on = s[name] === 'all' ? spec.words : s[name].split(',');
+        for (const box of boxes) box.checked = on.includes(box.value);
+      });
+      return group;
+    },
+    slice(name, spec) {
+      // An axis (or off) and a position along it; the value is `off` or `axis:position`.
+      const axis = element('select', { id: `${name}-axis`, ariaLabel: 'Slice axis' },
+        ...['off', 'x', 'y', 'z'].map((a) => element('option', { value: a, textContent: a })));
+      const position = element('input', { type: 'range', min: '-1', max: '1', step: '0.01' });
+      position.setAttribute('aria-label', 'Slice position');
+      const control = row(name, spec.label, position);
+      const output = control.querySelector('output');
+      control.insertBefore(axis, position);
+      control.classList.add('slice');
+      const key = element('div', { className: 'key' });
+      const send = () => {
+        onChange(name, axis.value === 'off' ? 'off' : `${axis.value}:${Number(position.value)}`);
+      };
+      axis.addEventListener('change', send);
+      position.addEventListener('input', send);
+      updates.push((s) => {
+        const [a, p] = s[name] === 'off' ? ['off', '0'] : s[name].split(':');
+        axis.value = a;
+        position.value = p;
+        position.disabled = a === 'off';
+        output.textContent = a === 'off' ? '' : Number(p).toFixed(2);
+        key.replaceChildren(...(a === 'off' ? [] : [sliceKey()]));
+      });
+      return element('div', {}, control, key);
+    },
+  };
+
+  controls.integer = controls.number;
+  const classNames = gallery.classes.map((k) => k.name);
+  const extras = {
+    paused: () => {
       const button = makeButton('pause', 'Pause', 'Pause or play (P)', actions.togglePause);
-      buttons.append(button);
       updates.push((s) => {
         button.setAttribute('aria-pressed', String(s.paused));
         button.textContent = s.paused ? 'Play' : 'Pause';
       });
-    } else if (name === 'seed') {
-      buttons.append(makeButton('reseed', 'New layout', 'Draw a new random layout (N)', actions.reseed));
-      const seed = document.createElement('p');
-      seed.className = 'seed';
-      seed.innerHTML = 'Layout <span id="seed-value"></span>';
-      updates.push((s) => { seed.querySelector('span').textContent = String(s.seed); });
-      body.append(seed);
-    } else if (name === 'view') {
-      buttons.append(makeButton('reset-view', 'Reset view', 'Reset the camera (R or double-click)', actions.resetView));
-    }
-  }
-  if (buttons.childElementCount) body.append(buttons);
-  const footer = document.createElement('slot');
-  footer.name = 'panel-footer';
-  body.append(footer);
-  const hint = document.createElement('p');
-  hint.className = 'hint';
-  hint.textContent = 'Drag to orbit · click, then wheel to zoom · arrows to turn · double-click to reset';
-  body.append(hint);
+      return button;
+    },
+    step: () => makeButton('step', 'Step', 'One frame forward, paused (.)', actions.step),
+    seed: () => makeButton('reseed', 'New layout', 'Draw a new random layout (N)', actions.reseed),
+    view: () => makeButton('reset-view', 'Reset view', 'Reset the camera (R or double-click)', actions.resetView),
+  };
+  let galleryList = null;
 
-  const show = (s) => { for (const update of updates) update(s); };
+  for (const [title, members] of GROUPS) {
+    const present = members.filter((name) => wanted.has(name));
+    if (!present.length) continue;
+    const section = element('div', { className: 'group-body' });
+    const group = element('details', { className: 'group', open: title === 'Surface' },
+      element('summary', { textContent: title }), section);
+    const buttons = element('div', { className: 'buttons' });
+    for (const name of present) {
+      if (name in extras) {
+        buttons.append(extras[name]());
+      } else if (name === 'inspector') {
+        section.append(element('p', { className: 'hint', textContent: 'Click the surface to inspect a cell (Esc to let go).' }));
+        galleryList = buildGallery(gallery);
+        section.append(element('details', { className: 'cases' },
+          element('summary', { textContent: 'The 15 cases' }), galleryList));
+      } else {
+        const spec = byName[name];
+        section.append(controls[spec.kind](name, spec));
+        if (name === 'color_by') {
+          const key = element('div', { className: 'key' });
+          updates.push((s) => key.replaceChildren(...[colorKey(s, classNames)].filter(Boolean)));
+          section.append(key);
+        }
+      }
+    }
+    if (wanted.has('seed') && title === 'Surface') {
+      const seed = element('p', { className: 'seed', innerHTML: 'Layout <span id="seed-value"></span>' });
+      updates.push((s) => { seed.querySelector('span').textContent = String(s.seed); });
+      section.append(seed);
+    }
+    if (buttons.childElementCount) section.append(buttons);
+    body.append(group);
+  }
+  body.append(element('slot', { name: 'panel-footer' }));
+  body.append(element('p', {
+    className: 'hint',
+    textContent: 'Drag to orbit · click, then wheel to zoom · arrows to turn · double-click to reset',
+  }));
+
+  let shownClass = null;
+  const show = (s, inspectedClass = shownClass) => {
+    shownClass = inspectedClass;
+    for (const update of updates) update(s);
+    if (galleryList) {
+      for (const figure of galleryList.children) {
+        figure.classList.toggle('current', figure.dataset.class === String(inspectedClass));
+      }
+    }
+  };
   show(state);
   return show;
-}
-
-function makeButton(id, text, title, onClick) {
-  const button = document.createElement('button');
-  button.type = 'button';
-  button.id = id;
-  button.textContent = text;
-  button.title = title;
-  button.addEventListener('click', onClick);
-  return button;
 }

@@ -9,6 +9,12 @@ function hexToLinear(hex) {
   return [channel(0), channel(1), channel(2)];
 }
 
+// The view options, light strengths and field of view go through one setter by name, as text.
+const BY_NAME = [
+  'display', 'grid', 'color_by', 'slice', 'ambiguous', 'interpolation', 'blend', 'light', 'spot_angle',
+  'spot_softness', 'ambient', 'diffuse', 'specular', 'projection', 'fov',
+];
+
 const SETTERS = {
   spheres: (view, s) => view.set_sphere_count(s.spheres),
   iso: (view, s) => view.set_iso(s.iso),
@@ -20,6 +26,7 @@ const SETTERS = {
   shininess: (view, s) => view.set_shininess(s.shininess),
   color: (view, s) => view.set_color(...hexToLinear(s.color)),
   antialiasing: (view, s) => view.set_antialiasing(s.antialiasing),
+  ...Object.fromEntries(BY_NAME.map((name) => [name, (view, s) => view.set_parameter(name, String(s[name]))])),
 };
 
 /** True when parameter `name` is a setting of the renderer (one `applySetting` passes on). */
