@@ -161,3 +161,10 @@ export async function setRange(page, id, value) {
   }, value);
 }
 
+
+/** Opens every group of the figure's panel (they start folded, but Surface). */
+export async function openPanelGroups(page, selector = 'metaballs-view') {
+  await page.$eval(selector, (element) => {
+    for (const group of element.shadowRoot.querySelectorAll('details')) group.open = true;
+  });
+}

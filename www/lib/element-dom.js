@@ -57,7 +57,7 @@ summary:focus-visible { outline: 2px solid var(--accent); outline-offset: -2px; 
 .controls { padding: 0 10px 10px; }
 .control {
   display: grid;
-  grid-template-columns: minmax(48px, 78px) minmax(40px, 1fr) minmax(32px, 52px);
+  grid-template-columns: minmax(48px, 92px) minmax(40px, 1fr) minmax(32px, 52px);
   align-items: center;
   gap: 6px;
   margin: 4px 0;
@@ -142,8 +142,8 @@ select {
 select:focus-visible { outline: 2px solid var(--accent); outline-offset: 1px; }
 details.group { border-top: 1px solid #2a3042; }
 details.group > summary { padding: 5px 0; font-weight: 600; color: var(--text); }
-.control.slice { grid-template-columns: minmax(48px, 78px) 44px minmax(40px, 1fr) 32px; }
-.control.list { grid-template-columns: minmax(48px, 78px) 1fr; align-items: start; }
+.control.slice { grid-template-columns: minmax(48px, 92px) 44px minmax(40px, 1fr) 32px; }
+.control.list { grid-template-columns: minmax(48px, 92px) 1fr; align-items: start; }
 .control .label { color: var(--muted); }
 .checks { display: flex; flex-wrap: wrap; gap: 2px 10px; }
 .checks label { white-space: nowrap; color: var(--text); }

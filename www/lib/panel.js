@@ -7,11 +7,11 @@ import { colorKey, sliceKey } from './legends.js';
 import { buildGallery } from './inspector.js';
 
 const GROUPS = [
-  ['Surface', ['spheres', 'iso', 'resolution', 'speed', 'seed', 'paused', 'step']],
+  ['Surface', ['spheres', 'iso', 'resolution', 'speed', 'seed', 'paused', 'step', 'view']],
   ['Display', ['display', 'grid', 'color_by', 'ambiguous', 'color', 'antialiasing']],
   ['Teaching', ['slice', 'interpolation', 'blend', 'inspector']],
   ['Light', ['light', 'spot_angle', 'spot_softness', 'ambient', 'diffuse', 'specular', 'shininess']],
-  ['Camera', ['projection', 'fov', 'view']],
+  ['Camera', ['projection', 'fov']],
 ];
 
 const FORMATS = {
