@@ -43,6 +43,8 @@ struct Shading {
     lattice_alpha: f32,
     selected_cell: vec3<u32>,
     _pad: u32,
+    // x: the axis across the lattice's slab; y, z: its first and last grid planes.
+    lattice_slab: vec4<u32>,
     lights: array<Light, 3>,
 }
 

@@ -423,7 +423,7 @@ impl Renderer {
             lights: lights(&self.settings),
             ..Default::default()
         };
-        views::view_fields(&mut shading, &s.view, grid);
+        views::view_fields(&mut shading, &s.view, grid, (-eye).normalize());
         self.queue.write_buffer(self.shade.uniform(), 0, bytemuck::bytes_of(&shading));
     }
 

@@ -81,9 +81,11 @@ pub struct ShadingUniform {
     pub lattice_alpha: f32,
     pub selected_cell: [u32; 3],
     pub _pad: u32,
+    /// The lattice's slab: the axis across it, its first and last grid planes, then padding.
+    pub lattice_slab: [u32; 4],
     pub lights: [LightUniform; 3],
 }
-const _: () = assert!(std::mem::size_of::<ShadingUniform>() == 400);
+const _: () = assert!(std::mem::size_of::<ShadingUniform>() == 416);
 
 /// The counts the passes append with (`Counters` in `shaders/common.wgsl`); a count above its
 /// capacity means that buffer overflowed.

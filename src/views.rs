@@ -5,7 +5,7 @@
 
 use crate::case_classes::case_classes;
 use crate::mesh_buffers::MeshBuffers;
-use crate::params::view::{ColorBy, Display, GridView, ViewOptions};
+use crate::params::view::{ColorBy, Display, GridView, Slice, ViewOptions};
 use crate::reference::Grid;
 use crate::scene_buffers::SceneBuffers;
 use crate::slice::packed_square_segments;
@@ -450,14 +450,46 @@ impl ViewState {
     }
 }
 
-/// The shading uniform's view fields for `options` (the renderer fills the rest).
-pub fn view_fields(uniform: &mut ShadingUniform, options: &ViewOptions, grid: Grid) {
+/// The lattice's slab is this many cells thick at 1 cell per axis, thinner in proportion on finer
+/// grids (16 cells thick at 16³, that is the whole grid; 2 at 128³; 1 from 256³), so its depth stays
+/// readable.
+const LATTICE_SLAB_SPAN: u32 = 256;
+
+/// The lattice's slab for a grid, a view direction and the slice: (axis across it, first plane, last
+/// plane). Across the slice's axis and centred on it when there is a slice, otherwise across the axis
+/// the camera looks along most, centred in the box.
+pub fn lattice_slab(grid: Grid, forward: glam::Vec3, slice: Option<Slice>) -> [u32; 3] {
+    let n = grid.cells_per_axis;
+    let (axis, centre) = match slice {
+        Some(s) => (s.axis, s.plane(n)),
+        None => {
+            let f = forward.abs();
+            let axis = if f.x >= f.y && f.x >= f.z {
+                0
+            } else if f.y >= f.z {
+                1
+            } else {
+                2
+            };
+            (axis, n / 2)
+        }
+    };
+    let thickness = (LATTICE_SLAB_SPAN / n).clamp(1, n);
+    let first = centre.saturating_sub(thickness / 2).min(n - thickness);
+    [axis, first, first + thickness]
+}
+
+/// The shading uniform's view fields for `options` (the renderer fills the rest; `forward` is the
+/// camera's view direction).
+pub fn view_fields(uniform: &mut ShadingUniform, options: &ViewOptions, grid: Grid, forward: glam::Vec3) {
     uniform.display = options.display.index();
     uniform.color_by = options.color_by.index();
     uniform.grid_view = options.grid.index();
     uniform.cells_per_axis = grid.cells_per_axis;
     uniform.cell_size = grid.cell_size();
-    uniform.lattice_alpha = (4.0 / grid.cells_per_axis as f32).clamp(0.03, 0.25);
+    uniform.lattice_alpha = (4.0 / grid.cells_per_axis as f32).clamp(0.08, 0.25);
+    let [axis, first, last] = lattice_slab(grid, forward, options.slice);
+    uniform.lattice_slab = [axis, first, last, 0];
     match options.slice {
         Some(slice) => {
             uniform.slice_axis = slice.axis;
@@ -480,6 +512,13 @@ mod tests {
             // Lines: vertices / 2 per instance, 3 (n + 1)² in all (each grid line once).
             assert_eq!(vertices / 2 * instances, 3 * (n + 1) * (n + 1));
         }
+        // Fine grids draw a thin slab across the view's main axis or the slice's.
+        let grid = Grid { cells_per_axis: 128 };
+        assert_eq!(lattice_slab(grid, glam::Vec3::new(0.2, -0.3, -0.9), None), [2, 63, 65]);
+        let slice = Some(Slice { axis: 0, position: 1.0 });
+        assert_eq!(lattice_slab(grid, glam::Vec3::Z, slice), [0, 126, 128]);
+        assert_eq!(lattice_slab(Grid { cells_per_axis: 16 }, glam::Vec3::X, None), [0, 0, 16]);
+        assert_eq!(lattice_slab(Grid { cells_per_axis: 512 }, glam::Vec3::Y, None), [1, 256, 257]);
         let (_, i16) = lattice_draw(16);
         let (_, i32) = lattice_draw(32);
         let (_, i64) = lattice_draw(64);

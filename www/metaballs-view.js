@@ -21,8 +21,6 @@ const CONTROL_NAMES = TABLE.find((p) => p.name === 'controls')?.words ?? [];
 const GALLERY = wasmError ? { classes: [], cube: { corners: [], edges: [] } } : caseGallery();
 // Settings a renderer takes at creation; every other renderer setting is applied after.
 const CREATION = new Set(['spheres', 'iso', 'resolution', 'seed', 'antialiasing']);
-// How often the inspector's figures are refreshed while the spheres move, in ms.
-const INSPECT_INTERVAL_MS = 200;
 
 /** The default values of every parameter, typed. */
 function defaults() {
@@ -86,8 +84,6 @@ export class MetaballsView extends HTMLElement {
   #root;
   #canvas;
   #inspector;
-  #inspected = null;
-  #inspectedAt = 0;
   // What the panel's buttons and the keys do.
   #actions = {
     togglePause: () => (this.#state.paused ? this.play() : this.pause()),
@@ -404,7 +400,7 @@ export class MetaballsView extends HTMLElement {
       return false;
     }
     this.#hud.update(now, view);
-    if (this.#inspected && now - this.#inspectedAt > INSPECT_INTERVAL_MS) this.#showInspection(view.inspect(), now);
+    if (this.#inspector.due(now)) this.#showInspection(view.inspect());
     const error = view.gpu_error();
     if (error) {
       this.fail('The GPU reported an error', error);
@@ -423,30 +419,28 @@ export class MetaballsView extends HTMLElement {
     this.#showInspection(view.pick_cell(x * ratio, y * ratio));
   }
 
-  #showInspection(report, now = performance.now()) {
-    this.#inspected = report ?? null;
-    this.#inspectedAt = now;
-    this.#inspector.show(this.#inspected, this.#state.iso);
+  #showInspection(report) {
+    this.#inspector.show(report ?? null, this.#state.iso);
     this.#dirty = Math.max(this.#dirty, 2);
     hub.requestFrame();
-    this.dispatchEvent(new CustomEvent('metaballs-inspect', { detail: { cell: this.#inspected } }));
+    this.dispatchEvent(new CustomEvent('metaballs-inspect', { detail: { cell: this.inspected } }));
   }
 
   /** Selects cell (x, y, z) for the inspector; returns its report (null outside the grid). */
   inspectCell(x, y, z) {
     if (!this.#view) return null;
     this.#showInspection(this.#view.select_cell(x, y, z));
-    return this.#inspected;
+    return this.inspected;
   }
 
   /** Lets go of the inspected cell (also Esc, the × button, or a click on the background). */
   deselect() {
     this.#view?.clear_selection();
-    if (this.#inspected) this.#showInspection(null);
+    if (this.inspected) this.#showInspection(null);
   }
 
   /** What marching cubes decided in the inspected cell, as last shown; null when none is selected. */
-  get inspected() { return this.#inspected; }
+  get inspected() { return this.#inspector.report; }
 
   // ---------------------------------------------------------------- size
 

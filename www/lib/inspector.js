@@ -72,6 +72,9 @@ export function buildGallery({ classes, cube }) {
   return list;
 }
 
+// How often the inspector's figures are refreshed while the spheres move, in ms.
+const REFRESH_MS = 200;
+
 const format = (v, digits = 3) => (Math.abs(v) >= 1000 ? v.toExponential(2) : v.toFixed(digits));
 
 /** The inspector box in `root` (`#inspector`). */
@@ -80,6 +83,8 @@ export class Inspector {
   #cube;
   #onClose;
   #onClass;
+  #report = null;
+  #shownAt = 0;
 
   /** `onClose()` deselects; `onClass(k)` marks class k in the gallery (null for none). */
   constructor(root, cube, { onClose, onClass }) {
@@ -92,12 +97,20 @@ export class Inspector {
     });
   }
 
-  get open() {
-    return !this.#box.hidden;
+  /** The report shown, or null. */
+  get report() {
+    return this.#report;
+  }
+
+  /** True when a cell is shown and its figures are due for a refresh. */
+  due(now) {
+    return this.#report !== null && now - this.#shownAt > REFRESH_MS;
   }
 
   /** Shows `report` (from `View.inspect`), or hides the box for null. */
   show(report, iso) {
+    this.#report = report;
+    this.#shownAt = performance.now();
     if (!report) {
       this.#box.hidden = true;
       this.#onClass(null);
