@@ -165,7 +165,7 @@ pub fn header(timed: bool) -> String {
         String::new()
     };
     format!(
-        "{:<28} {:>5} {:>7} {:>9} {} {:>9} {:>10} {:>9} {:>8} {:>8} {:>9} {:>10}",
+        "{:<36} {:>5} {:>7} {:>9} {} {:>9} {:>10} {:>9} {:>8} {:>8} {:>9} {:>10}",
         "view",
         "cells",
         "spheres",
@@ -189,7 +189,7 @@ fn truncate(s: &str) -> &str {
 pub fn row(r: &Record) -> String {
     let stages = r.stage_ms.map(|s| s.iter().map(|v| format!("{v:>9.2}")).collect::<Vec<_>>().join(" "));
     format!(
-        "{:<28} {:>5} {:>7} {:>9.2} {} {:>9} {:>10} {:>9} {:>8.3} {:>8.2} {:>9.1} {:>10}",
+        "{:<36} {:>5} {:>7} {:>9.2} {} {:>9} {:>10} {:>9} {:>8.3} {:>8.2} {:>9.1} {:>10}",
         if r.view.is_empty() { "shaded" } else { &r.view },
         r.resolution,
         r.spheres,

@@ -153,11 +153,12 @@ pub async fn map_and_read(device: &wgpu::Device, buffer: &wgpu::Buffer) -> Vec<u
 
 /// A compute shader module made of `shaders/common.wgsl` followed by a pass's own source.
 pub(crate) fn compute_module(device: &wgpu::Device, label: &str, source: &str) -> wgpu::ShaderModule {
-    let source = format!(
-        "const MAX_SPHERES: u32 = {}u;\n{}\n{source}",
-        crate::params::MAX_SPHERES,
-        include_str!("../shaders/common.wgsl")
-    );
+    shader_module(device, label, &[include_str!("../shaders/common.wgsl"), source])
+}
+
+/// A shader module made of `parts` in order, after the constants the crate fixes (`MAX_SPHERES`).
+pub(crate) fn shader_module(device: &wgpu::Device, label: &str, parts: &[&str]) -> wgpu::ShaderModule {
+    let source = format!("const MAX_SPHERES: u32 = {}u;\n{}", crate::params::MAX_SPHERES, parts.join("\n"));
     device.create_shader_module(wgpu::ShaderModuleDescriptor {
         label: Some(label),
         source: wgpu::ShaderSource::Wgsl(source.into()),
@@ -188,13 +189,19 @@ pub(crate) fn bind_buffers(
     pipeline: &wgpu::ComputePipeline,
     buffers: &[(u32, &wgpu::Buffer)],
 ) -> wgpu::BindGroup {
+    bind_buffers_to(device, label, &pipeline.get_bind_group_layout(0), buffers)
+}
+
+/// A bind group for `layout`, binding whole buffers.
+pub(crate) fn bind_buffers_to(
+    device: &wgpu::Device,
+    label: &str,
+    layout: &wgpu::BindGroupLayout,
+    buffers: &[(u32, &wgpu::Buffer)],
+) -> wgpu::BindGroup {
     let entries: Vec<wgpu::BindGroupEntry> = buffers
         .iter()
         .map(|&(binding, buffer)| wgpu::BindGroupEntry { binding, resource: buffer.as_entire_binding() })
         .collect();
-    device.create_bind_group(&wgpu::BindGroupDescriptor {
-        label: Some(label),
-        layout: &pipeline.get_bind_group_layout(0),
-        entries: &entries,
-    })
+    device.create_bind_group(&wgpu::BindGroupDescriptor { label: Some(label), layout, entries: &entries })
 }

@@ -4,6 +4,7 @@
 //! whose counts a one-invocation pass writes on the GPU: no readback.
 
 use crate::case_classes::case_classes;
+use crate::gpu::{bind_buffers_to, shader_module};
 use crate::mesh_buffers::MeshBuffers;
 use crate::params::view::{ColorBy, Display, GridView, Slice, ViewOptions};
 use crate::reference::Grid;
@@ -78,17 +79,10 @@ impl ViewPipelines {
         sample_count: u32,
         depth: wgpu::TextureFormat,
     ) -> Self {
-        let prelude = format!(
-            "const MAX_SPHERES: u32 = {}u;\n{}\n{}\n",
-            crate::params::MAX_SPHERES,
-            include_str!("../shaders/common.wgsl"),
-            include_str!("../shaders/shade.wgsl"),
-        );
+        // After the grid and spheres, the shading uniforms and lighting.
         let module = |label, source: &str| {
-            device.create_shader_module(wgpu::ShaderModuleDescriptor {
-                label: Some(label),
-                source: wgpu::ShaderSource::Wgsl(format!("{prelude}{source}").into()),
-            })
+            let common = include_str!("../shaders/common.wgsl");
+            shader_module(device, label, &[common, include_str!("../shaders/shade.wgsl"), source])
         };
         let views = module("views: shader", include_str!("../shaders/views.wgsl"));
         let overlays = module("overlays: shader", include_str!("../shaders/overlays.wgsl"));
@@ -195,7 +189,8 @@ impl ViewPipelines {
             lattice: line("views: lattice pipeline", "lattice_vertex"),
             cells: line("views: cell pipeline", "cell_vertex"),
             blocks: line("views: block pipeline", "block_vertex"),
-            ambiguous: line("views: ambiguous face pipeline", "ambiguous_vertex"),
+            // On top: an ambiguous face lies where the surface pinches, mostly inside it.
+            ambiguous: on_top("views: ambiguous face pipeline", "ambiguous_vertex", LineList),
             contour: line("views: contour pipeline", "contour_vertex"),
             slice: pipeline(
                 "views: slice pipeline",
@@ -267,15 +262,7 @@ impl ViewState {
         let overlays =
             buffer("overlays: counts and draws", OVERLAY_BYTES, U::INDIRECT | U::COPY_DST | U::COPY_SRC);
         let group = |label, layout: &wgpu::BindGroupLayout, buffers: &[(u32, &wgpu::Buffer)]| {
-            let entries: Vec<wgpu::BindGroupEntry> = buffers
-                .iter()
-                .map(|&(binding, b)| wgpu::BindGroupEntry { binding, resource: b.as_entire_binding() })
-                .collect();
-            device.create_bind_group(&wgpu::BindGroupDescriptor {
-                label: Some(label),
-                layout,
-                entries: &entries,
-            })
+            bind_buffers_to(device, label, layout, buffers)
         };
         let p = pipelines;
         Self {

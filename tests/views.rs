@@ -324,3 +324,74 @@ fn the_inspector_reads_the_picked_cell_as_the_oracle_does() {
         assert_eq!(differing(&plain, &o.render_rgba()), 0.0);
     });
 }
+
+/// Faces of crossed cells whose two inside corners sit on a diagonal, by the oracle.
+fn oracle_ambiguous_faces(spheres: &[metaballs::Sphere], iso: f32, grid: Grid) -> usize {
+    let n = grid.cells_per_axis;
+    let values = reference::sample_field(spheres, grid);
+    let inside = |p: UVec3| values[grid.point_index(p)] > iso;
+    let mut count = 0;
+    for z in 0..n {
+        for y in 0..n {
+            for x in 0..n {
+                let cell = UVec3::new(x, y, z);
+                for axis in 0..3 {
+                    for side in 0..2 {
+                        let (u, v) = ((axis + 1) % 3, (axis + 2) % 3);
+                        let corner = |a: u32, b: u32| {
+                            let mut o = [0u32; 3];
+                            o[axis] = side;
+                            o[u] = a;
+                            o[v] = b;
+                            inside(cell + UVec3::from_array(o))
+                        };
+                        let (c00, c10, c11, c01) = (corner(0, 0), corner(1, 0), corner(1, 1), corner(0, 1));
+                        count += (c00 == c11 && c10 == c01 && c00 != c10) as usize;
+                    }
+                }
+            }
+        }
+    }
+    count
+}
+
+#[test]
+fn ambiguous_faces_are_marked_where_the_oracle_finds_them() {
+    // Two small spheres on diagonal corners of a cell face: the face's other two corners are outside.
+    let camera = metaballs::Camera { distance: 1.6, ..Default::default() };
+    let settings = Settings { resolution: 16, antialiasing: false, camera, ..Settings::default() };
+    with_renderer(settings, WIDTH, HEIGHT, |o| {
+        let grid = Grid { cells_per_axis: 16 };
+        let magenta = |p: &[u8]| p[0] > 200 && p[2] > 170 && p[0] as i32 - p[1] as i32 > 80;
+        let mut marked = Vec::new();
+        for apart in [false, true] {
+            let step = if apart { 6 } else { 1 };
+            let a = grid.point(UVec3::new(8, 8, 8)) + Vec3::splat(0.003);
+            let b = grid.point(UVec3::new(8 + step, 8 + step, 8)) + Vec3::splat(0.003);
+            let spheres = vec![sphere(a.to_array(), 0.07), sphere(b.to_array(), 0.07)];
+            o.renderer.set_scene(Scene::from_spheres(spheres.clone()).unwrap());
+            let faces = oracle_ambiguous_faces(&spheres, 1.0, grid);
+            o.renderer
+                .set_settings(o.renderer.settings().with_parameter("ambiguous", "on").unwrap())
+                .unwrap();
+            let pixels = o.render_rgba();
+            write_png(
+                &output_dir().join(format!("view_ambiguous_apart_{apart}.png")),
+                WIDTH,
+                HEIGHT,
+                &pixels,
+            )
+            .unwrap();
+            marked.push((faces, fraction(&pixels, magenta)));
+        }
+        let (near, apart) = (marked[0], marked[1]);
+        assert!(
+            near.0 > 0 && near.1 > 0.0,
+            "diagonal spheres: {} ambiguous faces, {} marked",
+            near.0,
+            near.1
+        );
+        assert_eq!(apart.0, 0, "separate spheres have no ambiguous face");
+        assert_eq!(apart.1, 0.0, "and none is marked");
+    });
+}

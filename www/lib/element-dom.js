@@ -40,15 +40,18 @@ canvas:active { cursor: grabbing; }
 canvas:focus-visible { outline: 2px solid var(--accent); outline-offset: -2px; }
 :host(:focus-within) { box-shadow: 0 0 0 2px var(--accent); }
 
-#panel {
+/* The panel and the inspector: boxes over the figure that scroll when it is short. */
+#panel, #inspector {
   position: absolute;
-  top: 8px;
-  left: 8px;
-  width: min(280px, 33%);
   max-height: calc(100% - 16px);
   overflow-y: auto;
   background: var(--panel);
   border-radius: 8px;
+}
+#panel {
+  top: 8px;
+  left: 8px;
+  width: min(280px, 33%);
   backdrop-filter: blur(6px);
 }
 #panel[hidden] { display: none; }
@@ -162,15 +165,10 @@ svg .inside { fill: #ff8c1a; stroke: #11141b; }
 svg .outside { fill: #11141b; stroke: #4d8dff; stroke-width: 1.2; }
 svg .corner-number { fill: var(--muted); font-size: 9px; }
 #inspector {
-  position: absolute;
   right: 8px;
   bottom: 8px;
   width: min(330px, 45%);
-  max-height: calc(100% - 16px);
-  overflow-y: auto;
   padding: 6px 10px 8px;
-  background: var(--panel);
-  border-radius: 8px;
   font-size: 12px;
   font-variant-numeric: tabular-nums;
   z-index: 1;
