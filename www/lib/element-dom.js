@@ -174,6 +174,8 @@ svg .corner-number { fill: var(--muted); font-size: 9px; }
   z-index: 1;
 }
 #inspector[hidden] { display: none; }
+/* Above the play button when both show. */
+#play:not([hidden]) ~ #inspector { bottom: 48px; max-height: calc(100% - 56px); }
 #inspector header { display: flex; justify-content: space-between; align-items: center; }
 #inspector h3 { margin: 0; font-size: 13px; }
 #inspector .close { flex: none; padding: 0 8px; }
@@ -217,8 +219,8 @@ export const TEMPLATE = `
     <div id="overflow" role="alert" hidden>Triangle budget full: part of the surface is not drawn. Lower the resolution or raise the iso level.</div>
     </details>
   </section>
-  <section id="inspector" aria-label="Cell inspector" hidden></section>
   <button id="play" type="button" hidden>▶ Play</button>
+  <section id="inspector" aria-label="Cell inspector" hidden></section>
   <div id="wheel-hint" hidden></div>
   <div id="notice" role="status" hidden></div>
   <div id="message" role="alert" hidden>
