@@ -68,9 +68,18 @@ pub fn inspect(
     CellReport { cell, corners, case, class: case_classes()[case as usize], triangles, edges }
 }
 
-/// The cell whose triangles the ray from `origin` towards `direction` meets first, walking the grid
-/// cell by cell and testing the triangles of each cell the surface crosses; `None` when the ray misses
-/// the surface.
+/// What a ray picks.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Target {
+    /// The cell whose triangles the ray meets first: the surface under the pointer.
+    Surface,
+    /// The first cell the ray enters among those the surface crosses: the box under the pointer in the
+    /// cells view.
+    CrossedCell,
+}
+
+/// The cell the ray from `origin` towards `direction` picks, walking the grid cell by cell through the
+/// cells the surface crosses; `None` when it meets no `target`.
 pub fn pick(
     spheres: &[Sphere],
     iso: f32,
@@ -78,6 +87,7 @@ pub fn pick(
     construction: Construction,
     origin: Vec3,
     direction: Vec3,
+    target: Target,
 ) -> Option<UVec3> {
     let n = grid.cells_per_axis as f32;
     // In grid units: the box spans [0, n]³.
@@ -100,10 +110,12 @@ pub fn pick(
         let id = cell.as_uvec3();
         let report = inspect(spheres, iso, grid, construction, id);
         let vertex = |e: u8| report.edges.iter().find(|c| c.edge == e).map(|c| c.vertex);
-        let hit = report.triangles.iter().any(|t| {
-            let [a, b, c] = t.map(|e| vertex(e).expect("a triangle's edges are crossed"));
-            ray_triangle(origin, dir, [a, b, c]).is_some()
-        });
+        let crossed = report.case != 0 && report.case != 255;
+        let hit = crossed && target == Target::CrossedCell
+            || report.triangles.iter().any(|t| {
+                let [a, b, c] = t.map(|e| vertex(e).expect("a triangle's edges are crossed"));
+                ray_triangle(origin, dir, [a, b, c]).is_some()
+            });
         if hit {
             return Some(id);
         }
@@ -151,8 +163,14 @@ mod tests {
     fn a_ray_at_a_sphere_picks_a_crossed_cell_on_its_near_side() {
         let spheres = [Sphere { center: Vec3::ZERO, radius: 0.5, velocity: Vec3::ZERO }];
         let grid = Grid { cells_per_axis: 16 };
-        let cell = pick(&spheres, 1.0, grid, Construction::default(), Vec3::new(0.03, 0.02, 3.0), -Vec3::Z)
+        let origin = Vec3::new(0.03, 0.02, 3.0);
+        let cell = pick(&spheres, 1.0, grid, Construction::default(), origin, -Vec3::Z, Target::Surface)
             .expect("the ray meets the sphere");
+        let first = pick(&spheres, 1.0, grid, Construction::default(), origin, -Vec3::Z, Target::CrossedCell);
+        assert!(
+            first.is_some_and(|c| c.z >= cell.z),
+            "the first crossed cell is no farther than the surface"
+        );
         let report = inspect(&spheres, 1.0, grid, Construction::default(), cell);
         assert!(report.case != 0 && report.case != 255);
         // The near side: the cell holds z ≈ +0.5.
@@ -162,9 +180,9 @@ mod tests {
             assert!((e.vertex.length() - 0.5).abs() < 0.02, "vertex {} near the sphere", e.vertex);
         }
         assert_eq!(report.triangles.len() as u8, crate::tables::CASE_TRIANGLES[report.case as usize]);
-        assert_eq!(
-            pick(&spheres, 1.0, grid, Construction::default(), Vec3::new(0.9, 0.9, 3.0), -Vec3::Z),
-            None
-        );
+        let miss = Vec3::new(0.9, 0.9, 3.0);
+        for target in [Target::Surface, Target::CrossedCell] {
+            assert_eq!(pick(&spheres, 1.0, grid, Construction::default(), miss, -Vec3::Z, target), None);
+        }
     }
 }

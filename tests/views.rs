@@ -313,6 +313,13 @@ fn the_inspector_reads_the_picked_cell_as_the_oracle_does() {
         }
         // The background picks nothing.
         assert_eq!(o.renderer.pick(2.0, 2.0), None);
+        // In the cells view a click picks the first crossed cell's box the ray enters, which is no
+        // farther from the eye than the surface's cell.
+        o.renderer.set_settings(o.renderer.settings().with_parameter("grid", "cells").unwrap()).unwrap();
+        let boxed = o.renderer.pick(centre.x, centre.y).expect("a box under the sphere's centre");
+        assert!(grid.point(boxed).distance(eye) <= grid.point(cell).distance(eye) + 1e-6);
+        assert_ne!(o.renderer.inspect(boxed).case, 0);
+        o.renderer.set_settings(o.renderer.settings().with_parameter("grid", "none").unwrap()).unwrap();
         // Selected, the cell is drawn highlighted; deselected, the frame is as before.
         let plain = o.render_rgba();
         o.renderer.select_cell(Some(cell));

@@ -4,8 +4,8 @@
 use super::Renderer;
 use crate::ParamError;
 use crate::Settings;
-use crate::inspect::{self, CellReport};
-use crate::params::view::Projection;
+use crate::inspect::{self, CellReport, Target};
+use crate::params::view::{GridView, Projection};
 use crate::reference::Construction;
 use crate::uniforms::LightUniform;
 use glam::{Mat4, UVec3, Vec3};
@@ -22,8 +22,9 @@ impl Renderer {
         Construction { interpolation: self.settings.view.interpolation, blend: self.settings.view.blend }
     }
 
-    /// The cell under pixel (`x`, `y`) of the output (origin top left): the first cell the surface
-    /// crosses along the ray from the eye, or `None` over the background.
+    /// The cell under pixel (`x`, `y`) of the output (origin top left): the cell whose triangles the ray
+    /// from the eye meets first (in the cells view, the first crossed cell it enters), or `None` over the
+    /// background.
     pub fn pick(&self, x: f32, y: f32) -> Option<UVec3> {
         let (width, height) = (self.size.0 as f32, self.size.1 as f32);
         let ndc = glam::Vec2::new(2.0 * x / width - 1.0, 1.0 - 2.0 * y / height);
@@ -31,7 +32,9 @@ impl Renderer {
         let near = inverse.project_point3(ndc.extend(0.0));
         let far = inverse.project_point3(ndc.extend(1.0));
         let s = &self.settings;
-        inspect::pick(self.scene.spheres(), s.iso, self.grid(), self.construction(), near, far - near)
+        // In the cells view, the box under the pointer; otherwise the surface.
+        let target = if s.view.grid == GridView::Cells { Target::CrossedCell } else { Target::Surface };
+        inspect::pick(self.scene.spheres(), s.iso, self.grid(), self.construction(), near, far - near, target)
     }
 
     /// Where world point `p` lands in the output, in pixels from the top left.
