@@ -5,7 +5,7 @@
 
 use crate::gpu::bind_buffers_to;
 use crate::mesh_buffers::MeshBuffers;
-use crate::params::view::{ColorBy, Display, GridView, Slice, ViewOptions};
+use crate::params::view::{ColorBy, Display, GridView, Projection, Slice, ViewOptions};
 use crate::reference::Grid;
 use crate::scene_buffers::SceneBuffers;
 use crate::uniforms::ShadingUniform;
@@ -47,6 +47,8 @@ pub fn needed(options: &ViewOptions, selected: bool) -> bool {
         || options.color_by != ColorBy::None
         || options.slice.is_some()
         || options.ambiguous
+        // Orthographic views carry the axis gizmo: without perspective, depth cues are few.
+        || options.projection == Projection::Orthographic
 }
 
 /// One renderer's view resources for one grid: the slice's samples and contour, the overlay counts
