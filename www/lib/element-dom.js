@@ -72,14 +72,16 @@ input[type="range"] { width: 100%; accent-color: var(--accent); }
 input[type="color"] { width: 100%; height: 22px; border: none; background: none; padding: 0; }
 input[type="checkbox"] { accent-color: var(--accent); justify-self: start; }
 .buttons { display: flex; gap: 6px; margin: 8px 0 4px; flex-wrap: wrap; }
-button {
-  flex: 1;
-  padding: 5px 8px;
+button, select {
   color: var(--text);
   background: #232838;
   border: 1px solid #343b50;
-  border-radius: 6px;
   font: inherit;
+}
+button {
+  flex: 1;
+  padding: 5px 8px;
+  border-radius: 6px;
   cursor: pointer;
 }
 button:hover { background: #2c3245; }
@@ -136,11 +138,7 @@ select {
   width: 100%;
   min-width: 0;
   padding: 2px 4px;
-  color: var(--text);
-  background: #232838;
-  border: 1px solid #343b50;
   border-radius: 4px;
-  font: inherit;
 }
 select:focus-visible { outline: 2px solid var(--accent); outline-offset: 1px; }
 details.group { border-top: 1px solid #2a3042; }
