@@ -1,10 +1,11 @@
 //! One renderer for every output: it owns the scene, the settings and the passes, and draws a frame into
 //! any texture view of its format (a canvas's current texture or an offscreen texture).
 
-mod camera;
+mod inspector;
 mod limits;
 mod readback;
 mod stats;
+mod uniforms;
 
 pub use limits::max_resolution;
 pub use readback::OverlayReadback;
@@ -15,16 +16,13 @@ use crate::context::{GpuContext, RendererToken};
 use crate::field_pass::FieldPass;
 use crate::marching_cubes::MarchingCubesPass;
 use crate::mesh_buffers::{Capacity, MeshBuffers};
-use crate::params::view::{Blend, Interpolation, Projection};
 use crate::params::{self, Camera, Material, ParamError, Settings};
 use crate::reference::Grid;
-use crate::scene::{BOX_HALF_EXTENT, Scene};
+use crate::scene::Scene;
 use crate::scene_buffers::SceneBuffers;
 use crate::shade::{MULTISAMPLES, ShadePass, ViewFrame};
 use crate::timing::{StageTimes, Timing};
-use crate::uniforms::{GridUniform, ShadingUniform};
 use crate::views::{self, ViewState};
-use camera::{lights, view_matrix};
 use glam::{UVec3, Vec3};
 use limits::{automatic_capacity, check_resolution_fits, check_size, storage_limit};
 use stats::StatsRing;
@@ -333,53 +331,6 @@ impl Renderer {
         self.blocks.bind(&self.device, &self.scene_buffers, &self.mesh);
         self.field.bind(&self.device, &self.scene_buffers, &self.mesh);
         self.marching.bind(&self.device, &self.scene_buffers, &self.mesh);
-    }
-
-    fn write_uniforms(&self) {
-        let grid = self.grid();
-        let spheres = self.scene.spheres();
-        let capacity = self.mesh.capacity;
-        let grid_uniform = GridUniform {
-            box_min: [-BOX_HALF_EXTENT; 3],
-            cell_size: grid.cell_size(),
-            iso: self.settings.iso,
-            cells_per_axis: grid.cells_per_axis,
-            sphere_count: spheres.len() as u32,
-            max_blocks: capacity.blocks,
-            max_vertices: capacity.vertices,
-            max_indices: capacity.indices,
-            max_cells: capacity.cells,
-            flags: (self.settings.view.interpolation == Interpolation::Midpoint) as u32
-                | ((self.settings.view.blend == Blend::Max) as u32) << 1,
-        };
-        self.queue.write_buffer(&self.scene_buffers.grid, 0, bytemuck::bytes_of(&grid_uniform));
-        let packed: Vec<[f32; 4]> = spheres.iter().map(|s| s.to_gpu()).collect();
-        self.queue.write_buffer(&self.scene_buffers.spheres, 0, bytemuck::cast_slice(&packed));
-
-        let s = &self.settings;
-        let eye = s.camera.eye();
-        let mut shading = ShadingUniform {
-            view_proj: self.view_projection().to_cols_array_2d(),
-            view: view_matrix(eye).to_cols_array_2d(),
-            camera_position: eye.to_array(),
-            ambient: s.material.ambient,
-            camera_forward: (-eye).normalize().to_array(),
-            orthographic: (s.view.projection == Projection::Orthographic) as u32,
-            base_color: s.material.base_color.to_array(),
-            diffuse: s.material.diffuse,
-            specular: s.material.specular,
-            shininess: s.material.shininess,
-            encode_srgb: (!self.format.is_srgb()) as u32,
-            box_half_extent: BOX_HALF_EXTENT,
-            viewport: [self.size.0 as f32, self.size.1 as f32],
-            iso: s.iso,
-            selected: self.selected.is_some() as u32,
-            selected_cell: self.selected.unwrap_or(UVec3::ZERO).to_array(),
-            lights: lights(&self.settings),
-            ..Default::default()
-        };
-        views::view_fields(&mut shading, &s.view, grid, (-eye).normalize());
-        self.queue.write_buffer(self.shade.uniform(), 0, bytemuck::bytes_of(&shading));
     }
 
     /// Records the extraction passes: blocks, field, marching cubes.

@@ -9,7 +9,7 @@ import {
 import { Inspector } from './lib/inspector.js';
 import { wireCameraInput } from './lib/camera-input.js';
 import { buildPanel, listedControls } from './lib/panel.js';
-import { elementStyle, TEMPLATE } from './lib/element-dom.js';
+import { elementStyle, flasher, TEMPLATE } from './lib/element-dom.js';
 import { Hud } from './lib/hud.js';
 import { applySetting, isRendererSetting } from './lib/view-settings.js';
 import { canvasPixels, pixelRatio } from './lib/canvas-size.js';
@@ -80,7 +80,8 @@ export class MetaballsView extends HTMLElement {
   #held = false;
   #reflecting = false;
   #showPanel = () => {};
-  #timers = {};
+  // Shows a message in one of the shadow root's boxes for a while: flash(id, text, ms).
+  #flash;
   #root;
   #canvas;
   #inspector;
@@ -103,8 +104,15 @@ export class MetaballsView extends HTMLElement {
     const $ = (id) => this.#root.getElementById(id);
     $('play').addEventListener('click', () => { this.play(); this.#canvas.focus(); });
     $('retry').addEventListener('click', () => hub.retry());
+    this.#flash = flasher(this.#root);
     this.#inspector = new Inspector(this.#root, GALLERY.cube, {
-      onClose: () => this.deselect(),
+      view: () => this.#view,
+      iso: () => this.#state.iso,
+      onShow: (report) => {
+        this.#dirty = Math.max(this.#dirty, 2);
+        hub.requestFrame();
+        this.dispatchEvent(new CustomEvent('metaballs-inspect', { detail: { cell: report } }));
+      },
       onClass: (k) => this.#showPanel(this.#state, k),
     });
     wireCameraInput(this, this.#canvas, {
@@ -115,7 +123,8 @@ export class MetaballsView extends HTMLElement {
     }, {
       ...this.#actions,
       hint: (text) => this.#flash('wheel-hint', text, 1500),
-      pick: (x, y) => this.#pick(x, y),
+      pick: (x, y) => this.#inspector.pick(x * (this.#canvas.width / Math.max(1, this.#canvas.clientWidth)),
+        y * (this.#canvas.height / Math.max(1, this.#canvas.clientHeight))),
       deselect: () => this.deselect(),
     });
     new ResizeObserver(([entry]) => this.#resize(entry)).observe(this.#canvas);
@@ -400,7 +409,7 @@ export class MetaballsView extends HTMLElement {
       return false;
     }
     this.#hud.update(now, view);
-    if (this.#inspector.due(now)) this.#showInspection(view.inspect());
+    this.#inspector.follow(now);
     const error = view.gpu_error();
     if (error) {
       this.fail('The GPU reported an error', error);
@@ -411,33 +420,11 @@ export class MetaballsView extends HTMLElement {
 
   // ---------------------------------------------------------------- the cell inspector
 
-  // Selects the cell under CSS pixel (x, y) of the canvas, or deselects over the background.
-  #pick(x, y) {
-    const view = this.#view;
-    if (!view) return;
-    const ratio = this.#canvas.width / Math.max(1, this.#canvas.clientWidth);
-    this.#showInspection(view.pick_cell(x * ratio, y * ratio));
-  }
-
-  #showInspection(report) {
-    this.#inspector.show(report ?? null, this.#state.iso);
-    this.#dirty = Math.max(this.#dirty, 2);
-    hub.requestFrame();
-    this.dispatchEvent(new CustomEvent('metaballs-inspect', { detail: { cell: this.inspected } }));
-  }
-
   /** Selects cell (x, y, z) for the inspector; returns its report (null outside the grid). */
-  inspectCell(x, y, z) {
-    if (!this.#view) return null;
-    this.#showInspection(this.#view.select_cell(x, y, z));
-    return this.inspected;
-  }
+  inspectCell(x, y, z) { return this.#inspector.select(x, y, z); }
 
   /** Lets go of the inspected cell (also Esc, the × button, or a click on the background). */
-  deselect() {
-    this.#view?.clear_selection();
-    if (this.inspected) this.#showInspection(null);
-  }
+  deselect() { this.#inspector.deselect(); }
 
   /** What marching cubes decided in the inspected cell, as last shown; null when none is selected. */
   get inspected() { return this.#inspector.report; }
@@ -471,14 +458,6 @@ export class MetaballsView extends HTMLElement {
 
   #notice(text, ms = 8000) {
     this.#flash('notice', text, ms);
-  }
-
-  #flash(id, text, ms) {
-    const box = this.#root.getElementById(id);
-    box.textContent = text;
-    box.hidden = false;
-    clearTimeout(this.#timers[id]);
-    this.#timers[id] = setTimeout(() => { box.hidden = true; }, ms);
   }
 
   /** Shows a short message inside the figure (pages use it for problems with their links). */

@@ -77,34 +77,63 @@ const REFRESH_MS = 200;
 
 const format = (v, digits = 3) => (Math.abs(v) >= 1000 ? v.toExponential(2) : v.toFixed(digits));
 
-/** The inspector box in `root` (`#inspector`). */
+/**
+ * The cell inspector of one figure: selects cells in its wasm view and shows their reports in the box
+ * `#inspector` of `root`.
+ */
 export class Inspector {
   #box;
   #cube;
-  #onClose;
-  #onClass;
+  #host;
   #report = null;
   #shownAt = 0;
 
-  /** `onClose()` deselects; `onClass(k)` marks class k in the gallery (null for none). */
-  constructor(root, cube, { onClose, onClass }) {
+  /**
+   * `host` has view() (the wasm view or null), iso(), onShow(report) after each change or refresh,
+   * and onClass(k) to mark class k in the gallery (null for none).
+   */
+  constructor(root, cube, host) {
     this.#box = root.getElementById('inspector');
     this.#cube = cube;
-    this.#onClose = onClose;
-    this.#onClass = onClass;
+    this.#host = host;
     this.#box.addEventListener('click', (e) => {
-      if (e.target.closest('.close')) this.#onClose();
+      if (e.target.closest('.close')) this.deselect();
     });
+  }
+
+  /** Selects the cell under canvas pixel (x, y) (device pixels), or nothing over the background. */
+  pick(x, y) {
+    const view = this.#host.view();
+    if (view) this.#update(view.pick_cell(x, y));
+  }
+
+  /** Selects cell (x, y, z); returns its report (null outside the grid or before the view starts). */
+  select(x, y, z) {
+    const view = this.#host.view();
+    if (view) this.#update(view.select_cell(x, y, z));
+    return this.#report;
+  }
+
+  /** Lets go of the cell. */
+  deselect() {
+    this.#host.view()?.clear_selection();
+    if (this.#report) this.#update(null);
+  }
+
+  /** Refreshes the shown figures while the spheres move (a few times a second). */
+  follow(now) {
+    const view = this.#host.view();
+    if (view && this.#report !== null && now - this.#shownAt > REFRESH_MS) this.#update(view.inspect());
+  }
+
+  #update(report) {
+    this.show(report ?? null, this.#host.iso());
+    this.#host.onShow(this.#report);
   }
 
   /** The report shown, or null. */
   get report() {
     return this.#report;
-  }
-
-  /** True when a cell is shown and its figures are due for a refresh. */
-  due(now) {
-    return this.#report !== null && now - this.#shownAt > REFRESH_MS;
   }
 
   /** Shows `report` (from `View.inspect`), or hides the box for null. */
@@ -113,7 +142,7 @@ export class Inspector {
     this.#shownAt = performance.now();
     if (!report) {
       this.#box.hidden = true;
-      this.#onClass(null);
+      this.#host.onClass(null);
       return;
     }
     const [x, y, z] = report.cell;
@@ -145,6 +174,6 @@ export class Inspector {
     this.#box.querySelector('.drawing').append(cellDrawing(this.#cube, inside, report.triangles,
       (e) => t.get(e) ?? 0.5, { size: 96, color: classColor(report.class), label: `case ${report.case}` }));
     this.#box.hidden = false;
-    this.#onClass(report.class);
+    this.#host.onClass(report.class);
   }
 }

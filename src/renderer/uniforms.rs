@@ -1,62 +1,66 @@
-//! The camera and the lights as the shaders take them, and what the teaching views ask of the
-//! renderer: picking and inspecting a cell, projecting points to pixels.
+//! What the shaders read each frame: the grid and the spheres for the compute passes; the camera,
+//! the lights and the view options for the shading and the teaching views.
 
 use super::Renderer;
-use crate::ParamError;
 use crate::Settings;
-use crate::inspect::{self, CellReport, Target};
-use crate::params::view::{GridView, Projection};
-use crate::reference::Construction;
-use crate::uniforms::LightUniform;
+use crate::params::view::{Blend, Interpolation, Projection};
+use crate::scene::BOX_HALF_EXTENT;
+use crate::uniforms::{GridUniform, LightUniform, ShadingUniform};
+use crate::views;
 use glam::{Mat4, UVec3, Vec3};
 
 impl Renderer {
-    /// Sets parameter `name` (a view option, light strength or the field of view; see
-    /// `Settings::with_parameter`) from its text.
-    pub fn set_parameter(&mut self, name: &str, text: &str) -> Result<(), ParamError> {
-        self.set_settings(self.settings.with_parameter(name, text)?)
-    }
+    pub(super) fn write_uniforms(&self) {
+        let grid = self.grid();
+        let spheres = self.scene.spheres();
+        let capacity = self.mesh.capacity;
+        let grid_uniform = GridUniform {
+            box_min: [-BOX_HALF_EXTENT; 3],
+            cell_size: grid.cell_size(),
+            iso: self.settings.iso,
+            cells_per_axis: grid.cells_per_axis,
+            sphere_count: spheres.len() as u32,
+            max_blocks: capacity.blocks,
+            max_vertices: capacity.vertices,
+            max_indices: capacity.indices,
+            max_cells: capacity.cells,
+            flags: (self.settings.view.interpolation == Interpolation::Midpoint) as u32
+                | ((self.settings.view.blend == Blend::Max) as u32) << 1,
+        };
+        self.queue.write_buffer(&self.scene_buffers.grid, 0, bytemuck::bytes_of(&grid_uniform));
+        let packed: Vec<[f32; 4]> = spheres.iter().map(|s| s.to_gpu()).collect();
+        self.queue.write_buffer(&self.scene_buffers.spheres, 0, bytemuck::cast_slice(&packed));
 
-    /// How the surface is built (vertex placement and blend), as the oracle takes it.
-    pub fn construction(&self) -> Construction {
-        Construction { interpolation: self.settings.view.interpolation, blend: self.settings.view.blend }
-    }
-
-    /// The cell under pixel (`x`, `y`) of the output (origin top left): the cell whose triangles the ray
-    /// from the eye meets first (in the cells view, the first crossed cell it enters), or `None` over the
-    /// background.
-    pub fn pick(&self, x: f32, y: f32) -> Option<UVec3> {
-        let (width, height) = (self.size.0 as f32, self.size.1 as f32);
-        let ndc = glam::Vec2::new(2.0 * x / width - 1.0, 1.0 - 2.0 * y / height);
-        let inverse = self.view_projection().inverse();
-        let near = inverse.project_point3(ndc.extend(0.0));
-        let far = inverse.project_point3(ndc.extend(1.0));
         let s = &self.settings;
-        // In the cells view, the box under the pointer; otherwise the surface.
-        let target = if s.view.grid == GridView::Cells { Target::CrossedCell } else { Target::Surface };
-        inspect::pick(self.scene.spheres(), s.iso, self.grid(), self.construction(), near, far - near, target)
+        let eye = s.camera.eye();
+        let mut shading = ShadingUniform {
+            view_proj: self.view_projection().to_cols_array_2d(),
+            view: view_matrix(eye).to_cols_array_2d(),
+            camera_position: eye.to_array(),
+            ambient: s.material.ambient,
+            camera_forward: (-eye).normalize().to_array(),
+            orthographic: (s.view.projection == Projection::Orthographic) as u32,
+            base_color: s.material.base_color.to_array(),
+            diffuse: s.material.diffuse,
+            specular: s.material.specular,
+            shininess: s.material.shininess,
+            encode_srgb: (!self.format.is_srgb()) as u32,
+            box_half_extent: BOX_HALF_EXTENT,
+            viewport: [self.size.0 as f32, self.size.1 as f32],
+            iso: s.iso,
+            selected: self.selected.is_some() as u32,
+            selected_cell: self.selected.unwrap_or(UVec3::ZERO).to_array(),
+            lights: lights(&self.settings),
+            ..Default::default()
+        };
+        views::view_fields(&mut shading, &s.view, grid, (-eye).normalize());
+        self.queue.write_buffer(self.shade.uniform(), 0, bytemuck::bytes_of(&shading));
     }
 
     /// Where world point `p` lands in the output, in pixels from the top left.
     pub fn project(&self, p: Vec3) -> glam::Vec2 {
         let ndc = self.view_projection().project_point3(p);
         glam::Vec2::new((ndc.x + 1.0) * 0.5 * self.size.0 as f32, (1.0 - ndc.y) * 0.5 * self.size.1 as f32)
-    }
-
-    /// Shows `cell` in the inspector (highlighted in the view every frame), or nothing.
-    pub fn select_cell(&mut self, cell: Option<UVec3>) {
-        let n = self.settings.resolution;
-        self.selected = cell.filter(|c| c.max_element() < n);
-    }
-
-    /// The cell the inspector shows.
-    pub fn selected_cell(&self) -> Option<UVec3> {
-        self.selected
-    }
-
-    /// What marching cubes decides in `cell` now.
-    pub fn inspect(&self, cell: UVec3) -> CellReport {
-        inspect::inspect(self.scene.spheres(), self.settings.iso, self.grid(), self.construction(), cell)
     }
 
     /// The camera's projection times its view: perspective, or orthographic with the same framing at
@@ -84,13 +88,13 @@ impl Renderer {
     }
 }
 
-pub(super) fn view_matrix(eye: Vec3) -> Mat4 {
+fn view_matrix(eye: Vec3) -> Mat4 {
     glam::camera::rh::view::look_at_mat4(eye, Vec3::ZERO, Vec3::Y)
 }
 
 /// The lights `settings` turn on: the point light where the settings put it, in white; a cool
 /// directional light from the upper left; a warm spot from the front left aimed at the box's centre.
-pub(super) fn lights(settings: &Settings) -> [LightUniform; 3] {
+fn lights(settings: &Settings) -> [LightUniform; 3] {
     let on = settings.view.lights;
     let spot_position = Vec3::new(-1.8, 2.6, 2.6);
     let half_angle = settings.view.spot_angle.to_radians();

@@ -1,0 +1,52 @@
+//! What the teaching views ask of the renderer: options by name, and picking and inspecting a cell.
+
+use super::Renderer;
+use crate::ParamError;
+use crate::inspect::{self, CellReport, Target};
+use crate::params::view::GridView;
+use crate::reference::Construction;
+use glam::UVec3;
+
+impl Renderer {
+    /// Sets parameter `name` (a view option, light strength or the field of view; see
+    /// `Settings::with_parameter`) from its text.
+    pub fn set_parameter(&mut self, name: &str, text: &str) -> Result<(), ParamError> {
+        self.set_settings(self.settings.with_parameter(name, text)?)
+    }
+
+    /// How the surface is built (vertex placement and blend), as the oracle takes it.
+    pub fn construction(&self) -> Construction {
+        Construction { interpolation: self.settings.view.interpolation, blend: self.settings.view.blend }
+    }
+
+    /// The cell under pixel (`x`, `y`) of the output (origin top left): the cell whose triangles the ray
+    /// from the eye meets first (in the cells view, the first crossed cell it enters), or `None` over the
+    /// background.
+    pub fn pick(&self, x: f32, y: f32) -> Option<UVec3> {
+        let (width, height) = (self.size.0 as f32, self.size.1 as f32);
+        let ndc = glam::Vec2::new(2.0 * x / width - 1.0, 1.0 - 2.0 * y / height);
+        let inverse = self.view_projection().inverse();
+        let near = inverse.project_point3(ndc.extend(0.0));
+        let far = inverse.project_point3(ndc.extend(1.0));
+        let s = &self.settings;
+        // In the cells view, the box under the pointer; otherwise the surface.
+        let target = if s.view.grid == GridView::Cells { Target::CrossedCell } else { Target::Surface };
+        inspect::pick(self.scene.spheres(), s.iso, self.grid(), self.construction(), near, far - near, target)
+    }
+
+    /// Shows `cell` in the inspector (highlighted in the view every frame), or nothing.
+    pub fn select_cell(&mut self, cell: Option<UVec3>) {
+        let n = self.settings.resolution;
+        self.selected = cell.filter(|c| c.max_element() < n);
+    }
+
+    /// The cell the inspector shows.
+    pub fn selected_cell(&self) -> Option<UVec3> {
+        self.selected
+    }
+
+    /// What marching cubes decides in `cell` now.
+    pub fn inspect(&self, cell: UVec3) -> CellReport {
+        inspect::inspect(self.scene.spheres(), self.settings.iso, self.grid(), self.construction(), cell)
+    }
+}
