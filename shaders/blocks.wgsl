@@ -30,6 +30,7 @@ fn classify_blocks(@builtin(global_invocation_id) id: vec3<u32>) {
     var lower = 0.0;
     var upper = 0.0;
     var unbounded = false;
+    let by_max = blend_max();
     for (var i = 0u; i < grid.sphere_count; i++) {
         let s = spheres[i];
         let d = length(centre - s.xyz);
@@ -43,7 +44,7 @@ fn classify_blocks(@builtin(global_invocation_id) id: vec3<u32>) {
             high_term = r2 / (gap * gap);
         }
         // With blend by max the bounds of the largest term are the largest bounds.
-        if (blend_max()) {
+        if (by_max) {
             lower = max(lower, low_term);
             upper = max(upper, high_term);
         } else {

@@ -91,6 +91,12 @@ fn slot_of(workgroup: vec3<u32>) -> u32 {
     return workgroup.x + workgroup.y * DISPATCH_ROW;
 }
 
+// Corner c of a cell sits at (c bit 0 xor c bit 1, c bit 1, c bit 2): 0 (0,0,0), 1 (1,0,0), 2 (1,1,0),
+// 3 (0,1,0), then the same at z = 1 (src/tables.rs, CORNER_OFFSETS).
+fn corner_offset(c: u32) -> vec3<u32> {
+    return vec3<u32>(((c >> 1u) ^ c) & 1u, (c >> 1u) & 1u, (c >> 2u) & 1u);
+}
+
 // f(p) = Σ r² / |p − c|² (or the largest term, with blend by max: the union of separate spheres)
 fn field_at(p: vec3<f32>) -> f32 {
     var f = 0.0;
@@ -113,12 +119,13 @@ fn field_at(p: vec3<f32>) -> f32 {
 fn outward_gradient(p: vec3<f32>) -> vec3<f32> {
     var g = vec3<f32>(0.0);
     var largest = -1.0;
+    let by_max = blend_max();
     for (var i = 0u; i < grid.sphere_count; i++) {
         let s = spheres[i];
         let d = p - s.xyz;
         let d2 = max(dot(d, d), MIN_DISTANCE_SQUARED);
         let term = d * (s.w * s.w / (d2 * d2));
-        if (blend_max()) {
+        if (by_max) {
             let value = s.w * s.w / d2;
             if (value > largest) {
                 largest = value;

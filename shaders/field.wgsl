@@ -13,10 +13,6 @@
 // The active cells, each as slot * 64 + cell.
 @group(0) @binding(6) var<storage, read_write> active_cells: array<u32>;
 
-fn corner_offset(c: u32) -> vec3<u32> {
-    return vec3<u32>(((c >> 1u) ^ c) & 1u, (c >> 1u) & 1u, (c >> 2u) & 1u);
-}
-
 fn active_slot(workgroup: vec3<u32>) -> u32 {
     let slot = slot_of(workgroup);
     if (slot >= min(atomicLoad(&counters.active_blocks), grid.max_blocks)) {

@@ -27,12 +27,6 @@
 @group(0) @binding(10) var<storage, read_write> vertices: array<f32>;
 @group(0) @binding(11) var<storage, read_write> indices: array<u32>;
 
-// Corner c of a cell sits at (c bit 0 xor c bit 1, c bit 1, c bit 2): 0 (0,0,0), 1 (1,0,0), 2 (1,1,0),
-// 3 (0,1,0), then the same at z = 1 (src/tables.rs, CORNER_OFFSETS).
-fn corner_offset(c: u32) -> vec3<u32> {
-    return vec3<u32>(((c >> 1u) ^ c) & 1u, (c >> 1u) & 1u, (c >> 2u) & 1u);
-}
-
 // Edge e starts at the corner returned in xyz and runs along axis w (src/tables.rs, EDGE_CORNERS).
 fn edge_start(e: u32) -> vec4<u32> {
     switch e {

@@ -93,7 +93,7 @@ fn clip_of(p: vec3<f32>) -> vec4<f32> {
 }
 
 // A corner of a screen-aligned square of `pixels` around clip position `clip`, for corner k of 6.
-fn square_corner(clip: vec4<f32>, k: u32, pixels: f32) -> vec4<f32> {
+fn screen_square_corner(clip: vec4<f32>, k: u32, pixels: f32) -> vec4<f32> {
     var corners = array<vec2<f32>, 6>(
         vec2<f32>(-1.0, -1.0), vec2<f32>(1.0, -1.0), vec2<f32>(1.0, 1.0),
         vec2<f32>(-1.0, -1.0), vec2<f32>(1.0, 1.0), vec2<f32>(-1.0, 1.0),
@@ -209,7 +209,7 @@ fn point_vertex(@builtin(vertex_index) v: u32, @builtin(instance_index) i: u32) 
     let n = mesh_normal(i);
     let albedo = shading.base_color;
     let color = max(lit(albedo, p, n), lit(albedo, p, -n));
-    return mark(square_corner(clip_of(p), v, 1.6), color, 1.0);
+    return mark(screen_square_corner(clip_of(p), v, 1.6), color, 1.0);
 }
 
 // A short segment along each vertex normal.
@@ -332,10 +332,10 @@ fn selected_edge_vertex(@builtin(vertex_index) v: u32) -> MarkOut {
 // The selected cell's corners as dots: orange inside (f > iso), blue outside.
 @vertex
 fn selected_corner_vertex(@builtin(vertex_index) v: u32, @builtin(instance_index) c: u32) -> MarkOut {
-    let o = vec3<u32>(((c >> 1u) ^ c) & 1u, (c >> 1u) & 1u, (c >> 2u) & 1u);
+    let o = corner_offset(c);
     let inside = selected_corner_value(o) > grid.iso;
     let color = select(vec3<f32>(0.25, 0.55, 1.0), vec3<f32>(1.0, 0.5, 0.1), inside);
-    return mark(square_corner(clip_of(grid_point(shading.selected_cell + o)), v, 4.0), color, 1.0);
+    return mark(screen_square_corner(clip_of(grid_point(shading.selected_cell + o)), v, 4.0), color, 1.0);
 }
 
 // Three axes, x red, y green, z blue, turned with the camera (drawn into a small corner viewport).

@@ -3,6 +3,7 @@
 //! figure of the 15 cases, from the representatives below.
 
 use crate::tables::CORNER_OFFSETS;
+use std::sync::OnceLock;
 
 /// One case of each class, in the classic order: 0 nothing inside; 1 one corner; 2 an edge; 3 two
 /// corners across a face; 4 two corners across the cube; 5 three corners of a face; 6 an edge and the
@@ -75,13 +76,16 @@ fn canonical(case: u8, rotations: &[[usize; 8]]) -> u8 {
     rotations.iter().flat_map(|perm| [rotate(perm, case), !rotate(perm, case)]).min().unwrap()
 }
 
-/// The class (0 to 14) of each of the 256 cases.
-pub fn case_classes() -> [u8; 256] {
-    let rotations = rotations();
-    let keys: Vec<u8> = CLASS_REPRESENTATIVES.iter().map(|&r| canonical(r, &rotations)).collect();
-    std::array::from_fn(|case| {
-        let key = canonical(case as u8, &rotations);
-        keys.iter().position(|&k| k == key).expect("every case is in one of the 15 classes") as u8
+/// The class (0 to 14) of each of the 256 cases (computed once).
+pub fn case_classes() -> &'static [u8; 256] {
+    static CLASSES: OnceLock<[u8; 256]> = OnceLock::new();
+    CLASSES.get_or_init(|| {
+        let rotations = rotations();
+        let keys: Vec<u8> = CLASS_REPRESENTATIVES.iter().map(|&r| canonical(r, &rotations)).collect();
+        std::array::from_fn(|case| {
+            let key = canonical(case as u8, &rotations);
+            keys.iter().position(|&k| k == key).expect("every case is in one of the 15 classes") as u8
+        })
     })
 }
 

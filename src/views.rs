@@ -3,7 +3,7 @@
 //! and an axis gizmo. Everything is drawn from the buffers the compute passes fill, with indirect draws
 //! whose counts a one-invocation pass writes on the GPU: no readback.
 
-use crate::gpu::bind_buffers_to;
+use crate::gpu::{bind_buffers, bind_buffers_to};
 use crate::mesh_buffers::MeshBuffers;
 use crate::params::view::{ColorBy, Display, GridView, Projection, Slice, ViewOptions};
 use crate::reference::Grid;
@@ -87,12 +87,10 @@ impl ViewState {
         let segments = buffer("overlays: slice contour", 2 * n * n * 32, U::COPY_SRC);
         let overlays =
             buffer("overlays: counts and draws", OVERLAY_BYTES, U::INDIRECT | U::COPY_DST | U::COPY_SRC);
-        let group = |label, layout: &wgpu::BindGroupLayout, buffers: &[(u32, &wgpu::Buffer)]| {
-            bind_buffers_to(device, label, layout, buffers)
-        };
         let p = pipelines;
         Self {
-            draw_group: group(
+            draw_group: bind_buffers_to(
+                device,
                 "views: bind group",
                 &p.layout,
                 &[
@@ -110,14 +108,16 @@ impl ViewState {
                     (23, &p.case_classes),
                 ],
             ),
-            sample_group: group(
+            sample_group: bind_buffers(
+                device,
                 "overlays: slice sample bind group",
-                &p.sample_slice.get_bind_group_layout(0),
+                &p.sample_slice,
                 &[(0, &scene.grid), (1, &scene.spheres), (20, shading), (21, &slice_values)],
             ),
-            contour_group: group(
+            contour_group: bind_buffers(
+                device,
                 "overlays: slice contour bind group",
-                &p.contour_slice.get_bind_group_layout(0),
+                &p.contour_slice,
                 &[
                     (0, &scene.grid),
                     (20, shading),
@@ -127,9 +127,10 @@ impl ViewState {
                     (25, &p.square_segments),
                 ],
             ),
-            plan_group: group(
+            plan_group: bind_buffers(
+                device,
                 "overlays: plan bind group",
-                &p.plan.get_bind_group_layout(0),
+                &p.plan,
                 &[(0, &scene.grid), (2, &mesh.counters), (24, &overlays)],
             ),
             grid,
