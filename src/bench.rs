@@ -3,7 +3,9 @@
 //! scenes for comparison.
 
 use crate::offscreen::Offscreen;
+use crate::params::view::Mesher;
 use crate::reference::{self, Grid};
+use crate::renderer::MeshSource;
 use crate::timing::{STAGES, StageTimes};
 use crate::{ParamError, Settings};
 use serde::Serialize;
@@ -14,14 +16,18 @@ use std::time::Instant;
 pub struct Record {
     /// The teaching view measured (`display=wireframe&grid=cells`), empty for the plain surface.
     pub view: String,
+    /// The mesher that made the mesh: `gpu` or `cpu`.
+    pub mesher: String,
     pub resolution: u32,
     pub spheres: u32,
     /// Median wall time of a whole frame, submission to GPU idle, in milliseconds.
     pub frame_ms: f64,
     /// Median GPU time per stage (`STAGES` order), when the adapter has timestamp queries.
     pub stage_ms: Option<[f64; 4]>,
-    /// Median GPU time of mesh generation (every stage but shading), when timed.
-    pub mesh_ms: Option<f64>,
+    /// Median time of mesh generation: GPU time of every stage but shading where the adapter has
+    /// timestamp queries, else wall time of the mesh alone (for the CPU mesher, meshing and upload)
+    /// up to GPU idle.
+    pub mesh_ms: f64,
     pub triangles: u32,
     pub vertices: u32,
     /// Cells that emitted triangles, as a fraction of the grid.
@@ -47,6 +53,8 @@ pub struct Plan {
     /// Teaching views to measure, each as `name=value` pairs joined by `&` (as in a link); empty for
     /// the plain shaded surface alone.
     pub views: Vec<String>,
+    /// Meshers to measure (`gpu`, `cpu`, `auto`).
+    pub meshers: Vec<Mesher>,
 }
 
 /// `base` with the view `spec` (`display=wireframe&grid=cells`) applied.
@@ -90,14 +98,18 @@ pub fn run(
     let plain = [String::new()];
     let views = if plan.views.is_empty() { &plain[..] } else { &plan.views[..] };
     for view in views {
-        for &resolution in &resolutions {
-            for &spheres in &plan.sphere_counts {
-                let settings = with_view(Settings { resolution, sphere_count: spheres, ..base }, view)?;
-                offscreen.renderer.set_settings(settings)?;
-                let mut record = measure(&mut offscreen, plan, timed)?;
-                record.view = view.clone();
-                report(&record);
-                records.push(record);
+        for &mesher in &plan.meshers {
+            for &resolution in &resolutions {
+                for &spheres in &plan.sphere_counts {
+                    let mut settings =
+                        with_view(Settings { resolution, sphere_count: spheres, ..base }, view)?;
+                    settings.view.mesher = mesher;
+                    offscreen.renderer.set_settings(settings)?;
+                    let mut record = measure(&mut offscreen, plan, timed)?;
+                    record.view = view.clone();
+                    report(&record);
+                    records.push(record);
+                }
             }
         }
     }
@@ -126,11 +138,31 @@ fn measure(offscreen: &mut Offscreen, plan: &Plan, timed: bool) -> Result<Record
     }
     pollster::block_on(offscreen.renderer.flush_stats());
     let stats = offscreen.renderer.stats().unwrap_or_default();
+    let source = offscreen.renderer.mesh_source();
     let stage_ms = (!stages.is_empty()).then(|| {
-        std::array::from_fn(|i| median(&mut stages.iter().map(|s| s.stages_ms[i]).collect::<Vec<_>>()))
+        std::array::from_fn(|i| {
+            // With the CPU mesher no compute pass runs: only the shading stage is timed.
+            let computed = i + 1 < STAGES.len();
+            if source == MeshSource::Cpu && computed {
+                0.0
+            } else {
+                median(&mut stages.iter().map(|s| s.stages_ms[i]).collect::<Vec<_>>())
+            }
+        })
     });
-    let mesh_ms = (!stages.is_empty())
-        .then(|| median(&mut stages.iter().map(|s| s.extraction_ms()).collect::<Vec<_>>()));
+    let mesh_ms = if source == MeshSource::Gpu && !stages.is_empty() {
+        median(&mut stages.iter().map(|s| s.extraction_ms()).collect::<Vec<_>>())
+    } else {
+        let mut times: Vec<f64> = (0..plan.frames.max(1))
+            .map(|_| {
+                let started = Instant::now();
+                offscreen.renderer.extract();
+                let _ = offscreen.device.poll(wgpu::PollType::wait_indefinitely());
+                started.elapsed().as_secs_f64() * 1e3
+            })
+            .collect();
+        median(&mut times)
+    };
     let oracle_ms = plan.oracle.then(|| {
         let started = Instant::now();
         let mesh = reference::extract(
@@ -143,6 +175,7 @@ fn measure(offscreen: &mut Offscreen, plan: &Plan, timed: bool) -> Result<Record
     });
     Ok(Record {
         view: String::new(),
+        mesher: source.word().into(),
         resolution: settings.resolution,
         spheres: settings.sphere_count,
         frame_ms: median(&mut frame_ms),
@@ -165,13 +198,14 @@ pub fn header(timed: bool) -> String {
         String::new()
     };
     format!(
-        "{:<36} {:>5} {:>7} {:>9} {} {:>9} {:>10} {:>9} {:>8} {:>8} {:>9} {:>10}",
+        "{:<36} {:>6} {:>5} {:>7} {:>9} {} {:>9} {:>10} {:>9} {:>8} {:>8} {:>9} {:>10}",
         "view",
+        "mesher",
         "cells",
         "spheres",
         "frame ms",
         stages,
-        if timed { "mesh ms" } else { "" },
+        "mesh ms",
         "triangles",
         "vertices",
         "cells %",
@@ -189,13 +223,14 @@ fn truncate(s: &str) -> &str {
 pub fn row(r: &Record) -> String {
     let stages = r.stage_ms.map(|s| s.iter().map(|v| format!("{v:>9.2}")).collect::<Vec<_>>().join(" "));
     format!(
-        "{:<36} {:>5} {:>7} {:>9.2} {} {:>9} {:>10} {:>9} {:>8.3} {:>8.2} {:>9.1} {:>10}",
+        "{:<36} {:>6} {:>5} {:>7} {:>9.2} {} {:>9.2} {:>10} {:>9} {:>8.3} {:>8.2} {:>9.1} {:>10}",
         if r.view.is_empty() { "shaded" } else { &r.view },
+        r.mesher,
         r.resolution,
         r.spheres,
         r.frame_ms,
         stages.unwrap_or_default(),
-        r.mesh_ms.map(|v| format!("{v:.2}")).unwrap_or_default(),
+        r.mesh_ms,
         r.triangles,
         r.vertices,
         100.0 * r.active_cell_fraction,

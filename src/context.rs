@@ -7,17 +7,25 @@ use crate::blocks::BlockPass;
 use crate::field_pass::FieldPass;
 use crate::marching_cubes::MarchingCubesPass;
 use crate::shade::ShadePipelines;
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
 
 /// The pipelines of every pass, unbound: a renderer clones them (sharing the GPU objects) and binds
 /// them to its own buffers.
 pub(crate) struct Pipelines {
+    /// The mesh generation passes; `None` on a device without compute shaders (WebGL2), where the
+    /// CPU mesher makes every mesh.
+    pub compute: Option<ComputePasses>,
+    /// Shading pipelines per output format and sample count, built on first use.
+    shading: Mutex<Vec<((wgpu::TextureFormat, u32), ShadePipelines)>>,
+}
+
+/// The compute passes that make the mesh on the GPU.
+#[derive(Clone)]
+pub(crate) struct ComputePasses {
     pub blocks: BlockPass,
     pub field: FieldPass,
     pub marching: MarchingCubesPass,
-    /// Shading pipelines per output format and sample count, built on first use.
-    shading: Mutex<Vec<((wgpu::TextureFormat, u32), ShadePipelines)>>,
 }
 
 /// A device shared by any number of renderers.
@@ -29,12 +37,16 @@ pub struct GpuContext {
     /// How many pipeline sets (compute, or shading for one format) were built on this context.
     pipelines_built: Arc<AtomicUsize>,
     live_renderers: Arc<AtomicUsize>,
+    /// True on a software adapter (SwiftShader, llvmpipe, any fallback adapter), where the CPU mesher
+    /// is faster than compute passes emulated on the CPU.
+    software: Arc<AtomicBool>,
     error: Arc<Mutex<Option<String>>>,
     lost: Arc<Mutex<Option<String>>>,
 }
 
 impl GpuContext {
-    /// Compiles the compute pipelines and starts listening for the device's errors and loss.
+    /// Compiles the compute pipelines (where the device has compute shaders) and starts listening for
+    /// the device's errors and loss.
     pub fn new(device: wgpu::Device, queue: wgpu::Queue) -> Self {
         let error: Arc<Mutex<Option<String>>> = Arc::default();
         let sink = error.clone();
@@ -56,17 +68,21 @@ impl GpuContext {
         // On wasm32 wgpu's objects are not Send: a page runs them on one thread.
         #[allow(clippy::arc_with_non_send_sync)]
         let pipelines = Arc::new(Pipelines {
-            blocks: BlockPass::new(&device),
-            field: FieldPass::new(&device),
-            marching: MarchingCubesPass::new(&device),
+            compute: has_compute(&device).then(|| ComputePasses {
+                blocks: BlockPass::new(&device),
+                field: FieldPass::new(&device),
+                marching: MarchingCubesPass::new(&device),
+            }),
             shading: Mutex::default(),
         });
+        let compute_sets = pipelines.compute.is_some() as usize;
         Self {
             device,
             queue,
             pipelines,
-            pipelines_built: Arc::new(AtomicUsize::new(1)),
+            pipelines_built: Arc::new(AtomicUsize::new(compute_sets)),
             live_renderers: Arc::default(),
+            software: Arc::default(),
             error,
             lost,
         }
@@ -78,6 +94,22 @@ impl GpuContext {
 
     pub fn queue(&self) -> &wgpu::Queue {
         &self.queue
+    }
+
+    /// True when the device runs compute shaders (every WebGPU device; not WebGL2).
+    pub fn has_compute(&self) -> bool {
+        self.pipelines.compute.is_some()
+    }
+
+    /// Says whether the adapter is a software one (natively the adapter's type tells; in a browser
+    /// the page reads it from the adapter's info).
+    pub fn set_software(&self, software: bool) {
+        self.software.store(software, Ordering::Relaxed);
+    }
+
+    /// True on a software adapter.
+    pub fn is_software(&self) -> bool {
+        self.software.load(Ordering::Relaxed)
     }
 
     pub(crate) fn pipelines(&self) -> &Pipelines {
@@ -121,6 +153,12 @@ impl GpuContext {
     pub fn lost(&self) -> Option<String> {
         lock(&self.lost).clone()
     }
+}
+
+/// Compute shaders with storage buffers: WebGL2 devices report no room for either.
+fn has_compute(device: &wgpu::Device) -> bool {
+    let limits = device.limits();
+    limits.max_compute_invocations_per_workgroup > 0 && limits.max_storage_buffers_per_shader_stage > 0
 }
 
 /// Counts a renderer as alive until dropped.

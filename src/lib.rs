@@ -10,6 +10,7 @@ pub mod bench;
 pub mod blocks;
 pub mod case_classes;
 pub mod context;
+pub mod cpu_mesher;
 pub mod field_pass;
 pub mod gpu;
 pub mod inspect;

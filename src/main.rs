@@ -54,6 +54,10 @@ mod cli {
         /// repeat the flag for several. Without it, the plain shaded surface.
         #[arg(long = "view")]
         views: Vec<String>,
+        /// Meshers to measure, comma-separated: gpu (compute passes), cpu (the CPU mesher), auto (the
+        /// CPU on software adapters, else the GPU).
+        #[arg(long, value_delimiter = ',', default_value = "auto")]
+        mesher: Vec<String>,
     }
 
     #[derive(clap::Args)]
@@ -168,6 +172,13 @@ mod cli {
             oracle: !args.no_oracle,
             antialiasing: !args.no_antialiasing,
             views: args.views,
+            meshers: args
+                .mesher
+                .iter()
+                .map(|m| -> Result<_, metaballs::ParamError> {
+                    Ok(metaballs::Settings::default().with_parameter("mesher", m)?.view.mesher)
+                })
+                .collect::<Result<_, _>>()?,
         };
         for view in &plan.views {
             bench::with_view(metaballs::Settings::default(), view)?;

@@ -105,18 +105,22 @@ pub struct MeshBuffers {
 }
 
 impl MeshBuffers {
+    /// Buffers for `grid` holding `capacity`. On a device without storage buffers (WebGL2) only the
+    /// vertex and index buffers matter: the CPU mesher fills them and they are drawn directly.
     pub fn new(device: &wgpu::Device, grid: Grid, capacity: Capacity) -> Self {
-        let buffer = |label: &str, size: u64, usage: wgpu::BufferUsages| {
+        use wgpu::BufferUsages as U;
+        let storage = device.limits().max_storage_buffers_per_shader_stage > 0;
+        let buffer = |label: &str, size: u64, usage: U| {
             device.create_buffer(&wgpu::BufferDescriptor {
                 label: Some(label),
                 size: size.max(16),
-                usage: usage | wgpu::BufferUsages::STORAGE,
+                usage: if storage { usage | U::STORAGE } else { usage - U::INDIRECT | U::COPY_DST },
                 mapped_at_creation: false,
             })
         };
-        use wgpu::BufferUsages as U;
         let blocks = capacity.blocks as u64;
-        let total_blocks = (grid.cells_per_axis.div_ceil(BLOCK_CELLS) as u64).pow(3);
+        let total_blocks =
+            if storage { (grid.cells_per_axis.div_ceil(BLOCK_CELLS) as u64).pow(3) } else { 0 };
         Self {
             grid,
             capacity,
@@ -136,9 +140,13 @@ impl MeshBuffers {
             vertices: buffer(
                 "mesh: vertices",
                 capacity.vertices as u64 * VERTEX_BYTES,
-                U::VERTEX | U::COPY_SRC,
+                U::VERTEX | U::COPY_SRC | U::COPY_DST,
             ),
-            indices: buffer("mesh: indices", capacity.indices as u64 * INDEX_BYTES, U::INDEX | U::COPY_SRC),
+            indices: buffer(
+                "mesh: indices",
+                capacity.indices as u64 * INDEX_BYTES,
+                U::INDEX | U::COPY_SRC | U::COPY_DST,
+            ),
             draw_args: buffer("mesh: draw arguments", 20, U::INDIRECT),
         }
     }

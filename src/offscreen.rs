@@ -27,7 +27,11 @@ impl Offscreen {
     ) -> Result<Self, Box<dyn std::error::Error>> {
         let instance = gpu::native_instance();
         let (adapter, device, queue) = gpu::request_device(&instance, None).await?;
-        Ok(Self::with_device(adapter, device, queue, settings, width, height)?)
+        let offscreen = Self::with_device(adapter, device, queue, settings, width, height)?;
+        // `auto` meshing follows the adapter's kind (tests on a shared device choose explicitly).
+        let software = offscreen.adapter.get_info().device_type == wgpu::DeviceType::Cpu;
+        offscreen.renderer.context().set_software(software);
+        Ok(offscreen)
     }
 
     /// Builds a renderer for `width` × `height` frames on a device the caller already has.

@@ -3,26 +3,26 @@
 
 mod inspector;
 mod limits;
+mod meshing;
 mod readback;
 mod stats;
 mod uniforms;
 
 pub use limits::max_resolution;
+pub use meshing::MeshSource;
 pub use readback::OverlayReadback;
 pub use stats::FrameStats;
 
-use crate::blocks::BlockPass;
-use crate::context::{GpuContext, RendererToken};
-use crate::field_pass::FieldPass;
-use crate::marching_cubes::MarchingCubesPass;
+use crate::context::{ComputePasses, GpuContext, RendererToken};
+use crate::cpu_mesher::CpuMesher;
 use crate::mesh_buffers::{Capacity, MeshBuffers};
 use crate::params::{self, Camera, Material, ParamError, Settings};
 use crate::reference::Grid;
 use crate::scene::Scene;
 use crate::scene_buffers::SceneBuffers;
-use crate::shade::{MULTISAMPLES, ShadePass, ViewFrame};
+use crate::shade::{DrawCount, MULTISAMPLES, MeshDraw, ShadePass, ViewFrame};
 use crate::timing::{StageTimes, Timing};
-use crate::views::{self, ViewState};
+use crate::views::ViewState;
 use glam::{UVec3, Vec3};
 use limits::{automatic_capacity, check_resolution_fits, check_size, storage_limit};
 use stats::StatsRing;
@@ -36,7 +36,8 @@ enum Sizing {
     FixedTriangles(u32),
 }
 
-/// Draws merging spheres: block skipping, field, marching cubes and shading, every frame on the GPU.
+/// Draws merging spheres: block skipping, field and marching cubes (in GPU compute passes or on the
+/// CPU), then shading.
 pub struct Renderer {
     context: GpuContext,
     _alive: RendererToken,
@@ -48,9 +49,14 @@ pub struct Renderer {
     scene: Scene,
     scene_buffers: SceneBuffers,
     mesh: MeshBuffers,
-    blocks: BlockPass,
-    field: FieldPass,
-    marching: MarchingCubesPass,
+    /// The GPU's mesh generation passes (none without compute shaders).
+    compute: Option<ComputePasses>,
+    /// The CPU mesher, made on first use.
+    cpu: Option<CpuMesher>,
+    /// Where the latest frame's mesh came from.
+    source: MeshSource,
+    /// Indices the CPU mesher uploaded for the latest frame.
+    cpu_indices: u32,
     shade: ShadePass,
     sizing: Sizing,
     /// Capacity a past frame asked for, applied before the next one.
@@ -97,11 +103,12 @@ impl Renderer {
         let pipelines = context.pipelines();
         let scene_buffers = SceneBuffers::new(&device);
         let grid = Grid { cells_per_axis: settings.resolution };
-        let mesh = MeshBuffers::new(&device, grid, automatic_capacity(&device, grid));
+        let mesh = MeshBuffers::new(&device, grid, automatic_capacity(&device, grid, context.has_compute()));
         let mut renderer = Self {
-            blocks: pipelines.blocks.clone(),
-            field: pipelines.field.clone(),
-            marching: pipelines.marching.clone(),
+            compute: pipelines.compute.clone(),
+            cpu: None,
+            source: MeshSource::Gpu,
+            cpu_indices: 0,
             shade: ShadePass::new(
                 &device,
                 context.shade_pipelines(format, sample_count(settings.antialiasing)),
@@ -169,6 +176,11 @@ impl Renderer {
     /// GPU memory held by the mesh buffers, in bytes.
     pub fn mesh_bytes(&self) -> u64 {
         self.mesh.bytes()
+    }
+
+    /// Where the latest frame's mesh came from.
+    pub fn mesh_source(&self) -> MeshSource {
+        self.source
     }
 
     /// GPU memory held by this renderer's own buffers and targets (not the shared pipelines), in bytes.
@@ -308,7 +320,7 @@ impl Renderer {
     }
 
     fn starting_capacity(&self) -> Capacity {
-        let automatic = automatic_capacity(&self.device, self.grid());
+        let automatic = automatic_capacity(&self.device, self.grid(), self.compute.is_some());
         match self.sizing {
             Sizing::Automatic => automatic,
             // Everything but the index buffer holds the whole grid, so only triangles overflow.
@@ -328,17 +340,33 @@ impl Renderer {
 
     fn bind_passes(&mut self) {
         self.drop_views();
-        self.blocks.bind(&self.device, &self.scene_buffers, &self.mesh);
-        self.field.bind(&self.device, &self.scene_buffers, &self.mesh);
-        self.marching.bind(&self.device, &self.scene_buffers, &self.mesh);
+        if let Some(passes) = &mut self.compute {
+            passes.blocks.bind(&self.device, &self.scene_buffers, &self.mesh);
+            passes.field.bind(&self.device, &self.scene_buffers, &self.mesh);
+            passes.marching.bind(&self.device, &self.scene_buffers, &self.mesh);
+        }
     }
 
     /// Records the extraction passes: blocks, field, marching cubes.
     fn encode_extraction(&self, encoder: &mut wgpu::CommandEncoder, timed: bool) {
+        let Some(passes) = &self.compute else { return };
         let timing = self.timing.as_ref().filter(|_| timed);
-        self.blocks.encode(encoder, &self.mesh, timing.map(|t| t.compute_writes(0)));
-        self.field.encode(encoder, &self.mesh, timing.map(|t| t.compute_writes(1)));
-        self.marching.encode(encoder, &self.mesh, timing.map(|t| t.compute_writes(2)));
+        passes.blocks.encode(encoder, &self.mesh, timing.map(|t| t.compute_writes(0)));
+        passes.field.encode(encoder, &self.mesh, timing.map(|t| t.compute_writes(1)));
+        passes.marching.encode(encoder, &self.mesh, timing.map(|t| t.compute_writes(2)));
+    }
+
+    /// Makes this frame's mesh where `source` says: records the compute passes, or meshes on the CPU
+    /// and uploads the result into the same vertex and index buffers.
+    fn make_mesh(&mut self, encoder: &mut wgpu::CommandEncoder, timed: bool) -> DrawCount {
+        self.source = self.next_source();
+        match self.source {
+            MeshSource::Gpu => {
+                self.encode_extraction(encoder, timed);
+                DrawCount::Indirect
+            }
+            MeshSource::Cpu => DrawCount::Direct(self.mesh_on_cpu()),
+        }
     }
 
     /// Draws one frame into `view` (a texture of this renderer's format and size). Never waits on the
@@ -357,8 +385,8 @@ impl Renderer {
         let mut encoder = self
             .device
             .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("frame: encoder") });
-        self.encode_extraction(&mut encoder, timed);
-        let show_views = views::needed(&self.settings.view, self.selected.is_some());
+        let count = self.make_mesh(&mut encoder, timed);
+        let show_views = self.views_shown();
         if show_views && self.views.is_none() {
             let pipelines = self.shade.pipelines().views(&self.device);
             self.views = Some(ViewState::new(
@@ -383,11 +411,20 @@ impl Renderer {
             _ => None,
         };
         let timing = self.timing.as_ref().filter(|_| timed);
-        self.shade.encode(&mut encoder, view, &self.mesh, frame_views, timing.map(|t| t.render_writes(3)));
+        let mesh = MeshDraw {
+            vertices: &self.mesh.vertices,
+            indices: &self.mesh.indices,
+            draw_args: &self.mesh.draw_args,
+            count,
+        };
+        self.shade.encode(&mut encoder, view, mesh, frame_views, timing.map(|t| t.render_writes(3)));
         if let Some(timing) = timing {
             timing.resolve(&mut encoder);
         }
-        let slot = self.stats.record(&mut encoder, &self.mesh.counters);
+        let slot = match self.source {
+            MeshSource::Gpu => self.stats.record(&mut encoder, &self.mesh.counters),
+            MeshSource::Cpu => None,
+        };
         self.queue.submit([encoder.finish()]);
         if let Some(slot) = slot {
             self.stats.map(slot, self.frame, self.mesh.capacity);
@@ -412,14 +449,14 @@ impl Renderer {
         Some(timing.read(&self.device, &self.queue).await)
     }
 
-    /// Runs the mesh generation passes alone for the current state, without drawing or waiting
-    /// (benchmarks time it against `Queue::on_submitted_work_done`).
+    /// Makes the mesh alone for the current state, without drawing or waiting: the compute passes,
+    /// or the CPU mesher and its upload (benchmarks time it against `Queue::on_submitted_work_done`).
     pub fn extract(&mut self) {
         self.write_uniforms();
         let mut encoder = self
             .device
             .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("extract: encoder") });
-        self.encode_extraction(&mut encoder, false);
+        self.make_mesh(&mut encoder, false);
         self.queue.submit([encoder.finish()]);
     }
 }

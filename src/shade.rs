@@ -1,7 +1,7 @@
 //! The shading pass (`shaders/shade.wgsl`): background, the box's edges, then the surface with
 //! Blinn-Phong, depth-tested and (with antialiasing) multisampled and resolved into the caller's view.
 
-use crate::mesh_buffers::{MeshBuffers, VERTEX_BYTES};
+use crate::mesh_buffers::VERTEX_BYTES;
 use crate::params::ViewOptions;
 use crate::uniforms::ShadingUniform;
 use crate::views::{ViewPipelines, ViewState};
@@ -129,6 +129,24 @@ impl ShadePipelines {
     }
 }
 
+/// How many indices a frame draws.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DrawCount {
+    /// As the compute passes wrote in the draw arguments buffer.
+    Indirect,
+    /// A count known on the CPU (the CPU mesher's; the only kind WebGL2 draws).
+    Direct(u32),
+}
+
+/// The mesh a frame draws, wherever it was made.
+pub struct MeshDraw<'a> {
+    pub vertices: &'a wgpu::Buffer,
+    pub indices: &'a wgpu::Buffer,
+    /// The indexed indirect draw's arguments (read with `DrawCount::Indirect`).
+    pub draw_args: &'a wgpu::Buffer,
+    pub count: DrawCount,
+}
+
 /// What the shading pass draws of the teaching views this frame.
 pub struct ViewFrame<'a> {
     pub state: &'a ViewState,
@@ -191,12 +209,12 @@ impl ShadePass {
         &self.uniform
     }
 
-    /// Draws the background, the box and the mesh (as far as its indirect draw arguments say) into `view`.
+    /// Draws the background, the box and the mesh into `view`.
     pub fn encode(
         &self,
         encoder: &mut wgpu::CommandEncoder,
         view: &wgpu::TextureView,
-        mesh: &MeshBuffers,
+        mesh: MeshDraw,
         views: Option<ViewFrame>,
         timestamp_writes: Option<wgpu::RenderPassTimestampWrites>,
     ) {
@@ -239,7 +257,11 @@ impl ShadePass {
             pass.set_pipeline(&self.pipelines.surface);
             pass.set_vertex_buffer(0, mesh.vertices.slice(..));
             pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
-            pass.draw_indexed_indirect(&mesh.draw_args, 0);
+            match mesh.count {
+                DrawCount::Indirect => pass.draw_indexed_indirect(mesh.draw_args, 0),
+                DrawCount::Direct(0) => {}
+                DrawCount::Direct(n) => pass.draw_indexed(0..n, 0, 0..1),
+            }
         }
         if let Some(v) = &views {
             let size = (self.targets.depth.width(), self.targets.depth.height());

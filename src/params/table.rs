@@ -3,7 +3,8 @@
 //! live here once.
 
 use super::view::{
-    Blend, ColorBy, Display, GridView, Interpolation, LIGHT_KINDS, Projection, SPOT_ANGLE_RANGE, Slice,
+    Blend, ColorBy, Display, GridView, Interpolation, LIGHT_KINDS, Mesher, Projection, SPOT_ANGLE_RANGE,
+    Slice,
 };
 use super::{
     DISTANCE_RANGE, ISO_RANGE, MAX_RESOLUTION, MAX_SPHERES, MIN_RESOLUTION, PITCH_RANGE, ParamError,
@@ -60,6 +61,7 @@ pub const CONTROLS: &[&str] = &[
     "shininess",
     "color",
     "antialiasing",
+    "mesher",
     "paused",
     "seed",
     "view",
@@ -177,6 +179,7 @@ pub const PARAMETERS: &[Parameter] = &[
     other("ambiguous", "ambiguous", "Ambiguous", Kind::Boolean, "false"),
     other("interpolation", "interp", "Vertices", Kind::Choice(Interpolation::WORDS), "linear"),
     other("blend", "blend", "Blend", Kind::Choice(Blend::WORDS), "sum"),
+    other("mesher", "mesher", "Meshing", Kind::Choice(Mesher::WORDS), "auto"),
     other("light", "light", "Lights", Kind::List(LIGHT_KINDS), "point"),
     number(
         "spot_angle",

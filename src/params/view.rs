@@ -106,6 +106,17 @@ choice!(
     }
 );
 
+choice!(
+    /// Where the mesh is made: the GPU's compute passes or the CPU mesher (faster on software
+    /// adapters, and the only one without compute shaders).
+    Mesher {
+        /// The CPU on software adapters and without compute shaders, else the GPU.
+        Auto = "auto",
+        Gpu = "gpu",
+        Cpu = "cpu",
+    }
+);
+
 /// Light kinds a scene can have at once (up to one of each).
 pub const LIGHT_KINDS: &[&str] = &["point", "directional", "spot"];
 
@@ -200,6 +211,7 @@ pub struct ViewOptions {
     /// The spot light's soft edge, as a fraction of the cone (0 hard, 1 all soft).
     pub spot_softness: f32,
     pub projection: Projection,
+    pub mesher: Mesher,
 }
 
 impl Default for ViewOptions {
@@ -216,6 +228,7 @@ impl Default for ViewOptions {
             spot_angle: 15.0,
             spot_softness: 0.3,
             projection: Projection::Perspective,
+            mesher: Mesher::Auto,
         }
     }
 }
@@ -262,6 +275,7 @@ impl ViewOptions {
             "interpolation" => pick!(interpolation, Interpolation),
             "blend" => pick!(blend, Blend),
             "projection" => pick!(projection, Projection),
+            "mesher" => pick!(mesher, Mesher),
             "slice" => self.slice = Slice::parse(text())?,
             "light" => self.lights = Lights::from_list(text()),
             "ambiguous" => self.ambiguous = matches!(value, Value::Boolean(true)),

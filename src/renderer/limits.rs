@@ -4,13 +4,27 @@ use crate::mesh_buffers::{BLOCK_CELLS, Capacity};
 use crate::params::{self, MAX_RESOLUTION, MIN_RESOLUTION, ParamError};
 use crate::reference::Grid;
 
-pub(super) fn storage_limit(device: &wgpu::Device) -> u64 {
+/// True on a device with compute shaders and storage buffers (not WebGL2).
+fn computes(device: &wgpu::Device) -> bool {
     let limits = device.limits();
-    limits.max_storage_buffer_binding_size.min(limits.max_buffer_size)
+    limits.max_storage_buffers_per_shader_stage > 0 && limits.max_compute_invocations_per_workgroup > 0
 }
 
-pub(super) fn automatic_capacity(device: &wgpu::Device, grid: Grid) -> Capacity {
-    Capacity::for_grid(grid).min(Capacity::largest(grid, storage_limit(device)))
+/// The largest buffer the mesh passes bind: a storage binding, or without compute shaders (where the
+/// CPU mesher fills plain vertex and index buffers) any buffer.
+pub(super) fn storage_limit(device: &wgpu::Device) -> u64 {
+    let limits = device.limits();
+    if computes(device) {
+        limits.max_storage_buffer_binding_size.min(limits.max_buffer_size)
+    } else {
+        limits.max_buffer_size
+    }
+}
+
+/// Starting capacity; without compute shaders only vertices and indices are stored on the device.
+pub(super) fn automatic_capacity(device: &wgpu::Device, grid: Grid, compute: bool) -> Capacity {
+    let capacity = Capacity::for_grid(grid).min(Capacity::largest(grid, storage_limit(device)));
+    if compute { capacity } else { Capacity { blocks: 0, cells: 0, ..capacity } }
 }
 
 /// The largest resolution this device can run: its block table must fit one storage binding and its
@@ -23,6 +37,9 @@ pub fn max_resolution(device: &wgpu::Device) -> u32 {
 }
 
 fn resolution_fits(device: &wgpu::Device, cells_per_axis: u32) -> Result<(), String> {
+    if !computes(device) {
+        return Ok(());
+    }
     let blocks = (cells_per_axis.div_ceil(BLOCK_CELLS) as u64).pow(3);
     let needed = blocks * 4;
     if needed > storage_limit(device) {

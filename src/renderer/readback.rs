@@ -19,7 +19,14 @@ impl Renderer {
     /// Extracts the surface for the current state and reads the indexed mesh back, growing the buffers
     /// first if the surface needs it (unless the budget is fixed). Waits for the GPU: for tests and
     /// tools, not the frame loop.
+    /// With the CPU mesher as the source, its mesh is returned as it was uploaded.
     pub async fn extract_mesh(&mut self) -> IndexedMesh {
+        if self.next_source() == super::MeshSource::Cpu {
+            self.extract();
+            let mut mesh = self.cpu.as_ref().map(|m| m.to_indexed()).unwrap_or_default();
+            mesh.triangles.truncate(self.cpu_indices as usize / 3);
+            return mesh;
+        }
         let mut counters = self.run_extraction().await;
         while self.sizing == Sizing::Automatic && !self.mesh.capacity.holds(&counters) {
             let largest = Capacity::largest(self.grid(), storage_limit(&self.device));
