@@ -111,7 +111,7 @@ impl CpuMesher {
     pub fn to_indexed(&self) -> IndexedMesh {
         let at = |v: &[f32]| Vec3::new(v[0], v[1], v[2]);
         IndexedMesh {
-            positions: self.vertices.chunks_exact(6).map(|v| at(v)).collect(),
+            positions: self.vertices.chunks_exact(6).map(at).collect(),
             normals: self.vertices.chunks_exact(6).map(|v| at(&v[3..])).collect(),
             triangles: self.indices.chunks_exact(3).map(|t| [t[0], t[1], t[2]]).collect(),
         }

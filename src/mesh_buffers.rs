@@ -114,7 +114,7 @@ impl MeshBuffers {
             device.create_buffer(&wgpu::BufferDescriptor {
                 label: Some(label),
                 size: size.max(16),
-                usage: if storage { usage | U::STORAGE } else { usage - U::INDIRECT | U::COPY_DST },
+                usage: if storage { usage | U::STORAGE } else { (usage - U::INDIRECT) | U::COPY_DST },
                 mapped_at_creation: false,
             })
         };

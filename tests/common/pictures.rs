@@ -28,6 +28,17 @@ pub fn mean_luminance(rgba: &[u8]) -> f32 {
     rgba.chunks(4).map(luminance).sum::<f32>() / (rgba.len() / 4) as f32
 }
 
+/// The mean FLIP error of `actual` against `expected` (RGBA images of one size), with its error map.
+pub fn flip(width: u32, height: u32, expected: &[u8], actual: &[u8]) -> (f32, nv_flip::FlipImageFloat) {
+    let rgb = |rgba: &[u8]| rgba.chunks(4).flat_map(|p| &p[..3]).copied().collect::<Vec<u8>>();
+    let error_map = nv_flip::flip(
+        nv_flip::FlipImageRgb8::with_data(width, height, &rgb(expected)),
+        nv_flip::FlipImageRgb8::with_data(width, height, &rgb(actual)),
+        PIXELS_PER_DEGREE,
+    );
+    (nv_flip::FlipPool::from_image(&error_map).mean(), error_map)
+}
+
 /// The mean FLIP error of `pixels` against `tests/reference/{name}.png`; above the tolerance, writes
 /// the actual image and the error map to `tests/output/` and fails. `METABALLS_UPDATE_REFERENCE=1`
 /// writes the reference instead.
@@ -41,13 +52,7 @@ pub fn assert_matches_reference(name: &str, width: u32, height: u32, pixels: &[u
         panic!("cannot read {}: {e} (METABALLS_UPDATE_REFERENCE=1 writes it)", reference.display())
     });
     assert_eq!((rw, rh), (width, height), "{name}: reference size");
-    let rgb = |rgba: &[u8]| rgba.chunks(4).flat_map(|p| &p[..3]).copied().collect::<Vec<u8>>();
-    let error_map = nv_flip::flip(
-        nv_flip::FlipImageRgb8::with_data(width, height, &rgb(&expected)),
-        nv_flip::FlipImageRgb8::with_data(width, height, &rgb(pixels)),
-        PIXELS_PER_DEGREE,
-    );
-    let mean = nv_flip::FlipPool::from_image(&error_map).mean();
+    let (mean, error_map) = flip(width, height, &expected, pixels);
     println!("{name}: mean FLIP error against the reference {mean:.5} (tolerance {MEAN_FLIP_TOLERANCE})");
     if mean > MEAN_FLIP_TOLERANCE {
         let dir = output_dir();

@@ -1,0 +1,224 @@
+//! The CPU mesher against the oracle (the same scenes the GPU is held to), and the renderer drawing its
+//! mesh: the same picture as the GPU's, the choice `auto` makes, and a long soak switching meshers.
+#![cfg(not(target_arch = "wasm32"))]
+
+mod common;
+
+use common::*;
+use metaballs::cpu_mesher::CpuMesher;
+use metaballs::offscreen::OFFSCREEN_FORMAT;
+use metaballs::params::view::{Blend, Interpolation, Mesher};
+use metaballs::reference::{self, Construction, Grid};
+use metaballs::renderer::MeshSource;
+use metaballs::{GpuContext, Renderer, Scene, Settings, Sphere};
+use rand::{RngExt, SeedableRng};
+
+/// Meshes with `mesher` (reused, as in the frame loop) and checks the oracle's triangles come out:
+/// same count, bit-identical positions, the same normals, every vertex shared by its edge's cells.
+fn assert_equals_oracle(
+    mesher: &mut CpuMesher,
+    spheres: &[Sphere],
+    iso: f32,
+    resolution: u32,
+    construction: Construction,
+    what: &str,
+) -> usize {
+    let grid = Grid { cells_per_axis: resolution };
+    mesher.mesh(spheres, iso, grid, construction);
+    let oracle = reference::extract_with(spheres, iso, grid, construction);
+    let ours = mesher.to_indexed();
+    assert_eq!(ours.triangles.len(), oracle.triangle_count(), "{what}: triangle counts differ");
+    if let Err(e) = ours.to_soup().matches(&oracle, 0.0, 1e-3) {
+        panic!("{what}: {e}");
+    }
+    let welded = oracle.weld_by_edge();
+    assert_eq!(ours.positions.len(), welded.positions.len(), "{what}: one vertex per crossed edge");
+    oracle.triangle_count()
+}
+
+#[test]
+fn seeded_random_scenes_equal_the_oracle() {
+    // The draws of the GPU's test (tests/gpu_matches_oracle.rs), one mesher reused throughout.
+    let mut rng = rand_pcg::Pcg32::seed_from_u64(0x6d65_7461);
+    let mut mesher = CpuMesher::new();
+    let mut with_surface = 0;
+    for case in 0..60 {
+        let count = rng.random_range(1..=64);
+        let resolution = rng.random_range(8..=48);
+        let iso = 10f32.powf(rng.random_range(-1.0..1.0));
+        let seed = rng.random_range(0..1_000_000);
+        let time = rng.random_range(0.0..20.0);
+        let mut scene = Scene::new(seed, count).unwrap();
+        scene.step(time).unwrap();
+        let what = format!("case {case}: seed {seed}, {count} spheres, {resolution} cells, iso {iso}");
+        let triangles = assert_equals_oracle(
+            &mut mesher,
+            scene.spheres(),
+            iso,
+            resolution,
+            Construction::default(),
+            &what,
+        );
+        with_surface += (triangles > 0) as u32;
+    }
+    assert!(with_surface >= 45, "only {with_surface} of 60 scenes had a surface");
+}
+
+#[test]
+fn walls_overlaps_extreme_levels_and_constructions_equal_the_oracle() {
+    let touching_walls = vec![
+        sphere([-0.7, 0.0, 0.0], 0.3),
+        sphere([0.0, 0.75, 0.0], 0.25),
+        sphere([0.55, -0.55, 0.55], 0.45),
+    ];
+    let overlapping = vec![
+        sphere([0.0, 0.0, 0.0], 0.3),
+        sphere([0.05, 0.0, 0.0], 0.3),
+        sphere([0.0, 0.0, 0.0], 0.2),
+        sphere([0.2, 0.1, -0.1], 0.25),
+    ];
+    // At 32 cells the origin is a grid point, where |p - c| = 0.
+    let on_grid_point = vec![sphere([0.0, 0.0, 0.0], 0.4)];
+    let mut mesher = CpuMesher::new();
+    for (name, spheres) in [
+        ("touching walls", &touching_walls),
+        ("overlapping", &overlapping),
+        ("on a grid point", &on_grid_point),
+    ] {
+        for iso in [0.05, 0.3, 1.0, 4.0, 20.0] {
+            for interpolation in [Interpolation::Linear, Interpolation::Midpoint] {
+                for blend in [Blend::Sum, Blend::Max] {
+                    for resolution in [32, 37] {
+                        let what =
+                            format!("{name}, iso {iso}, {interpolation:?}, {blend:?}, {resolution} cells");
+                        let construction = Construction { interpolation, blend };
+                        assert_equals_oracle(&mut mesher, spheres, iso, resolution, construction, &what);
+                    }
+                }
+            }
+        }
+    }
+    let mesh = mesher.to_indexed();
+    assert!(mesh.positions.iter().chain(&mesh.normals).all(|v| v.is_finite()));
+}
+
+#[test]
+fn the_mesh_is_closed_and_a_sphere_at_iso_one_is_its_own_sphere() {
+    let mut mesher = CpuMesher::new();
+    let scene = Scene::from_spheres(vec![sphere([0.05, -0.1, 0.02], 0.5)]).unwrap();
+    mesher.mesh(scene.spheres(), 1.0, Grid { cells_per_axis: 64 }, Construction::default());
+    let mesh = mesher.to_indexed();
+    let topology = mesh.topology();
+    assert_eq!(topology.open_or_nonmanifold_edges, 0);
+    assert_eq!(topology.misoriented_edges, 0);
+    assert_eq!(topology.component_euler, vec![2]);
+    let centre = scene.spheres()[0].center;
+    let worst = mesh.positions.iter().map(|p| (p.distance(centre) - 0.5).abs()).fold(0.0, f32::max);
+    assert!(worst < 0.01 * 2.0 / 64.0 * 10.0, "a vertex lies {worst} off the sphere");
+    let stats = mesher.stats();
+    assert!(stats.active_blocks < stats.total_blocks / 2, "{stats:?}: empty space not skipped");
+}
+
+fn renderer_settings(mesher: Mesher) -> Settings {
+    let mut settings = Settings { seed: 3, sphere_count: 6, resolution: 48, ..Settings::default() };
+    settings.view.mesher = mesher;
+    settings
+}
+
+#[test]
+fn the_cpu_mesh_draws_the_gpu_mesh_picture() {
+    let (width, height) = (320, 240);
+    let mut pictures = Vec::new();
+    for mesher in [Mesher::Gpu, Mesher::Cpu] {
+        let pixels = with_renderer(renderer_settings(mesher), width, height, |o| {
+            o.renderer.update(0.4).unwrap();
+            let pixels = o.render_rgba();
+            let expected = match mesher {
+                Mesher::Cpu => MeshSource::Cpu,
+                _ => MeshSource::Gpu,
+            };
+            assert_eq!(o.renderer.mesh_source(), expected);
+            pollster::block_on(o.renderer.flush_stats());
+            let stats = o.renderer.stats().unwrap();
+            assert!(stats.triangles > 1000 && !stats.overflowed, "{stats:?}");
+            (pixels, stats.triangles)
+        });
+        pictures.push(pixels);
+    }
+    assert_eq!(pictures[0].1, pictures[1].1, "both meshers report the same triangle count");
+    let (mean, _) = flip(width, height, &pictures[0].0, &pictures[1].0);
+    println!("mean FLIP error between the GPU and CPU meshes' pictures: {mean:.5}");
+    assert!(mean < 0.005, "the CPU mesh looks different from the GPU mesh: FLIP {mean}");
+    let lit = pictures[1].0.chunks(4).filter(|p| luminance(p) > 60.0).count();
+    assert!(lit > (width * height / 20) as usize, "the CPU mesh drew little: {lit} bright pixels");
+}
+
+#[test]
+fn auto_picks_the_cpu_on_software_adapters_and_views_take_the_gpu() {
+    let (_, device, queue) = device();
+    let context = GpuContext::new(device, queue);
+    let draw = |renderer: &mut Renderer| {
+        let texture = metaballs::gpu::render_target(context.device(), 64, 64, OFFSCREEN_FORMAT);
+        renderer.render(&texture.create_view(&Default::default()));
+        renderer.mesh_source()
+    };
+    let mut renderer =
+        Renderer::on_context(&context, OFFSCREEN_FORMAT, 64, 64, renderer_settings(Mesher::Auto)).unwrap();
+    assert_eq!(draw(&mut renderer), MeshSource::Gpu, "auto on a hardware adapter");
+    context.set_software(true);
+    assert_eq!(draw(&mut renderer), MeshSource::Cpu, "auto on a software adapter");
+    let forced = renderer.settings().with_parameter("mesher", "gpu").unwrap();
+    renderer.set_settings(forced).unwrap();
+    assert_eq!(draw(&mut renderer), MeshSource::Gpu, "mesher=gpu on a software adapter");
+    let cpu_with_view =
+        forced.with_parameter("mesher", "cpu").unwrap().with_parameter("grid", "cells").unwrap();
+    renderer.set_settings(cpu_with_view).unwrap();
+    assert_eq!(draw(&mut renderer), MeshSource::Gpu, "the cells view reads the compute passes' lists");
+    assert!(renderer.settings().with_parameter("mesher", "fpga").is_err());
+}
+
+#[test]
+fn five_thousand_frames_of_random_changes_and_switched_meshers() {
+    let mut rng = rand_pcg::Pcg32::seed_from_u64(5000);
+    let base = Settings { antialiasing: false, ..renderer_settings(Mesher::Auto) };
+    with_renderer(base, 48, 32, |o| {
+        let memory = |o: &mut metaballs::offscreen::Offscreen| {
+            let _ = o.device.poll(wgpu::PollType::wait_indefinitely());
+            o.renderer.gpu_bytes()
+        };
+        let reference_settings =
+            |mesher| Settings { resolution: 32, sphere_count: 5, ..renderer_settings(mesher) };
+        o.renderer.set_settings(reference_settings(Mesher::Gpu)).unwrap();
+        o.render();
+        let at_start = memory(o);
+        let mut sources = [0u32; 2];
+        for frame in 0..5000 {
+            if frame % 7 == 0 {
+                let mut settings = *o.renderer.settings();
+                match rng.random_range(0..4) {
+                    0 => settings.sphere_count = rng.random_range(1..=64),
+                    1 => settings.iso = 10f32.powf(rng.random_range(-1.0..1.0)),
+                    2 => settings.resolution = rng.random_range(8..=40),
+                    _ => settings.view.mesher = [Mesher::Gpu, Mesher::Cpu][rng.random_range(0..2)],
+                }
+                o.renderer.set_settings(settings).unwrap();
+            }
+            o.renderer.update(1.0 / 60.0).unwrap();
+            o.render();
+            sources[(o.renderer.mesh_source() == MeshSource::Cpu) as usize] += 1;
+            if frame % 500 == 0 {
+                let _ = o.device.poll(wgpu::PollType::wait_indefinitely());
+            }
+        }
+        assert!(sources.iter().all(|&n| n > 1000), "frames per mesher (gpu, cpu): {sources:?}");
+        for mesher in [Mesher::Cpu, Mesher::Gpu] {
+            o.renderer.set_settings(reference_settings(mesher)).unwrap();
+            o.render();
+        }
+        // The buffers grow for the largest surface seen; the same settings from a fresh start.
+        o.renderer.set_resolution(33).unwrap();
+        o.renderer.set_settings(reference_settings(Mesher::Gpu)).unwrap();
+        o.render();
+        assert_eq!(memory(o), at_start, "GPU memory for the same settings after the soak");
+    });
+}
