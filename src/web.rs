@@ -4,14 +4,18 @@
 
 use crate::params::{self, Camera, Kind, PARAMETERS, Value};
 use crate::scene::Scene;
-use crate::{FrameStats, GpuContext, Renderer, Settings, Sphere};
+use crate::{FrameStats, Renderer, Settings, Sphere};
 use glam::Vec3;
 use std::cell::RefCell;
+use std::ops::Not;
 use std::rc::Rc;
 use wasm_bindgen::prelude::*;
 use web_sys::HtmlCanvasElement;
 
+mod gpu;
 mod teaching;
+
+pub use gpu::Gpu;
 
 #[wasm_bindgen]
 extern "C" {
@@ -26,6 +30,16 @@ fn start() {
         console_error_panic_hook::hook(info);
         show_panic(&info.to_string());
     }));
+}
+
+/// Resolves in a later browser task (a zero-delay timer), letting the browser run in between.
+async fn next_task() {
+    let promise = js_sys::Promise::new(&mut |resolve, _| {
+        if let Some(window) = web_sys::window() {
+            let _ = window.set_timeout_with_callback_and_timeout_and_arguments_0(&resolve, 0);
+        }
+    });
+    let _ = wasm_bindgen_futures::JsFuture::from(promise).await;
 }
 
 fn js_error(error: impl std::fmt::Display) -> JsError {
@@ -111,64 +125,6 @@ impl From<FrameStats> for Stats {
     }
 }
 
-/// One adapter and device, their pipelines, and what the page learns about them. Every view on a page
-/// draws with the same `Gpu`; when it is lost, the page makes a new one and the views move to it.
-#[wasm_bindgen]
-pub struct Gpu {
-    instance: wgpu::Instance,
-    adapter: wgpu::Adapter,
-    context: GpuContext,
-}
-
-#[wasm_bindgen]
-impl Gpu {
-    /// Requests an adapter and a device. Rejects with a message saying what is missing when the
-    /// browser has no WebGPU or no adapter.
-    pub async fn create() -> Result<Gpu, JsError> {
-        let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
-        desc.backends = wgpu::Backends::BROWSER_WEBGPU;
-        let instance = wgpu::Instance::new(desc);
-        let (adapter, device, queue) = crate::gpu::request_device(&instance, None).await.map_err(js_error)?;
-        Ok(Gpu { instance, adapter, context: GpuContext::new(device, queue) })
-    }
-
-    /// True when the browser says the adapter is a fallback (software) one.
-    pub fn is_fallback(&self) -> bool {
-        self.adapter.get_info().device_type == wgpu::DeviceType::Cpu
-    }
-
-    /// Why the device was lost, once it has been.
-    pub fn lost(&self) -> Option<String> {
-        self.context.lost()
-    }
-
-    /// The first GPU error raised on this device outside a view's frames, if any.
-    pub fn gpu_error(&self) -> Option<String> {
-        self.context.gpu_error()
-    }
-
-    /// Destroys the device, as a driver reset would (tests of recovery use it).
-    pub fn destroy(&self) {
-        self.context.device().destroy();
-    }
-
-    /// Renderers alive on this device (one per view that has started and not been removed).
-    pub fn live_renderers(&self) -> u32 {
-        self.context.live_renderers() as u32
-    }
-
-    /// Pipeline sets compiled on this device: one for the compute passes plus one per output format
-    /// and sample count, however many views there are.
-    pub fn pipeline_sets_built(&self) -> u32 {
-        self.context.pipeline_sets_built() as u32
-    }
-
-    /// The largest resolution this device holds.
-    pub fn max_resolution(&self) -> u32 {
-        crate::renderer::max_resolution(self.context.device())
-    }
-}
-
 /// A view: one canvas, its renderer, scene and buffers, on a shared `Gpu`.
 #[wasm_bindgen]
 pub struct View {
@@ -194,10 +150,7 @@ impl View {
         antialiasing: bool,
     ) -> Result<View, JsError> {
         let (width, height) = (canvas.width().max(1), canvas.height().max(1));
-        let surface = gpu
-            .instance
-            .create_surface(wgpu::SurfaceTarget::Canvas(canvas))
-            .map_err(|e| js_error(format!("cannot draw on the canvas with WebGPU: {e}")))?;
+        let surface = gpu.surface_for(canvas)?;
         let capabilities = surface.get_capabilities(&gpu.adapter);
         let format =
             *capabilities.formats.first().ok_or_else(|| js_error("the canvas offers no texture format"))?;
@@ -351,18 +304,36 @@ impl View {
         Ok(())
     }
 
+    /// Where the latest frame's mesh came from: `gpu` (compute passes) or `cpu` (the CPU mesher).
+    pub fn mesh_source(&self) -> String {
+        self.renderer.mesh_source().word().into()
+    }
+
     /// Runs mesh generation alone (no drawing), for the benchmark.
     pub fn extract(&mut self) {
         self.renderer.extract();
     }
 
-    /// A promise that resolves when the GPU has finished all work submitted so far.
+    /// A promise that resolves when the GPU has finished all work submitted so far. WebGPU reports it
+    /// by itself; a WebGL2 device is polled (between browser tasks) until it does.
     pub fn work_done(&self) -> js_sys::Promise {
-        let (sender, receiver) = futures_channel::oneshot::channel::<()>();
+        let (sender, mut receiver) = futures_channel::oneshot::channel::<()>();
         self.renderer.queue().on_submitted_work_done(move || {
             let _ = sender.send(());
         });
+        let device = self.device.clone();
+        let polled = self.renderer.context().has_compute().not();
         wasm_bindgen_futures::future_to_promise(async move {
+            if polled {
+                loop {
+                    let _ = device.poll(wgpu::PollType::Poll);
+                    match receiver.try_recv() {
+                        Ok(Some(())) => return Ok(JsValue::UNDEFINED),
+                        Ok(None) => next_task().await,
+                        Err(_) => return Err(JsValue::from_str("the GPU queue was dropped")),
+                    }
+                }
+            }
             receiver.await.map_err(|_| JsValue::from_str("the GPU queue was dropped"))?;
             Ok(JsValue::UNDEFINED)
         })

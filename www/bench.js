@@ -1,6 +1,8 @@
-// The benchmark in the browser (`?bench`, optionally `&bench_resolutions=32,64&bench_spheres=1,5&bench_frames=10`): the same fixed sequence as `metaballs bench`, timed with the
-// GPU queue synchronised after each frame. Shows a table and logs it as JSON on the console (a line
-// starting with "metaballs-bench ") for headless runs to collect.
+// The benchmark in the browser (`?bench`, optionally `&bench_resolutions=32,64&bench_spheres=1,5&bench_frames=10`
+// and `&bench_meshers=gpu,cpu`): the same fixed sequence as `metaballs bench`, for each mesher the
+// adapter has (the GPU's compute passes and the CPU mesher; WebGL2 has only the CPU), timed with the
+// GPU queue synchronised after each frame. Shows a table, says which mesher `auto` picks here, and logs
+// the records as JSON on the console (a line starting with "metaballs-bench ") for headless runs.
 
 const median = (values) => [...values].sort((a, b) => a - b)[Math.floor(values.length / 2)];
 
@@ -22,16 +24,18 @@ async function timeFrames(view, frames, step) {
 }
 
 function showTable(container, records, status) {
-  const rows = records.map((r) => `<tr><td>${r.resolution}</td><td>${r.spheres}</td><td>${r.frame_ms.toFixed(1)}</td>`
+  const rows = records.map((r) => `<tr><td>${r.mesher}</td><td>${r.resolution}</td><td>${r.spheres}</td><td>${r.frame_ms.toFixed(1)}</td>`
     + `<td>${r.mesh_ms.toFixed(1)}</td><td>${r.triangles}</td><td>${(100 * r.active_cell_fraction).toFixed(2)}</td>`
     + `<td>${(100 * r.active_block_fraction).toFixed(1)}</td><td>${(r.mesh_bytes / 1048576).toFixed(1)}</td></tr>`);
-  container.innerHTML = `<h2>Benchmark</h2><p>${status}</p><table><thead><tr><th>cells</th><th>spheres</th>`
+  container.innerHTML = `<h2>Benchmark</h2><p>${status}</p><table><thead><tr><th>mesher</th><th>cells</th><th>spheres</th>`
     + '<th>frame ms</th><th>mesh ms</th><th>triangles</th><th>cells %</th><th>blocks %</th><th>mesh MiB</th>'
     + `</tr></thead><tbody>${rows.join('')}</tbody></table>`;
 }
 
-export async function runBenchmark(view, container) {
+export async function runBenchmark(view, container, { hasCompute = true } = {}) {
   const query = new URLSearchParams(location.search);
+  const wanted = query.has('bench_meshers') ? query.get('bench_meshers').split(',') : ['gpu', 'cpu'];
+  const meshers = wanted.filter((m) => (m === 'cpu' || (m === 'gpu' && hasCompute)));
   const maxResolution = view.max_resolution();
   const resolutions = listParam(query, 'bench_resolutions', [32, 64, 128, 256]).filter((n) => n <= maxResolution);
   const sphereCounts = listParam(query, 'bench_spheres', [1, 5, 16, 64]);
@@ -40,30 +44,39 @@ export async function runBenchmark(view, container) {
   const records = [];
   for (const resolution of resolutions) {
     for (const spheres of sphereCounts) {
-      showTable(container, records, `Running ${resolution}³ cells × ${spheres} spheres…`);
-      view.set_resolution(resolution);
-      view.set_sphere_count(spheres);
-      // Warm up: pipelines compile and the buffers grow to the surface.
-      await timeFrames(view, 3, () => view.frame(1 / 60));
-      const frame_ms = await timeFrames(view, frames, () => view.frame(1 / 60));
-      const mesh_ms = await timeFrames(view, frames, () => view.extract());
-      await timeFrames(view, 2, () => view.frame(0));
-      const stats = view.stats();
-      const [blocks, cells] = view.active_fractions();
-      records.push({
-        resolution,
-        spheres,
-        frame_ms,
-        mesh_ms,
-        triangles: stats?.triangles ?? 0,
-        active_cell_fraction: cells,
-        active_block_fraction: blocks,
-        mesh_bytes: view.mesh_bytes(),
-      });
-      stats?.free();
+      for (const mesher of meshers) {
+        showTable(container, records, `Running ${resolution}³ cells × ${spheres} spheres, ${mesher} mesher…`);
+        view.set_parameter('mesher', mesher);
+        view.set_resolution(resolution);
+        view.set_sphere_count(spheres);
+        // Warm up: pipelines compile and the buffers grow to the surface.
+        await timeFrames(view, 3, () => view.frame(1 / 60));
+        const frame_ms = await timeFrames(view, frames, () => view.frame(1 / 60));
+        const mesh_ms = await timeFrames(view, frames, () => view.extract());
+        await timeFrames(view, 2, () => view.frame(0));
+        const stats = view.stats();
+        const [blocks, cells] = view.active_fractions();
+        records.push({
+          mesher: view.mesh_source(),
+          resolution,
+          spheres,
+          frame_ms,
+          mesh_ms,
+          triangles: stats?.triangles ?? 0,
+          active_cell_fraction: cells,
+          active_block_fraction: blocks,
+          mesh_bytes: view.mesh_bytes(),
+        });
+        stats?.free();
+      }
     }
   }
-  showTable(container, records, `${frames} frames per row, medians; the GPU queue is synchronised after each frame.`);
+  view.set_parameter('mesher', 'auto');
+  await timeFrames(view, 1, () => view.frame(0));
+  const auto = view.mesh_source();
+  showTable(container, records, `${frames} frames per row, medians; the GPU queue is synchronised after each frame. `
+    + `Here mesher=auto uses the ${auto.toUpperCase()} mesher.`);
   console.log(`metaballs-bench ${JSON.stringify(records)}`);
+  console.log(`metaballs-bench-auto ${auto}`);
   return records;
 }

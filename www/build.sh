@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# Builds the page's WebAssembly into pkg/ (release), installing what it needs when missing: the wasm32
-# target and the wasm-bindgen command line at exactly the version Cargo.lock pins.
+# Builds the page's WebAssembly (release), installing what it needs when missing: the wasm32 target and
+# the wasm-bindgen command line at exactly the version Cargo.lock pins. Two builds: pkg/ draws with
+# WebGPU (what nearly every visitor loads), pkg-webgl/ with WebGL2, loaded only where WebGPU is missing
+# (wgpu's WebGL2 backend is large, so WebGPU visitors do not pay for it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -14,6 +16,12 @@ if ! command -v wasm-bindgen >/dev/null || [ "$(wasm-bindgen --version | awk '{p
     cargo install wasm-bindgen-cli --version "=$version"
 fi
 
-cargo build --release --lib --target wasm32-unknown-unknown
-wasm-bindgen --target web --no-typescript --out-dir pkg target/wasm32-unknown-unknown/release/metaballs.wasm
-echo "built pkg/metaballs_bg.wasm ($(wc -c < pkg/metaballs_bg.wasm) bytes, $(gzip -9c pkg/metaballs_bg.wasm | wc -c) gzipped)"
+build() {
+    local out=$1
+    shift
+    cargo build --release --lib --target wasm32-unknown-unknown "$@"
+    wasm-bindgen --target web --no-typescript --out-dir "$out" target/wasm32-unknown-unknown/release/metaballs.wasm
+    echo "built $out/metaballs_bg.wasm ($(wc -c < "$out/metaballs_bg.wasm") bytes, $(gzip -9c "$out/metaballs_bg.wasm" | wc -c) gzipped)"
+}
+build pkg
+build pkg-webgl --features webgl

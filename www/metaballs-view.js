@@ -4,7 +4,8 @@
 // takes keys only while focused, and survives a lost GPU.
 
 import {
-  caseGallery, hub, loadWasm, parameterTable, parseParameter, propertyName, View, within, WEBGPU_HELP,
+  backendName, caseGallery, hub, loadWasm, MAX_WEBGL_FIGURES, parameterTable, parseParameter, propertyName,
+  wasmModule, within, WEBGPU_HELP,
 } from './lib/engine.js';
 import { Inspector } from './lib/inspector.js';
 import { wireCameraInput } from './lib/camera-input.js';
@@ -66,6 +67,8 @@ export class MetaballsView extends HTMLElement {
   #changed = new Set();
   #given = new Set();
   #view = null;
+  // The WebGL2 device this figure owns (WebGPU figures share the hub's).
+  #ownGpu = null;
   #starting = null;
   #near = false;
   #onScreen = false;
@@ -226,6 +229,7 @@ export class MetaballsView extends HTMLElement {
     this.#showPanel = buildPanel(this.#root.getElementById('panel'), names, TABLE, this.#state,
       (name, value) => this.#set(name, value), this.#actions, {
         maxResolution: this.#software ? Math.min(256, maxResolution) : maxResolution,
+        withoutCompute: Boolean(this.#ownGpu && !this.#ownGpu.has_compute()),
         small: this.clientWidth > 0 && this.clientWidth < 560,
         gallery: GALLERY,
       });
@@ -253,22 +257,36 @@ export class MetaballsView extends HTMLElement {
   }
 
   async #create() {
+    const webgl = backendName() === 'webgl2';
     let gpu;
     try {
-      gpu = await hub.acquire();
+      gpu = webgl ? await hub.acquireWebgl(this, this.#canvas) : await hub.acquire();
     } catch (error) {
-      const noWebGpu = !('gpu' in navigator) || !navigator.gpu;
-      this.fail(noWebGpu ? 'WebGPU is not available' : 'WebGPU could not start',
-        noWebGpu ? WEBGPU_HELP : `${error?.message ?? error}\n\n${WEBGPU_HELP}`, { retry: Boolean(hub.stopped) });
+      const none = backendName() === 'none';
+      const title = none ? 'Neither WebGPU nor WebGL2 is available'
+        : webgl ? 'WebGL2 could not start' : 'WebGPU could not start';
+      this.fail(title, none ? WEBGPU_HELP : `${error?.message ?? error}\n\n${WEBGPU_HELP}`,
+        { retry: Boolean(hub.stopped) });
       return;
     }
-    if (!this.isConnected || this.#view) return;
-    this.#software = hub.adapter?.software || gpu.is_fallback();
+    if (gpu === null) {
+      this.#failed = true;
+      this.#showMessage('Paused', `This browser has no WebGPU, so the figures draw with WebGL2, which allows `
+        + `a page only a few drawing contexts: ${MAX_WEBGL_FIGURES} figures are drawing already. This one `
+        + 'starts when one of them is removed.');
+      return;
+    }
+    if (!this.isConnected || this.#view) {
+      if (webgl) this.#freeOwnGpu(gpu);
+      return;
+    }
+    if (webgl) this.#ownGpu = gpu;
+    this.#software = Boolean(hub.adapter?.software || gpu.is_fallback());
     this.#hud.setAdapter(hub.adapter?.label ?? 'WebGPU');
     if (this.#software && !this.#given.has('antialiasing')) this.#state.antialiasing = false;
     this.#sizeCanvas();
     const s = this.#state;
-    const create = (resolution) => within(this, () => View.create(
+    const create = (resolution) => within(this, () => wasmModule().View.create(
       gpu, this.#canvas, s.spheres, s.iso, resolution, s.seed, s.antialiasing));
     try {
       this.#view = create(s.resolution);
@@ -302,14 +320,26 @@ export class MetaballsView extends HTMLElement {
     hub.requestFrame();
   }
 
-  // Frees the renderer's GPU memory and leaves the canvas unconfigured.
+  // Frees the renderer's GPU memory and leaves the canvas unconfigured (a WebGL2 figure gives its
+  // device back, so a waiting figure can start).
   #release() {
-    if (!this.#view) return;
-    this.#view.free();
-    this.#view = null;
+    if (this.#view) {
+      this.#view.free();
+      this.#view = null;
+      try {
+        this.#canvas.getContext('webgpu')?.unconfigure();
+      } catch { /* the context is gone with the device, or the canvas draws with WebGL2 */ }
+    }
+    if (this.#ownGpu) this.#freeOwnGpu(this.#ownGpu);
+    this.#ownGpu = null;
+    hub.releaseWebgl(this);
+  }
+
+  #freeOwnGpu(gpu) {
     try {
-      this.#canvas.getContext('webgpu')?.unconfigure();
-    } catch { /* the context is gone with the device */ }
+      gpu.free();
+    } catch { /* already gone */ }
+    hub.releaseWebgl(this);
   }
 
   /** The device is lost: keep the scene on the CPU and let go of the GPU. */
@@ -334,12 +364,16 @@ export class MetaballsView extends HTMLElement {
   fail(title, text, { retry = false } = {}) {
     this.#failed = true;
     this.#release();
+    this.#showMessage(title, text, retry);
+    this.dispatchEvent(new CustomEvent('metaballs-error', { detail: { message: `${title}: ${text}` } }));
+  }
+
+  #showMessage(title, text, retry = false) {
     const $ = (id) => this.#root.getElementById(id);
     $('message-title').textContent = title;
     $('message-text').textContent = text;
     $('retry').hidden = !retry;
     $('message').hidden = false;
-    this.dispatchEvent(new CustomEvent('metaballs-error', { detail: { message: `${title}: ${text}` } }));
   }
 
   #hideMessage() {
@@ -509,7 +543,7 @@ export class MetaballsView extends HTMLElement {
     } finally {
       this.#held = false;
       // Whatever `f` changed, the figure goes back to its own settings.
-      for (const name of ['spheres', 'resolution', 'iso', 'seed']) this.#changed.add(name);
+      for (const name of ['spheres', 'resolution', 'iso', 'seed', 'mesher']) this.#changed.add(name);
       this.#dirty = 3;
       hub.requestFrame();
     }

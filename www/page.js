@@ -3,7 +3,7 @@
 // person changes them, plus the benchmark mode (`?bench`). Bad values in a link are reported inside the
 // figure and replaced by defaults.
 
-import { loadWasm, parameterTable, parseParameter, propertyName } from './lib/engine.js';
+import { backendName, loadWasm, parameterTable, parseParameter, propertyName } from './lib/engine.js';
 import { runBenchmark } from './bench.js';
 
 await loadWasm();
@@ -63,7 +63,7 @@ window.metaballs = { element };
 if (query.has('bench')) {
   const container = document.getElementById('bench');
   // The figure goes back to its own settings afterwards; the table stays.
-  element.withView((view) => runBenchmark(view, container)).catch(
+  element.withView((view) => runBenchmark(view, container, { hasCompute: backendName() === 'webgpu' })).catch(
     (error) => element.fail('The benchmark stopped', error?.message ?? String(error)),
   );
 }

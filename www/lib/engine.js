@@ -1,32 +1,64 @@
-// The WebAssembly and the GPU, once per page: loads the wasm a single time, holds the one device every
-// <metaballs-view> on the page draws with, drives all of them from one requestAnimationFrame loop (which
-// stops when none needs a frame), and rebuilds every view on a new device when the device is lost.
+// The WebAssembly and the GPU, once per page: picks WebGPU where the browser gives an adapter, else
+// WebGL2 (a second wasm build, loaded only then, whose meshes come from the CPU mesher), loads that wasm
+// a single time, holds the one WebGPU device every <metaballs-view> on the page draws with (WebGL2 has
+// a device per canvas), drives all of them from one requestAnimationFrame loop (which stops when none
+// needs a frame), and rebuilds every view on a new device when the device is lost.
 
-import init, {
-  Gpu, View, case_gallery, cube_geometry, parameters as wasmParameters, parse_parameter,
-} from '../../pkg/metaballs.js';
+let wasm = null;
+let backend = null;
+let detectedAdapter = null;
 
-export { View };
+/** The wasm module in use (after `loadWasm`). */
+export const wasmModule = () => wasm;
+
+/** What this browser draws with: 'webgpu', 'webgl2' or 'none' (after `loadWasm`). */
+export const backendName = () => backend;
 
 let gallery = null;
 /** The 15 classes of cases (representative, inside corners, triangles) and the cube's numbering. */
 export function caseGallery() {
-  gallery ??= { classes: case_gallery(), cube: cube_geometry() };
+  gallery ??= { classes: wasm.case_gallery(), cube: wasm.cube_geometry() };
   return gallery;
+}
+
+// WebGPU where the browser gives an adapter (some expose navigator.gpu and then give none); else
+// WebGL2 where a canvas gives a WebGL2 context.
+async function detectBackend() {
+  if (navigator.gpu) {
+    try {
+      detectedAdapter = await navigator.gpu.requestAdapter();
+      if (detectedAdapter) return 'webgpu';
+    } catch { /* no adapter */ }
+  }
+  try {
+    const gl = document.createElement('canvas').getContext('webgl2');
+    if (gl) {
+      gl.getExtension('WEBGL_lose_context')?.loseContext();
+      return 'webgl2';
+    }
+  } catch { /* no WebGL2 */ }
+  return 'none';
 }
 
 let wasmReady = null;
 
-/** Loads and starts the wasm (once, however many elements ask). */
+/** Picks the backend and loads and starts its wasm (once, however many elements ask). */
 export function loadWasm() {
-  wasmReady ??= init();
+  wasmReady ??= (async () => {
+    backend = await detectBackend();
+    const module = backend === 'webgl2'
+      ? await import('../../pkg-webgl/metaballs.js')
+      : await import('../../pkg/metaballs.js');
+    await module.default();
+    wasm = module;
+  })();
   return wasmReady;
 }
 
 let table = null;
 /** The parameter table from Rust (name, url, label, kind, min, max, slider, default). */
 export function parameterTable() {
-  table ??= wasmParameters();
+  table ??= wasm.parameters();
   return table;
 }
 
@@ -35,14 +67,17 @@ export const propertyName = (name) => name.replace(/-([a-z])/g, (_, c) => c.toUp
 
 /** Reads `text` as parameter `name`'s value; throws an Error with a message saying what is accepted. */
 export function parseParameter(name, text) {
-  return parse_parameter(name, text);
+  return wasm.parse_parameter(name, text);
 }
 
 export const WEBGPU_HELP =
-  'This figure draws with WebGPU, which this browser does not offer. ' +
+  'This figure draws with WebGPU or, without it, WebGL2; this browser offers neither. ' +
   'Use a current Chrome or Edge (113 or later), Safari 26, or Firefox 141 or later. ' +
   'On Linux, Chrome needs WebGPU switched on at chrome://flags/#enable-unsafe-webgpu; ' +
   'the page must also be served over https or from localhost.';
+
+/** WebGL2 figures drawing at once: browsers allow a page only a few WebGL contexts (16 in Chromium). */
+export const MAX_WEBGL_FIGURES = 8;
 
 // Losses closer together than this count as one run; this many in a run and the hub stops retrying.
 const LOSS_WINDOW_MS = 60_000;
@@ -59,6 +94,9 @@ class Hub {
     this.recovering = false;
     this.stopped = null;
     this.frameRequested = false;
+    // WebGL2 figures holding a device now, and those waiting for one to be given back.
+    this.webglHolders = new Set();
+    this.webglWaiting = new Set();
   }
 
   /** Devices alive now (0 or 1). */
@@ -75,18 +113,47 @@ class Hub {
   }
 
   async #start() {
-    if (!('gpu' in navigator) || !navigator.gpu) throw new Error(WEBGPU_HELP);
     await loadWasm();
-    this.adapter = await describeAdapter();
+    if (backend !== 'webgpu') throw new Error(WEBGPU_HELP);
+    this.adapter = describeAdapter(detectedAdapter);
     let gpu;
     try {
-      gpu = await Gpu.create();
+      gpu = await wasm.Gpu.create();
     } catch (error) {
       throw new Error(`${error?.message ?? error}`);
     }
+    gpu.set_software(this.adapter.software);
     this.devicesCreated += 1;
     this.gpu = gpu;
     return gpu;
+  }
+
+  /**
+   * A WebGL2 device of its own for `element`'s canvas, or null while `MAX_WEBGL_FIGURES` others hold
+   * one (the element says so and starts when one is given back).
+   */
+  async acquireWebgl(element, canvas) {
+    if (!this.webglHolders.has(element) && this.webglHolders.size >= MAX_WEBGL_FIGURES) {
+      this.webglWaiting.add(element);
+      return null;
+    }
+    this.webglWaiting.delete(element);
+    this.webglHolders.add(element);
+    this.adapter = { label: 'WebGL2', software: false };
+    try {
+      return await wasm.Gpu.create_webgl(canvas);
+    } catch (error) {
+      this.releaseWebgl(element);
+      throw new Error(`${error?.message ?? error}`);
+    }
+  }
+
+  /** `element` gave its WebGL2 device back: the first figure waiting for one starts. */
+  releaseWebgl(element) {
+    this.webglWaiting.delete(element);
+    if (!this.webglHolders.delete(element)) return;
+    const [next] = this.webglWaiting;
+    if (next) next.resume();
   }
 
   register(element) {
@@ -175,11 +242,10 @@ class Hub {
 export const hub = new Hub();
 
 // The browser names its adapter through GPUAdapterInfo (wgpu sees only an anonymous one). Software
-// adapters (SwiftShader, llvmpipe, or any fallback adapter) draw much faster without multisampling and
-// at lower pixel ratios.
-async function describeAdapter() {
+// adapters (SwiftShader, llvmpipe, or any fallback adapter) draw much faster without multisampling, at
+// lower pixel ratios and with the CPU mesher.
+function describeAdapter(adapter) {
   try {
-    const adapter = await navigator.gpu.requestAdapter();
     const info = adapter?.info;
     const words = [info?.vendor, info?.architecture, info?.description].filter(Boolean);
     const software = Boolean(info?.isFallbackAdapter || adapter?.isFallbackAdapter)

@@ -1,4 +1,5 @@
-// The figure's statistics: frames per second, frame time, triangles, adapter, and a warning when the
+// The figure's statistics: frames per second, frame time, triangles, adapter and mesher (GPU or CPU
+// meshing), and a warning when the
 // triangle budget stays full. Figures update twice a second from the GPU's asynchronous reports.
 
 const numberFormat = new Intl.NumberFormat('en');
@@ -10,12 +11,20 @@ export class Hud {
     this.frames = 0;
     this.since = 0;
     this.overflows = 0;
-    this.stats = { triangles: 0, fps: 0, frameTime: 0, adapter: '', overflowed: false };
+    this.stats = { triangles: 0, fps: 0, frameTime: 0, adapter: '', mesher: '', overflowed: false };
+    this.adapterLabel = '';
   }
 
+  /** The adapter's name (`WebGPU · google swiftshader`, `WebGL2`); the mesher in use follows it. */
   setAdapter(label) {
-    this.stats.adapter = label;
-    this.root.getElementById('adapter').textContent = label;
+    this.adapterLabel = label;
+    this.#showAdapter();
+  }
+
+  #showAdapter() {
+    const mesher = this.stats.mesher ? ` · ${this.stats.mesher.toUpperCase()} meshing` : '';
+    this.stats.adapter = `${this.adapterLabel}${mesher}`;
+    this.root.getElementById('adapter').textContent = this.stats.adapter;
   }
 
   /** Counts a frame drawn. */
@@ -35,6 +44,11 @@ export class Hud {
     $('frame-time').textContent = this.frames ? `${this.stats.frameTime.toFixed(1)} ms` : 'idle';
     this.frames = 0;
     this.since = now;
+    const mesher = view.mesh_source();
+    if (mesher !== this.stats.mesher) {
+      this.stats.mesher = mesher;
+      this.#showAdapter();
+    }
     const stats = view.stats();
     if (!stats) return;
     this.stats.triangles = stats.triangles;

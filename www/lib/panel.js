@@ -7,12 +7,17 @@ import { colorKey, sliceKey } from './legends.js';
 import { buildGallery } from './inspector.js';
 
 const GROUPS = [
-  ['Surface', ['spheres', 'iso', 'resolution', 'speed', 'seed', 'paused', 'step', 'view']],
+  ['Surface', ['spheres', 'iso', 'resolution', 'mesher', 'speed', 'seed', 'paused', 'step', 'view']],
   ['Display', ['display', 'grid', 'color_by', 'ambiguous', 'color', 'antialiasing']],
   ['Teaching', ['slice', 'interpolation', 'blend', 'inspector']],
   ['Light', ['light', 'spot_angle', 'spot_softness', 'ambient', 'diffuse', 'specular', 'shininess']],
   ['Camera', ['projection', 'fov']],
 ];
+
+// Views drawn from the compute passes' buffers, and the choice of mesher: without compute shaders
+// (WebGL2) the CPU makes every mesh and these are shown disabled, saying why.
+const NEED_COMPUTE = new Set(['display', 'grid', 'color_by', 'ambiguous', 'slice', 'mesher']);
+const WITHOUT_COMPUTE = 'Needs WebGPU (compute shaders); this browser draws with WebGL2 and meshes on the CPU';
 
 const FORMATS = {
   spheres: (v) => String(v),
@@ -60,7 +65,7 @@ function row(id, labelText, input, output = element('output')) {
  * `show(state, inspectedClass)` to bring the controls up to date.
  */
 export function buildPanel(container, names, table, state, onChange, actions, options) {
-  const { maxResolution, small, gallery } = options;
+  const { maxResolution, small, gallery, withoutCompute = false } = options;
   container.replaceChildren();
   container.hidden = names.length === 0;
   if (!names.length) return () => {};
@@ -204,7 +209,13 @@ export function buildPanel(container, names, table, state, onChange, actions, op
           element('summary', { textContent: 'The 15 cases' }), galleryList));
       } else {
         const spec = byName[name];
-        section.append(controls[spec.kind](name, spec));
+        const control = controls[spec.kind](name, spec);
+        if (withoutCompute && NEED_COMPUTE.has(name)) {
+          for (const input of control.querySelectorAll('input, select')) input.disabled = true;
+          control.title = WITHOUT_COMPUTE;
+          control.classList.add('unavailable');
+        }
+        section.append(control);
         if (name === 'color_by') {
           const key = element('div', { className: 'key' });
           updates.push((s) => key.replaceChildren(...[colorKey(s, classNames)].filter(Boolean)));

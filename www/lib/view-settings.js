@@ -12,7 +12,7 @@ function hexToLinear(hex) {
 // The view options, light strengths and field of view go through one setter by name, as text.
 const BY_NAME = [
   'display', 'grid', 'color_by', 'slice', 'ambiguous', 'interpolation', 'blend', 'light', 'spot_angle',
-  'spot_softness', 'ambient', 'diffuse', 'specular', 'projection', 'fov',
+  'spot_softness', 'ambient', 'diffuse', 'specular', 'projection', 'fov', 'mesher',
 ];
 
 const SETTERS = {
