@@ -14,6 +14,7 @@ import { elementStyle, flasher, TEMPLATE } from './lib/element-dom.js';
 import { Hud } from './lib/hud.js';
 import { applySetting, isRendererSetting } from './lib/view-settings.js';
 import { canvasPixels, pixelRatio } from './lib/canvas-size.js';
+import { CONFIRM_ABOVE_MS, describeMs, FrameCost } from './lib/frame-cost.js';
 
 const wasmError = await loadWasm().then(() => null, (error) => error);
 const TABLE = wasmError ? [] : parameterTable();
@@ -69,6 +70,10 @@ export class MetaballsView extends HTMLElement {
   #view = null;
   // The WebGL2 device this figure owns (WebGPU figures share the hub's).
   #ownGpu = null;
+  // Frame time per resolution and sphere count on this adapter, and changes waiting for confirmation.
+  #cost = null;
+  #pending = null;
+  #confirmed = false;
   #starting = null;
   #near = false;
   #onScreen = false;
@@ -107,6 +112,8 @@ export class MetaballsView extends HTMLElement {
     const $ = (id) => this.#root.getElementById(id);
     $('play').addEventListener('click', () => { this.play(); this.#canvas.focus(); });
     $('retry').addEventListener('click', () => hub.retry());
+    $('confirm-apply').addEventListener('click', () => this.#resolvePending(true));
+    $('confirm-keep').addEventListener('click', () => this.#resolvePending(false));
     this.#flash = flasher(this.#root);
     this.#inspector = new Inspector(this.#root, GALLERY.cube, {
       view: () => this.#view,
@@ -196,6 +203,12 @@ export class MetaballsView extends HTMLElement {
   // Takes a valid value: records it, applies it to the renderer on the next frame, tells listeners.
   #accept(name, value) {
     if (this.#state[name] === value) return;
+    if (this.#tooSlow({ ...this.#state, [name]: value })) {
+      this.#ask({ [name]: value });
+      this.#reflect(name);
+      this.#showPanel(this.#state);
+      return;
+    }
     this.#state[name] = value;
     this.#changed.add(name);
     if (name === 'controls') this.#buildPanel();
@@ -284,6 +297,8 @@ export class MetaballsView extends HTMLElement {
     this.#software = Boolean(hub.adapter?.software || gpu.is_fallback());
     this.#hud.setAdapter(hub.adapter?.label ?? 'WebGPU');
     if (this.#software && !this.#given.has('antialiasing')) this.#state.antialiasing = false;
+    this.#cost ??= new FrameCost(this.#software || webgl);
+    this.#startAffordably();
     this.#sizeCanvas();
     const s = this.#state;
     const create = (resolution) => within(this, () => wasmModule().View.create(
@@ -431,7 +446,10 @@ export class MetaballsView extends HTMLElement {
       if (animating || this.#dirty > 0 || this.#stepRequested || view.needs_redraw()) {
         const dt = animating ? elapsed * this.#state.speed : this.#stepRequested ? 1 / 60 : 0;
         this.#stepRequested = false;
+        const started = performance.now();
         within(this, () => view.frame(dt));
+        const blocked = performance.now() - started;
+        if (blocked > 100) this.#observeCost(blocked);
         this.#framesDrawn += 1;
         this.#hud.countFrame();
         this.#dirty = Math.max(0, this.#dirty - 1);
@@ -442,7 +460,8 @@ export class MetaballsView extends HTMLElement {
       this.fail('The renderer stopped', error?.message ?? String(error));
       return false;
     }
-    this.#hud.update(now, view);
+    const frameMs = this.#hud.update(now, view);
+    if (frameMs && !this.#state.paused) this.#observeCost(frameMs);
     this.#inspector.follow(now);
     const error = view.gpu_error();
     if (error) {
@@ -451,6 +470,64 @@ export class MetaballsView extends HTMLElement {
     }
     return true;
   }
+
+  // ---------------------------------------------------------------- costly settings
+
+  #observeCost(ms) {
+    const { resolution, spheres } = this.#applied;
+    this.#cost?.observe({ resolution, spheres }, ms);
+  }
+
+  // True when `settings` would make frames slower than a second here (and slower than now).
+  #tooSlow(settings) {
+    if (!this.#cost || this.#confirmed) return false;
+    const estimate = this.#cost.estimate(settings);
+    return estimate > CONFIRM_ABOVE_MS && estimate > this.#cost.estimate(this.#state);
+  }
+
+  // Before the first frame: a link asking for frames slower than a second starts at the defaults for
+  // the costly parameters instead, and asks.
+  #startAffordably() {
+    const asked = { resolution: this.#state.resolution, spheres: this.#state.spheres };
+    if (this.#cost.estimate(asked) <= CONFIRM_ABOVE_MS) return;
+    const d = defaults();
+    for (const name of ['resolution', 'spheres']) {
+      if (this.#cost.estimate(this.#state) <= CONFIRM_ABOVE_MS) break;
+      this.#state[name] = Math.min(this.#state[name], d[name]);
+      this.#reflect(name);
+    }
+    const kept = { resolution: this.#state.resolution, spheres: this.#state.spheres };
+    if (this.#cost.estimate(kept) > CONFIRM_ABOVE_MS) return;
+    this.#ask(Object.fromEntries(Object.entries(asked).filter(([name, v]) => kept[name] !== v)));
+  }
+
+  // Shows the confirmation: the estimated frame time of `changes` and what is kept meanwhile.
+  #ask(changes) {
+    this.#pending = { ...(this.#pending ?? {}), ...changes };
+    const next = { ...this.#state, ...this.#pending };
+    const describe = (s) => `${s.resolution}³ × ${s.spheres} sphere${s.spheres === 1 ? '' : 's'}`;
+    const $ = (id) => this.#root.getElementById(id);
+    $('confirm-text').textContent = `${describe(next)}: ${describeMs(this.#cost.estimate(next))} per frame `
+      + 'on this adapter, during which the page would not respond.';
+    $('confirm-keep').textContent = `Keep ${describe(this.#state)}`;
+    $('confirm').hidden = false;
+  }
+
+  #resolvePending(apply) {
+    const pending = this.#pending;
+    this.#pending = null;
+    this.#root.getElementById('confirm').hidden = true;
+    if (!apply || !pending) return;
+    this.#confirmed = true;
+    try {
+      for (const [name, value] of Object.entries(pending)) this.#set(name, value);
+    } finally {
+      this.#confirmed = false;
+    }
+  }
+
+  /** The change waiting for the person's confirmation (a slow frame), or null. */
+  get pendingChange() { return this.#pending ? { ...this.#pending } : null; }
 
   // ---------------------------------------------------------------- the cell inspector
 

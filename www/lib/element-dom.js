@@ -133,6 +133,22 @@ button:focus-visible, input:focus-visible { outline: 2px solid var(--accent); ou
 #notice { background: #3b2f12; border: 1px solid #8a6a1f; color: #ffe2a3; }
 #wheel-hint { background: var(--panel); color: var(--text); pointer-events: none; }
 #notice[hidden], #wheel-hint[hidden] { display: none; }
+#confirm {
+  position: absolute;
+  left: 50%;
+  top: 50%;
+  transform: translate(-50%, -50%);
+  max-width: min(440px, calc(100% - 16px));
+  padding: 10px 12px;
+  border-radius: 8px;
+  background: #3b2f12;
+  border: 1px solid #8a6a1f;
+  color: #ffe2a3;
+  font-size: 13px;
+}
+#confirm p { margin: 0 0 8px; }
+#confirm .buttons { display: flex; gap: 8px; flex-wrap: wrap; }
+#confirm[hidden] { display: none; }
 
 select {
   width: 100%;
@@ -221,6 +237,10 @@ export const TEMPLATE = `
   <section id="inspector" aria-label="Cell inspector" hidden></section>
   <div id="wheel-hint" hidden></div>
   <div id="notice" role="status" hidden></div>
+  <div id="confirm" role="alertdialog" aria-labelledby="confirm-text" hidden>
+    <p id="confirm-text"></p>
+    <div class="buttons"><button type="button" id="confirm-apply">Apply anyway</button><button type="button" id="confirm-keep">Keep</button></div>
+  </div>
   <div id="message" role="alert" hidden>
     <h2 id="message-title"></h2>
     <p id="message-text"></p>

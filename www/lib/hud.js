@@ -32,16 +32,20 @@ export class Hud {
     this.frames += 1;
   }
 
-  /** Called every animation frame; refreshes the figures every half second from `view`'s stats. */
+  /**
+   * Called every animation frame; refreshes the figures every half second from `view`'s stats.
+   * Returns the mean frame time when it refreshed with frames drawn, else null.
+   */
   update(now, view) {
     if (!this.since) this.since = now;
     const elapsed = now - this.since;
-    if (elapsed < 500) return;
+    if (elapsed < 500) return null;
     const $ = (id) => this.root.getElementById(id);
     this.stats.fps = (this.frames * 1000) / elapsed;
     this.stats.frameTime = this.frames ? elapsed / this.frames : 0;
     $('fps').textContent = this.frames ? this.stats.fps.toFixed(1) : '–';
     $('frame-time').textContent = this.frames ? `${this.stats.frameTime.toFixed(1)} ms` : 'idle';
+    const frameTime = this.frames ? this.stats.frameTime : null;
     this.frames = 0;
     this.since = now;
     const mesher = view.mesh_source();
@@ -50,7 +54,7 @@ export class Hud {
       this.#showAdapter();
     }
     const stats = view.stats();
-    if (!stats) return;
+    if (!stats) return frameTime;
     this.stats.triangles = stats.triangles;
     $('triangles').textContent = numberFormat.format(stats.triangles);
     $('triangles').title = `budget ${numberFormat.format(stats.max_triangles)} triangles`;
@@ -59,5 +63,6 @@ export class Hud {
     this.stats.overflowed = this.overflows >= 2;
     $('overflow').hidden = !this.stats.overflowed;
     stats.free();
+    return frameTime;
   }
 }
