@@ -20,7 +20,7 @@ use crate::params::{self, Camera, Material, ParamError, Settings};
 use crate::reference::Grid;
 use crate::scene::Scene;
 use crate::scene_buffers::SceneBuffers;
-use crate::shade::{DrawCount, MULTISAMPLES, MeshDraw, ShadePass, ViewFrame};
+use crate::shade::{MULTISAMPLES, MeshDraw, ShadePass, ViewFrame};
 use crate::timing::{StageTimes, Timing};
 use crate::views::ViewState;
 use glam::{UVec3, Vec3};
@@ -344,28 +344,6 @@ impl Renderer {
             passes.blocks.bind(&self.device, &self.scene_buffers, &self.mesh);
             passes.field.bind(&self.device, &self.scene_buffers, &self.mesh);
             passes.marching.bind(&self.device, &self.scene_buffers, &self.mesh);
-        }
-    }
-
-    /// Records the extraction passes: blocks, field, marching cubes.
-    fn encode_extraction(&self, encoder: &mut wgpu::CommandEncoder, timed: bool) {
-        let Some(passes) = &self.compute else { return };
-        let timing = self.timing.as_ref().filter(|_| timed);
-        passes.blocks.encode(encoder, &self.mesh, timing.map(|t| t.compute_writes(0)));
-        passes.field.encode(encoder, &self.mesh, timing.map(|t| t.compute_writes(1)));
-        passes.marching.encode(encoder, &self.mesh, timing.map(|t| t.compute_writes(2)));
-    }
-
-    /// Makes this frame's mesh where `source` says: records the compute passes, or meshes on the CPU
-    /// and uploads the result into the same vertex and index buffers.
-    fn make_mesh(&mut self, encoder: &mut wgpu::CommandEncoder, timed: bool) -> DrawCount {
-        self.source = self.next_source();
-        match self.source {
-            MeshSource::Gpu => {
-                self.encode_extraction(encoder, timed);
-                DrawCount::Indirect
-            }
-            MeshSource::Cpu => DrawCount::Direct(self.mesh_on_cpu()),
         }
     }
 

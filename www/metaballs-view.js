@@ -14,7 +14,7 @@ import { elementStyle, flasher, TEMPLATE } from './lib/element-dom.js';
 import { Hud } from './lib/hud.js';
 import { applySetting, isRendererSetting } from './lib/view-settings.js';
 import { canvasPixels, pixelRatio } from './lib/canvas-size.js';
-import { CONFIRM_ABOVE_MS, describeMs, FrameCost } from './lib/frame-cost.js';
+import { CostGuard } from './lib/frame-cost.js';
 
 const wasmError = await loadWasm().then(() => null, (error) => error);
 const TABLE = wasmError ? [] : parameterTable();
@@ -71,9 +71,7 @@ export class MetaballsView extends HTMLElement {
   // The WebGL2 device this figure owns (WebGPU figures share the hub's).
   #ownGpu = null;
   // Frame time per resolution and sphere count on this adapter, and changes waiting for confirmation.
-  #cost = null;
-  #pending = null;
-  #confirmed = false;
+  #guard;
   #starting = null;
   #near = false;
   #onScreen = false;
@@ -112,8 +110,7 @@ export class MetaballsView extends HTMLElement {
     const $ = (id) => this.#root.getElementById(id);
     $('play').addEventListener('click', () => { this.play(); this.#canvas.focus(); });
     $('retry').addEventListener('click', () => hub.retry());
-    $('confirm-apply').addEventListener('click', () => this.#resolvePending(true));
-    $('confirm-keep').addEventListener('click', () => this.#resolvePending(false));
+    this.#guard = new CostGuard(this.#root, (name, value) => this.#set(name, value));
     this.#flash = flasher(this.#root);
     this.#inspector = new Inspector(this.#root, GALLERY.cube, {
       view: () => this.#view,
@@ -203,8 +200,8 @@ export class MetaballsView extends HTMLElement {
   // Takes a valid value: records it, applies it to the renderer on the next frame, tells listeners.
   #accept(name, value) {
     if (this.#state[name] === value) return;
-    if (this.#tooSlow({ ...this.#state, [name]: value })) {
-      this.#ask({ [name]: value });
+    if (this.#guard.tooSlow(this.#state, { ...this.#state, [name]: value })) {
+      this.#guard.ask(this.#state, { [name]: value });
       this.#reflect(name);
       this.#showPanel(this.#state);
       return;
@@ -297,8 +294,8 @@ export class MetaballsView extends HTMLElement {
     this.#software = Boolean(hub.adapter?.software || gpu.is_fallback());
     this.#hud.setAdapter(hub.adapter?.label ?? 'WebGPU');
     if (this.#software && !this.#given.has('antialiasing')) this.#state.antialiasing = false;
-    this.#cost ??= new FrameCost(this.#software || webgl);
-    this.#startAffordably();
+    this.#guard.start(this.#software || webgl);
+    for (const name of this.#guard.startAffordably(this.#state, defaults())) this.#reflect(name);
     this.#sizeCanvas();
     const s = this.#state;
     const create = (resolution) => within(this, () => wasmModule().View.create(
@@ -474,60 +471,11 @@ export class MetaballsView extends HTMLElement {
   // ---------------------------------------------------------------- costly settings
 
   #observeCost(ms) {
-    const { resolution, spheres } = this.#applied;
-    this.#cost?.observe({ resolution, spheres }, ms);
-  }
-
-  // True when `settings` would make frames slower than a second here (and slower than now).
-  #tooSlow(settings) {
-    if (!this.#cost || this.#confirmed) return false;
-    const estimate = this.#cost.estimate(settings);
-    return estimate > CONFIRM_ABOVE_MS && estimate > this.#cost.estimate(this.#state);
-  }
-
-  // Before the first frame: a link asking for frames slower than a second starts at the defaults for
-  // the costly parameters instead, and asks.
-  #startAffordably() {
-    const asked = { resolution: this.#state.resolution, spheres: this.#state.spheres };
-    if (this.#cost.estimate(asked) <= CONFIRM_ABOVE_MS) return;
-    const d = defaults();
-    for (const name of ['resolution', 'spheres']) {
-      if (this.#cost.estimate(this.#state) <= CONFIRM_ABOVE_MS) break;
-      this.#state[name] = Math.min(this.#state[name], d[name]);
-      this.#reflect(name);
-    }
-    const kept = { resolution: this.#state.resolution, spheres: this.#state.spheres };
-    if (this.#cost.estimate(kept) > CONFIRM_ABOVE_MS) return;
-    this.#ask(Object.fromEntries(Object.entries(asked).filter(([name, v]) => kept[name] !== v)));
-  }
-
-  // Shows the confirmation: the estimated frame time of `changes` and what is kept meanwhile.
-  #ask(changes) {
-    this.#pending = { ...(this.#pending ?? {}), ...changes };
-    const next = { ...this.#state, ...this.#pending };
-    const describe = (s) => `${s.resolution}³ × ${s.spheres} sphere${s.spheres === 1 ? '' : 's'}`;
-    const $ = (id) => this.#root.getElementById(id);
-    $('confirm-text').textContent = `${describe(next)}: ${describeMs(this.#cost.estimate(next))} per frame `
-      + 'on this adapter, during which the page would not respond.';
-    $('confirm-keep').textContent = `Keep ${describe(this.#state)}`;
-    $('confirm').hidden = false;
-  }
-
-  #resolvePending(apply) {
-    const pending = this.#pending;
-    this.#pending = null;
-    this.#root.getElementById('confirm').hidden = true;
-    if (!apply || !pending) return;
-    this.#confirmed = true;
-    try {
-      for (const [name, value] of Object.entries(pending)) this.#set(name, value);
-    } finally {
-      this.#confirmed = false;
-    }
+    this.#guard.observe(this.#applied, ms);
   }
 
   /** The change waiting for the person's confirmation (a slow frame), or null. */
-  get pendingChange() { return this.#pending ? { ...this.#pending } : null; }
+  get pendingChange() { return this.#guard.pending ? { ...this.#guard.pending } : null; }
 
   // ---------------------------------------------------------------- the cell inspector
 

@@ -5,6 +5,7 @@ use super::{FrameStats, Renderer, Sizing};
 use crate::cpu_mesher::CpuMesher;
 use crate::params::view::Mesher;
 use crate::reference::Construction;
+use crate::shade::DrawCount;
 use crate::uniforms::Counters;
 use crate::views;
 
@@ -28,6 +29,28 @@ impl MeshSource {
 }
 
 impl Renderer {
+    /// Records the extraction passes: blocks, field, marching cubes.
+    pub(super) fn encode_extraction(&self, encoder: &mut wgpu::CommandEncoder, timed: bool) {
+        let Some(passes) = &self.compute else { return };
+        let timing = self.timing.as_ref().filter(|_| timed);
+        passes.blocks.encode(encoder, &self.mesh, timing.map(|t| t.compute_writes(0)));
+        passes.field.encode(encoder, &self.mesh, timing.map(|t| t.compute_writes(1)));
+        passes.marching.encode(encoder, &self.mesh, timing.map(|t| t.compute_writes(2)));
+    }
+
+    /// Makes this frame's mesh where `source` says: records the compute passes, or meshes on the CPU
+    /// and uploads the result into the same vertex and index buffers.
+    pub(super) fn make_mesh(&mut self, encoder: &mut wgpu::CommandEncoder, timed: bool) -> DrawCount {
+        self.source = self.next_source();
+        match self.source {
+            MeshSource::Gpu => {
+                self.encode_extraction(encoder, timed);
+                DrawCount::Indirect
+            }
+            MeshSource::Cpu => DrawCount::Direct(self.mesh_on_cpu()),
+        }
+    }
+
     /// True when the teaching views draw this frame. They read the compute passes' buffers, so a
     /// device without compute shaders shows the surface alone.
     pub(super) fn views_shown(&self) -> bool {

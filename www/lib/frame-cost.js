@@ -44,3 +44,82 @@ export class FrameCost {
 export function describeMs(ms) {
   return ms >= 10_000 ? `about ${Math.round(ms / 1000)} s` : `about ${(ms / 1000).toFixed(1)} s`;
 }
+
+const describeSettings = (s) => `${s.resolution}³ × ${s.spheres} sphere${s.spheres === 1 ? '' : 's'}`;
+
+/**
+ * A figure's guard against slow frames: holds its `FrameCost`, and the changes that wait for the
+ * person's answer in the figure's confirmation box (`#confirm` in `root`). `apply(name, value)` makes a
+ * confirmed change.
+ */
+export class CostGuard {
+  constructor(root, apply) {
+    this.root = root;
+    this.apply = apply;
+    this.cost = null;
+    this.pending = null;
+    this.confirmed = false;
+    root.getElementById('confirm-apply').addEventListener('click', () => this.#resolve(true));
+    root.getElementById('confirm-keep').addEventListener('click', () => this.#resolve(false));
+  }
+
+  /** Starts estimating, once the kind of adapter is known. */
+  start(software) {
+    this.cost ??= new FrameCost(software);
+  }
+
+  /** Takes in a measured frame time for the settings in effect. */
+  observe({ resolution, spheres }, ms) {
+    this.cost?.observe({ resolution, spheres }, ms);
+  }
+
+  /** True when `next` would make frames slower than a second here, and slower than `current`. */
+  tooSlow(current, next) {
+    if (!this.cost || this.confirmed) return false;
+    const estimate = this.cost.estimate(next);
+    return estimate > CONFIRM_ABOVE_MS && estimate > this.cost.estimate(current);
+  }
+
+  /**
+   * Before the first frame: where `state` asks for frames slower than a second, the costly parameters
+   * go back to `defaults` (no higher than asked) and the person is asked. Returns the names changed.
+   */
+  startAffordably(state, defaults) {
+    const asked = { resolution: state.resolution, spheres: state.spheres };
+    const changed = [];
+    for (const name of ['resolution', 'spheres']) {
+      if (this.cost.estimate(state) <= CONFIRM_ABOVE_MS) break;
+      if (defaults[name] >= state[name]) continue;
+      state[name] = defaults[name];
+      changed.push(name);
+    }
+    if (changed.length && this.cost.estimate(state) <= CONFIRM_ABOVE_MS) {
+      this.ask(state, Object.fromEntries(changed.map((name) => [name, asked[name]])));
+    }
+    return changed;
+  }
+
+  /** Shows the confirmation for `changes` to `current`: their estimated frame time, and what is kept. */
+  ask(current, changes) {
+    this.pending = { ...(this.pending ?? {}), ...changes };
+    const next = { ...current, ...this.pending };
+    const $ = (id) => this.root.getElementById(id);
+    $('confirm-text').textContent = `${describeSettings(next)}: ${describeMs(this.cost.estimate(next))} per `
+      + 'frame on this adapter, during which the page would not respond.';
+    $('confirm-keep').textContent = `Keep ${describeSettings(current)}`;
+    $('confirm').hidden = false;
+  }
+
+  #resolve(apply) {
+    const pending = this.pending;
+    this.pending = null;
+    this.root.getElementById('confirm').hidden = true;
+    if (!apply || !pending) return;
+    this.confirmed = true;
+    try {
+      for (const [name, value] of Object.entries(pending)) this.apply(name, value);
+    } finally {
+      this.confirmed = false;
+    }
+  }
+}
