@@ -12,7 +12,7 @@
 use crate::mesh::IndexedMesh;
 use crate::mesh_buffers::BLOCK_CELLS;
 use crate::params::view::Blend;
-use crate::reference::{Construction, Grid, MIN_DISTANCE_SQUARED};
+use crate::reference::{self, Construction, Grid, MIN_DISTANCE_SQUARED};
 use crate::scene::{BOX_HALF_EXTENT, Sphere};
 use crate::tables::{CASE_TRIANGLES, EDGE_TABLE, TRI_TABLE};
 use glam::Vec3;
@@ -135,7 +135,7 @@ impl CpuMesher {
         self.sample_plane(0, n, construction.blend);
         for z in 0..n {
             self.sample_plane(z + 1, n, construction.blend);
-            self.march_layer(z, iso, grid, construction);
+            self.march_layer(spheres, z, iso, grid, construction);
         }
     }
 
@@ -272,7 +272,7 @@ impl CpuMesher {
     }
 
     /// Classifies the cells of kept blocks between planes `z` and `z + 1` and emits their triangles.
-    fn march_layer(&mut self, z: u32, iso: f32, grid: Grid, construction: Construction) {
+    fn march_layer(&mut self, spheres: &[Sphere], z: u32, iso: f32, grid: Grid, construction: Construction) {
         let n = grid.cells_per_axis;
         let width = n as usize + 1;
         let (low, high) = ((z % 2) as usize, ((z + 1) % 2) as usize);
@@ -299,7 +299,7 @@ impl CpuMesher {
                         // The table winds clockwise seen from outside; emit counter-clockwise.
                         for k in [0, 2, 1] {
                             let edge = row[3 * t + k] as usize;
-                            let id = self.vertex_on(edge, [x, y, z], iso, grid, construction);
+                            let id = self.vertex_on(spheres, edge, [x, y, z], iso, grid, construction);
                             self.indices.push(id);
                         }
                     }
@@ -312,6 +312,7 @@ impl CpuMesher {
     /// The vertex on edge `edge` of `cell`, made on first use.
     fn vertex_on(
         &mut self,
+        spheres: &[Sphere],
         edge: usize,
         cell: [u32; 3],
         iso: f32,
@@ -351,35 +352,12 @@ impl CpuMesher {
         } else if boundary(b) {
             (pb - pa).normalize()
         } else {
-            let g = self.outward_gradient(p, construction.blend);
+            let g = reference::outward_gradient(spheres, p, construction.blend);
             let fallback = if fa > iso { pb - pa } else { pa - pb };
             g.try_normalize().unwrap_or(fallback.normalize())
         };
         self.vertices.extend_from_slice(&[p.x, p.y, p.z, normal.x, normal.y, normal.z]);
         id
-    }
-
-    /// −∇f / 2 at `p`, as `reference::outward_gradient` computes it.
-    fn outward_gradient(&self, p: Vec3, blend: Blend) -> Vec3 {
-        let s = &self.spheres;
-        let mut g = Vec3::ZERO;
-        let mut largest = -1.0f32;
-        for i in 0..s.r2.len() {
-            let d = p - Vec3::new(s.x[i], s.y[i], s.z[i]);
-            let d2 = d.dot(d).max(MIN_DISTANCE_SQUARED);
-            let term = d * (s.r2[i] / (d2 * d2));
-            match blend {
-                Blend::Sum => g += term,
-                Blend::Max => {
-                    let value = s.r2[i] / d2;
-                    if value > largest {
-                        largest = value;
-                        g = term;
-                    }
-                }
-            }
-        }
-        g
     }
 }
 
@@ -414,7 +392,6 @@ fn sample_run(run: &mut [f32], xs: &[f32], py: f32, pz: f32, s: &Spheres, blend:
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::reference;
     use crate::scene::Scene;
 
     fn assert_matches_oracle(spheres: &[Sphere], iso: f32, n: u32, construction: Construction) {
