@@ -156,7 +156,7 @@ impl GpuContext {
 }
 
 /// Compute shaders with storage buffers: WebGL2 devices report no room for either.
-fn has_compute(device: &wgpu::Device) -> bool {
+pub(crate) fn has_compute(device: &wgpu::Device) -> bool {
     let limits = device.limits();
     limits.max_compute_invocations_per_workgroup > 0 && limits.max_storage_buffers_per_shader_stage > 0
 }

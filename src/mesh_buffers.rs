@@ -109,7 +109,7 @@ impl MeshBuffers {
     /// vertex and index buffers matter: the CPU mesher fills them and they are drawn directly.
     pub fn new(device: &wgpu::Device, grid: Grid, capacity: Capacity) -> Self {
         use wgpu::BufferUsages as U;
-        let storage = device.limits().max_storage_buffers_per_shader_stage > 0;
+        let storage = crate::context::has_compute(device);
         let buffer = |label: &str, size: u64, usage: U| {
             device.create_buffer(&wgpu::BufferDescriptor {
                 label: Some(label),

@@ -1,20 +1,15 @@
 //! What the device holds: the largest grid, buffer and output sizes, and the checks that say so.
 
+use crate::context::has_compute;
 use crate::mesh_buffers::{BLOCK_CELLS, Capacity};
 use crate::params::{self, MAX_RESOLUTION, MIN_RESOLUTION, ParamError};
 use crate::reference::Grid;
-
-/// True on a device with compute shaders and storage buffers (not WebGL2).
-fn computes(device: &wgpu::Device) -> bool {
-    let limits = device.limits();
-    limits.max_storage_buffers_per_shader_stage > 0 && limits.max_compute_invocations_per_workgroup > 0
-}
 
 /// The largest buffer the mesh passes bind: a storage binding, or without compute shaders (where the
 /// CPU mesher fills plain vertex and index buffers) any buffer.
 pub(super) fn storage_limit(device: &wgpu::Device) -> u64 {
     let limits = device.limits();
-    if computes(device) {
+    if has_compute(device) {
         limits.max_storage_buffer_binding_size.min(limits.max_buffer_size)
     } else {
         limits.max_buffer_size
@@ -37,7 +32,7 @@ pub fn max_resolution(device: &wgpu::Device) -> u32 {
 }
 
 fn resolution_fits(device: &wgpu::Device, cells_per_axis: u32) -> Result<(), String> {
-    if !computes(device) {
+    if !has_compute(device) {
         return Ok(());
     }
     let blocks = (cells_per_axis.div_ceil(BLOCK_CELLS) as u64).pow(3);
