@@ -4,8 +4,7 @@
 // takes keys only while focused, and survives a lost GPU.
 
 import {
-  backendName, caseGallery, hub, loadWasm, MAX_WEBGL_FIGURES, parameterTable, parseParameter, propertyName,
-  wasmModule, within, WEBGPU_HELP,
+  caseGallery, hub, loadWasm, parameterTable, parseParameter, propertyName, wasmModule, within, WEBGL_WAIT,
 } from './lib/engine.js';
 import { Inspector } from './lib/inspector.js';
 import { wireCameraInput } from './lib/camera-input.js';
@@ -68,8 +67,8 @@ export class MetaballsView extends HTMLElement {
   #changed = new Set();
   #given = new Set();
   #view = null;
-  // The WebGL2 device this figure owns (WebGPU figures share the hub's).
-  #ownGpu = null;
+  // The device this figure draws with: the hub's shared WebGPU one, or a WebGL2 one of its own.
+  #gpu = null;
   // Frame time per resolution and sphere count on this adapter, and changes waiting for confirmation.
   #guard;
   #starting = null;
@@ -239,7 +238,7 @@ export class MetaballsView extends HTMLElement {
     this.#showPanel = buildPanel(this.#root.getElementById('panel'), names, TABLE, this.#state,
       (name, value) => this.#set(name, value), this.#actions, {
         maxResolution: this.#software ? Math.min(256, maxResolution) : maxResolution,
-        withoutCompute: Boolean(this.#ownGpu && !this.#ownGpu.has_compute()),
+        withoutCompute: Boolean(this.#gpu && !this.#gpu.has_compute()),
         small: this.clientWidth > 0 && this.clientWidth < 560,
         gallery: GALLERY,
       });
@@ -267,30 +266,24 @@ export class MetaballsView extends HTMLElement {
   }
 
   async #create() {
-    const webgl = backendName() === 'webgl2';
     let gpu;
     try {
-      gpu = webgl ? await hub.acquireWebgl(this, this.#canvas) : await hub.acquire();
+      gpu = await hub.deviceFor(this, this.#canvas);
     } catch (error) {
-      const none = backendName() === 'none';
-      const title = none ? 'Neither WebGPU nor WebGL2 is available'
-        : webgl ? 'WebGL2 could not start' : 'WebGPU could not start';
-      this.fail(title, none ? WEBGPU_HELP : `${error?.message ?? error}\n\n${WEBGPU_HELP}`,
-        { retry: Boolean(hub.stopped) });
+      this.fail(error.title, error.message, { retry: Boolean(hub.stopped) });
       return;
     }
     if (gpu === null) {
       this.#failed = true;
-      this.#showMessage('Paused', `This browser has no WebGPU, so the figures draw with WebGL2, which allows `
-        + `a page only a few drawing contexts: ${MAX_WEBGL_FIGURES} figures are drawing already. This one `
-        + 'starts when one of them is removed.');
+      this.#showMessage('Paused', WEBGL_WAIT);
       return;
     }
     if (!this.isConnected || this.#view) {
-      if (webgl) this.#freeOwnGpu(gpu);
+      hub.giveBack(this, gpu);
       return;
     }
-    if (webgl) this.#ownGpu = gpu;
+    this.#gpu = gpu;
+    const webgl = !gpu.has_compute();
     this.#software = Boolean(hub.adapter?.software || gpu.is_fallback());
     this.#hud.setAdapter(hub.adapter?.label ?? 'WebGPU');
     if (this.#software && !this.#given.has('antialiasing')) this.#state.antialiasing = false;
@@ -342,16 +335,8 @@ export class MetaballsView extends HTMLElement {
         this.#canvas.getContext('webgpu')?.unconfigure();
       } catch { /* the context is gone with the device, or the canvas draws with WebGL2 */ }
     }
-    if (this.#ownGpu) this.#freeOwnGpu(this.#ownGpu);
-    this.#ownGpu = null;
-    hub.releaseWebgl(this);
-  }
-
-  #freeOwnGpu(gpu) {
-    try {
-      gpu.free();
-    } catch { /* already gone */ }
-    hub.releaseWebgl(this);
+    hub.giveBack(this, this.#gpu);
+    this.#gpu = null;
   }
 
   /** The device is lost: keep the scene on the CPU and let go of the GPU. */

@@ -79,6 +79,11 @@ export const WEBGPU_HELP =
 /** WebGL2 figures drawing at once: browsers allow a page only a few WebGL contexts (16 in Chromium). */
 export const MAX_WEBGL_FIGURES = 8;
 
+/** What a WebGL2 figure waiting for a device says. */
+export const WEBGL_WAIT = 'This browser has no WebGPU, so the figures draw with WebGL2, which allows a page '
+  + `only a few drawing contexts: ${MAX_WEBGL_FIGURES} figures are drawing already. This one starts when `
+  + 'one of them is removed.';
+
 // Losses closer together than this count as one run; this many in a run and the hub stops retrying.
 const LOSS_WINDOW_MS = 60_000;
 const MAX_LOSSES = 3;
@@ -129,10 +134,34 @@ class Hub {
   }
 
   /**
-   * A WebGL2 device of its own for `element`'s canvas, or null while `MAX_WEBGL_FIGURES` others hold
-   * one (the element says so and starts when one is given back).
+   * The device `element` draws on `canvas` with: the shared WebGPU one, or with WebGL2 one of its own
+   * (null while `MAX_WEBGL_FIGURES` others hold one). Rejects with an Error whose `title` says what
+   * could not start and whose message says why and what a browser needs.
    */
-  async acquireWebgl(element, canvas) {
+  async deviceFor(element, canvas) {
+    const webgl = backend === 'webgl2';
+    try {
+      return webgl ? await this.#acquireWebgl(element, canvas) : await this.acquire();
+    } catch (error) {
+      const none = backend === 'none';
+      const failure = new Error(none ? WEBGPU_HELP : `${error?.message ?? error}\n\n${WEBGPU_HELP}`);
+      failure.title = none ? 'Neither WebGPU nor WebGL2 is available'
+        : webgl ? 'WebGL2 could not start' : 'WebGPU could not start';
+      throw failure;
+    }
+  }
+
+  /** Takes back what `deviceFor` gave `element`: a WebGL2 device is freed and its place passed on. */
+  giveBack(element, gpu) {
+    if (this.webglHolders.has(element)) {
+      try {
+        gpu?.free();
+      } catch { /* already gone */ }
+    }
+    this.#releaseWebgl(element);
+  }
+
+  async #acquireWebgl(element, canvas) {
     if (!this.webglHolders.has(element) && this.webglHolders.size >= MAX_WEBGL_FIGURES) {
       this.webglWaiting.add(element);
       return null;
@@ -143,13 +172,13 @@ class Hub {
     try {
       return await wasm.Gpu.create_webgl(canvas);
     } catch (error) {
-      this.releaseWebgl(element);
+      this.#releaseWebgl(element);
       throw new Error(`${error?.message ?? error}`);
     }
   }
 
-  /** `element` gave its WebGL2 device back: the first figure waiting for one starts. */
-  releaseWebgl(element) {
+  // `element` gave its WebGL2 device back (or stopped waiting): the first figure waiting starts.
+  #releaseWebgl(element) {
     this.webglWaiting.delete(element);
     if (!this.webglHolders.delete(element)) return;
     const [next] = this.webglWaiting;
