@@ -71,8 +71,6 @@ pub struct CpuMesher {
     spheres: Spheres,
     /// Coordinate of grid point `i` along any axis.
     coords: Vec<f32>,
-    /// Per block: kept (the surface may cross it).
-    kept: Vec<bool>,
     /// Per layer of blocks: the kept blocks' (x, y) block coordinates.
     layer_blocks: Vec<Vec<(u32, u32)>>,
     /// Per column of blocks in the current plane: its points are needed.
@@ -161,8 +159,6 @@ impl CpuMesher {
     fn classify_blocks(&mut self, iso: f32, n: u32, blend: Blend) {
         let nb = n.div_ceil(BLOCK_CELLS);
         let total = (nb as usize).pow(3);
-        self.kept.clear();
-        self.kept.resize(total, false);
         self.layer_blocks.resize_with(nb as usize, Vec::new);
         self.layer_blocks.truncate(nb as usize);
         let by_max = blend == Blend::Max;
@@ -202,7 +198,6 @@ impl CpuMesher {
                     let all_outside = !unbounded && upper * (1.0 + BOUND_MARGIN) <= iso;
                     let all_inside = !touches_walls && lower * (1.0 - BOUND_MARGIN) > iso;
                     if !all_outside && !all_inside {
-                        self.kept[(bx + nb * (by + nb * bz)) as usize] = true;
                         layer.push((bx, by));
                         active += 1;
                     }
