@@ -149,7 +149,7 @@ button:focus-visible, input:focus-visible { outline: 2px solid var(--accent); ou
 #confirm p { margin: 0 0 8px; }
 #confirm .buttons { display: flex; gap: 8px; flex-wrap: wrap; }
 #confirm[hidden] { display: none; }
-.control.unavailable { opacity: 0.5; cursor: not-allowed; }
+.unavailable { opacity: 0.5; cursor: not-allowed; }
 
 select {
   width: 100%;
