@@ -89,6 +89,36 @@ pub fn pick(
     direction: Vec3,
     target: Target,
 ) -> Option<UVec3> {
+    pick_point(spheres, iso, grid, construction, origin, direction, target).map(|(cell, _)| cell)
+}
+
+/// The sphere whose term dominates the field where the ray from `origin` towards `direction` first
+/// meets the surface as drawn (its triangles at this grid): the sphere a person points at, also where
+/// several have merged. `None` over the background.
+pub fn pick_sphere(
+    spheres: &[Sphere],
+    iso: f32,
+    grid: Grid,
+    construction: Construction,
+    origin: Vec3,
+    direction: Vec3,
+) -> Option<usize> {
+    let (_, point) = pick_point(spheres, iso, grid, construction, origin, direction, Target::Surface)?;
+    let influence = |s: &Sphere| s.radius * s.radius / (point - s.center).length_squared().max(1e-12);
+    (0..spheres.len()).max_by(|&a, &b| influence(&spheres[a]).total_cmp(&influence(&spheres[b])))
+}
+
+/// [`pick`], with the point picked: where the ray meets the surface, or (crossed cells) the centre of
+/// the cell it enters.
+pub fn pick_point(
+    spheres: &[Sphere],
+    iso: f32,
+    grid: Grid,
+    construction: Construction,
+    origin: Vec3,
+    direction: Vec3,
+    target: Target,
+) -> Option<(UVec3, Vec3)> {
     let n = grid.cells_per_axis as f32;
     // In grid units: the box spans [0, n]³.
     let start = (origin - grid.point(UVec3::ZERO)) / grid.cell_size();
@@ -111,13 +141,19 @@ pub fn pick(
         let report = inspect(spheres, iso, grid, construction, id);
         let vertex = |e: u8| report.edges.iter().find(|c| c.edge == e).map(|c| c.vertex);
         let crossed = report.case != 0 && report.case != 255;
-        let hit = crossed && target == Target::CrossedCell
-            || report.triangles.iter().any(|t| {
+        if crossed && target == Target::CrossedCell {
+            return Some((id, grid.point(id) + Vec3::splat(0.5 * grid.cell_size())));
+        }
+        let nearest = report
+            .triangles
+            .iter()
+            .filter_map(|t| {
                 let [a, b, c] = t.map(|e| vertex(e).expect("a triangle's edges are crossed"));
-                ray_triangle(origin, dir, [a, b, c]).is_some()
-            });
-        if hit {
-            return Some(id);
+                ray_triangle(origin, dir, [a, b, c])
+            })
+            .min_by(f32::total_cmp);
+        if let Some(t) = nearest {
+            return Some((id, origin + dir * t));
         }
         let axis = if t_max.x < t_max.y && t_max.x < t_max.z {
             0

@@ -1,13 +1,15 @@
-//! Command line: render a frame to PNG offscreen.
+//! Command line: render a frame to PNG offscreen, write the surface as a mesh file, time frames.
 
 #[cfg(not(target_arch = "wasm32"))]
 mod cli {
     use clap::{Parser, Subcommand};
     use metaballs::bench;
+    use metaballs::export::{self, MeshFormat};
     use metaballs::offscreen::{Offscreen, write_png};
     use metaballs::params::{check_f32, check_u32};
-    use metaballs::{ParamError, Settings};
-    use std::path::PathBuf;
+    use metaballs::scene_file::{self, SceneError, SceneFile};
+    use metaballs::{ParamError, Scene, Settings};
+    use std::path::{Path, PathBuf};
     use std::process::ExitCode;
     use std::time::Instant;
 
@@ -22,6 +24,8 @@ mod cli {
     enum Command {
         /// Render one frame offscreen and write it as a PNG.
         Render(RenderArgs),
+        /// Write the surface as a mesh file (STL, OBJ or PLY).
+        Export(ExportArgs),
         /// Time animated frames for a table of resolutions and sphere counts.
         Bench(BenchArgs),
     }
@@ -60,11 +64,12 @@ mod cli {
         mesher: Vec<String>,
     }
 
+    /// What to draw: a scene file, or a seeded layout described by flags.
     #[derive(clap::Args)]
-    struct RenderArgs {
-        /// PNG file to write.
-        #[arg(long)]
-        out: PathBuf,
+    struct SceneArgs {
+        /// A scene saved by the page (JSON): its spheres and settings replace the flags below.
+        #[arg(long, conflicts_with_all = ["spheres", "iso", "resolution", "seed"])]
+        scene: Option<PathBuf>,
         /// Number of spheres, 1 to 64.
         #[arg(long, default_value_t = Settings::default().sphere_count, allow_negative_numbers = true)]
         spheres: u32,
@@ -74,9 +79,6 @@ mod cli {
         /// Cells along each axis of the grid.
         #[arg(long, default_value_t = Settings::default().resolution, allow_negative_numbers = true)]
         resolution: u32,
-        /// Image size in pixels, WIDTHxHEIGHT.
-        #[arg(long, default_value = "960x640", value_parser = parse_size)]
-        size: (u32, u32),
         /// Seed of the sphere layout.
         #[arg(long, default_value_t = Settings::default().seed, allow_negative_numbers = true)]
         seed: u64,
@@ -86,12 +88,44 @@ mod cli {
         /// Draw without 4× multisampling.
         #[arg(long)]
         no_antialiasing: bool,
+        /// Teaching view, as name=value pairs joined by & (display=wireframe&grid=cells&slice=z:0);
+        /// applied after the scene file's settings.
+        #[arg(long, default_value = "")]
+        view: String,
+    }
+
+    #[derive(clap::Args)]
+    struct RenderArgs {
+        /// PNG file to write.
+        #[arg(long)]
+        out: PathBuf,
+        #[command(flatten)]
+        scene: SceneArgs,
+        /// Image size in pixels, WIDTHxHEIGHT.
+        #[arg(long, default_value = "960x640", value_parser = parse_size)]
+        size: (u32, u32),
         /// Frames to render, 1/60 s of animation apart, timing each; the last is written.
         #[arg(long, default_value_t = 1, allow_negative_numbers = true)]
         frames: u32,
-        /// Teaching view, as name=value pairs joined by & (display=wireframe&grid=cells&slice=z:0).
-        #[arg(long, default_value = "")]
-        view: String,
+    }
+
+    #[derive(clap::Args)]
+    struct ExportArgs {
+        /// Mesh file to write.
+        #[arg(long)]
+        out: PathBuf,
+        /// stl (binary, millimetres, Z up), obj (with normals) or ply (binary, with normals); by
+        /// default the output's extension, else stl.
+        #[arg(long)]
+        format: Option<String>,
+        /// Simplify to about this many triangles first (keeping the surface closed).
+        #[arg(long)]
+        simplify: Option<u32>,
+        /// File units per box half-width (default: 25 for STL, so the box is 50 mm; 1 for OBJ and PLY).
+        #[arg(long)]
+        scale: Option<f32>,
+        #[command(flatten)]
+        scene: SceneArgs,
     }
 
     fn parse_size(text: &str) -> Result<(u32, u32), String> {
@@ -108,8 +142,9 @@ mod cli {
         Ok((parse(w, "width")?, parse(h, "height")?))
     }
 
-    fn render(args: RenderArgs) -> Result<(), Box<dyn std::error::Error>> {
-        let settings = Settings {
+    /// The settings and spheres the flags (or the scene file) describe, the animation run for `--time`.
+    fn scene_renderer(args: &SceneArgs, size: (u32, u32)) -> Result<Offscreen, Box<dyn std::error::Error>> {
+        let flags = Settings {
             sphere_count: args.spheres,
             iso: args.iso,
             resolution: args.resolution,
@@ -117,12 +152,48 @@ mod cli {
             antialiasing: !args.no_antialiasing,
             ..Settings::default()
         };
+        let (settings, scene) = match &args.scene {
+            Some(path) => {
+                let file = read_scene(path)?;
+                let settings = file.applied_to(flags).map_err(|e| in_file(path, e))?;
+                let scene = Scene::from_spheres(file.spheres).map_err(|e| in_file(path, e))?;
+                (settings, Some(scene.with_seed(settings.seed)))
+            }
+            None => (flags, None),
+        };
         let settings = bench::with_view(settings, &args.view)?.validated()?;
         check_f32("time (seconds)", args.time, 0.0, 3600.0)?;
-        check_u32("frames", args.frames, 1, 100_000)?;
-        let (width, height) = args.size;
-        let mut offscreen = Offscreen::blocking(settings, width, height)?;
+        let mut offscreen = Offscreen::blocking(settings, size.0, size.1)?;
+        if let Some(scene) = scene {
+            offscreen.renderer.set_scene(scene);
+        }
         offscreen.renderer.update(args.time)?;
+        Ok(offscreen)
+    }
+
+    fn in_file(path: &Path, error: impl std::fmt::Display) -> SceneError {
+        SceneError(format!("{}: {error}", path.display()))
+    }
+
+    /// Reads a scene file, refusing one larger than a scene can be before reading it.
+    fn read_scene(path: &Path) -> Result<SceneFile, Box<dyn std::error::Error>> {
+        let size = std::fs::metadata(path).map_err(|e| format!("{}: {e}", path.display()))?.len();
+        if size > scene_file::MAX_BYTES as u64 {
+            return Err(in_file(
+                path,
+                format!("the file is {:.1} MB; a scene file is at most 1 MB", size as f64 / 1048576.0),
+            )
+            .into());
+        }
+        let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+        Ok(SceneFile::parse(&text).map_err(|e| in_file(path, e))?)
+    }
+
+    fn render(args: RenderArgs) -> Result<(), Box<dyn std::error::Error>> {
+        check_u32("frames", args.frames, 1, 100_000)?;
+        let mut offscreen = scene_renderer(&args.scene, args.size)?;
+        let settings = *offscreen.renderer.settings();
+        let (width, height) = args.size;
         // Each frame is timed from submission to the GPU going idle; the first includes pipeline
         // warm-up, so the median is reported.
         let mut frame_ms = Vec::new();
@@ -151,6 +222,53 @@ mod cli {
             stats.triangles,
             if stats.overflowed() { " (budget overflowed: some triangles were dropped)" } else { "" },
             frame_ms.len(),
+            offscreen.adapter.get_info().name,
+        );
+        Ok(())
+    }
+
+    fn export(args: ExportArgs) -> Result<(), Box<dyn std::error::Error>> {
+        let format = match &args.format {
+            Some(word) => MeshFormat::parse(word)?,
+            None => MeshFormat::from_file_name(&args.out.to_string_lossy()).unwrap_or(MeshFormat::Stl),
+        };
+        let scale = args.scale.unwrap_or(format.default_scale());
+        check_f32("scale", scale, 1e-6, 1e6)?;
+        if let Some(n) = args.simplify {
+            check_u32("triangle target", n, 4, u32::MAX)?;
+        }
+        let mut offscreen = scene_renderer(&args.scene, (64, 64))?;
+        let started = Instant::now();
+        let mesh = pollster::block_on(offscreen.renderer.extract_mesh());
+        let mesh_ms = started.elapsed().as_secs_f64() * 1e3;
+        let extracted = mesh.triangles.len();
+        let started = Instant::now();
+        let mesh = match args.simplify {
+            Some(n) => export::simplified(&mesh, n as usize),
+            None => mesh,
+        };
+        let simplify_ms = started.elapsed().as_secs_f64() * 1e3;
+        let started = Instant::now();
+        let bytes = export::encode(&mesh, format, scale);
+        std::fs::write(&args.out, &bytes).map_err(|e| format!("{}: {e}", args.out.display()))?;
+        let write_ms = started.elapsed().as_secs_f64() * 1e3;
+        let open = mesh.topology().open_or_nonmanifold_edges;
+        println!(
+            "wrote {} ({}, {} bytes): {} triangles{}, {} vertices, {}, volume {:.4} (box units³); \
+             mesh {mesh_ms:.1} ms{}, encode and write {write_ms:.1} ms on {}",
+            args.out.display(),
+            format.extension(),
+            bytes.len(),
+            mesh.triangles.len(),
+            if args.simplify.is_some() { format!(" (from {extracted})") } else { String::new() },
+            mesh.positions.len(),
+            if open == 0 {
+                "closed".to_string()
+            } else {
+                format!("{open} open edges (the surface meets the box)")
+            },
+            export::enclosed_volume(&mesh),
+            if args.simplify.is_some() { format!(", simplify {simplify_ms:.1} ms") } else { String::new() },
             offscreen.adapter.get_info().name,
         );
         Ok(())
@@ -214,13 +332,16 @@ mod cli {
         let result = match cli.command {
             Command::Render(args) => render(args),
             Command::Bench(args) => bench(args),
+            Command::Export(args) => export(args),
         };
         match result {
             Ok(()) => ExitCode::SUCCESS,
             Err(error) => {
                 eprintln!("error: {error}");
                 // Bad input is a usage error (2); anything else (no GPU, I/O) is 1.
-                if error.downcast_ref::<ParamError>().is_some() {
+                if error.downcast_ref::<ParamError>().is_some()
+                    || error.downcast_ref::<SceneError>().is_some()
+                {
                     ExitCode::from(2)
                 } else {
                     ExitCode::FAILURE

@@ -223,8 +223,9 @@ impl Settings {
         Ok(self)
     }
 
-    /// These settings with parameter `name` (a table name or short name) read from `text`: the view
-    /// options, the light strengths and the field of view. The error says what is accepted.
+    /// These settings with parameter `name` (a table name or short name) read from `text`: any setting
+    /// of the renderer (not the page's animation speed, pause or layout of the figure). The error says
+    /// what is accepted.
     pub fn with_parameter(&self, name: &str, text: &str) -> Result<Settings, ParamError> {
         let value = parse_parameter(name, text)?;
         let name = parameter(name).map_or(name, |p| p.name);
@@ -233,7 +234,27 @@ impl Settings {
             Value::Number(n) => n as f32,
             _ => f32::NAN,
         };
+        let whole = number as u32;
         match name {
+            "spheres" => next.sphere_count = whole,
+            "iso" => next.iso = number,
+            "resolution" => next.resolution = whole,
+            "seed" => {
+                next.seed = match value {
+                    Value::Number(n) => n as u64,
+                    _ => 0,
+                }
+            }
+            "yaw" => next.camera.yaw_degrees = number,
+            "pitch" => next.camera.pitch_degrees = number,
+            "distance" => next.camera.distance = number,
+            "shininess" => next.material.shininess = number,
+            "antialiasing" => next.antialiasing = value == Value::Boolean(true),
+            "color" => {
+                if let Value::Text(hex) = &value {
+                    next.material.base_color = srgb_hex_to_linear(hex);
+                }
+            }
             "ambient" => next.material.ambient = number,
             "diffuse" => next.material.diffuse = number,
             "specular" => next.material.specular = number,
@@ -243,13 +264,23 @@ impl Settings {
                     return Err(ParamError::Invalid {
                         name: "parameter name",
                         value: name.to_string(),
-                        expected: "a view, light or camera option".into(),
+                        expected: "a setting of the renderer".into(),
                     });
                 }
             }
         }
         next.validated()
     }
+}
+
+/// A `#rrggbb` colour (sRGB, as pickers give it) as linear RGB, the way the shading pass takes it.
+pub fn srgb_hex_to_linear(hex: &str) -> Vec3 {
+    let channel = |i: usize| {
+        let c = hex.get(1 + 2 * i..3 + 2 * i).and_then(|h| u8::from_str_radix(h, 16).ok()).unwrap_or(0);
+        let c = c as f32 / 255.0;
+        if c <= 0.04045 { c / 12.92 } else { ((c + 0.055) / 1.055).powf(2.4) }
+    };
+    Vec3::new(channel(0), channel(1), channel(2))
 }
 
 /// Checks a sphere count.

@@ -1,6 +1,7 @@
 //! One renderer for every output: it owns the scene, the settings and the passes, and draws a frame into
 //! any texture view of its format (a canvas's current texture or an offscreen texture).
 
+mod editing;
 mod inspector;
 mod limits;
 mod meshing;
@@ -11,7 +12,7 @@ mod uniforms;
 
 pub use limits::max_resolution;
 pub use meshing::MeshSource;
-pub use readback::OverlayReadback;
+pub use readback::{MeshReadback, OverlayReadback};
 pub use stats::FrameStats;
 
 use crate::context::{ComputePasses, GpuContext, RendererToken};

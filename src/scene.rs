@@ -1,6 +1,7 @@
 //! Spheres moving in a box: a seeded layout, Euler steps and elastic bounces off the walls.
 
 use crate::params::{MAX_SPHERES, ParamError, check_f32, check_sphere_count};
+use crate::scene_file::{SceneError, check_sphere};
 use glam::Vec3;
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg32;
@@ -133,6 +134,47 @@ impl Scene {
         }
         *self = next;
         Ok(())
+    }
+
+    /// Replaces sphere `index` (checked as a scene file's would be), with its centre moved back inside
+    /// the box if its radius needs it.
+    pub fn set_sphere(&mut self, index: usize, sphere: Sphere) -> Result<(), SceneError> {
+        let slot = self.sphere_slot(index)?;
+        let limit = BOX_HALF_EXTENT - sphere.radius;
+        let sphere =
+            Sphere { center: sphere.center.clamp(Vec3::splat(-limit), Vec3::splat(limit)), ..sphere };
+        *slot = check_sphere(&format!("sphere {}", index + 1), sphere)?;
+        Ok(())
+    }
+
+    /// Adds a sphere (checked, and moved inside the box); returns its index.
+    pub fn add_sphere(&mut self, sphere: Sphere) -> Result<usize, SceneError> {
+        if self.spheres.len() >= MAX_SPHERES as usize {
+            return Err(SceneError(format!("a scene holds at most {MAX_SPHERES} spheres")));
+        }
+        self.spheres.push(sphere);
+        let index = self.spheres.len() - 1;
+        self.set_sphere(index, sphere).inspect_err(|_| {
+            self.spheres.pop();
+        })?;
+        Ok(index)
+    }
+
+    /// Removes sphere `index`; the last sphere stays.
+    pub fn remove_sphere(&mut self, index: usize) -> Result<(), SceneError> {
+        self.sphere_slot(index)?;
+        if self.spheres.len() == 1 {
+            return Err(SceneError("a scene keeps at least one sphere".into()));
+        }
+        self.spheres.remove(index);
+        Ok(())
+    }
+
+    fn sphere_slot(&mut self, index: usize) -> Result<&mut Sphere, SceneError> {
+        let count = self.spheres.len();
+        self.spheres
+            .get_mut(index)
+            .ok_or_else(|| SceneError(format!("there is no sphere {} (the scene has {count})", index + 1)))
     }
 
     /// Advances the spheres by `dt` seconds: Euler steps, reflecting off the walls so that every sphere

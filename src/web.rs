@@ -12,6 +12,7 @@ use std::rc::Rc;
 use wasm_bindgen::prelude::*;
 use web_sys::HtmlCanvasElement;
 
+mod editing;
 mod gpu;
 mod teaching;
 
@@ -42,6 +43,30 @@ async fn next_task() {
     let _ = wasm_bindgen_futures::JsFuture::from(promise).await;
 }
 
+/// Spheres as the page passes them: 7 numbers each (centre, radius, velocity).
+fn pack_spheres(spheres: &[Sphere]) -> Vec<f32> {
+    spheres
+        .iter()
+        .flat_map(|s| {
+            [s.center.x, s.center.y, s.center.z, s.radius, s.velocity.x, s.velocity.y, s.velocity.z]
+        })
+        .collect()
+}
+
+fn unpack_spheres(packed: &[f32]) -> Result<Vec<Sphere>, JsError> {
+    if !packed.len().is_multiple_of(7) {
+        return Err(js_error("spheres come as 7 numbers each (centre, radius, velocity)"));
+    }
+    Ok(packed
+        .chunks(7)
+        .map(|s| Sphere {
+            center: Vec3::new(s[0], s[1], s[2]),
+            radius: s[3],
+            velocity: Vec3::new(s[4], s[5], s[6]),
+        })
+        .collect())
+}
+
 fn js_error(error: impl std::fmt::Display) -> JsError {
     JsError::new(&error.to_string())
 }
@@ -68,6 +93,7 @@ pub fn parameters() -> js_sys::Array {
                 Kind::Choice(words) => ("choice", words),
                 Kind::List(words) => ("list", words),
                 Kind::Slice => ("slice", &[]),
+                Kind::Spheres => ("spheres", &[]),
             };
             set(&object, "kind", kind.into());
             set(
@@ -90,11 +116,16 @@ pub fn parameters() -> js_sys::Array {
 /// a string; throws with a message naming what is accepted.
 #[wasm_bindgen]
 pub fn parse_parameter(name: &str, text: &str) -> Result<JsValue, JsError> {
-    Ok(match params::parse_parameter(name, text).map_err(js_error)? {
+    Ok(value_to_js(params::parse_parameter(name, text).map_err(js_error)?))
+}
+
+/// A parameter's value as the page holds it: a number, a boolean or a string.
+fn value_to_js(value: Value) -> JsValue {
+    match value {
         Value::Number(v) => v.into(),
         Value::Boolean(b) => b.into(),
         Value::Text(s) => s.into(),
-    })
+    }
 }
 
 /// Figures from the GPU about a recent frame.
@@ -275,29 +306,12 @@ impl View {
     /// The spheres as they are now, 7 numbers each (centre, radius, velocity), so a view rebuilt on a
     /// new device carries on from where it was.
     pub fn spheres(&self) -> Vec<f32> {
-        self.renderer
-            .scene()
-            .spheres()
-            .iter()
-            .flat_map(|s| {
-                [s.center.x, s.center.y, s.center.z, s.radius, s.velocity.x, s.velocity.y, s.velocity.z]
-            })
-            .collect()
+        pack_spheres(self.renderer.scene().spheres())
     }
 
     /// Puts back spheres saved by `spheres`.
     pub fn set_spheres(&mut self, packed: Vec<f32>) -> Result<(), JsError> {
-        if !packed.len().is_multiple_of(7) {
-            return Err(js_error("spheres come as 7 numbers each (centre, radius, velocity)"));
-        }
-        let spheres = packed
-            .chunks(7)
-            .map(|s| Sphere {
-                center: Vec3::new(s[0], s[1], s[2]),
-                radius: s[3],
-                velocity: Vec3::new(s[4], s[5], s[6]),
-            })
-            .collect();
+        let spheres = unpack_spheres(&packed)?;
         let seed = self.renderer.settings().seed;
         let scene = Scene::from_spheres(spheres).map_err(js_error)?.with_seed(seed);
         self.renderer.set_scene(scene);

@@ -28,6 +28,8 @@ pub enum Kind {
     List(&'static [&'static str]),
     /// `off`, or an axis and a position in the box: `z:0.25`.
     Slice,
+    /// Empty (the seeded layout), or spheres written `x,y,z,radius[,vx,vy,vz]` joined by `;`.
+    Spheres,
 }
 
 /// One parameter a person can set: from a link, an element attribute or a control. This table is the
@@ -82,6 +84,9 @@ pub const CONTROLS: &[&str] = &[
     "specular",
     "projection",
     "fov",
+    "edit",
+    "scene",
+    "export",
 ];
 
 #[allow(clippy::too_many_arguments)] // one row of the table
@@ -224,6 +229,8 @@ pub const PARAMETERS: &[Parameter] = &[
         (20.0, 100.0, 1.0),
         "45",
     ),
+    other("edit", "edit", "Edit spheres", Kind::Boolean, "false"),
+    other("balls", "balls", "Spheres", Kind::Spheres, ""),
     other("controls", "controls", "Controls", Kind::List(CONTROLS), "none"),
     other("hud", "hud", "Statistics", Kind::Choice(&["on", "off"]), "off"),
     other("autoplay", "autoplay", "Autoplay", Kind::Choice(&["visible", "off"]), "visible"),
@@ -308,6 +315,14 @@ impl Parameter {
                 Ok(Value::Text(items.join(",")))
             }
             Kind::Slice => Slice::parse(trimmed).map(|slice| Value::Text(Slice::text(slice))),
+            Kind::Spheres if trimmed.is_empty() => Ok(Value::Text(String::new())),
+            Kind::Spheres => crate::scene_file::parse_spheres_text(trimmed)
+                .map(|spheres| Value::Text(crate::scene_file::spheres_text(&spheres)))
+                .map_err(|e| ParamError::Invalid {
+                    name: self.noun,
+                    value: text.to_string(),
+                    expected: format!("x,y,z,radius[,vx,vy,vz] per sphere joined by ; ({e})"),
+                }),
         }
     }
 }

@@ -23,15 +23,30 @@ impl Renderer {
     /// from the eye meets first (in the cells view, the first crossed cell it enters), or `None` over the
     /// background.
     pub fn pick(&self, x: f32, y: f32) -> Option<UVec3> {
+        let (origin, direction) = self.ray(x, y);
+        let s = &self.settings;
+        // In the cells view, the box under the pointer; otherwise the surface.
+        let target = if s.view.grid == GridView::Cells { Target::CrossedCell } else { Target::Surface };
+        inspect::pick(
+            self.scene.spheres(),
+            s.iso,
+            self.grid(),
+            self.construction(),
+            origin,
+            direction,
+            target,
+        )
+    }
+
+    /// The ray from the eye through pixel (`x`, `y`) of the output (origin top left): a point on the
+    /// near plane and a direction, for perspective and orthographic projections alike.
+    pub fn ray(&self, x: f32, y: f32) -> (glam::Vec3, glam::Vec3) {
         let (width, height) = (self.size.0 as f32, self.size.1 as f32);
         let ndc = glam::Vec2::new(2.0 * x / width - 1.0, 1.0 - 2.0 * y / height);
         let inverse = self.view_projection().inverse();
         let near = inverse.project_point3(ndc.extend(0.0));
         let far = inverse.project_point3(ndc.extend(1.0));
-        let s = &self.settings;
-        // In the cells view, the box under the pointer; otherwise the surface.
-        let target = if s.view.grid == GridView::Cells { Target::CrossedCell } else { Target::Surface };
-        inspect::pick(self.scene.spheres(), s.iso, self.grid(), self.construction(), near, far - near, target)
+        (near, (far - near).normalize())
     }
 
     /// Shows `cell` in the inspector (highlighted in the view every frame), or nothing.

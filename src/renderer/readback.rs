@@ -3,7 +3,7 @@
 use super::Renderer;
 use super::Sizing;
 use super::limits::storage_limit;
-use crate::gpu::read_buffer;
+use crate::gpu::{map_and_read, read_buffer};
 use crate::mesh::IndexedMesh;
 use crate::mesh_buffers::{BLOCK_CELLS, Capacity, INDEX_BYTES, VERTEX_BYTES};
 use crate::uniforms::Counters;
@@ -22,10 +22,7 @@ impl Renderer {
     /// With the CPU mesher as the source, its mesh is returned as it was uploaded.
     pub async fn extract_mesh(&mut self) -> IndexedMesh {
         if self.next_source() == super::MeshSource::Cpu {
-            self.extract();
-            let mut mesh = self.cpu.as_ref().map(|m| m.to_indexed()).unwrap_or_default();
-            mesh.triangles.truncate(self.cpu_indices as usize / 3);
-            return mesh;
+            return self.mesh_readback().finish().await.unwrap_or_default();
         }
         let mut counters = self.run_extraction().await;
         while self.sizing == Sizing::Automatic && !self.mesh.capacity.holds(&counters) {
@@ -37,20 +34,7 @@ impl Renderer {
             self.reallocate(grown);
             counters = self.run_extraction().await;
         }
-        let capacity = self.mesh.capacity;
-        let vertex_count = counters.vertices.min(capacity.vertices) as u64;
-        let index_count = counters.indices.min(capacity.indices) as u64;
-        let vertex_bytes =
-            read_buffer(&self.device, &self.queue, &self.mesh.vertices, 0, vertex_count * VERTEX_BYTES).await;
-        let index_bytes =
-            read_buffer(&self.device, &self.queue, &self.mesh.indices, 0, index_count * INDEX_BYTES).await;
-        let floats: &[[f32; 6]] = bytemuck::cast_slice(&vertex_bytes);
-        let indices: &[u32] = bytemuck::cast_slice(&index_bytes);
-        IndexedMesh {
-            positions: floats.iter().map(|v| Vec3::new(v[0], v[1], v[2])).collect(),
-            normals: floats.iter().map(|v| Vec3::new(v[3], v[4], v[5])).collect(),
-            triangles: indices.chunks(3).map(|t| [t[0], t[1], t[2]]).collect(),
-        }
+        self.mesh_readback().finish().await.unwrap_or_default()
     }
 
     /// The field values the GPU computed for the current state: every grid point of every active block,
@@ -106,5 +90,78 @@ impl Renderer {
             .map(|pair| [Vec3::from_slice(&pair[0][..3]), Vec3::from_slice(&pair[1][..3])])
             .collect();
         Some(OverlayReadback { draws, segments })
+    }
+}
+
+/// The mesh of one frame on its way back from the GPU. It owns what it reads, so a page can wait for it
+/// while the renderer goes on drawing: the copies were queued right after that frame's extraction.
+pub enum MeshReadback {
+    /// The CPU mesher's mesh: nothing to wait for.
+    Ready(IndexedMesh),
+    /// Copies of the counters and the vertex and index buffers, queued behind the extraction.
+    Queued { device: wgpu::Device, counters: wgpu::Buffer, vertices: wgpu::Buffer, indices: wgpu::Buffer },
+}
+
+impl MeshReadback {
+    /// The mesh, or why it is incomplete (the frame's triangles outgrew the buffers).
+    pub async fn finish(self) -> Result<IndexedMesh, String> {
+        let (device, counters, vertices, indices) = match self {
+            MeshReadback::Ready(mesh) => return Ok(mesh),
+            MeshReadback::Queued { device, counters, vertices, indices } => {
+                (device, counters, vertices, indices)
+            }
+        };
+        let counters: Counters = bytemuck::pod_read_unaligned(&map_and_read(&device, &counters).await);
+        let vertex_count = counters.vertices as u64;
+        let index_count = counters.indices as u64;
+        if vertex_count * VERTEX_BYTES > vertices.size() || index_count * INDEX_BYTES > indices.size() {
+            return Err(format!(
+                "the surface needs {} triangles, more than the mesh buffers held in this frame; \
+                 try again in a moment, or lower the resolution",
+                index_count / 3
+            ));
+        }
+        let vertex_bytes = map_and_read(&device, &vertices).await;
+        let index_bytes = map_and_read(&device, &indices).await;
+        let floats: &[[f32; 6]] =
+            bytemuck::cast_slice(&vertex_bytes[..(vertex_count * VERTEX_BYTES) as usize]);
+        let indices: &[u32] = bytemuck::cast_slice(&index_bytes[..(index_count * INDEX_BYTES) as usize]);
+        Ok(IndexedMesh {
+            positions: floats.iter().map(|v| Vec3::new(v[0], v[1], v[2])).collect(),
+            normals: floats.iter().map(|v| Vec3::new(v[3], v[4], v[5])).collect(),
+            triangles: indices.chunks(3).map(|t| [t[0], t[1], t[2]]).collect(),
+        })
+    }
+}
+
+impl Renderer {
+    /// Extracts the surface for the current state and queues its readback: one on-demand copy (for
+    /// exports), never part of a frame. With the CPU mesher as the source, its mesh is at hand.
+    pub fn mesh_readback(&mut self) -> MeshReadback {
+        self.extract();
+        if self.mesh_source() == super::MeshSource::Cpu {
+            let mut mesh = self.cpu.as_ref().map(|m| m.to_indexed()).unwrap_or_default();
+            mesh.triangles.truncate(self.cpu_indices as usize / 3);
+            return MeshReadback::Ready(mesh);
+        }
+        let staging = |label: &str, size: u64| {
+            self.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some(label),
+                size: size.max(16),
+                usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            })
+        };
+        let counters = staging("mesh readback: counters", 16);
+        let vertices = staging("mesh readback: vertices", self.mesh.vertices.size());
+        let indices = staging("mesh readback: indices", self.mesh.indices.size());
+        let mut encoder = self
+            .device
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("mesh readback: copy") });
+        encoder.copy_buffer_to_buffer(&self.mesh.counters, 0, &counters, 0, 16);
+        encoder.copy_buffer_to_buffer(&self.mesh.vertices, 0, &vertices, 0, self.mesh.vertices.size());
+        encoder.copy_buffer_to_buffer(&self.mesh.indices, 0, &indices, 0, self.mesh.indices.size());
+        self.queue.submit([encoder.finish()]);
+        MeshReadback::Queued { device: self.device.clone(), counters, vertices, indices }
     }
 }

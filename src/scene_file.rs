@@ -1,0 +1,367 @@
+//! Scenes as files: the spheres (centre, radius, velocity) and every setting of the picture, as a small
+//! versioned JSON document, and a compact text form of the spheres alone for links.
+//!
+//! A document is read whole and checked whole before anything uses it: whatever is wrong (not JSON, cut
+//! short, too large, another version, a missing field, a value out of range) comes back as one message
+//! naming the field and the value, and the caller's scene stays as it was.
+//!
+//! ```json
+//! { "format": "metaballs-scene", "version": 1,
+//!   "spheres": [ { "center": [-0.3, 0, 0], "radius": 0.35, "velocity": [0, 0, 0] } ],
+//!   "settings": { "iso": 1, "resolution": 64, "color": "#e77661", "yaw": 30 } }
+//! ```
+
+use crate::params::{MAX_SPHERES, ParamError, Value, check_f32, parameter};
+use crate::scene::{BOX_HALF_EXTENT, Sphere};
+use glam::Vec3;
+use serde_json::{Map, Number, json};
+use std::fmt;
+
+/// The `format` field of every scene document.
+pub const FORMAT: &str = "metaballs-scene";
+/// The document version this build writes and reads.
+pub const VERSION: u64 = 1;
+/// Largest document read, in bytes: 64 spheres take about 10 KB.
+pub const MAX_BYTES: usize = 1 << 20;
+/// Smallest and largest sphere radius accepted (the centre must keep the sphere inside the box).
+pub const RADIUS_RANGE: (f32, f32) = (0.01, BOX_HALF_EXTENT);
+/// Largest speed along each axis accepted, box half-widths per second.
+pub const MAX_VELOCITY: f32 = 100.0;
+/// Parameters that belong to the figure on its page rather than to the scene: a document neither
+/// saves nor restores them. The sphere count is the length of `spheres`.
+pub const NOT_IN_SCENE: &[&str] =
+    &["spheres", "balls", "controls", "hud", "autoplay", "max-pixel-ratio", "edit"];
+
+/// A refused scene document or sphere list: which field, and what is wrong with its value.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SceneError(pub String);
+
+impl fmt::Display for SceneError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for SceneError {}
+
+fn at(field: &str, error: ParamError) -> SceneError {
+    SceneError(format!("{field}: {error}"))
+}
+
+/// A checked scene: the spheres, and settings by parameter name (only names a scene holds, each
+/// value checked by the parameter table).
+#[derive(Clone, Debug, PartialEq)]
+pub struct SceneFile {
+    pub spheres: Vec<Sphere>,
+    pub settings: Vec<(&'static str, Value)>,
+}
+
+/// Checks one sphere: radius in range, centre keeping it inside the box, finite bounded velocity.
+pub fn check_sphere(field: &str, sphere: Sphere) -> Result<Sphere, SceneError> {
+    let (min, max) = RADIUS_RANGE;
+    check_f32("sphere radius", sphere.radius, min, max).map_err(|e| at(&format!("{field}.radius"), e))?;
+    let limit = BOX_HALF_EXTENT - sphere.radius;
+    for (axis, c) in sphere.center.to_array().into_iter().enumerate() {
+        check_f32("centre coordinate (inside the box for this radius)", c, -limit, limit)
+            .map_err(|e| at(&format!("{field}.center[{axis}]"), e))?;
+    }
+    for (axis, v) in sphere.velocity.to_array().into_iter().enumerate() {
+        check_f32("velocity", v, -MAX_VELOCITY, MAX_VELOCITY)
+            .map_err(|e| at(&format!("{field}.velocity[{axis}]"), e))?;
+    }
+    Ok(sphere)
+}
+
+fn check_count(field: &str, count: usize) -> Result<(), SceneError> {
+    if count == 0 || count > MAX_SPHERES as usize {
+        return Err(SceneError(format!("{field}: a scene holds 1 to {MAX_SPHERES} spheres, got {count}")));
+    }
+    Ok(())
+}
+
+/// Describes a JSON value for messages: short values whole, long ones by kind.
+fn describe(value: &serde_json::Value) -> String {
+    let text = value.to_string();
+    if text.len() <= 40 {
+        return text;
+    }
+    match value {
+        serde_json::Value::Array(a) => format!("an array of {} items", a.len()),
+        serde_json::Value::Object(o) => format!("an object with {} fields", o.len()),
+        _ => format!("{}…", text.chars().take(37).collect::<String>()),
+    }
+}
+
+fn number(value: &serde_json::Value, field: &str) -> Result<f32, SceneError> {
+    match value {
+        // Through the shortest decimal text, so that an f32 written by `to_json` reads back exactly.
+        serde_json::Value::Number(n) => {
+            n.to_string().parse::<f32>().map_err(|_| SceneError(format!("{field} must be a number, got {n}")))
+        }
+        other => Err(SceneError(format!("{field} must be a number, got {}", describe(other)))),
+    }
+}
+
+fn vector(value: &serde_json::Value, field: &str) -> Result<Vec3, SceneError> {
+    match value.as_array() {
+        Some(items) if items.len() == 3 => {
+            let c = |k: usize| number(&items[k], &format!("{field}[{k}]"));
+            Ok(Vec3::new(c(0)?, c(1)?, c(2)?))
+        }
+        _ => Err(SceneError(format!("{field} must be three numbers [x, y, z], got {}", describe(value)))),
+    }
+}
+
+fn sphere(value: &serde_json::Value, field: &str) -> Result<Sphere, SceneError> {
+    let object = value.as_object().ok_or_else(|| {
+        SceneError(format!("{field} must be an object with center and radius, got {}", describe(value)))
+    })?;
+    let get = |name: &str| object.get(name).ok_or_else(|| SceneError(format!("{field}.{name} is missing")));
+    let velocity = match object.get("velocity") {
+        Some(v) => vector(v, &format!("{field}.velocity"))?,
+        None => Vec3::ZERO,
+    };
+    let s = Sphere {
+        center: vector(get("center")?, &format!("{field}.center"))?,
+        radius: number(get("radius")?, &format!("{field}.radius"))?,
+        velocity,
+    };
+    check_sphere(field, s)
+}
+
+fn setting(name: &str, value: &serde_json::Value) -> Result<(&'static str, Value), SceneError> {
+    let field = format!("settings.{name}");
+    let spec = parameter(name)
+        .filter(|p| p.name == name && !NOT_IN_SCENE.contains(&p.name))
+        .ok_or_else(|| SceneError(format!("{field}: not a setting a scene holds")))?;
+    let text = match value {
+        serde_json::Value::Number(n) => n.to_string(),
+        serde_json::Value::Bool(b) => b.to_string(),
+        serde_json::Value::String(s) => s.clone(),
+        other => {
+            return Err(SceneError(format!(
+                "{field} must be a number, true/false or text, got {}",
+                describe(other)
+            )));
+        }
+    };
+    spec.parse(&text).map(|v| (spec.name, v)).map_err(|e| at(&field, e))
+}
+
+impl SceneFile {
+    /// Reads and checks a scene document.
+    pub fn parse(text: &str) -> Result<SceneFile, SceneError> {
+        if text.len() > MAX_BYTES {
+            return Err(SceneError(format!(
+                "the file is {:.1} MB; a scene file is at most {} MB",
+                text.len() as f64 / (1 << 20) as f64,
+                MAX_BYTES >> 20
+            )));
+        }
+        let document: serde_json::Value = serde_json::from_str(text).map_err(|e| {
+            let what = if e.is_eof() { "the file ends early (is it cut short?)" } else { "not valid JSON" };
+            SceneError(format!("{what}: {e}"))
+        })?;
+        let object = document
+            .as_object()
+            .ok_or_else(|| SceneError(format!("a scene is a JSON object, got {}", describe(&document))))?;
+        match object.get("format") {
+            Some(serde_json::Value::String(f)) if f == FORMAT => {}
+            Some(other) => {
+                return Err(SceneError(format!("format must be \"{FORMAT}\", got {}", describe(other))));
+            }
+            None => return Err(SceneError(format!("format is missing: this is not a {FORMAT} document"))),
+        }
+        match object.get("version") {
+            Some(v) if v.as_u64() == Some(VERSION) => {}
+            Some(other) => {
+                return Err(SceneError(format!(
+                    "version {} is not one this build reads (it reads version {VERSION})",
+                    describe(other)
+                )));
+            }
+            None => return Err(SceneError("version is missing".into())),
+        }
+        let list = object
+            .get("spheres")
+            .ok_or_else(|| SceneError("spheres is missing".into()))?
+            .as_array()
+            .ok_or_else(|| {
+            SceneError(format!("spheres must be an array, got {}", describe(&object["spheres"])))
+        })?;
+        check_count("spheres", list.len())?;
+        let spheres = list
+            .iter()
+            .enumerate()
+            .map(|(i, s)| sphere(s, &format!("spheres[{i}]")))
+            .collect::<Result<_, _>>()?;
+        let settings = match object.get("settings") {
+            None => Vec::new(),
+            Some(serde_json::Value::Object(map)) => {
+                map.iter().map(|(name, value)| setting(name, value)).collect::<Result<_, _>>()?
+            }
+            Some(other) => {
+                return Err(SceneError(format!("settings must be an object, got {}", describe(other))));
+            }
+        };
+        Ok(SceneFile { spheres, settings })
+    }
+
+    /// Checks spheres and settings given by name (a page's state) and makes them a scene.
+    pub fn new(
+        spheres: Vec<Sphere>,
+        settings: &Map<String, serde_json::Value>,
+    ) -> Result<SceneFile, SceneError> {
+        check_count("spheres", spheres.len())?;
+        for (i, s) in spheres.iter().enumerate() {
+            check_sphere(&format!("spheres[{i}]"), *s)?;
+        }
+        let settings = settings
+            .iter()
+            .filter(|(name, _)| !NOT_IN_SCENE.contains(&name.as_str()))
+            .map(|(name, value)| setting(name, value))
+            .collect::<Result<_, _>>()?;
+        Ok(SceneFile { spheres, settings })
+    }
+
+    /// The document, indented, with numbers written as short as they read back exactly.
+    pub fn to_json(&self) -> String {
+        let spheres: Vec<serde_json::Value> = self
+            .spheres
+            .iter()
+            .map(|s| {
+                json!({
+                    "center": s.center.to_array().map(short),
+                    "radius": short(s.radius),
+                    "velocity": s.velocity.to_array().map(short),
+                })
+            })
+            .collect();
+        let settings: Map<String, serde_json::Value> = self
+            .settings
+            .iter()
+            .map(|(name, value)| {
+                let v = match value {
+                    Value::Number(n) => Number::from_f64(*n).map_or(serde_json::Value::Null, Into::into),
+                    Value::Boolean(b) => (*b).into(),
+                    Value::Text(t) => t.clone().into(),
+                };
+                (name.to_string(), v)
+            })
+            .collect();
+        let document =
+            json!({ "format": FORMAT, "version": VERSION, "spheres": spheres, "settings": settings });
+        serde_json::to_string_pretty(&document).expect("a scene always serialises")
+    }
+
+    /// A setting's value, if the scene holds it.
+    pub fn setting(&self, name: &str) -> Option<&Value> {
+        self.settings.iter().find(|(n, _)| *n == name).map(|(_, v)| v)
+    }
+
+    /// `base` with every setting of this scene the renderer takes (the animation's speed and pause
+    /// belong to the page, and are left out), and the sphere count of this scene.
+    pub fn applied_to(&self, base: crate::Settings) -> Result<crate::Settings, SceneError> {
+        let mut settings = crate::Settings { sphere_count: self.spheres.len() as u32, ..base };
+        for (name, value) in &self.settings {
+            if matches!(*name, "speed" | "paused") {
+                continue;
+            }
+            let text = match value {
+                Value::Number(n) => n.to_string(),
+                Value::Boolean(b) => b.to_string(),
+                Value::Text(t) => t.clone(),
+            };
+            settings =
+                settings.with_parameter(name, &text).map_err(|e| at(&format!("settings.{name}"), e))?;
+        }
+        Ok(settings)
+    }
+}
+
+/// An f32 as the JSON number with the shortest decimal text that reads back as the same f32.
+fn short(x: f32) -> serde_json::Value {
+    let text = x.to_string();
+    text.parse::<f64>().ok().and_then(Number::from_f64).map_or(serde_json::Value::Null, Into::into)
+}
+
+/// The compact form of spheres in links: `x,y,z,r` (a still sphere) or `x,y,z,r,vx,vy,vz`, joined by
+/// `;`, positions to 3 decimals and speeds to 2.
+pub fn spheres_text(spheres: &[Sphere]) -> String {
+    let n = |x: f32, places: usize| {
+        let t = format!("{x:.places$}");
+        let t = t.trim_end_matches('0').trim_end_matches('.');
+        if t == "-0" || t.is_empty() { "0".to_string() } else { t.to_string() }
+    };
+    spheres
+        .iter()
+        .map(|s| {
+            let mut parts: Vec<String> = s.center.to_array().iter().map(|&c| n(c, 3)).collect();
+            parts.push(n(s.radius, 3));
+            let v: Vec<String> = s.velocity.to_array().iter().map(|&c| n(c, 2)).collect();
+            if v.iter().any(|c| c != "0") {
+                parts.extend(v);
+            }
+            parts.join(",")
+        })
+        .collect::<Vec<_>>()
+        .join(";")
+}
+
+/// Reads the compact form written by [`spheres_text`]; every sphere is checked as in a document.
+pub fn parse_spheres_text(text: &str) -> Result<Vec<Sphere>, SceneError> {
+    let groups: Vec<&str> = text.split(';').map(str::trim).filter(|g| !g.is_empty()).collect();
+    check_count("balls", groups.len())?;
+    groups
+        .iter()
+        .enumerate()
+        .map(|(i, group)| {
+            let field = format!("balls sphere {}", i + 1);
+            let numbers = group
+                .split(',')
+                .map(|t| {
+                    t.trim()
+                        .parse::<f32>()
+                        .map_err(|_| SceneError(format!("{field}: {:?} is not a number", t.trim())))
+                })
+                .collect::<Result<Vec<f32>, _>>()?;
+            let s = match numbers[..] {
+                [x, y, z, r] => Sphere { center: Vec3::new(x, y, z), radius: r, velocity: Vec3::ZERO },
+                [x, y, z, r, vx, vy, vz] => {
+                    Sphere { center: Vec3::new(x, y, z), radius: r, velocity: Vec3::new(vx, vy, vz) }
+                }
+                _ => {
+                    return Err(SceneError(format!(
+                        "{field}: expected x,y,z,radius or x,y,z,radius,vx,vy,vz, got {} numbers",
+                        numbers.len()
+                    )));
+                }
+            };
+            check_sphere(&field, s)
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_compact_form_reads_back_to_its_precision() {
+        let spheres = vec![
+            Sphere { center: Vec3::new(-0.3, 0.1234, 0.0), radius: 0.35, velocity: Vec3::ZERO },
+            Sphere { center: Vec3::new(0.4, -0.2, 0.25), radius: 0.3, velocity: Vec3::new(0.5, -0.25, 0.0) },
+        ];
+        let text = spheres_text(&spheres);
+        assert_eq!(text, "-0.3,0.123,0,0.35;0.4,-0.2,0.25,0.3,0.5,-0.25,0");
+        let back = parse_spheres_text(&text).unwrap();
+        assert_eq!(back.len(), 2);
+        assert!((back[0].center - spheres[0].center).abs().max_element() < 1e-3);
+        assert_eq!(back[1].velocity, spheres[1].velocity);
+        let e = parse_spheres_text("0,0,0,0.3;0.9,0,0,0.3").unwrap_err().to_string();
+        assert!(e.contains("balls sphere 2.center[0]") && e.contains("got 0.9"), "{e}");
+        assert!(parse_spheres_text("0,0,0").unwrap_err().to_string().contains("got 3 numbers"));
+        assert!(parse_spheres_text("0,0,x,1").unwrap_err().to_string().contains("\"x\" is not a number"));
+        assert!(parse_spheres_text("").is_err());
+    }
+}
