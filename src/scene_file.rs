@@ -135,7 +135,11 @@ fn setting(name: &str, value: &serde_json::Value) -> Result<(&'static str, Value
         .filter(|p| p.name == name && !NOT_IN_SCENE.contains(&p.name))
         .ok_or_else(|| SceneError(format!("{field}: not a setting a scene holds")))?;
     let text = match value {
-        serde_json::Value::Number(n) => n.to_string(),
+        // Whole numbers written with a fraction (`64.0`) read as whole numbers.
+        serde_json::Value::Number(n) => match n.as_f64() {
+            Some(x) if x.fract() == 0.0 && x.abs() < 1e15 => (x as i64).to_string(),
+            _ => n.to_string(),
+        },
         serde_json::Value::Bool(b) => b.to_string(),
         serde_json::Value::String(s) => s.clone(),
         other => {
@@ -242,6 +246,7 @@ impl SceneFile {
             .iter()
             .map(|(name, value)| {
                 let v = match value {
+                    Value::Number(n) if n.fract() == 0.0 && n.abs() < 1e15 => (*n as i64).into(),
                     Value::Number(n) => Number::from_f64(*n).map_or(serde_json::Value::Null, Into::into),
                     Value::Boolean(b) => (*b).into(),
                     Value::Text(t) => t.clone().into(),
