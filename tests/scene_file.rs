@@ -103,7 +103,7 @@ fn bad_documents_are_refused_with_the_field_and_value_and_change_nothing() {
         format!(r#"{{"format":"metaballs-scene","version":1,"spheres":[{spheres}]{rest}}}"#)
     };
     let many = vec![sphere; 10_000].join(",");
-    let huge = format!("{}{}", &good[..good.len() - 1], format!(r#","padding":"{}"}}"#, "x".repeat(5 << 20)));
+    let huge = format!(r#"{},"padding":"{}"}}"#, &good[..good.len() - 1], "x".repeat(5 << 20));
     let cases: Vec<(&str, String, &str)> = vec![
         ("invalid JSON", "{ spheres: [] }".into(), "not valid JSON: key must be a string at line 1 column 3"),
         ("truncated", good[..good.len() / 2].into(), "the file ends early (is it cut short?)"),
