@@ -178,13 +178,7 @@ mod cli {
     /// Reads a scene file, refusing one larger than a scene can be before reading it.
     fn read_scene(path: &Path) -> Result<SceneFile, Box<dyn std::error::Error>> {
         let size = std::fs::metadata(path).map_err(|e| format!("{}: {e}", path.display()))?.len();
-        if size > scene_file::MAX_BYTES as u64 {
-            return Err(in_file(
-                path,
-                format!("the file is {:.1} MB; a scene file is at most 1 MB", size as f64 / 1048576.0),
-            )
-            .into());
-        }
+        scene_file::check_size(size).map_err(|e| in_file(path, e))?;
         let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
         Ok(SceneFile::parse(&text).map_err(|e| in_file(path, e))?)
     }

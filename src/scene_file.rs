@@ -72,6 +72,23 @@ pub fn check_sphere(field: &str, sphere: Sphere) -> Result<Sphere, SceneError> {
     Ok(sphere)
 }
 
+/// Refuses a file longer than a scene document can be (before reading it, where the size is known).
+pub fn check_size(bytes: u64) -> Result<(), SceneError> {
+    if bytes > MAX_BYTES as u64 {
+        return Err(SceneError(format!(
+            "the file is {:.1} MB; a scene file is at most {} MB",
+            bytes as f64 / (1 << 20) as f64,
+            MAX_BYTES >> 20
+        )));
+    }
+    Ok(())
+}
+
+/// The parameters a scene document holds, in table order.
+pub fn scene_parameters() -> impl Iterator<Item = &'static crate::params::Parameter> {
+    crate::params::PARAMETERS.iter().filter(|p| !NOT_IN_SCENE.contains(&p.name))
+}
+
 fn check_count(field: &str, count: usize) -> Result<(), SceneError> {
     if count == 0 || count > MAX_SPHERES as usize {
         return Err(SceneError(format!("{field}: a scene holds 1 to {MAX_SPHERES} spheres, got {count}")));
@@ -155,13 +172,7 @@ fn setting(name: &str, value: &serde_json::Value) -> Result<(&'static str, Value
 impl SceneFile {
     /// Reads and checks a scene document.
     pub fn parse(text: &str) -> Result<SceneFile, SceneError> {
-        if text.len() > MAX_BYTES {
-            return Err(SceneError(format!(
-                "the file is {:.1} MB; a scene file is at most {} MB",
-                text.len() as f64 / (1 << 20) as f64,
-                MAX_BYTES >> 20
-            )));
-        }
+        check_size(text.len() as u64)?;
         let document: serde_json::Value = serde_json::from_str(text).map_err(|e| {
             let what = if e.is_eof() { "the file ends early (is it cut short?)" } else { "not valid JSON" };
             SceneError(format!("{what}: {e}"))

@@ -33,8 +33,7 @@ fn a_scene() -> SceneFile {
         })
         .collect();
     let text = |s: &str| Value::Text(s.into());
-    // Settings in the order documents hold them: by name.
-    let mut settings = vec![
+    let settings = vec![
         ("iso", Value::Number(0.85)),
         ("resolution", Value::Number(40.0)),
         ("speed", Value::Number(0.5)),
@@ -45,7 +44,6 @@ fn a_scene() -> SceneFile {
         ("light", text("point,spot")),
         ("slice", text("z:0.25")),
     ];
-    settings.sort_by_key(|(name, _)| *name);
     SceneFile { spheres, settings }
 }
 

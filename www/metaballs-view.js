@@ -14,6 +14,8 @@ import { Hud } from './lib/hud.js';
 import { applySetting, isRendererSetting } from './lib/view-settings.js';
 import { canvasPixels, pixelRatio } from './lib/canvas-size.js';
 import { CostGuard } from './lib/frame-cost.js';
+import { SphereEditor } from './lib/editor.js';
+import { download, meshBlob, pngOf, readSceneFile, wireDrop } from './lib/scene-files.js';
 
 const wasmError = await loadWasm().then(() => null, (error) => error);
 const TABLE = wasmError ? [] : parameterTable();
@@ -90,12 +92,17 @@ export class MetaballsView extends HTMLElement {
   #root;
   #canvas;
   #inspector;
+  #editor;
   // What the panel's buttons and the keys do.
   #actions = {
     togglePause: () => (this.#state.paused ? this.play() : this.pause()),
     reseed: () => this.#set('seed', 1 + Math.floor(Math.random() * 1e6)),
     resetView: () => this.resetView(),
     step: () => this.step(),
+    saveScene: () => this.#run(() => this.downloadScene()),
+    loadScene: () => this.#root.getElementById('scene-file').click(),
+    exportMesh: (format) => this.#run(() => this.downloadMesh(format)),
+    picture: (scale) => this.#run(() => this.downloadPicture(scale)),
   };
   #started = false;
 
@@ -121,6 +128,14 @@ export class MetaballsView extends HTMLElement {
       },
       onClass: (k) => this.#showPanel(this.#state, k),
     });
+    this.#editor = new SphereEditor(this.#root, {
+      view: () => this.#view,
+      scale: () => this.#canvas.width / Math.max(1, this.#canvas.clientWidth),
+      edited: () => this.#edited(),
+      redraw: () => { this.#dirty = Math.max(this.#dirty, 1); hub.requestFrame(); },
+      notice: (text) => this.#notice(text),
+    });
+    const editing = () => this.#state.edit && this.#view !== null;
     wireCameraInput(this, this.#canvas, {
       get: () => ({ yaw: this.#state.yaw, pitch: this.#state.pitch, distance: this.#state.distance }),
       set: (camera) => {
@@ -129,10 +144,24 @@ export class MetaballsView extends HTMLElement {
     }, {
       ...this.#actions,
       hint: (text) => this.#flash('wheel-hint', text, 1500),
-      pick: (x, y) => this.#inspector.pick(x * (this.#canvas.width / Math.max(1, this.#canvas.clientWidth)),
-        y * (this.#canvas.height / Math.max(1, this.#canvas.clientHeight))),
+      pick: (x, y, e) => (editing() ? this.#editor.click(x, y, e.shiftKey)
+        : this.#inspector.pick(x * (this.#canvas.width / Math.max(1, this.#canvas.clientWidth)),
+          y * (this.#canvas.height / Math.max(1, this.#canvas.clientHeight)))),
       deselect: () => this.deselect(),
+      grab: (x, y) => (editing() ? this.#editor.grab(x, y) : null),
+      hover: (x, y) => editing() && this.#editor.hover(x, y),
+      leave: () => this.#editor.leave(),
+      wheel: (deltaY) => editing() && this.#editor.wheel(deltaY),
+      remove: () => editing() && this.#editor.remove(),
+      freeze: () => editing() && this.#editor.toggleFreeze(),
     });
+    const file = this.#root.getElementById('scene-file');
+    file.addEventListener('change', () => {
+      if (file.files[0]) this.#loadFile(file.files[0]);
+      file.value = '';
+    });
+    wireDrop(this, () => this.#state.edit || listedControls(this.#state.controls, CONTROL_NAMES).includes('scene'),
+      (dropped) => this.#loadFile(dropped));
     new ResizeObserver(([entry]) => this.#resize(entry)).observe(this.#canvas);
   }
 
@@ -211,6 +240,11 @@ export class MetaballsView extends HTMLElement {
     if (name === 'hud') this.#root.getElementById('hud').hidden = value !== 'on';
     if (name === 'max-pixel-ratio') this.#resize();
     if (name === 'paused') this.#root.getElementById('play').hidden = !this.#showsPlayButton();
+    if (name === 'edit') {
+      this.#editor.reset();
+      this.#inspector.deselect();
+      this.#canvas.classList.toggle('editing', value);
+    }
     this.#showPanel(this.#state);
     this.dispatchEvent(new CustomEvent('metaballs-change', { detail: { property: propertyName(name), value } }));
     hub.requestFrame();
@@ -218,6 +252,8 @@ export class MetaballsView extends HTMLElement {
 
   // A change from inside (gestures, panel, methods): reflected to the attribute, then accepted.
   #set(name, value) {
+    // A new count or layout replaces hand-placed spheres with the seeded ones.
+    if ((name === 'spheres' || name === 'seed') && this.#state.balls) this.#adopt('balls', '');
     this.#reflect(name, value);
     this.#given.add(name);
     this.#accept(name, value);
@@ -308,7 +344,8 @@ export class MetaballsView extends HTMLElement {
       }
     }
     this.#applied = { ...s };
-    this.#changed = new Set(NAMES.filter((name) => isRendererSetting(name) && !CREATION.has(name)));
+    this.#changed = new Set(NAMES.filter((name) => (isRendererSetting(name) && !CREATION.has(name))
+      || (name === 'balls' && s.balls)));
     this.#apply();
     if (this.#savedSpheres) {
       try {
@@ -318,6 +355,7 @@ export class MetaballsView extends HTMLElement {
       }
       this.#savedSpheres = null;
     }
+    this.#editor.reset();
     this.#buildPanel();
     this.#hideMessage();
     this.#dirty = 3;
@@ -386,6 +424,10 @@ export class MetaballsView extends HTMLElement {
     if (!view) return;
     const s = this.#state;
     for (const name of this.#changed) {
+      if (name === 'balls') {
+        this.#applyBalls();
+        continue;
+      }
       if (!isRendererSetting(name)) continue;
       try {
         within(this, () => applySetting(view, name, s));
@@ -424,7 +466,8 @@ export class MetaballsView extends HTMLElement {
       this.#apply();
       const elapsed = this.#last ? Math.min(Math.max(now - this.#last, 0) / 1000, 0.1) : 0;
       this.#last = now;
-      const animating = !this.#state.paused && this.#state.speed > 0;
+      // A sphere being dragged holds the animation still.
+      const animating = !this.#state.paused && this.#state.speed > 0 && !this.#editor.dragging;
       if (animating || this.#dirty > 0 || this.#stepRequested || view.needs_redraw()) {
         const dt = animating ? elapsed * this.#state.speed : this.#stepRequested ? 1 / 60 : 0;
         this.#stepRequested = false;
@@ -445,6 +488,7 @@ export class MetaballsView extends HTMLElement {
     const frameMs = this.#hud.update(now, view);
     if (frameMs && !this.#state.paused) this.#observeCost(frameMs);
     this.#inspector.follow(now);
+    if (this.#state.edit) this.#editor.draw();
     const error = view.gpu_error();
     if (error) {
       this.fail('The GPU reported an error', error);
@@ -467,11 +511,142 @@ export class MetaballsView extends HTMLElement {
   /** Selects cell (x, y, z) for the inspector; returns its report (null outside the grid). */
   inspectCell(x, y, z) { return this.#inspector.select(x, y, z); }
 
-  /** Lets go of the inspected cell (also Esc, the × button, or a click on the background). */
-  deselect() { this.#inspector.deselect(); }
+  /** Lets go of the inspected cell or the selected sphere (also Esc, the × button, or a click on the background). */
+  deselect() {
+    if (!this.#editor.deselect()) this.#inspector.deselect();
+  }
 
   /** What marching cubes decided in the inspected cell, as last shown; null when none is selected. */
   get inspected() { return this.#inspector.report; }
+
+  // ---------------------------------------------------------------- hands on the scene
+
+  // Takes a value that already holds in the renderer (the spheres after an edit): no setter runs.
+  #adopt(name, value) {
+    if (this.#state[name] === value) return;
+    this.#state[name] = value;
+    this.#applied[name] = value;
+    this.#reflect(name);
+    this.#showPanel(this.#state);
+    this.dispatchEvent(new CustomEvent('metaballs-change', { detail: { property: propertyName(name), value } }));
+  }
+
+  // After an edit by hand: the count and the link form follow the spheres in play.
+  #edited() {
+    if (!this.#view) return;
+    const packed = this.#view.spheres();
+    this.#adopt('spheres', packed.length / 7);
+    this.#adopt('balls', wasmModule().spheres_text(packed));
+    this.#dirty = Math.max(this.#dirty, 2);
+    hub.requestFrame();
+    this.dispatchEvent(new CustomEvent('metaballs-edit', { detail: { spheres: this.sphereList } }));
+  }
+
+  // Hand-placed spheres from the `balls` attribute replace the seeded layout.
+  #applyBalls() {
+    const text = this.#state.balls;
+    this.#applied.balls = text;
+    if (!text) return;
+    try {
+      this.#view.set_spheres(wasmModule().parse_spheres_text(text));
+      this.#adopt('spheres', this.#view.spheres().length / 7);
+      this.#editor.reset();
+    } catch (error) {
+      this.#notice(`balls: ${error.message}`);
+    }
+  }
+
+  // Runs an action of the panel; a failure becomes a notice.
+  #run(f) {
+    Promise.resolve().then(f).catch((error) => this.#notice(error?.message ?? String(error)));
+  }
+
+  async #loadFile(file) {
+    try {
+      this.loadScene(await readSceneFile(file));
+      this.#notice(`Loaded ${file.name}: ${this.#state.spheres} spheres`, 4000);
+    } catch (error) {
+      this.#notice(`${file.name} was not loaded: ${error.message}. The scene is unchanged.`);
+      this.dispatchEvent(new CustomEvent('metaballs-error', { detail: { message: error.message } }));
+    }
+  }
+
+  /** The spheres in play: [{ center: [x, y, z], radius, velocity: [x, y, z] }]. */
+  get sphereList() {
+    const packed = this.#view?.spheres() ?? this.#savedSpheres ?? [];
+    const out = [];
+    for (let i = 0; i + 7 <= packed.length; i += 7) {
+      out.push({ center: [...packed.slice(i, i + 3)], radius: packed[i + 3], velocity: [...packed.slice(i + 4, i + 7)] });
+    }
+    return out;
+  }
+
+  /** Where sphere `index` is drawn: { x, y, radius } in CSS pixels from the figure's top left, or null. */
+  sphereOnScreen(index) {
+    const at = this.#view?.sphere_on_screen(index);
+    const scale = this.#canvas.width / Math.max(1, this.#canvas.clientWidth);
+    return at ? { x: at[0] / scale, y: at[1] / scale, radius: at[2] / scale } : null;
+  }
+
+  /** The selected sphere's index in edit mode, or -1. */
+  get selectedSphere() { return this.#editor.selected; }
+
+  /** The scene (spheres and every setting of the picture) as a JSON document. */
+  saveScene() {
+    if (!this.#view) throw new Error('the figure has not started yet');
+    return wasmModule().save_scene(this.#view.spheres(), JSON.stringify(this.#state));
+  }
+
+  /** Loads a scene document; throws with what is wrong, leaving the scene as it was. */
+  loadScene(text) {
+    const scene = wasmModule().load_scene(text);
+    for (const [name, value] of Object.entries(scene.settings)) {
+      if (this.#state[name] !== value) this.#set(name, value);
+    }
+    this.#adopt('spheres', scene.spheres.length / 7);
+    this.#adopt('balls', wasmModule().spheres_text(scene.spheres));
+    this.#editor.reset();
+    if (this.#view) {
+      this.#apply();
+      this.#view.set_spheres(scene.spheres);
+      this.#dirty = 3;
+      hub.requestFrame();
+    } else {
+      this.#savedSpheres = scene.spheres;
+    }
+    this.dispatchEvent(new CustomEvent('metaballs-scene', { detail: { spheres: this.sphereList } }));
+  }
+
+  downloadScene() {
+    download(new Blob([this.saveScene()], { type: 'application/json' }), 'metaballs-scene.json');
+  }
+
+  /** The mesh of the current frame as `stl`, `obj` or `ply` bytes (one readback from the GPU). */
+  async exportMesh(format = 'stl') {
+    await this.ready();
+    const started = performance.now();
+    const bytes = await this.#view.export_mesh(format);
+    const ms = performance.now() - started;
+    this.dispatchEvent(new CustomEvent('metaballs-export', { detail: { format, bytes: bytes.length, ms } }));
+    return bytes;
+  }
+
+  async downloadMesh(format = 'stl') {
+    const bytes = await this.exportMesh(format);
+    download(meshBlob(bytes, format), `metaballs.${format}`);
+    this.#notice(`Exported ${format.toUpperCase()}: ${(bytes.length / 1e6).toFixed(2)} MB`, 3000);
+  }
+
+  /** A PNG of the view at the canvas size times `scale` (1 or 2). */
+  async picture(scale = 1) {
+    await this.ready();
+    const [width, height] = [this.#canvas.width * scale, this.#canvas.height * scale];
+    return pngOf(await this.#view.render_pixels(width, height), width, height);
+  }
+
+  async downloadPicture(scale = 1) {
+    download(await this.picture(scale), scale === 1 ? 'metaballs.png' : `metaballs@${scale}x.png`);
+  }
 
   // ---------------------------------------------------------------- size
 

@@ -32,6 +32,8 @@ if (problems.length) {
   element.showNotice(`Some values in the link were invalid and were replaced by defaults: ${problems.join('; ')}.`);
 }
 
+const MAX_LINK_SPHERES = 16;
+
 // Changes go back into the link (short names, defaults left out), so a link reproduces the view.
 const share = document.getElementById('share');
 let urlTimer = 0;
@@ -42,13 +44,16 @@ function saveUrl() {
     for (const spec of table.filter(inLinks)) {
       const value = element[propertyName(spec.name)];
       if (value === parseParameter(spec.name, spec.default)) continue;
+      // Hand-placed spheres ride in the link for small scenes; larger ones go in a scene file.
+      if (spec.name === 'balls' && value.split(';').length > MAX_LINK_SPHERES) continue;
       const text = typeof value === 'boolean' ? (value ? '1' : '0') : String(value);
       next.set(spec.url, text);
     }
     for (const [key, value] of query) {
       if (key === 'bench' || key.startsWith('bench_')) next.set(key, value);
     }
-    const search = next.toString();
+    // Commas, semicolons and colons are fine in a query: keep the spheres and slices readable.
+    const search = next.toString().replace(/%2C/g, ',').replace(/%3B/g, ';').replace(/%3A/g, ':');
     const url = `${location.pathname}${search ? `?${search}` : ''}`;
     history.replaceState(null, '', url);
     if (share) share.href = url;

@@ -18,14 +18,25 @@ pub fn save_scene(spheres: Vec<f32>, settings_json: &str) -> Result<String, JsEr
     Ok(SceneFile::new(unpack_spheres(&spheres)?, &settings).map_err(js_error)?.to_json())
 }
 
-/// Reads a scene document: `{ spheres: Float32Array (7 numbers each), settings: { name: value } }`;
-/// throws with the field and value that are wrong.
+/// Refuses a file larger than a scene document can be, before the page reads it.
+#[wasm_bindgen]
+pub fn check_scene_size(bytes: f64) -> Result<(), JsError> {
+    scene_file::check_size(bytes as u64).map_err(js_error)
+}
+
+/// Reads a scene document: `{ spheres: Float32Array (7 numbers each), settings: { name: value } }`
+/// with every setting a scene holds (defaults for those the document leaves out); throws with the
+/// field and value that are wrong.
 #[wasm_bindgen]
 pub fn load_scene(text: &str) -> Result<JsValue, JsError> {
     let scene = SceneFile::parse(text).map_err(js_error)?;
     let settings = js_sys::Object::new();
-    for (name, value) in scene.settings {
-        js_sys::Reflect::set(&settings, &name.into(), &value_to_js(value))
+    for p in scene_file::scene_parameters() {
+        let value = match scene.setting(p.name) {
+            Some(v) => v.clone(),
+            None => p.parse(p.default).map_err(js_error)?,
+        };
+        js_sys::Reflect::set(&settings, &p.name.into(), &value_to_js(value))
             .map_err(|_| js_error("settings"))?;
     }
     let object = js_sys::Object::new();

@@ -1,7 +1,8 @@
 // Camera gestures scoped to one element: drag to orbit (mouse, pen, touch), pinch or wheel to zoom,
-// keys while it has focus, double-click to reset, click (a press that does not move) to pick a cell.
-// The wheel zooms only while the figure has focus or with Ctrl held; otherwise it scrolls the page and
-// a one-line hint says how to zoom.
+// keys while it has focus, double-click to reset, click (a press that does not move) to pick. The
+// wheel zooms only while the figure has focus or with Ctrl held; otherwise it scrolls the page and a
+// one-line hint says how to zoom. Where `actions.grab` takes a press (a sphere under it, in edit
+// mode), the drag moves what it grabbed instead of the camera; on touch, a long press grabs.
 
 const PITCH_LIMIT = 89;
 const DISTANCE_RANGE = [1.5, 20];
@@ -9,7 +10,9 @@ const DISTANCE_RANGE = [1.5, 20];
 /**
  * Wires gestures on `surface` (the canvas) and keys on `host`. `camera` has get() → {yaw, pitch,
  * distance} and set(partial); `actions` has togglePause, reseed, resetView, step, hint(text),
- * pick(x, y) (CSS pixels from the canvas's top left) and deselect.
+ * pick(x, y, event) (CSS pixels from the canvas's top left) and deselect, and for editing grab(x, y)
+ * → a drag {move(x, y), end()} or null, hover(x, y), leave(), wheel(deltaY) → true when it used the
+ * wheel, remove() and freeze().
  */
 export function wireCameraInput(host, surface, camera, actions) {
   const focused = () => host.matches(':focus-within');
@@ -35,6 +38,10 @@ export function wireCameraInput(host, surface, camera, actions) {
   let pinchSpan = 0;
   // A press that stays within a few pixels and ends soon is a click, not a drag.
   let press = null;
+  // What a press grabbed (a sphere), and the long-press timer that grabs on touch.
+  let drag = null;
+  let longPress = 0;
+  const LONG_PRESS_MS = 450;
   const span = () => {
     const [a, b] = [...pointers.values()];
     return Math.hypot(a.x - b.x, a.y - b.y);
@@ -45,10 +52,33 @@ export function wireCameraInput(host, surface, camera, actions) {
     if (pointers.size === 2) pinchSpan = span();
     press = pointers.size === 1 && e.button === 0
       ? { x: e.clientX, y: e.clientY, offsetX: e.offsetX, offsetY: e.offsetY, time: e.timeStamp } : null;
+    clearTimeout(longPress);
+    drag = null;
+    if (press && actions.grab) {
+      if (e.pointerType === 'touch') {
+        const { offsetX, offsetY } = e;
+        longPress = setTimeout(() => {
+          if (pointers.size === 1 && press) {
+            drag = actions.grab(offsetX, offsetY);
+            if (drag) press = null;
+          }
+        }, LONG_PRESS_MS);
+      } else if (!e.shiftKey) {
+        drag = actions.grab(e.offsetX, e.offsetY);
+      }
+    }
   });
   surface.addEventListener('pointermove', (e) => {
     const p = pointers.get(e.pointerId);
-    if (!p) return;
+    if (!p) {
+      if (e.pointerType !== 'touch') actions.hover?.(e.offsetX, e.offsetY);
+      return;
+    }
+    if (drag && pointers.size === 1) {
+      drag.move(e.offsetX, e.offsetY);
+      return;
+    }
+    if (press && Math.hypot(e.clientX - press.x, e.clientY - press.y) >= 4) clearTimeout(longPress);
     const dx = e.clientX - p.x;
     const dy = e.clientY - p.y;
     p.x = e.clientX;
@@ -62,9 +92,15 @@ export function wireCameraInput(host, surface, camera, actions) {
     }
   });
   const release = (e) => {
-    if (press && e.type === 'pointerup' && pointers.size === 1
+    clearTimeout(longPress);
+    const dragged = drag && Math.hypot(e.clientX - (press?.x ?? -1e9), e.clientY - (press?.y ?? -1e9)) >= 4;
+    if (drag) {
+      drag.end();
+      drag = null;
+    }
+    if (press && !dragged && e.type === 'pointerup' && pointers.size === 1
       && Math.hypot(e.clientX - press.x, e.clientY - press.y) < 4 && e.timeStamp - press.time < 500) {
-      actions.pick(press.offsetX, press.offsetY);
+      actions.pick(press.offsetX, press.offsetY, e);
     }
     press = null;
     pointers.delete(e.pointerId);
@@ -72,13 +108,16 @@ export function wireCameraInput(host, surface, camera, actions) {
   };
   surface.addEventListener('pointerup', release);
   surface.addEventListener('pointercancel', release);
+  surface.addEventListener('pointerleave', () => actions.leave?.());
   surface.addEventListener('wheel', (e) => {
     if (!focused() && !e.ctrlKey) {
       actions.hint('Click the figure (or hold Ctrl) to zoom with the wheel');
       return;
     }
     e.preventDefault();
-    zoom(Math.exp(e.deltaY * (e.deltaMode === 1 ? 0.05 : 0.0015)));
+    const deltaY = e.deltaY * (e.deltaMode === 1 ? 33 : 1);
+    if (actions.wheel?.(deltaY)) return;
+    zoom(Math.exp(deltaY * 0.0015));
   }, { passive: false });
   surface.addEventListener('dblclick', () => actions.resetView());
 
@@ -98,6 +137,7 @@ export function wireCameraInput(host, surface, camera, actions) {
       '-': () => zoom(1 / 0.9), _: () => zoom(1 / 0.9),
       p: actions.togglePause, ' ': actions.togglePause,
       n: actions.reseed, r: actions.resetView, '.': actions.step, Escape: actions.deselect,
+      ...(actions.remove ? { Delete: actions.remove, Backspace: actions.remove, f: actions.freeze } : {}),
     };
     const action = keys[e.key.length === 1 ? e.key.toLowerCase() : e.key];
     if (action) {

@@ -202,6 +202,32 @@ svg .corner-number { fill: var(--muted); font-size: 9px; }
 #inspector .in { color: #ff9a3d; }
 #inspector .out { color: #7aa7ff; }
 
+/* Edit mode: rings around the hovered and the selected sphere, and the selected sphere's box. */
+canvas.editing { cursor: crosshair; }
+#edit-overlay { position: absolute; inset: 0; width: 100%; height: 100%; pointer-events: none; overflow: visible; }
+#edit-overlay circle { fill: none; stroke-width: 2; }
+#edit-overlay circle[hidden] { display: none; }
+#hover-ring { stroke: rgba(255, 255, 255, 0.7); stroke-dasharray: 5 4; }
+#selected-ring { stroke: var(--accent); }
+#sphere-box {
+  position: absolute;
+  right: 8px;
+  bottom: 8px;
+  width: min(280px, 45%);
+  padding: 6px 10px 8px;
+  background: var(--panel);
+  border-radius: 8px;
+  font-size: 12px;
+  z-index: 1;
+}
+#sphere-box[hidden] { display: none; }
+#play:not([hidden]) ~ #sphere-box { bottom: 48px; }
+#sphere-box header { display: flex; justify-content: space-between; align-items: center; }
+#sphere-box h3 { margin: 0; font-size: 13px; }
+#sphere-box .close { flex: none; padding: 0 8px; }
+#sphere-box p { margin: 4px 0; }
+:host(.dropping) { box-shadow: 0 0 0 3px var(--accent); }
+
 #message {
   position: absolute;
   inset: 0;
@@ -236,6 +262,9 @@ export const TEMPLATE = `
   </section>
   <button id="play" type="button" hidden>▶ Play</button>
   <section id="inspector" aria-label="Cell inspector" hidden></section>
+  <svg id="edit-overlay" aria-hidden="true"><circle id="hover-ring" hidden></circle><circle id="selected-ring" hidden></circle></svg>
+  <section id="sphere-box" aria-label="Selected sphere" hidden></section>
+  <input type="file" id="scene-file" accept=".json,application/json" hidden>
   <div id="wheel-hint" hidden></div>
   <div id="notice" role="status" hidden></div>
   <div id="confirm" role="alertdialog" aria-labelledby="confirm-text" hidden>

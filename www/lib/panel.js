@@ -12,6 +12,7 @@ const GROUPS = [
   ['Teaching', ['slice', 'interpolation', 'blend', 'inspector']],
   ['Light', ['light', 'spot_angle', 'spot_softness', 'ambient', 'diffuse', 'specular', 'shininess']],
   ['Camera', ['projection', 'fov']],
+  ['Scene', ['edit', 'scene', 'export']],
 ];
 
 // Views drawn from the compute passes' buffers, and the choice of mesher: without compute shaders
@@ -189,6 +190,14 @@ export function buildPanel(container, names, table, state, onChange, actions, op
     step: () => makeButton('step', 'Step', 'One frame forward, paused (.)', actions.step),
     seed: () => makeButton('reseed', 'New layout', 'Draw a new random layout (N)', actions.reseed),
     view: () => makeButton('reset-view', 'Reset view', 'Reset the camera (R or double-click)', actions.resetView),
+    scene: () => element('span', { className: 'buttons' },
+      makeButton('save-scene', 'Save scene', 'Download the scene as a JSON file', actions.saveScene),
+      makeButton('load-scene', 'Load scene…', 'Open a scene file (or drop one on the figure)', actions.loadScene)),
+    export: () => element('span', { className: 'buttons' },
+      ...['stl', 'obj', 'ply'].map((f) => makeButton(`export-${f}`, f.toUpperCase(),
+        `Download the surface as ${f.toUpperCase()}`, () => actions.exportMesh(f))),
+      makeButton('picture', 'PNG', 'Download a picture at the figure\'s size', () => actions.picture(1)),
+      makeButton('picture-2x', 'PNG 2×', 'Download a picture at twice the size', () => actions.picture(2))),
   };
   let galleryList = null;
 
@@ -202,6 +211,12 @@ export function buildPanel(container, names, table, state, onChange, actions, op
     for (const name of present) {
       if (name in extras) {
         buttons.append(extras[name]());
+      } else if (name === 'edit') {
+        section.append(controls.boolean(name, byName[name]));
+        section.append(element('p', {
+          className: 'hint',
+          textContent: 'Drag a sphere to move it · Shift-click to add one · Delete removes · wheel: radius',
+        }));
       } else if (name === 'inspector') {
         section.append(element('p', { className: 'hint', textContent: 'Click the surface to inspect a cell (Esc to let go).' }));
         galleryList = buildGallery(gallery);

@@ -1,0 +1,242 @@
+// Hands on the spheres (the `edit` attribute): hovering rings the sphere under the pointer, dragging
+// it moves it in the plane facing the camera (the animation holds still meanwhile), Shift-click on
+// empty space adds one, Delete or Backspace removes the selected one, the wheel or the slider changes
+// its radius, F freezes it or lets it move again. On touch, a long press selects and drags.
+// Everything is computed by the wasm view on the CPU from the sphere list: no mesh is read back.
+
+const RADIUS = { min: 0.05, max: 0.9, step: 0.01 };
+
+function make(tag, properties = {}, ...children) {
+  const node = Object.assign(document.createElement(tag), properties);
+  node.append(...children);
+  return node;
+}
+
+export class SphereEditor {
+  #root;
+  #hooks;
+  #hovered = -1;
+  #selected = -1;
+  #dragging = false;
+  // Velocities of frozen spheres, to give back when they are let go.
+  #frozen = new Map();
+  #box;
+  #rings;
+
+  /**
+   * `hooks`: view() → the wasm view or null; scale() → device pixels per CSS pixel; edited() after
+   * every change to the spheres; redraw() for a frame without a change; notice(text).
+   */
+  constructor(root, hooks) {
+    this.#root = root;
+    this.#hooks = hooks;
+    this.#rings = root.getElementById('edit-overlay');
+    this.#box = root.getElementById('sphere-box');
+  }
+
+  /** The selected sphere's index, or -1. */
+  get selected() { return this.#selected; }
+
+  /** True while a sphere is being dragged (the animation holds still). */
+  get dragging() { return this.#dragging; }
+
+  #px(x, y) {
+    const s = this.#hooks.scale();
+    return [x * s, y * s];
+  }
+
+  #pick(x, y) {
+    return this.#hooks.view()?.pick_sphere(...this.#px(x, y)) ?? -1;
+  }
+
+  /** The pointer moved over the figure with no button down (CSS pixels). */
+  hover(x, y) {
+    const index = this.#pick(x, y);
+    if (index !== this.#hovered) {
+      this.#hovered = index;
+      this.draw();
+    }
+  }
+
+  leave() {
+    this.#hovered = -1;
+    this.draw();
+  }
+
+  /** A press at (x, y): over a sphere, selects it and returns the drag; otherwise null (orbit). */
+  grab(x, y) {
+    const index = this.#pick(x, y);
+    if (index < 0) return null;
+    this.select(index);
+    this.#dragging = true;
+    let last = this.#px(x, y);
+    return {
+      move: (mx, my) => {
+        const next = this.#px(mx, my);
+        this.#try(() => this.#hooks.view()?.move_sphere(this.#selected, ...last, ...next));
+        last = next;
+        this.#hooks.redraw();
+      },
+      end: () => {
+        this.#dragging = false;
+        this.#hooks.edited();
+        this.#showBox();
+      },
+    };
+  }
+
+  /** A click (a press that did not move): Shift on empty space adds a sphere there; else selects. */
+  click(x, y, shift) {
+    const index = this.#pick(x, y);
+    if (index < 0 && shift) {
+      const added = this.#try(() => this.#hooks.view()?.add_sphere(...this.#px(x, y)));
+      if (added !== undefined) {
+        this.#hooks.edited();
+        this.select(added);
+      }
+      return;
+    }
+    this.select(index);
+  }
+
+  /** The wheel over the figure: with a sphere selected, its radius (true: the wheel was used). */
+  wheel(deltaY) {
+    if (this.#selected < 0) return false;
+    const radius = this.#radius();
+    this.setRadius(radius * Math.exp(-deltaY * 0.001));
+    return true;
+  }
+
+  select(index) {
+    this.#selected = index;
+    this.#showBox();
+    this.draw();
+  }
+
+  deselect() {
+    if (this.#selected < 0) return false;
+    this.select(-1);
+    return true;
+  }
+
+  remove() {
+    if (this.#selected < 0) return;
+    const index = this.#selected;
+    if (this.#try(() => this.#hooks.view()?.remove_sphere(index)) === null) return;
+    this.#frozen.clear();
+    this.#selected = -1;
+    this.#hovered = -1;
+    this.#hooks.edited();
+    this.#showBox();
+    this.draw();
+  }
+
+  setRadius(radius) {
+    if (this.#selected < 0) return;
+    const r = Math.min(RADIUS.max, Math.max(RADIUS.min, radius));
+    this.#try(() => this.#hooks.view()?.set_sphere_radius(this.#selected, r));
+    this.#hooks.edited();
+    this.#showBox();
+  }
+
+  /** Freezes the selected sphere (velocity zero) or lets it move again. */
+  toggleFreeze() {
+    const index = this.#selected;
+    const sphere = this.#sphere(index);
+    if (!sphere) return;
+    const moving = sphere.slice(4).some((v) => v !== 0);
+    let velocity = [0, 0, 0];
+    if (moving) {
+      this.#frozen.set(index, sphere.slice(4));
+    } else {
+      // Its old velocity, or (a sphere added by hand) a gentle one in a random direction.
+      const angle = Math.random() * 2 * Math.PI;
+      velocity = this.#frozen.get(index) ?? [0.3 * Math.cos(angle), 0.15, 0.3 * Math.sin(angle)];
+      this.#frozen.delete(index);
+    }
+    this.#try(() => this.#hooks.view()?.set_sphere_velocity(index, ...velocity));
+    this.#hooks.edited();
+    this.#showBox();
+  }
+
+  // Runs a view call; a refusal becomes a notice (the scene stays as it was). Returns the result, or
+  // null when refused.
+  #try(f) {
+    try {
+      return f();
+    } catch (error) {
+      this.#hooks.notice(error.message);
+      return null;
+    }
+  }
+
+  #sphere(index) {
+    const spheres = this.#hooks.view()?.spheres();
+    return spheres && index >= 0 && 7 * index < spheres.length ? Array.from(spheres.slice(7 * index, 7 * index + 7)) : null;
+  }
+
+  #radius() {
+    return this.#sphere(this.#selected)?.[3] ?? 0.2;
+  }
+
+  /** The view was rebuilt or its spheres replaced: nothing stays selected. */
+  reset() {
+    this.#selected = -1;
+    this.#hovered = -1;
+    this.#dragging = false;
+    this.#frozen.clear();
+    this.#showBox();
+    this.draw();
+  }
+
+  #showBox() {
+    const sphere = this.#sphere(this.#selected);
+    this.#box.hidden = !sphere;
+    if (!sphere) return;
+    const count = (this.#hooks.view()?.spheres().length ?? 0) / 7;
+    const moving = sphere.slice(4).some((v) => v !== 0);
+    const slider = make('input', { type: 'range', id: 'sphere-radius' });
+    slider.min = String(RADIUS.min);
+    slider.max = String(RADIUS.max);
+    slider.step = String(RADIUS.step);
+    slider.value = String(sphere[3]);
+    const output = make('output', { htmlFor: 'sphere-radius', textContent: sphere[3].toFixed(2) });
+    slider.addEventListener('input', () => {
+      output.textContent = Number(slider.value).toFixed(2);
+      this.setRadius(Number(slider.value));
+    });
+    const freeze = make('button', { type: 'button', id: 'sphere-freeze', textContent: moving ? 'Freeze' : 'Let it move' });
+    freeze.title = 'Stop it where it is, or let it move again (F)';
+    freeze.addEventListener('click', () => this.toggleFreeze());
+    const remove = make('button', { type: 'button', id: 'sphere-remove', textContent: 'Remove' });
+    remove.title = 'Remove this sphere (Delete)';
+    remove.addEventListener('click', () => this.remove());
+    const close = make('button', { type: 'button', className: 'close', textContent: '×', title: 'Let go (Esc)' });
+    close.addEventListener('click', () => this.deselect());
+    const where = sphere.slice(0, 3).map((c) => c.toFixed(2)).join(', ');
+    this.#box.replaceChildren(
+      make('header', {}, make('h3', { textContent: `Sphere ${this.#selected + 1} of ${count}` }), close),
+      make('p', { textContent: `centre (${where}) · ${moving ? 'moving' : 'still'}` }),
+      make('div', { className: 'control' }, make('label', { htmlFor: 'sphere-radius', textContent: 'Radius' }), slider, output),
+      make('div', { className: 'buttons' }, freeze, remove),
+      make('p', { className: 'hint', textContent: 'Drag to move · wheel: radius · Shift-click: add' }),
+    );
+  }
+
+  /** Rings the hovered and the selected sphere where they are now (called every frame). */
+  draw() {
+    const view = this.#hooks.view();
+    const s = this.#hooks.scale();
+    const ring = (id, index) => {
+      const circle = this.#rings.getElementById(id);
+      const at = index >= 0 && view ? view.sphere_on_screen(index) : null;
+      circle.toggleAttribute('hidden', !at);
+      if (!at) return;
+      circle.setAttribute('cx', String(at[0] / s));
+      circle.setAttribute('cy', String(at[1] / s));
+      circle.setAttribute('r', String(Math.max(4, at[2] / s)));
+    };
+    ring('hover-ring', this.#hovered !== this.#selected ? this.#hovered : -1);
+    ring('selected-ring', this.#selected);
+  }
+}

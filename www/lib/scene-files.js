@@ -1,0 +1,60 @@
+// Files in and out of a figure: scene documents (saved, loaded from a picker or dropped on the
+// figure), the mesh as STL, OBJ or PLY, and PNG pictures at the canvas size or twice it. Checking and
+// encoding happen in the wasm; this module moves bytes between it and the browser.
+
+import { wasmModule } from './engine.js';
+
+/** Offers `blob` as a download called `name`. */
+export function download(blob, name) {
+  const url = URL.createObjectURL(blob);
+  const link = Object.assign(document.createElement('a'), { href: url, download: name });
+  link.style.display = 'none';
+  document.body.append(link);
+  link.click();
+  link.remove();
+  setTimeout(() => URL.revokeObjectURL(url), 10_000);
+}
+
+const MESH_TYPES = { stl: 'model/stl', obj: 'model/obj', ply: 'application/ply' };
+
+/** Reads a dropped or picked file as a scene document's text; throws when it is too large. */
+export async function readSceneFile(file) {
+  wasmModule().check_scene_size(file.size);
+  return file.text();
+}
+
+/** A PNG blob of RGBA8 `pixels` of `width` × `height`. */
+export async function pngOf(pixels, width, height) {
+  const canvas = document.createElement('canvas');
+  canvas.width = width;
+  canvas.height = height;
+  canvas.getContext('2d').putImageData(new ImageData(new Uint8ClampedArray(pixels.buffer, pixels.byteOffset, pixels.byteLength), width, height), 0, 0);
+  return new Promise((resolve, reject) => {
+    canvas.toBlob((blob) => (blob ? resolve(blob) : reject(new Error('the browser could not encode the PNG'))), 'image/png');
+  });
+}
+
+/** A blob of mesh file `bytes` in `format`. */
+export const meshBlob = (bytes, format) => new Blob([bytes], { type: MESH_TYPES[format] });
+
+/**
+ * Wires dropping files on `target`: `accept()` says whether drops are taken now; `load(file)` takes
+ * the first file dropped. While a file is dragged over, `target` has the `dropping` class.
+ */
+export function wireDrop(target, accept, load) {
+  const hasFiles = (e) => accept() && [...(e.dataTransfer?.types ?? [])].includes('Files');
+  target.addEventListener('dragover', (e) => {
+    if (!hasFiles(e)) return;
+    e.preventDefault();
+    e.dataTransfer.dropEffect = 'copy';
+    target.classList.add('dropping');
+  });
+  target.addEventListener('dragleave', () => target.classList.remove('dropping'));
+  target.addEventListener('drop', (e) => {
+    target.classList.remove('dropping');
+    if (!hasFiles(e)) return;
+    e.preventDefault();
+    const [file] = e.dataTransfer.files;
+    if (file) load(file);
+  });
+}
