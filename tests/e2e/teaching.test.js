@@ -21,10 +21,10 @@ const CONTROLS = [
   ['color_by', (p) => p.selectOption('#color_by', 'quality'), 'color_by=quality'],
   // Ambiguous faces are few on smooth blobs: a small but certain change.
   ['ambiguous', (p) => p.check('#ambiguous'), 'ambiguous=1', 0.0005],
-  ['slice', (p) => p.selectOption('#slice-axis', 'x'), 'slice=x%3A0'],
-  ['slice position', (p) => setRange(p, 'slice', -0.3), 'slice=x%3A-0.3'],
+  ['slice', (p) => p.selectOption('#slice-axis', 'x'), 'slice=x:0'],
+  ['slice position', (p) => setRange(p, 'slice', -0.3), 'slice=x:-0.3'],
   ['interpolation', (p) => p.selectOption('#interpolation', 'midpoint'), 'interp=midpoint'],
-  ['light', (p) => p.check('#light-spot'), 'light=point%2Cspot'],
+  ['light', (p) => p.check('#light-spot'), 'light=point,spot'],
   ['spot_angle', (p) => setRange(p, 'spot_angle', 8), 'spot_angle=8'],
   ['ambient', (p) => setRange(p, 'ambient', 0.6), 'ambient=0.6'],
   ['projection', (p) => p.selectOption('#projection', 'orthographic'), 'proj=orthographic'],

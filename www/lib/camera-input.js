@@ -47,7 +47,9 @@ export function wireCameraInput(host, surface, camera, actions) {
     return Math.hypot(a.x - b.x, a.y - b.y);
   };
   surface.addEventListener('pointerdown', (e) => {
-    surface.setPointerCapture?.(e.pointerId);
+    try {
+      surface.setPointerCapture?.(e.pointerId);
+    } catch { /* a pointer the browser no longer tracks */ }
     pointers.set(e.pointerId, { x: e.clientX, y: e.clientY });
     if (pointers.size === 2) pinchSpan = span();
     press = pointers.size === 1 && e.button === 0
