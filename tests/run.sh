@@ -19,7 +19,7 @@ need_deb() {
     as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q "${missing[@]}"
 }
 
-need_deb mesa-vulkan-drivers chromium chromium-driver python3
+need_deb mesa-vulkan-drivers chromium chromium-driver python3 g++
 command -v node >/dev/null && command -v npm >/dev/null || need_deb nodejs npm
 rustup target list --installed | grep -qx wasm32-unknown-unknown || rustup target add wasm32-unknown-unknown
 rustup component list --installed | grep -q '^clippy' || rustup component add clippy
