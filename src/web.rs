@@ -7,7 +7,6 @@ use crate::scene::Scene;
 use crate::{FrameStats, Renderer, Settings, Sphere};
 use glam::Vec3;
 use std::cell::RefCell;
-use std::ops::Not;
 use std::rc::Rc;
 use wasm_bindgen::prelude::*;
 use web_sys::HtmlCanvasElement;
@@ -41,6 +40,32 @@ async fn next_task() {
         }
     });
     let _ = wasm_bindgen_futures::JsFuture::from(promise).await;
+}
+
+/// Polls a WebGL2 device between browser tasks until dropped, so that buffer mappings and
+/// submitted-work callbacks on it resolve (WebGPU resolves them by itself; nothing is polled there).
+struct Polling(Rc<std::cell::Cell<bool>>);
+
+impl Polling {
+    fn start(device: &wgpu::Device) -> Polling {
+        let stop = Rc::new(std::cell::Cell::new(false));
+        if !crate::context::has_compute(device) {
+            let (device, stop) = (device.clone(), stop.clone());
+            wasm_bindgen_futures::spawn_local(async move {
+                while !stop.get() {
+                    let _ = device.poll(wgpu::PollType::Poll);
+                    next_task().await;
+                }
+            });
+        }
+        Polling(stop)
+    }
+}
+
+impl Drop for Polling {
+    fn drop(&mut self) {
+        self.0.set(true);
+    }
 }
 
 /// Spheres as the page passes them: 7 numbers each (centre, radius, velocity).
@@ -331,23 +356,13 @@ impl View {
     /// A promise that resolves when the GPU has finished all work submitted so far. WebGPU reports it
     /// by itself; a WebGL2 device is polled (between browser tasks) until it does.
     pub fn work_done(&self) -> js_sys::Promise {
-        let (sender, mut receiver) = futures_channel::oneshot::channel::<()>();
+        let (sender, receiver) = futures_channel::oneshot::channel::<()>();
         self.renderer.queue().on_submitted_work_done(move || {
             let _ = sender.send(());
         });
-        let device = self.device.clone();
-        let polled = self.renderer.context().has_compute().not();
+        let polling = Polling::start(&self.device);
         wasm_bindgen_futures::future_to_promise(async move {
-            if polled {
-                loop {
-                    let _ = device.poll(wgpu::PollType::Poll);
-                    match receiver.try_recv() {
-                        Ok(Some(())) => return Ok(JsValue::UNDEFINED),
-                        Ok(None) => next_task().await,
-                        Err(_) => return Err(JsValue::from_str("the GPU queue was dropped")),
-                    }
-                }
-            }
+            let _polling = polling;
             receiver.await.map_err(|_| JsValue::from_str("the GPU queue was dropped"))?;
             Ok(JsValue::UNDEFINED)
         })

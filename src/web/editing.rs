@@ -1,7 +1,7 @@
 //! Hands on the scene from the page: picking, moving, adding and removing spheres; scenes as files and
 //! the compact form links carry; the mesh and pictures as downloads (one readback each, on demand).
 
-use super::{View, js_error, pack_spheres, unpack_spheres, value_to_js};
+use super::{Polling, View, js_error, pack_spheres, unpack_spheres, value_to_js};
 use crate::export::{MeshFormat, encode};
 use crate::gpu::{read_texture, render_target};
 use crate::scene_file::{self, SceneFile};
@@ -114,7 +114,9 @@ impl View {
     pub fn export_mesh(&mut self, format: &str) -> Result<js_sys::Promise, JsError> {
         let format = MeshFormat::parse(format).map_err(js_error)?;
         let readback = self.renderer.mesh_readback();
+        let device = self.device.clone();
         Ok(wasm_bindgen_futures::future_to_promise(async move {
+            let _polling = Polling::start(&device);
             let mesh = readback.finish().await.map_err(|e| JsValue::from(js_error(e)))?;
             let bytes = encode(&mesh, format, format.default_scale());
             Ok(js_sys::Uint8Array::from(bytes.as_slice()).into())
@@ -133,6 +135,7 @@ impl View {
         let (device, queue) = (self.device.clone(), self.renderer.queue().clone());
         let bgra = matches!(format, wgpu::TextureFormat::Bgra8Unorm | wgpu::TextureFormat::Bgra8UnormSrgb);
         Ok(wasm_bindgen_futures::future_to_promise(async move {
+            let _polling = Polling::start(&device);
             let mut pixels = read_texture(&device, &queue, &texture).await;
             if bgra {
                 pixels.chunks_exact_mut(4).for_each(|p| p.swap(0, 2));
