@@ -78,39 +78,17 @@ pub enum Target {
     CrossedCell,
 }
 
-/// The cell the ray from `origin` towards `direction` picks, walking the grid cell by cell through the
-/// cells the surface crosses; `None` when it meets no `target`.
-pub fn pick(
-    spheres: &[Sphere],
-    iso: f32,
-    grid: Grid,
-    construction: Construction,
-    origin: Vec3,
-    direction: Vec3,
-    target: Target,
-) -> Option<UVec3> {
-    pick_point(spheres, iso, grid, construction, origin, direction, target).map(|(cell, _)| cell)
-}
-
-/// The sphere whose term dominates the field where the ray from `origin` towards `direction` first
-/// meets the surface as drawn (its triangles at this grid): the sphere a person points at, also where
-/// several have merged. `None` over the background.
-pub fn pick_sphere(
-    spheres: &[Sphere],
-    iso: f32,
-    grid: Grid,
-    construction: Construction,
-    origin: Vec3,
-    direction: Vec3,
-) -> Option<usize> {
-    let (_, point) = pick_point(spheres, iso, grid, construction, origin, direction, Target::Surface)?;
+/// The sphere whose term dominates the field at `point` (where a ray met the surface): the sphere a
+/// person points at, also where several have merged.
+pub fn dominant_sphere(spheres: &[Sphere], point: Vec3) -> Option<usize> {
     let influence = |s: &Sphere| s.radius * s.radius / (point - s.center).length_squared().max(1e-12);
     (0..spheres.len()).max_by(|&a, &b| influence(&spheres[a]).total_cmp(&influence(&spheres[b])))
 }
 
-/// [`pick`], with the point picked: where the ray meets the surface, or (crossed cells) the centre of
-/// the cell it enters.
-pub fn pick_point(
+/// The cell the ray from `origin` towards `direction` picks, walking the grid cell by cell through the
+/// cells the surface crosses, and the point picked: where the ray meets the surface, or (crossed cells)
+/// the centre of the cell it enters. `None` when it meets no `target`.
+pub fn pick(
     spheres: &[Sphere],
     iso: f32,
     grid: Grid,
@@ -200,11 +178,13 @@ mod tests {
         let spheres = [Sphere { center: Vec3::ZERO, radius: 0.5, velocity: Vec3::ZERO }];
         let grid = Grid { cells_per_axis: 16 };
         let origin = Vec3::new(0.03, 0.02, 3.0);
-        let cell = pick(&spheres, 1.0, grid, Construction::default(), origin, -Vec3::Z, Target::Surface)
-            .expect("the ray meets the sphere");
+        let (cell, point) =
+            pick(&spheres, 1.0, grid, Construction::default(), origin, -Vec3::Z, Target::Surface)
+                .expect("the ray meets the sphere");
+        assert!((point.length() - 0.5).abs() < 0.02 && point.z > 0.4, "the near side: {point}");
         let first = pick(&spheres, 1.0, grid, Construction::default(), origin, -Vec3::Z, Target::CrossedCell);
         assert!(
-            first.is_some_and(|c| c.z >= cell.z),
+            first.is_some_and(|(c, _)| c.z >= cell.z),
             "the first crossed cell is no farther than the surface"
         );
         let report = inspect(&spheres, 1.0, grid, Construction::default(), cell);

@@ -10,7 +10,6 @@ use glam::Vec3;
 use metaballs::export::{MeshFormat, enclosed_volume, encode, simplified};
 use metaballs::mesh::IndexedMesh;
 use metaballs::{Scene, Settings};
-use std::process::Command;
 
 /// The GPU's mesh (compute passes, read back once) of `scene`.
 fn gpu_mesh(scene: &Scene, resolution: u32) -> IndexedMesh {
@@ -67,12 +66,6 @@ fn assert_closed(mesh: &IndexedMesh, what: &str) {
     assert!(topology.component_euler.iter().all(|&e| e == 2), "{what}: {:?}", topology.component_euler);
 }
 
-fn scratch(name: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("metaballs-export-{name}-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
 #[test]
 fn stl_and_obj_read_back_as_the_gpu_mesh_closed_with_its_volume() {
     let mesh = gpu_mesh(&scene(), 48);
@@ -98,7 +91,7 @@ fn stl_and_obj_read_back_as_the_gpu_mesh_closed_with_its_volume() {
     let top = read.positions.iter().map(|p| p.z).fold(f32::MIN, f32::max);
     assert!((top / 25.0 - 0.7).abs() < 0.05, "the top at z = {top} mm");
 
-    let dir = scratch("obj");
+    let dir = scratch_dir("metaballs-export-obj");
     let path = dir.join("blob.obj");
     std::fs::write(&path, encode(&mesh, MeshFormat::Obj, 1.0)).unwrap();
     let (read, normals) = read_obj(&path);
@@ -155,18 +148,9 @@ fn simplified_exports_reach_their_target_and_stay_closed() {
     assert_eq!(simplified(&mesh, full + 10).triangles.len(), full);
 }
 
-fn cli(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_metaballs")).args(args).output().expect("run the binary");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into(),
-        String::from_utf8_lossy(&out.stderr).into(),
-    )
-}
-
 #[test]
 fn the_cli_exports_a_scene_file_and_refuses_bad_input() {
-    let dir = scratch("cli");
+    let dir = scratch_dir("metaballs-export-cli");
     let scene_path = dir.join("two.json");
     let file = metaballs::scene_file::SceneFile {
         spheres: scene().spheres().to_vec(),

@@ -7,7 +7,6 @@ use common::*;
 use glam::Vec3;
 use metaballs::params::MAX_SPHERES;
 use metaballs::{Camera, Material, Settings};
-use std::process::Command;
 
 const BAD_FLOATS: [f32; 3] = [f32::NAN, f32::INFINITY, f32::NEG_INFINITY];
 
@@ -174,21 +173,6 @@ fn a_resolution_beyond_the_device_names_the_limit() {
 }
 
 /// An empty folder of its own for one test.
-fn scratch_dir(name: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("{name}-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
-fn cli(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_metaballs")).args(args).output().expect("run the binary");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into(),
-        String::from_utf8_lossy(&out.stderr).into(),
-    )
-}
-
 #[test]
 fn every_cli_flag_refuses_bad_values_with_its_message() {
     let dir = scratch_dir("metaballs-cli");

@@ -8,23 +8,17 @@ mod common;
 use common::*;
 use metaballs::offscreen::read_png;
 use std::path::Path;
-use std::process::Command;
 
 #[test]
 fn render_scene_gives_the_pages_picture() {
     let fixtures = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures");
     let (width, height, expected) = read_png(&fixtures.join("page-scene.png")).unwrap();
     let out = output_dir().join("render-scene.png");
-    let result = Command::new(env!("CARGO_BIN_EXE_metaballs"))
-        .args(["render", "--scene"])
-        .arg(fixtures.join("page-scene.json"))
-        .args(["--size", &format!("{width}x{height}"), "--out"])
-        .arg(&out)
-        .output()
-        .expect("run the binary");
-    let stderr = String::from_utf8_lossy(&result.stderr);
-    assert!(result.status.success(), "{stderr}");
-    let stdout = String::from_utf8_lossy(&result.stdout);
+    let scene = fixtures.join("page-scene.json");
+    let size = format!("{width}x{height}");
+    let (code, stdout, stderr) =
+        cli(&["render", "--scene", scene.to_str().unwrap(), "--size", &size, "--out", out.to_str().unwrap()]);
+    assert_eq!(code, 0, "{stderr}");
     assert!(stdout.contains("2 spheres, iso 0.9, 64 cells per axis"), "{stdout}");
     let (w, h, actual) = read_png(&out).unwrap();
     assert_eq!((w, h), (width, height));

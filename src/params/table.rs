@@ -393,5 +393,12 @@ mod tests {
         assert!(message("controls", "iso,zoom").contains("comma list of spheres, iso"));
         assert!(message("autoplay", "always").contains("one of visible, off"));
         assert!(message("nonsense", "1").starts_with("parameter name must be one of spheres"));
+        assert_eq!(parse_parameter("edit", "on"), Ok(Value::Boolean(true)));
+        assert_eq!(parse_parameter("balls", "0, 0,0,0.40"), Ok(Value::Text("0,0,0,0.4".into())));
+        assert_eq!(parse_parameter("balls", ""), Ok(Value::Text(String::new())));
+        assert!(
+            message("balls", "0,0,0,2")
+                .contains("balls sphere 1.radius: sphere radius must be between 0.01 and 1")
+        );
     }
 }

@@ -3,7 +3,7 @@
 //! CPU from the scene's sphere list and the camera: nothing is read back from the GPU.
 
 use super::Renderer;
-use crate::inspect;
+use crate::inspect::{self, Target};
 use crate::scene::{Scene, Sphere, nominal_radius};
 use crate::scene_file::SceneError;
 use glam::Vec3;
@@ -14,7 +14,17 @@ impl Renderer {
     pub fn pick_sphere(&self, x: f32, y: f32) -> Option<usize> {
         let (origin, direction) = self.ray(x, y);
         let s = &self.settings;
-        inspect::pick_sphere(self.scene.spheres(), s.iso, self.grid(), self.construction(), origin, direction)
+        let spheres = self.scene.spheres();
+        let (_, point) = inspect::pick(
+            spheres,
+            s.iso,
+            self.grid(),
+            self.construction(),
+            origin,
+            direction,
+            Target::Surface,
+        )?;
+        inspect::dominant_sphere(spheres, point)
     }
 
     /// Where the ray through pixel (`x`, `y`) meets the plane through `point` facing the camera.

@@ -36,6 +36,7 @@ impl Renderer {
             direction,
             target,
         )
+        .map(|(cell, _)| cell)
     }
 
     /// The ray from the eye through pixel (`x`, `y`) of the output (origin top left): a point on the

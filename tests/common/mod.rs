@@ -67,3 +67,23 @@ pub fn surface_inside_box(spheres: &[Sphere], iso: f32, resolution: u32) -> bool
 pub fn sphere(center: [f32; 3], radius: f32) -> Sphere {
     Sphere { center: Vec3::from_array(center), radius, velocity: Vec3::ZERO }
 }
+
+/// A scratch folder under the system's temporary folder, one per name and test process.
+pub fn scratch_dir(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("{name}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// Runs the `metaballs` command line: its exit status, standard output and standard error.
+pub fn cli(args: &[&str]) -> (i32, String, String) {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_metaballs"))
+        .args(args)
+        .output()
+        .expect("run the binary");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into(),
+        String::from_utf8_lossy(&out.stderr).into(),
+    )
+}

@@ -164,7 +164,7 @@ test('every attribute: good values take effect, bad ones show a notice and keep 
   const good = {
     spheres: '7', iso: '0.7', resolution: '40', seed: '9', speed: '2', yaw: '-50', pitch: '35',
     distance: '6', shininess: '200', color: '#3366cc', antialiasing: 'on', controls: 'all', hud: 'off',
-    autoplay: 'off', 'max-pixel-ratio': '1',
+    autoplay: 'off', 'max-pixel-ratio': '1', edit: 'on', balls: '0,0.1,0,0.4;0.5,0,0,0.2,0.1,0,0',
   };
   const bad = ['NaN', '-500', '1e9', 'text', ''];
   for (const [name, value] of Object.entries(good)) {
@@ -173,10 +173,11 @@ test('every attribute: good values take effect, bad ones show a notice and keep 
     const now = await page.$eval('#a', (e, p) => e[p], property);
     const expected = { spheres: 7, iso: 0.7, resolution: 40, seed: 9, speed: 2, yaw: -50, pitch: 35, distance: 6,
       shininess: 200, color: '#3366cc', antialiasing: true, controls: 'all', hud: 'off', autoplay: 'off',
-      'max-pixel-ratio': 1 }[name];
+      'max-pixel-ratio': 1, edit: true, balls: '0,0.1,0,0.4;0.5,0,0,0.2,0.1,0,0' }[name];
     assert.equal(now, expected, `${name}="${value}" gave ${now}`);
     for (const text of bad) {
-      if (name === 'antialiasing' && text === '') continue; // an empty boolean attribute means true
+      // An empty boolean attribute means true; empty balls mean the seeded layout.
+      if (['antialiasing', 'edit', 'balls'].includes(name) && text === '') continue;
       await page.$eval('#a', (e, [n, v]) => e.setAttribute(n, v), [name, text]);
       const kept = await page.$eval('#a', (e, p) => e[p], property);
       assert.equal(kept, expected, `${name}="${text}" changed the value to ${kept}`);
