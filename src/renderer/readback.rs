@@ -22,7 +22,7 @@ impl Renderer {
     /// With the CPU mesher as the source, its mesh is returned as it was uploaded.
     pub async fn extract_mesh(&mut self) -> IndexedMesh {
         if self.next_source() == super::MeshSource::Cpu {
-            return self.mesh_readback().finish().await.unwrap_or_default();
+            return self.mesh_readback().finish_clamped().await.0;
         }
         let mut counters = self.run_extraction().await;
         while self.sizing == Sizing::Automatic && !self.mesh.capacity.holds(&counters) {
@@ -34,7 +34,7 @@ impl Renderer {
             self.reallocate(grown);
             counters = self.run_extraction().await;
         }
-        self.mesh_readback().finish().await.unwrap_or_default()
+        self.mesh_readback().finish_clamped().await.0
     }
 
     /// The field values the GPU computed for the current state: every grid point of every active block,
@@ -105,32 +105,41 @@ pub enum MeshReadback {
 impl MeshReadback {
     /// The mesh, or why it is incomplete (the frame's triangles outgrew the buffers).
     pub async fn finish(self) -> Result<IndexedMesh, String> {
+        let (mesh, requested) = self.finish_clamped().await;
+        if requested > mesh.triangles.len() {
+            return Err(format!(
+                "the surface needs {requested} triangles, more than the mesh buffers held in this frame; \
+                 try again in a moment, or lower the resolution"
+            ));
+        }
+        Ok(mesh)
+    }
+
+    /// The mesh as far as the buffers held it, and the triangle count the frame asked for.
+    pub async fn finish_clamped(self) -> (IndexedMesh, usize) {
         let (device, counters, vertices, indices) = match self {
-            MeshReadback::Ready(mesh) => return Ok(mesh),
+            MeshReadback::Ready(mesh) => {
+                let count = mesh.triangles.len();
+                return (mesh, count);
+            }
             MeshReadback::Queued { device, counters, vertices, indices } => {
                 (device, counters, vertices, indices)
             }
         };
         let counters: Counters = bytemuck::pod_read_unaligned(&map_and_read(&device, &counters).await);
-        let vertex_count = counters.vertices as u64;
-        let index_count = counters.indices as u64;
-        if vertex_count * VERTEX_BYTES > vertices.size() || index_count * INDEX_BYTES > indices.size() {
-            return Err(format!(
-                "the surface needs {} triangles, more than the mesh buffers held in this frame; \
-                 try again in a moment, or lower the resolution",
-                index_count / 3
-            ));
-        }
+        let vertex_count = (counters.vertices as u64).min(vertices.size() / VERTEX_BYTES);
+        let index_count = (counters.indices as u64).min(indices.size() / INDEX_BYTES / 3 * 3);
         let vertex_bytes = map_and_read(&device, &vertices).await;
         let index_bytes = map_and_read(&device, &indices).await;
         let floats: &[[f32; 6]] =
             bytemuck::cast_slice(&vertex_bytes[..(vertex_count * VERTEX_BYTES) as usize]);
         let indices: &[u32] = bytemuck::cast_slice(&index_bytes[..(index_count * INDEX_BYTES) as usize]);
-        Ok(IndexedMesh {
+        let mesh = IndexedMesh {
             positions: floats.iter().map(|v| Vec3::new(v[0], v[1], v[2])).collect(),
             normals: floats.iter().map(|v| Vec3::new(v[3], v[4], v[5])).collect(),
             triangles: indices.chunks(3).map(|t| [t[0], t[1], t[2]]).collect(),
-        })
+        };
+        (mesh, counters.indices as usize / 3)
     }
 }
 
