@@ -15,7 +15,8 @@ import { applySetting, isRendererSetting } from './lib/view-settings.js';
 import { canvasPixels, pixelRatio } from './lib/canvas-size.js';
 import { CostGuard } from './lib/frame-cost.js';
 import { SphereEditor } from './lib/editor.js';
-import { download, meshBlob, pngOf, readSceneFile, wireDrop } from './lib/scene-files.js';
+import { wireDrop } from './lib/scene-files.js';
+import { SceneIO } from './lib/scene-io.js';
 
 const wasmError = await loadWasm().then(() => null, (error) => error);
 const TABLE = wasmError ? [] : parameterTable();
@@ -93,6 +94,7 @@ export class MetaballsView extends HTMLElement {
   #canvas;
   #inspector;
   #editor;
+  #io;
   // What the panel's buttons and the keys do.
   #actions = {
     togglePause: () => (this.#state.paused ? this.play() : this.pause()),
@@ -131,9 +133,23 @@ export class MetaballsView extends HTMLElement {
     this.#editor = new SphereEditor(this.#root, {
       view: () => this.#view,
       scale: () => this.#canvas.width / Math.max(1, this.#canvas.clientWidth),
-      edited: () => this.#edited(),
+      edited: () => this.#io.edited(),
       redraw: () => { this.#dirty = Math.max(this.#dirty, 1); hub.requestFrame(); },
       notice: (text) => this.#notice(text),
+    });
+    this.#io = new SceneIO({
+      view: () => this.#view,
+      state: () => this.#state,
+      set: (name, value) => this.#set(name, value),
+      adopt: (name, value) => this.#adopt(name, value),
+      apply: () => this.#apply(),
+      restoreLater: (packed) => { this.#savedSpheres = packed; },
+      changed: () => { this.#dirty = Math.max(this.#dirty, 2); hub.requestFrame(); },
+      editor: this.#editor,
+      canvas: this.#canvas,
+      ready: () => this.ready(),
+      notice: (text, ms) => this.#notice(text, ms),
+      emit: (type, detail) => this.dispatchEvent(new CustomEvent(type, { detail })),
     });
     const editing = () => this.#state.edit && this.#view !== null;
     wireCameraInput(this, this.#canvas, {
@@ -157,11 +173,11 @@ export class MetaballsView extends HTMLElement {
     });
     const file = this.#root.getElementById('scene-file');
     file.addEventListener('change', () => {
-      if (file.files[0]) this.#loadFile(file.files[0]);
+      if (file.files[0]) this.#io.loadFile(file.files[0]);
       file.value = '';
     });
     wireDrop(this, () => this.#state.edit || listedControls(this.#state.controls, CONTROL_NAMES).includes('scene'),
-      (dropped) => this.#loadFile(dropped));
+      (dropped) => this.#io.loadFile(dropped));
     new ResizeObserver(([entry]) => this.#resize(entry)).observe(this.#canvas);
   }
 
@@ -425,7 +441,8 @@ export class MetaballsView extends HTMLElement {
     const s = this.#state;
     for (const name of this.#changed) {
       if (name === 'balls') {
-        this.#applyBalls();
+        this.#applied.balls = s.balls;
+        this.#io.applyBalls(s.balls);
         continue;
       }
       if (!isRendererSetting(name)) continue;
@@ -531,122 +548,37 @@ export class MetaballsView extends HTMLElement {
     this.dispatchEvent(new CustomEvent('metaballs-change', { detail: { property: propertyName(name), value } }));
   }
 
-  // After an edit by hand: the count and the link form follow the spheres in play.
-  #edited() {
-    if (!this.#view) return;
-    const packed = this.#view.spheres();
-    this.#adopt('spheres', packed.length / 7);
-    this.#adopt('balls', wasmModule().spheres_text(packed));
-    this.#dirty = Math.max(this.#dirty, 2);
-    hub.requestFrame();
-    this.dispatchEvent(new CustomEvent('metaballs-edit', { detail: { spheres: this.sphereList } }));
-  }
-
-  // Hand-placed spheres from the `balls` attribute replace the seeded layout.
-  #applyBalls() {
-    const text = this.#state.balls;
-    this.#applied.balls = text;
-    if (!text) return;
-    try {
-      this.#view.set_spheres(wasmModule().parse_spheres_text(text));
-      this.#adopt('spheres', this.#view.spheres().length / 7);
-      this.#editor.reset();
-    } catch (error) {
-      this.#notice(`balls: ${error.message}`);
-    }
-  }
-
   // Runs an action of the panel; a failure becomes a notice.
   #run(f) {
     Promise.resolve().then(f).catch((error) => this.#notice(error?.message ?? String(error)));
   }
 
-  async #loadFile(file) {
-    try {
-      this.loadScene(await readSceneFile(file));
-      this.#notice(`Loaded ${file.name}: ${this.#state.spheres} spheres`, 4000);
-    } catch (error) {
-      this.#notice(`${file.name} was not loaded: ${error.message}. The scene is unchanged.`);
-      this.dispatchEvent(new CustomEvent('metaballs-error', { detail: { message: error.message } }));
-    }
-  }
-
   /** The spheres in play: [{ center: [x, y, z], radius, velocity: [x, y, z] }]. */
-  get sphereList() {
-    const packed = this.#view?.spheres() ?? this.#savedSpheres ?? [];
-    const out = [];
-    for (let i = 0; i + 7 <= packed.length; i += 7) {
-      out.push({ center: [...packed.slice(i, i + 3)], radius: packed[i + 3], velocity: [...packed.slice(i + 4, i + 7)] });
-    }
-    return out;
-  }
+  get sphereList() { return this.#io.list(this.#savedSpheres); }
 
   /** Where sphere `index` is drawn: { x, y, radius } in CSS pixels from the figure's top left, or null. */
-  sphereOnScreen(index) {
-    const at = this.#view?.sphere_on_screen(index);
-    const scale = this.#canvas.width / Math.max(1, this.#canvas.clientWidth);
-    return at ? { x: at[0] / scale, y: at[1] / scale, radius: at[2] / scale } : null;
-  }
+  sphereOnScreen(index) { return this.#io.onScreen(index); }
 
   /** The selected sphere's index in edit mode, or -1. */
   get selectedSphere() { return this.#editor.selected; }
 
   /** The scene (spheres and every setting of the picture) as a JSON document. */
-  saveScene() {
-    if (!this.#view) throw new Error('the figure has not started yet');
-    return wasmModule().save_scene(this.#view.spheres(), JSON.stringify(this.#state));
-  }
+  saveScene() { return this.#io.save(); }
 
   /** Loads a scene document; throws with what is wrong, leaving the scene as it was. */
-  loadScene(text) {
-    const scene = wasmModule().load_scene(text);
-    for (const [name, value] of Object.entries(scene.settings)) {
-      if (this.#state[name] !== value) this.#set(name, value);
-    }
-    this.#adopt('spheres', scene.spheres.length / 7);
-    this.#adopt('balls', wasmModule().spheres_text(scene.spheres));
-    this.#editor.reset();
-    if (this.#view) {
-      this.#apply();
-      this.#view.set_spheres(scene.spheres);
-      this.#dirty = 3;
-      hub.requestFrame();
-    } else {
-      this.#savedSpheres = scene.spheres;
-    }
-    this.dispatchEvent(new CustomEvent('metaballs-scene', { detail: { spheres: this.sphereList } }));
-  }
+  loadScene(text) { this.#io.load(text); }
 
-  downloadScene() {
-    download(new Blob([this.saveScene()], { type: 'application/json' }), 'metaballs-scene.json');
-  }
+  downloadScene() { this.#io.downloadScene(); }
 
   /** The mesh of the current frame as `stl`, `obj` or `ply` bytes (one readback from the GPU). */
-  async exportMesh(format = 'stl') {
-    await this.ready();
-    const started = performance.now();
-    const bytes = await this.#view.export_mesh(format);
-    const ms = performance.now() - started;
-    this.dispatchEvent(new CustomEvent('metaballs-export', { detail: { format, bytes: bytes.length, ms } }));
-    return bytes;
-  }
+  exportMesh(format = 'stl') { return this.#io.exportMesh(format); }
 
-  async downloadMesh(format = 'stl') {
-    const bytes = await this.exportMesh(format);
-    download(meshBlob(bytes, format), `metaballs.${format}`);
-    this.#notice(`Exported ${format.toUpperCase()}: ${(bytes.length / 1e6).toFixed(2)} MB`, 3000);
-  }
+  downloadMesh(format = 'stl') { return this.#io.downloadMesh(format); }
 
-  /** A PNG of the view at the canvas size times `scale` (1 or 2). */
-  async picture(scale = 1) {
-    await this.ready();
-    const [width, height] = [this.#canvas.width * scale, this.#canvas.height * scale];
-    return pngOf(await this.#view.render_pixels(width, height), width, height);
-  }
+  /** A PNG blob of the view at the canvas size times `scale` (1 or 2). */
+  picture(scale = 1) { return this.#io.picture(scale); }
 
-  async downloadPicture(scale = 1) {
-    download(await this.picture(scale), scale === 1 ? 'metaballs.png' : `metaballs@${scale}x.png`);
-  }
+  downloadPicture(scale = 1) { return this.#io.downloadPicture(scale); }
 
   // ---------------------------------------------------------------- size
 
