@@ -1,5 +1,5 @@
 //! A scene built and saved in the page renders the same offline: `metaballs render --scene` of
-//! tests/fixtures/page-scene.json against the page's own picture of it (tests/fixtures/page-scene.png,
+//! tests/fixtures/page-scene.json against the page's own picture of it (tests/reference/page-scene.png,
 //! which tests/e2e/editing.test.js checks the page still draws), by mean FLIP error.
 #![cfg(not(target_arch = "wasm32"))]
 
@@ -11,10 +11,10 @@ use std::path::Path;
 
 #[test]
 fn render_scene_gives_the_pages_picture() {
-    let fixtures = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures");
-    let (width, height, expected) = read_png(&fixtures.join("page-scene.png")).unwrap();
+    let tests = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests");
+    let (width, height, expected) = read_png(&tests.join("reference/page-scene.png")).unwrap();
     let out = output_dir().join("render-scene.png");
-    let scene = fixtures.join("page-scene.json");
+    let scene = tests.join("fixtures/page-scene.json");
     let size = format!("{width}x{height}");
     let (code, stdout, stderr) =
         cli(&["render", "--scene", scene.to_str().unwrap(), "--size", &size, "--out", out.to_str().unwrap()]);

@@ -165,6 +165,7 @@ export class MetaballsView extends HTMLElement {
           y * (this.#canvas.height / Math.max(1, this.#canvas.clientHeight)))),
       deselect: () => this.deselect(),
       grab: (x, y) => (editing() ? this.#editor.grab(x, y) : null),
+      hold: (x, y) => editing() && this.#editor.add(x, y),
       hover: (x, y) => editing() && this.#editor.hover(x, y),
       leave: () => this.#editor.leave(),
       wheel: (deltaY) => editing() && this.#editor.wheel(deltaY),

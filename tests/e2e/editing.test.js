@@ -127,7 +127,7 @@ test('dragging a sphere moves it until the surfaces merge; Shift-click adds one,
   await page.close();
 });
 
-test('a long press on touch grabs a sphere and drags it', async () => {
+test('on touch, a long press drags a sphere or adds one, and a tap selects', async () => {
   const context = await browser.newContext({ viewport: { width: 960, height: 640 }, hasTouch: true });
   const page = await context.newPage();
   await page.goto(`${baseUrl}${TWO}`);
@@ -137,7 +137,7 @@ test('a long press on touch grabs a sphere and drags it', async () => {
   const touch = (type, x, y) => cdp.send('Input.dispatchTouchEvent', {
     type, touchPoints: type === 'touchEnd' ? [] : [{ x, y, id: 1 }],
   });
-  // A quick swipe orbits (the figure focused first, so touch drags it rather than the page).
+  // The figure focused first, so touch drags it rather than scrolling the page.
   await page.focus('#view');
   await touch('touchStart', b.x, b.y);
   await page.waitForTimeout(700);
@@ -146,6 +146,17 @@ test('a long press on touch grabs a sphere and drags it', async () => {
   const moved = await centres(page);
   assert.ok(moved[1][1] < -0.1, `the long-pressed sphere moved down: ${moved[1]}`);
   assert.deepEqual(moved[0], [-0.5, 0, 0]);
+  // A long press on empty space adds a sphere there; a tap on a sphere selects it.
+  await touch('touchStart', 480, 120);
+  await page.waitForTimeout(700);
+  await touch('touchEnd');
+  const list = await page.evaluate(() => window.metaballs.element.sphereList);
+  assert.equal(list.length, 3);
+  assert.ok(list[2].center[1] > 0.3, `added under the finger: ${list[2].center}`);
+  const a = await onScreen(page, 0);
+  await touch('touchStart', a.x, a.y);
+  await touch('touchEnd');
+  assert.equal(await page.evaluate(() => window.metaballs.element.selectedSphere), 0);
   await context.close();
 });
 
@@ -245,9 +256,10 @@ test('a saved scene dropped on the figure restores it; bad files are refused and
   await page.close();
 });
 
-// The fixture pair tests/fixtures/page-scene.{json,png}: a scene built and saved in the page, and the
-// page's picture of it. tests/scene_render.rs renders the JSON with `metaballs render --scene` and
-// compares with the PNG (FLIP). Here: the page still saves that document and draws that picture.
+// The fixture pair tests/fixtures/page-scene.json and tests/reference/page-scene.png: a scene built and
+// saved in the page, and the page's picture of it. tests/scene_render.rs renders the JSON with
+// `metaballs render --scene` and compares with the PNG (FLIP). Here: the page still saves that document
+// and draws that picture.
 test('the page saves and draws the fixture scene that the command line renders', async () => {
   const fixture = path.join(root, 'tests/fixtures/page-scene.json');
   const expected = JSON.parse(readFileSync(fixture, 'utf8'));
@@ -259,9 +271,9 @@ test('the page saves and draws the fixture scene that the command line renders',
   assert.deepEqual(saved, expected, 'the page saves the scene it loaded, unchanged');
   const png = await picture(page);
   writeFileSync(path.join(outputDir, 'e2e-page-scene.png'), png);
-  const reference = readFileSync(path.join(root, 'tests/fixtures/page-scene.png'));
+  const reference = readFileSync(path.join(root, 'tests/reference/page-scene.png'));
   const differing = await differingFraction(page, reference, png);
-  assert.ok(differing < 0.01, `${(differing * 100).toFixed(2)}% of pixels differ from tests/fixtures/page-scene.png`);
+  assert.ok(differing < 0.01, `${(differing * 100).toFixed(2)}% of pixels differ from tests/reference/page-scene.png`);
   assert.deepEqual(errors, []);
   await page.close();
 });

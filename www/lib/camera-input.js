@@ -2,7 +2,8 @@
 // keys while it has focus, double-click to reset, click (a press that does not move) to pick. The
 // wheel zooms only while the figure has focus or with Ctrl held; otherwise it scrolls the page and a
 // one-line hint says how to zoom. Where `actions.grab` takes a press (a sphere under it, in edit
-// mode), the drag moves what it grabbed instead of the camera; on touch, a long press grabs.
+// mode), the drag moves what it grabbed instead of the camera; on touch, a long press grabs (or, on
+// empty space, holds: the editor adds a sphere there).
 
 const PITCH_LIMIT = 89;
 const DISTANCE_RANGE = [1.5, 20];
@@ -11,8 +12,8 @@ const DISTANCE_RANGE = [1.5, 20];
  * Wires gestures on `surface` (the canvas) and keys on `host`. `camera` has get() → {yaw, pitch,
  * distance} and set(partial); `actions` has togglePause, reseed, resetView, step, hint(text),
  * pick(x, y, event) (CSS pixels from the canvas's top left) and deselect, and for editing grab(x, y)
- * → a drag {move(x, y), end()} or null, hover(x, y), leave(), wheel(deltaY) → true when it used the
- * wheel, remove() and freeze().
+ * → a drag {move(x, y), end()} or null, hold(x, y) (a long touch on empty space) → true when it did
+ * something, hover(x, y), leave(), wheel(deltaY) → true when it used the wheel, remove() and freeze().
  */
 export function wireCameraInput(host, surface, camera, actions) {
   const focused = () => host.matches(':focus-within');
@@ -61,8 +62,11 @@ export function wireCameraInput(host, surface, camera, actions) {
         const { offsetX, offsetY } = e;
         longPress = setTimeout(() => {
           if (pointers.size === 1 && press) {
+            // On a sphere: grab it. On empty space: add one there (if editing), and drag that.
             drag = actions.grab(offsetX, offsetY);
-            if (drag) press = null;
+            const added = !drag && actions.hold?.(offsetX, offsetY);
+            if (added) drag = actions.grab(offsetX, offsetY);
+            if (drag || added) press = null;
           }
         }, LONG_PRESS_MS);
       } else if (!e.shiftKey) {

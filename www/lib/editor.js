@@ -1,7 +1,8 @@
 // Hands on the spheres (the `edit` attribute): hovering rings the sphere under the pointer, dragging
 // it moves it in the plane facing the camera (the animation holds still meanwhile), Shift-click on
 // empty space adds one, Delete or Backspace removes the selected one, the wheel or the slider changes
-// its radius, F freezes it or lets it move again. On touch, a long press selects and drags.
+// its radius, F freezes it or lets it move again. On touch, a long press on a sphere selects and drags
+// it, and on empty space adds one.
 // Everything is computed by the wasm view on the CPU from the sphere list: no mesh is read back.
 
 const RADIUS = { min: 0.05, max: 0.9, step: 0.01 };
@@ -89,14 +90,19 @@ export class SphereEditor {
   click(x, y, shift) {
     const index = this.#pick(x, y);
     if (index < 0 && shift) {
-      const added = this.#try(() => this.#hooks.view()?.add_sphere(...this.#px(x, y)));
-      if (added !== undefined) {
-        this.#hooks.edited();
-        this.select(added);
-      }
+      this.add(x, y);
       return;
     }
     this.select(index);
+  }
+
+  /** Adds a still sphere under (x, y) at the depth of the box's centre and selects it; true if added. */
+  add(x, y) {
+    const added = this.#try(() => this.#hooks.view()?.add_sphere(...this.#px(x, y)));
+    if (added === null || added === undefined) return false;
+    this.#hooks.edited();
+    this.select(added);
+    return true;
   }
 
   /** The wheel over the figure: with a sphere selected, its radius (true: the wheel was used). */
