@@ -5,9 +5,11 @@
 
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
+import { writeFileSync } from 'node:fs';
+import path from 'node:path';
 import {
   useServerAndBrowser, open, waitForTriangles, settledTriangles, screenshot, differingFraction, setRange,
-  openPanelGroups,
+  openPanelGroups, outputDir,
 } from './helpers.js';
 
 useServerAndBrowser();
@@ -32,9 +34,22 @@ const CONTROLS = [
 ];
 
 async function frameAfterChange(page) {
-  // Two frames are drawn after a change, even paused.
+  // Two frames are drawn after a change, even paused: wait until they are (a busy machine is slower).
   await page.waitForTimeout(900);
-  return screenshot(page, 'teaching-step');
+  let drawn = await page.evaluate(() => window.metaballs.element.framesDrawn);
+  for (let i = 0; i < 10; i++) {
+    await page.waitForTimeout(300);
+    const now = await page.evaluate(() => window.metaballs.element.framesDrawn);
+    if (now === drawn) break;
+    drawn = now;
+  }
+  // The figure's own picture of its state (drawn once more, settled; without the panel over it).
+  const png = Buffer.from(await page.evaluate(async () => {
+    const blob = await window.metaballs.element.picture(1);
+    return [...new Uint8Array(await blob.arrayBuffer())];
+  }));
+  writeFileSync(path.join(outputDir, 'e2e-teaching-step.png'), png);
+  return png;
 }
 
 test('each teaching control changes the picture, keeps the triangles, and its link restores the view', async () => {
