@@ -7,13 +7,16 @@ import {
   caseGallery, hub, loadWasm, parameterTable, parseParameter, propertyName, wasmModule, within, WEBGL_WAIT,
 } from './lib/engine.js';
 import { Inspector } from './lib/inspector.js';
-import { wireFigureInput } from './lib/figure-input.js';
+import { wireCameraInput } from './lib/camera-input.js';
 import { buildPanel, listedControls } from './lib/panel.js';
 import { elementStyle, flasher, TEMPLATE } from './lib/element-dom.js';
 import { Hud } from './lib/hud.js';
 import { applySetting, isRendererSetting } from './lib/view-settings.js';
 import { canvasPixels, pixelRatio } from './lib/canvas-size.js';
 import { CostGuard } from './lib/frame-cost.js';
+import { SphereEditor } from './lib/editor.js';
+import { wireDrop } from './lib/scene-files.js';
+import { SceneIO } from './lib/scene-io.js';
 
 const wasmError = await loadWasm().then(() => null, (error) => error);
 const TABLE = wasmError ? [] : parameterTable();
@@ -127,22 +130,55 @@ export class MetaballsView extends HTMLElement {
       },
       onClass: (k) => this.#showPanel(this.#state, k),
     });
-    ({ editor: this.#editor, io: this.#io } = wireFigureInput(this, this.#root, this.#canvas, {
+    this.#editor = new SphereEditor(this.#root, {
+      view: () => this.#view,
+      scale: () => this.#canvas.width / Math.max(1, this.#canvas.clientWidth),
+      edited: () => this.#io.edited(),
+      redraw: () => { this.#dirty = Math.max(this.#dirty, 1); hub.requestFrame(); },
+      notice: (text) => this.#notice(text),
+    });
+    this.#io = new SceneIO({
       view: () => this.#view,
       state: () => this.#state,
       set: (name, value) => this.#set(name, value),
       adopt: (name, value) => this.#adopt(name, value),
       apply: () => this.#apply(),
       restoreLater: (packed) => { this.#savedSpheres = packed; },
-      redraw: (frames) => { this.#dirty = Math.max(this.#dirty, frames); hub.requestFrame(); },
-      notice: (text, ms) => this.#notice(text, ms),
-      hint: (text) => this.#flash('wheel-hint', text, 1500),
+      changed: () => { this.#dirty = Math.max(this.#dirty, 2); hub.requestFrame(); },
+      editor: this.#editor,
+      canvas: this.#canvas,
       ready: () => this.ready(),
-      acceptsFiles: () => this.#state.edit || listedControls(this.#state.controls, CONTROL_NAMES).includes('scene'),
+      notice: (text, ms) => this.#notice(text, ms),
+      emit: (type, detail) => this.dispatchEvent(new CustomEvent(type, { detail })),
+    });
+    const editing = () => this.#state.edit && this.#view !== null;
+    wireCameraInput(this, this.#canvas, {
+      get: () => ({ yaw: this.#state.yaw, pitch: this.#state.pitch, distance: this.#state.distance }),
+      set: (camera) => {
+        for (const [name, value] of Object.entries(camera)) this.#set(name, Number(value.toFixed(3)));
+      },
+    }, {
+      ...this.#actions,
+      hint: (text) => this.#flash('wheel-hint', text, 1500),
+      pick: (x, y, e) => (editing() ? this.#editor.click(x, y, e.shiftKey)
+        : this.#inspector.pick(x * (this.#canvas.width / Math.max(1, this.#canvas.clientWidth)),
+          y * (this.#canvas.height / Math.max(1, this.#canvas.clientHeight)))),
       deselect: () => this.deselect(),
-      inspector: this.#inspector,
-      actions: this.#actions,
-    }));
+      grab: (x, y) => (editing() ? this.#editor.grab(x, y) : null),
+      hold: (x, y) => editing() && this.#editor.add(x, y),
+      hover: (x, y) => editing() && this.#editor.hover(x, y),
+      leave: () => this.#editor.leave(),
+      wheel: (deltaY) => editing() && this.#editor.wheel(deltaY),
+      remove: () => editing() && this.#editor.remove(),
+      freeze: () => editing() && this.#editor.toggleFreeze(),
+    });
+    const file = this.#root.getElementById('scene-file');
+    file.addEventListener('change', () => {
+      if (file.files[0]) this.#io.loadFile(file.files[0]);
+      file.value = '';
+    });
+    wireDrop(this, () => this.#state.edit || listedControls(this.#state.controls, CONTROL_NAMES).includes('scene'),
+      (dropped) => this.#io.loadFile(dropped));
     new ResizeObserver(([entry]) => this.#resize(entry)).observe(this.#canvas);
   }
 
