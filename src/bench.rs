@@ -2,11 +2,10 @@
 //! with GPU time per stage where the adapter has timestamp queries, and the CPU oracle on the same
 //! scenes for comparison.
 
+use crate::device::timing::{STAGES, StageTimes};
+use crate::extract::reference::{self, Grid};
 use crate::offscreen::Offscreen;
-use crate::params::view::Mesher;
-use crate::reference::{self, Grid};
-use crate::renderer::MeshSource;
-use crate::timing::{STAGES, StageTimes};
+use crate::scene::params::view::Mesher;
 use crate::{ParamError, Settings};
 use serde::Serialize;
 use std::time::Instant;
@@ -138,19 +137,19 @@ fn measure(offscreen: &mut Offscreen, plan: &Plan, timed: bool) -> Result<Record
     }
     pollster::block_on(offscreen.renderer.flush_stats());
     let stats = offscreen.renderer.stats().unwrap_or_default();
-    let source = offscreen.renderer.mesh_source();
+    let on_device = offscreen.renderer.mesh_capabilities().needs_compute;
     let stage_ms = (!stages.is_empty()).then(|| {
         std::array::from_fn(|i| {
-            // With the CPU mesher no compute pass runs: only the shading stage is timed.
+            // An extractor on the CPU runs no compute pass: only the shading stage is timed.
             let computed = i + 1 < STAGES.len();
-            if source == MeshSource::Cpu && computed {
+            if !on_device && computed {
                 0.0
             } else {
                 median(&mut stages.iter().map(|s| s.stages_ms[i]).collect::<Vec<_>>())
             }
         })
     });
-    let mesh_ms = if source == MeshSource::Gpu && !stages.is_empty() {
+    let mesh_ms = if on_device && !stages.is_empty() {
         median(&mut stages.iter().map(|s| s.extraction_ms()).collect::<Vec<_>>())
     } else {
         let mut times: Vec<f64> = (0..plan.frames.max(1))
@@ -175,7 +174,7 @@ fn measure(offscreen: &mut Offscreen, plan: &Plan, timed: bool) -> Result<Record
     });
     Ok(Record {
         view: String::new(),
-        mesher: source.word().into(),
+        mesher: offscreen.renderer.mesh_source().into(),
         resolution: settings.resolution,
         spheres: settings.sphere_count,
         frame_ms: median(&mut frame_ms),

@@ -5,7 +5,7 @@
 //! every triangle that uses it), so the surface is closed wherever it lies inside the box, and every
 //! format keeps its triangles wound counter-clockwise seen from outside.
 
-use crate::mesh::IndexedMesh;
+use crate::extract::mesh::IndexedMesh;
 use glam::Vec3;
 use std::fmt::Write as _;
 

@@ -1,41 +1,40 @@
 //! Marching cubes of merging spheres on the GPU, shaded with Blinn-Phong.
 //!
-//! Every frame, compute passes skip the blocks of the grid the surface cannot cross, evaluate the field
-//! f(p) = Σ rᵢ² / |p − cᵢ|² on the others, run marching cubes there with shared vertices, and append
-//! triangles whose count feeds an indexed indirect draw; a render pass shades them. The same
-//! [`Renderer`] draws into a canvas (wasm) or an offscreen texture (native tests, PNG renderer).
+//! The folders are the stages of a frame, and each imports only those listed before it
+//! (`docs/architecture.md`):
+//!
+//! - [`scene`]: the spheres, their motion, the parameter table, scene files. No GPU.
+//! - [`device`]: wgpu helpers every GPU stage uses (devices, shader modules, readback, timestamps).
+//! - [`extract`]: isosurface extraction behind one [`extract::Extractor`] interface: the tables, the
+//!   CPU oracle, the CPU mesher, and the GPU's compute passes (blocks → field → marching cubes).
+//! - [`teach`]: what the teaching views explain, computed on the CPU (case classes, the picked cell).
+//! - [`draw`]: shading the mesh into a view, the teaching views, the field slice.
+//! - [`renderer`]: one [`Renderer`] orders a frame (update the scene → extract → draw) into any
+//!   texture view; renderers on one device share a [`GpuContext`].
+//! - `web` (wasm only): the handle the page drives. Beside `main.rs`, the native tools: [`export`]
+//!   (mesh files, also used by the page), [`offscreen`] and [`bench`].
+
+pub mod scene;
+
+pub mod device;
+
+pub mod extract;
+
+pub mod teach;
+
+pub mod draw;
+
+pub mod renderer;
 
 #[cfg(not(target_arch = "wasm32"))]
 pub mod bench;
-pub mod blocks;
-pub mod case_classes;
-pub mod context;
-pub mod cpu_mesher;
 pub mod export;
-pub mod field_pass;
-pub mod gpu;
-pub mod inspect;
-pub mod marching_cubes;
-pub mod mesh;
-pub mod mesh_buffers;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod offscreen;
-pub mod params;
-pub mod reference;
-pub mod renderer;
-pub mod scene;
-pub mod scene_buffers;
-pub mod scene_file;
-pub mod shade;
-pub mod slice;
-pub mod tables;
-pub mod timing;
-pub mod uniforms;
-pub mod views;
 #[cfg(target_arch = "wasm32")]
 mod web;
 
-pub use context::GpuContext;
-pub use params::{Camera, Material, ParamError, Settings};
+pub use renderer::context::GpuContext;
 pub use renderer::{FrameStats, Renderer};
+pub use scene::params::{Camera, Material, ParamError, Settings};
 pub use scene::{Scene, Sphere};

@@ -6,8 +6,9 @@ mod cli {
     use metaballs::bench;
     use metaballs::export::{self, MeshFormat};
     use metaballs::offscreen::{Offscreen, write_png};
-    use metaballs::params::{check_f32, check_u32};
-    use metaballs::scene_file::{self, SceneError, SceneFile};
+    use metaballs::scene::SceneError;
+    use metaballs::scene::file::{self as scene_file, SceneFile};
+    use metaballs::scene::params::{check_f32, check_u32};
     use metaballs::{ParamError, Scene, Settings};
     use std::path::{Path, PathBuf};
     use std::process::ExitCode;
@@ -271,10 +272,10 @@ mod cli {
     fn bench(args: BenchArgs) -> Result<(), Box<dyn std::error::Error>> {
         check_u32("frames", args.frames, 1, 100_000)?;
         for &n in args.resolutions.iter().flatten() {
-            metaballs::params::check_resolution(n)?;
+            metaballs::scene::params::check_resolution(n)?;
         }
         for &n in &args.spheres {
-            metaballs::params::check_sphere_count(n)?;
+            metaballs::scene::params::check_sphere_count(n)?;
         }
         let plan = bench::Plan {
             resolutions: args.resolutions,

@@ -1,7 +1,7 @@
 //! Native offscreen rendering: a `Renderer` drawing into a texture that is read back as RGBA pixels, for
 //! the PNG renderer, tests and benchmarks.
 
-use crate::gpu;
+use crate::device;
 use crate::{Renderer, Settings};
 use std::path::Path;
 
@@ -25,8 +25,8 @@ impl Offscreen {
         width: u32,
         height: u32,
     ) -> Result<Self, Box<dyn std::error::Error>> {
-        let instance = gpu::native_instance();
-        let (adapter, device, queue) = gpu::request_device(&instance, None).await?;
+        let instance = device::native_instance();
+        let (adapter, device, queue) = device::request_device(&instance, None).await?;
         let offscreen = Self::with_device(adapter, device, queue, settings, width, height)?;
         // `auto` meshing follows the adapter's kind (tests on a shared device choose explicitly).
         let software = offscreen.adapter.get_info().device_type == wgpu::DeviceType::Cpu;
@@ -67,7 +67,7 @@ impl Offscreen {
     }
 
     /// Draws a frame and waits for its GPU time per stage (`Renderer::render_timed`).
-    pub async fn render_timed(&mut self) -> Option<crate::timing::StageTimes> {
+    pub async fn render_timed(&mut self) -> Option<crate::device::timing::StageTimes> {
         self.renderer.render_timed(&self.view).await
     }
 
@@ -79,12 +79,12 @@ impl Offscreen {
 
     /// Returns the pixels of the frame drawn last, RGBA8 (sRGB), rows top to bottom.
     pub fn last_frame_rgba(&mut self) -> Vec<u8> {
-        pollster::block_on(gpu::read_texture(&self.device, &self.queue, &self.texture))
+        pollster::block_on(device::read_texture(&self.device, &self.queue, &self.texture))
     }
 }
 
 fn target(device: &wgpu::Device, width: u32, height: u32) -> (wgpu::Texture, wgpu::TextureView) {
-    let texture = gpu::render_target(device, width, height, OFFSCREEN_FORMAT);
+    let texture = device::render_target(device, width, height, OFFSCREEN_FORMAT);
     let view = texture.create_view(&wgpu::TextureViewDescriptor::default());
     (texture, view)
 }

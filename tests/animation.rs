@@ -2,8 +2,8 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use metaballs::Scene;
-use metaballs::params::MAX_SPHERES;
 use metaballs::scene::BOX_HALF_EXTENT;
+use metaballs::scene::params::MAX_SPHERES;
 
 #[test]
 fn ten_thousand_steps_keep_spheres_inside_and_speeds_unchanged() {

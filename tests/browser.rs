@@ -6,7 +6,7 @@
 mod conditioning;
 
 use conditioning::conditioned_iso;
-use metaballs::reference::{self, Grid};
+use metaballs::extract::reference::{self, Grid};
 use metaballs::{Renderer, Settings};
 use wasm_bindgen_test::*;
 
@@ -18,7 +18,7 @@ async fn device() -> (wgpu::Device, wgpu::Queue) {
     let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
     desc.backends = wgpu::Backends::BROWSER_WEBGPU;
     let instance = wgpu::Instance::new(desc);
-    let (_, device, queue) = metaballs::gpu::request_device(&instance, None)
+    let (_, device, queue) = metaballs::device::request_device(&instance, None)
         .await
         .unwrap_or_else(|e| panic!("browser tests need WebGPU: {e}"));
     (device, queue)
@@ -55,9 +55,9 @@ async fn the_renderer_draws_a_non_blank_image_offscreen() {
     let (width, height) = (128u32, 96u32);
     let mut renderer =
         Renderer::new(device.clone(), queue.clone(), FORMAT, width, height, Settings::default()).unwrap();
-    let texture = metaballs::gpu::render_target(&device, width, height, FORMAT);
+    let texture = metaballs::device::render_target(&device, width, height, FORMAT);
     renderer.render(&texture.create_view(&Default::default()));
-    let bytes = metaballs::gpu::read_texture(&device, &queue, &texture).await;
+    let bytes = metaballs::device::read_texture(&device, &queue, &texture).await;
     let pixels: Vec<&[u8]> = bytes.chunks(4).collect();
     // The surface is red; the background blue-grey.
     let surface = pixels.iter().filter(|p| p[0] as i32 > p[2] as i32 + 30).count();
@@ -71,9 +71,9 @@ async fn the_renderer_draws_a_non_blank_image_offscreen() {
 
 #[wasm_bindgen_test]
 fn cpu_mesher_equals_the_oracle_in_wasm() {
-    use metaballs::cpu_mesher::CpuMesher;
-    use metaballs::params::view::{Blend, Interpolation};
-    use metaballs::reference::Construction;
+    use metaballs::extract::cpu::mesher::CpuMesher;
+    use metaballs::extract::reference::Construction;
+    use metaballs::scene::params::view::{Blend, Interpolation};
     // The wasm build vectorises the field loops (simd128): the results must still be the oracle's, bit
     // for bit. Seeded scenes, one mesher reused, both constructions.
     let mut mesher = CpuMesher::new();
@@ -108,7 +108,7 @@ async fn the_renderer_meshes_on_the_cpu_when_asked() {
     let mut renderer = Renderer::new(device.clone(), queue, FORMAT, 16, 16, settings).unwrap();
     let mesh = renderer.extract_mesh().await.to_soup();
     let oracle = reference::extract(renderer.scene().spheres(), settings.iso, Grid { cells_per_axis: 32 });
-    assert_eq!(renderer.mesh_source(), metaballs::renderer::MeshSource::Cpu);
+    assert_eq!(renderer.mesh_source(), "cpu");
     mesh.matches(&oracle, 0.0, 1e-3).unwrap();
     assert_eq!(renderer.stats().map(|s| s.triangles as usize), Some(oracle.triangle_count()));
     assert!(scope.pop().await.is_none(), "validation error");

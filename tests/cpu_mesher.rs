@@ -5,11 +5,10 @@
 mod common;
 
 use common::*;
-use metaballs::cpu_mesher::CpuMesher;
+use metaballs::extract::cpu::mesher::CpuMesher;
+use metaballs::extract::reference::{self, Construction, Grid};
 use metaballs::offscreen::OFFSCREEN_FORMAT;
-use metaballs::params::view::{Blend, Interpolation, Mesher};
-use metaballs::reference::{self, Construction, Grid};
-use metaballs::renderer::MeshSource;
+use metaballs::scene::params::view::{Blend, Interpolation, Mesher};
 use metaballs::{GpuContext, Renderer, Scene, Settings, Sphere};
 use rand::{RngExt, SeedableRng};
 
@@ -134,8 +133,8 @@ fn the_cpu_mesh_draws_the_gpu_mesh_picture() {
             o.renderer.update(0.4).unwrap();
             let pixels = o.render_rgba();
             let expected = match mesher {
-                Mesher::Cpu => MeshSource::Cpu,
-                _ => MeshSource::Gpu,
+                Mesher::Cpu => "cpu",
+                _ => "gpu",
             };
             assert_eq!(o.renderer.mesh_source(), expected);
             pollster::block_on(o.renderer.flush_stats());
@@ -158,22 +157,22 @@ fn auto_picks_the_cpu_on_software_adapters_and_views_take_the_gpu() {
     let (_, device, queue) = device();
     let context = GpuContext::new(device, queue);
     let draw = |renderer: &mut Renderer| {
-        let texture = metaballs::gpu::render_target(context.device(), 64, 64, OFFSCREEN_FORMAT);
+        let texture = metaballs::device::render_target(context.device(), 64, 64, OFFSCREEN_FORMAT);
         renderer.render(&texture.create_view(&Default::default()));
         renderer.mesh_source()
     };
     let mut renderer =
         Renderer::on_context(&context, OFFSCREEN_FORMAT, 64, 64, renderer_settings(Mesher::Auto)).unwrap();
-    assert_eq!(draw(&mut renderer), MeshSource::Gpu, "auto on a hardware adapter");
+    assert_eq!(draw(&mut renderer), "gpu", "auto on a hardware adapter");
     context.set_software(true);
-    assert_eq!(draw(&mut renderer), MeshSource::Cpu, "auto on a software adapter");
+    assert_eq!(draw(&mut renderer), "cpu", "auto on a software adapter");
     let forced = renderer.settings().with_parameter("mesher", "gpu").unwrap();
     renderer.set_settings(forced).unwrap();
-    assert_eq!(draw(&mut renderer), MeshSource::Gpu, "mesher=gpu on a software adapter");
+    assert_eq!(draw(&mut renderer), "gpu", "mesher=gpu on a software adapter");
     let cpu_with_view =
         forced.with_parameter("mesher", "cpu").unwrap().with_parameter("grid", "cells").unwrap();
     renderer.set_settings(cpu_with_view).unwrap();
-    assert_eq!(draw(&mut renderer), MeshSource::Gpu, "the cells view reads the compute passes' lists");
+    assert_eq!(draw(&mut renderer), "gpu", "the cells view reads the compute passes' lists");
     assert!(renderer.settings().with_parameter("mesher", "fpga").is_err());
 }
 
@@ -205,7 +204,7 @@ fn five_thousand_frames_of_random_changes_and_switched_meshers() {
             }
             o.renderer.update(1.0 / 60.0).unwrap();
             o.render();
-            sources[(o.renderer.mesh_source() == MeshSource::Cpu) as usize] += 1;
+            sources[(o.renderer.mesh_source() == "cpu") as usize] += 1;
             if frame % 500 == 0 {
                 let _ = o.device.poll(wgpu::PollType::wait_indefinitely());
             }

@@ -8,7 +8,7 @@ mod common;
 use common::*;
 use glam::Vec3;
 use metaballs::export::{MeshFormat, enclosed_volume, encode, simplified};
-use metaballs::mesh::IndexedMesh;
+use metaballs::extract::mesh::IndexedMesh;
 use metaballs::{Scene, Settings};
 
 /// The GPU's mesh (compute passes, read back once) of `scene`.
@@ -152,9 +152,9 @@ fn simplified_exports_reach_their_target_and_stay_closed() {
 fn the_cli_exports_a_scene_file_and_refuses_bad_input() {
     let dir = scratch_dir("metaballs-export-cli");
     let scene_path = dir.join("two.json");
-    let file = metaballs::scene_file::SceneFile {
+    let file = metaballs::scene::file::SceneFile {
         spheres: scene().spheres().to_vec(),
-        settings: vec![("resolution", metaballs::params::Value::Number(40.0))],
+        settings: vec![("resolution", metaballs::scene::params::Value::Number(40.0))],
     };
     std::fs::write(&scene_path, file.to_json()).unwrap();
     let stl = dir.join("blob.stl");

@@ -5,7 +5,7 @@
 mod common;
 
 use common::*;
-use metaballs::reference::{self, Grid};
+use metaballs::extract::reference::{self, Grid};
 
 #[test]
 fn stats_report_the_triangles_drawn() {

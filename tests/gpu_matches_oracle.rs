@@ -4,7 +4,7 @@
 mod common;
 
 use common::*;
-use metaballs::reference::{self, Grid};
+use metaballs::extract::reference::{self, Grid};
 use metaballs::{Scene, Settings};
 use rand::{RngExt, SeedableRng};
 

@@ -6,10 +6,10 @@ mod common;
 
 use common::*;
 use glam::{DVec3, Vec3};
-use metaballs::reference::{self, Grid};
+use metaballs::extract::reference::{self, Grid};
 use metaballs::{Scene, Sphere};
 
-fn gpu_mesh(scene: &Scene, iso: f32, resolution: u32) -> metaballs::mesh::IndexedMesh {
+fn gpu_mesh(scene: &Scene, iso: f32, resolution: u32) -> metaballs::extract::mesh::IndexedMesh {
     with_renderer(settings(1, 1, resolution, iso), 16, 16, |o| {
         o.renderer.set_scene(scene.clone());
         pollster::block_on(o.renderer.extract_mesh())

@@ -5,7 +5,7 @@ mod common;
 
 use common::*;
 use glam::Vec3;
-use metaballs::params::MAX_SPHERES;
+use metaballs::scene::params::MAX_SPHERES;
 use metaballs::{Camera, Material, Settings};
 
 const BAD_FLOATS: [f32; 3] = [f32::NAN, f32::INFINITY, f32::NEG_INFINITY];

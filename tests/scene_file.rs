@@ -6,10 +6,11 @@ mod common;
 
 use common::*;
 use glam::Vec3;
-use metaballs::cpu_mesher::CpuMesher;
-use metaballs::params::Value;
-use metaballs::reference::{Construction, Grid};
-use metaballs::scene_file::{SceneFile, parse_spheres_text, spheres_text};
+use metaballs::extract::cpu::mesher::CpuMesher;
+use metaballs::extract::reference::{Construction, Grid};
+use metaballs::scene::file::SceneFile;
+use metaballs::scene::params::Value;
+use metaballs::scene::sphere::{parse_spheres_text, spheres_text};
 use metaballs::{Settings, Sphere};
 use rand::{RngExt, SeedableRng};
 
@@ -87,9 +88,10 @@ fn the_link_form_carries_hand_built_spheres() {
     let text = spheres_text(&spheres);
     assert_eq!(text, "-0.3,0,0,0.35;0.4,0.1,-0.2,0.3");
     assert_eq!(parse_spheres_text(&text).unwrap(), spheres);
-    let value = metaballs::params::parse_parameter("balls", " -0.3,0,0,0.35 ; 0.4,0.1,-0.2,0.3 ").unwrap();
+    let value =
+        metaballs::scene::params::parse_parameter("balls", " -0.3,0,0,0.35 ; 0.4,0.1,-0.2,0.3 ").unwrap();
     assert_eq!(value, Value::Text(text));
-    let e = metaballs::params::parse_parameter("balls", "0,0,0,-1").unwrap_err().to_string();
+    let e = metaballs::scene::params::parse_parameter("balls", "0,0,0,-1").unwrap_err().to_string();
     assert!(e.contains("sphere radius must be between 0.01 and 1, got -1"), "{e}");
 }
 

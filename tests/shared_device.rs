@@ -20,9 +20,9 @@ fn buffer_memory(context: &GpuContext) -> (isize, isize) {
 
 fn draw(context: &GpuContext, renderer: &mut Renderer) -> Vec<u8> {
     let (width, height) = renderer.size();
-    let texture = metaballs::gpu::render_target(context.device(), width, height, OFFSCREEN_FORMAT);
+    let texture = metaballs::device::render_target(context.device(), width, height, OFFSCREEN_FORMAT);
     renderer.render(&texture.create_view(&Default::default()));
-    pollster::block_on(metaballs::gpu::read_texture(context.device(), context.queue(), &texture))
+    pollster::block_on(metaballs::device::read_texture(context.device(), context.queue(), &texture))
 }
 
 #[test]

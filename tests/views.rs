@@ -8,11 +8,11 @@ mod common;
 
 use common::*;
 use glam::{UVec3, Vec3};
-use metaballs::case_classes::case_classes;
+use metaballs::draw::slice;
+use metaballs::extract::reference::{self, Construction, Grid};
 use metaballs::offscreen::{Offscreen, write_png};
-use metaballs::params::view::{Blend, Interpolation, Slice};
-use metaballs::reference::{self, Construction, Grid};
-use metaballs::slice;
+use metaballs::scene::params::view::{Blend, Interpolation, Slice};
+use metaballs::teach::case_classes::case_classes;
 use metaballs::{Scene, Settings};
 
 const WIDTH: u32 = 320;
@@ -197,7 +197,8 @@ fn oracle_crossed_cells(
         for y in 0..n {
             for x in 0..n {
                 let case =
-                    metaballs::inspect::inspect(spheres, iso, grid, construction, UVec3::new(x, y, z)).case;
+                    metaballs::teach::inspect::inspect(spheres, iso, grid, construction, UVec3::new(x, y, z))
+                        .case;
                 count += (case != 0 && case != 255) as u32;
             }
         }
@@ -290,7 +291,7 @@ fn the_inspector_reads_the_picked_cell_as_the_oracle_does() {
         let direction = (Vec3::new(0.1, 0.05, 0.0) - eye).normalize();
         let hit = (0..mesh.triangle_count())
             .filter_map(|k| {
-                metaballs::inspect::ray_triangle(eye, direction, mesh.triangle(k)).map(|t| (t, k))
+                metaballs::teach::inspect::ray_triangle(eye, direction, mesh.triangle(k)).map(|t| (t, k))
             })
             .min_by(|a, b| a.0.total_cmp(&b.0))
             .expect("the ray meets the mesh");
@@ -301,13 +302,16 @@ fn the_inspector_reads_the_picked_cell_as_the_oracle_does() {
 
         let report = o.renderer.inspect(cell);
         let values = reference::sample_field(&spheres, grid);
-        for (c, offset) in metaballs::tables::CORNER_OFFSETS.iter().enumerate() {
+        for (c, offset) in metaballs::extract::tables::CORNER_OFFSETS.iter().enumerate() {
             assert_eq!(report.corners[c], values[grid.point_index(cell + UVec3::from_array(*offset))]);
         }
         let case = (0..8).fold(0u8, |m, c| m | ((report.corners[c] > 1.0) as u8) << c);
         assert_eq!(report.case, case);
         assert_eq!(report.class, case_classes()[case as usize]);
-        assert_eq!(report.triangles.len(), metaballs::tables::CASE_TRIANGLES[case as usize] as usize);
+        assert_eq!(
+            report.triangles.len(),
+            metaballs::extract::tables::CASE_TRIANGLES[case as usize] as usize
+        );
         for e in &report.edges {
             assert!(mesh.positions.iter().any(|v| v.distance(e.vertex) < 1e-6), "edge {} vertex", e.edge);
         }

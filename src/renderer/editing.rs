@@ -3,9 +3,9 @@
 //! CPU from the scene's sphere list and the camera: nothing is read back from the GPU.
 
 use super::Renderer;
-use crate::inspect::{self, Target};
+use crate::scene::SceneError;
 use crate::scene::{Scene, Sphere, nominal_radius};
-use crate::scene_file::SceneError;
+use crate::teach::inspect::{self, Target};
 use glam::Vec3;
 
 impl Renderer {

@@ -2,9 +2,9 @@
 
 use super::Renderer;
 use crate::ParamError;
-use crate::inspect::{self, CellReport, Target};
-use crate::params::view::GridView;
-use crate::reference::Construction;
+use crate::extract::reference::Construction;
+use crate::scene::params::view::GridView;
+use crate::teach::inspect::{self, CellReport, Target};
 use glam::UVec3;
 
 impl Renderer {

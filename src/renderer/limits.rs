@@ -1,9 +1,9 @@
 //! What the device holds: the largest grid, buffer and output sizes, and the checks that say so.
 
-use crate::context::has_compute;
-use crate::mesh_buffers::{BLOCK_CELLS, Capacity};
-use crate::params::{self, MAX_RESOLUTION, MIN_RESOLUTION, ParamError};
-use crate::reference::Grid;
+use crate::device::has_compute;
+use crate::extract::buffers::{BLOCK_CELLS, Capacity};
+use crate::extract::reference::Grid;
+use crate::scene::params::{self, MAX_RESOLUTION, MIN_RESOLUTION, ParamError};
 
 /// The largest buffer the mesh passes bind: a storage binding, or without compute shaders (where the
 /// CPU mesher fills plain vertex and index buffers) any buffer.

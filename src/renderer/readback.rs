@@ -3,10 +3,10 @@
 use super::Renderer;
 use super::Sizing;
 use super::limits::storage_limit;
-use crate::gpu::{map_and_read, read_buffer};
-use crate::mesh::IndexedMesh;
-use crate::mesh_buffers::{BLOCK_CELLS, Capacity, INDEX_BYTES, VERTEX_BYTES};
-use crate::uniforms::Counters;
+use crate::device::{map_and_read, read_buffer};
+use crate::extract::buffers::{BLOCK_CELLS, Capacity, INDEX_BYTES, VERTEX_BYTES};
+use crate::extract::mesh::IndexedMesh;
+use crate::extract::uniforms::Counters;
 use glam::{UVec3, Vec3};
 
 impl Renderer {
@@ -19,9 +19,9 @@ impl Renderer {
     /// Extracts the surface for the current state and reads the indexed mesh back, growing the buffers
     /// first if the surface needs it (unless the budget is fixed). Waits for the GPU: for tests and
     /// tools, not the frame loop.
-    /// With the CPU mesher as the source, its mesh is returned as it was uploaded.
+    /// An extractor that keeps its mesh on the CPU gives it as it was uploaded.
     pub async fn extract_mesh(&mut self) -> IndexedMesh {
-        if self.next_source() == super::MeshSource::Cpu {
+        if self.next_capabilities().cpu_copy {
             return self.mesh_readback().finish_clamped().await.0;
         }
         let mut counters = self.run_extraction().await;
@@ -96,7 +96,7 @@ impl Renderer {
 /// The mesh of one frame on its way back from the GPU. It owns what it reads, so a page can wait for it
 /// while the renderer goes on drawing: the copies were queued right after that frame's extraction.
 pub enum MeshReadback {
-    /// The CPU mesher's mesh: nothing to wait for.
+    /// A mesh kept on the CPU: nothing to wait for.
     Ready(IndexedMesh),
     /// Copies of the counters and the vertex and index buffers, queued behind the extraction.
     Queued { device: wgpu::Device, counters: wgpu::Buffer, vertices: wgpu::Buffer, indices: wgpu::Buffer },
@@ -145,12 +145,10 @@ impl MeshReadback {
 
 impl Renderer {
     /// Extracts the surface for the current state and queues its readback: one on-demand copy (for
-    /// exports), never part of a frame. With the CPU mesher as the source, its mesh is at hand.
+    /// exports), never part of a frame. An extractor that keeps its mesh on the CPU has it at hand.
     pub fn mesh_readback(&mut self) -> MeshReadback {
         self.extract();
-        if self.mesh_source() == super::MeshSource::Cpu {
-            let mut mesh = self.cpu.as_ref().map(|m| m.to_indexed()).unwrap_or_default();
-            mesh.triangles.truncate(self.cpu_indices as usize / 3);
+        if let Some(mesh) = self.active_extractor().cpu_mesh() {
             return MeshReadback::Ready(mesh);
         }
         let staging = |label: &str, size: u64| {

@@ -1,7 +1,7 @@
 //! One-setting changes, each through `Renderer::set_settings`: all checked, none applied if refused.
 
 use super::Renderer;
-use crate::params::{Camera, Material, ParamError, Settings};
+use crate::scene::params::{Camera, Material, ParamError, Settings};
 use glam::Vec3;
 
 impl Renderer {

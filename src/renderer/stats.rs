@@ -3,8 +3,8 @@
 
 use super::limits::storage_limit;
 use super::{Renderer, Sizing};
-use crate::mesh_buffers::{BLOCK_CELLS, Capacity};
-use crate::uniforms::Counters;
+use crate::extract::buffers::{BLOCK_CELLS, Capacity};
+use crate::extract::uniforms::Counters;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU8, Ordering};
 

@@ -3,10 +3,11 @@
 
 use super::Renderer;
 use crate::Settings;
-use crate::params::view::{Blend, Interpolation, Projection};
+use crate::draw::uniforms::{LightUniform, ShadingUniform};
+use crate::draw::views;
+use crate::extract::uniforms::GridUniform;
 use crate::scene::BOX_HALF_EXTENT;
-use crate::uniforms::{GridUniform, LightUniform, ShadingUniform};
-use crate::views;
+use crate::scene::params::view::{Blend, Interpolation, Projection};
 use glam::{Mat4, UVec3, Vec3};
 
 impl Renderer {

@@ -2,9 +2,10 @@
 //! the compact form links carry; the mesh and pictures as downloads (one readback each, on demand).
 
 use super::{Polling, View, js_error, pack_spheres, unpack_spheres, value_to_js};
+use crate::device::{read_texture, render_target};
 use crate::export::{MeshFormat, encode};
-use crate::gpu::{read_texture, render_target};
-use crate::scene_file::{self, SceneFile};
+use crate::scene::file::{self as scene_file, SceneFile};
+use crate::scene::sphere::{self, SceneError};
 use crate::{Scene, Sphere};
 use glam::Vec3;
 use wasm_bindgen::prelude::*;
@@ -49,13 +50,13 @@ pub fn load_scene(text: &str) -> Result<JsValue, JsError> {
 /// The compact form of spheres (7 numbers each) for links.
 #[wasm_bindgen]
 pub fn spheres_text(spheres: Vec<f32>) -> Result<String, JsError> {
-    Ok(scene_file::spheres_text(&unpack_spheres(&spheres)?))
+    Ok(sphere::spheres_text(&unpack_spheres(&spheres)?))
 }
 
 /// Reads the compact form of spheres as 7 numbers each; throws with what is wrong.
 #[wasm_bindgen]
 pub fn parse_spheres_text(text: &str) -> Result<Vec<f32>, JsError> {
-    Ok(pack_spheres(&scene_file::parse_spheres_text(text).map_err(js_error)?))
+    Ok(pack_spheres(&sphere::parse_spheres_text(text).map_err(js_error)?))
 }
 
 #[wasm_bindgen]
@@ -98,7 +99,7 @@ impl View {
                 let sphere = *scene
                     .spheres()
                     .get(i)
-                    .ok_or_else(|| scene_file::SceneError(format!("there is no sphere {}", i + 1)))?;
+                    .ok_or_else(|| SceneError(format!("there is no sphere {}", i + 1)))?;
                 scene.set_sphere(i, f(sphere))
             })
             .map_err(js_error)

@@ -39,7 +39,8 @@ impl Gpu {
         let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
         desc.backends = wgpu::Backends::BROWSER_WEBGPU;
         let instance = wgpu::Instance::new(desc);
-        let (adapter, device, queue) = crate::gpu::request_device(&instance, None).await.map_err(js_error)?;
+        let (adapter, device, queue) =
+            crate::device::request_device(&instance, None).await.map_err(js_error)?;
         Ok(Gpu { instance, adapter, context: GpuContext::new(device, queue), surface: RefCell::default() })
     }
 
@@ -54,7 +55,7 @@ impl Gpu {
             .create_surface(wgpu::SurfaceTarget::Canvas(canvas))
             .map_err(|e| js_error(format!("cannot draw on the canvas with WebGL2: {e}")))?;
         let (adapter, device, queue) =
-            crate::gpu::request_device(&instance, Some(&surface)).await.map_err(js_error)?;
+            crate::device::request_device(&instance, Some(&surface)).await.map_err(js_error)?;
         let context = GpuContext::new(device, queue);
         Ok(Gpu { instance, adapter, context, surface: RefCell::new(Some(surface)) })
     }

@@ -2,9 +2,9 @@
 //! report) and the case gallery's data.
 
 use super::{View, js_error};
-use crate::case_classes::{CLASS_NAMES, CLASS_REPRESENTATIVES, case_classes};
-use crate::inspect::CellReport;
-use crate::tables::{CASE_TRIANGLES, CORNER_OFFSETS, EDGE_CORNERS, TRI_TABLE};
+use crate::extract::tables::{CASE_TRIANGLES, CORNER_OFFSETS, EDGE_CORNERS, TRI_TABLE};
+use crate::teach::case_classes::{CLASS_NAMES, CLASS_REPRESENTATIVES, case_classes};
+use crate::teach::inspect::CellReport;
 use glam::UVec3;
 use wasm_bindgen::prelude::*;
 

@@ -2,7 +2,7 @@
 //! tests).
 
 use metaballs::Sphere;
-use metaballs::reference::{Grid, sample_field};
+use metaballs::extract::reference::{Grid, sample_field};
 
 /// How far the GPU's field may be from the oracle's, relative: WGSL rounds a division within 2.5 ulp
 /// and may fuse multiply-adds, so a sum of 16 positive terms can differ by a few times 1e-7.

@@ -7,16 +7,16 @@ pub mod pictures;
 #[allow(unused_imports)]
 pub use conditioning::*;
 use glam::{UVec3, Vec3};
+use metaballs::extract::reference::{Grid, sample_field};
 use metaballs::offscreen::Offscreen;
-use metaballs::reference::{Grid, sample_field};
 use metaballs::{Settings, Sphere};
 #[allow(unused_imports)]
 pub use pictures::*;
 
 /// A device from the adapter at hand (lavapipe in CI). Fails, never skips, when there is none.
 pub fn device() -> (wgpu::Adapter, wgpu::Device, wgpu::Queue) {
-    let instance = metaballs::gpu::native_instance();
-    pollster::block_on(metaballs::gpu::request_device(&instance, None))
+    let instance = metaballs::device::native_instance();
+    pollster::block_on(metaballs::device::request_device(&instance, None))
         .unwrap_or_else(|e| panic!("GPU tests need an adapter: {e}"))
 }
 

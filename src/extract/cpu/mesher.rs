@@ -1,0 +1,408 @@
+//! Marching cubes on the CPU, built for speed (in wasm above all, where it beats a software GPU adapter):
+//! the same tables, block bounds and arithmetic as the GPU passes and the oracle, so that it yields the
+//! oracle's triangles exactly, in the vertex and index layout the shading pass draws.
+//!
+//! The grid is swept one plane of points at a time. Blocks of 4³ cells are bounded first, as on the GPU;
+//! only the points of kept blocks get field values, each computed once, in rows of consecutive points
+//! with the sphere loop outside so the compiler can vectorise across points (every point still sums its
+//! spheres in order, as the oracle does). Then the cells of kept blocks between two planes are
+//! classified and their triangles emitted, each vertex made once on first use and found again through
+//! the edge it lies on. Every array is kept between frames: after warm-up a frame allocates nothing.
+
+use crate::extract::buffers::BLOCK_CELLS;
+use crate::extract::mesh::IndexedMesh;
+use crate::extract::reference::{self, Construction, Grid, MIN_DISTANCE_SQUARED};
+use crate::extract::tables::{CASE_TRIANGLES, EDGE_TABLE, TRI_TABLE};
+use crate::scene::params::view::Blend;
+use crate::scene::{BOX_HALF_EXTENT, Sphere};
+use glam::Vec3;
+
+/// Bounds skip a block only with this relative margin (`BOUND_MARGIN` in `shaders/blocks.wgsl`).
+const BOUND_MARGIN: f32 = 1e-4;
+/// Marks an edge without a vertex yet.
+const NONE: u32 = u32::MAX;
+
+/// Edge `e` of a cell starts at this corner offset and runs along this axis (`EDGE_CORNERS` in
+/// `src/tables.rs`, each edge from its lower corner).
+const EDGE_START: [([u32; 3], usize); 12] = [
+    ([0, 0, 0], 0),
+    ([1, 0, 0], 1),
+    ([0, 1, 0], 0),
+    ([0, 0, 0], 1),
+    ([0, 0, 1], 0),
+    ([1, 0, 1], 1),
+    ([0, 1, 1], 0),
+    ([0, 0, 1], 1),
+    ([0, 0, 0], 2),
+    ([1, 0, 0], 2),
+    ([1, 1, 0], 2),
+    ([0, 1, 0], 2),
+];
+
+/// What a mesh took: the counts the HUD and the statistics show.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct CpuMeshStats {
+    /// Blocks the bounds could not skip.
+    pub active_blocks: u32,
+    /// Blocks in the grid.
+    pub total_blocks: u32,
+    /// Cells the surface crosses.
+    pub active_cells: u32,
+}
+
+/// The spheres as separate arrays of coordinates, read in the innermost loops.
+#[derive(Default)]
+struct Spheres {
+    x: Vec<f32>,
+    y: Vec<f32>,
+    z: Vec<f32>,
+    r2: Vec<f32>,
+}
+
+/// A reusable CPU mesher. `mesh` fills `vertices` (position then outward normal, 6 `f32` each) and
+/// `indices` (three per triangle, counter-clockwise seen from outside).
+#[derive(Default)]
+pub struct CpuMesher {
+    /// Position then normal of each vertex.
+    pub vertices: Vec<f32>,
+    /// Three per triangle.
+    pub indices: Vec<u32>,
+    stats: CpuMeshStats,
+    spheres: Spheres,
+    /// Coordinate of grid point `i` along any axis.
+    coords: Vec<f32>,
+    /// Per layer of blocks: the kept blocks' (x, y) block coordinates.
+    layer_blocks: Vec<Vec<(u32, u32)>>,
+    /// Per column of blocks in the current plane: its points are needed.
+    columns: Vec<bool>,
+    /// Field values of two planes of points (plane z at `z % 2`).
+    values: [Vec<f32>; 2],
+    /// The vertex on the x and y edges leaving each point of two planes.
+    plane_edges: [Vec<u32>; 2],
+    /// The vertex on the z edge leaving each point of the lower plane of the current layer of cells.
+    z_edges: Vec<u32>,
+    /// The grid edge of each vertex, so a stale entry in the edge arrays is told from a current one.
+    vertex_edges: Vec<u32>,
+}
+
+impl CpuMesher {
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Figures of the last mesh.
+    pub fn stats(&self) -> CpuMeshStats {
+        self.stats
+    }
+
+    /// Triangles of the last mesh.
+    pub fn triangle_count(&self) -> u32 {
+        (self.indices.len() / 3) as u32
+    }
+
+    /// Vertices of the last mesh.
+    pub fn vertex_count(&self) -> u32 {
+        (self.vertices.len() / 6) as u32
+    }
+
+    /// The last mesh as positions, normals and triangles.
+    pub fn to_indexed(&self) -> IndexedMesh {
+        let at = |v: &[f32]| Vec3::new(v[0], v[1], v[2]);
+        IndexedMesh {
+            positions: self.vertices.chunks_exact(6).map(at).collect(),
+            normals: self.vertices.chunks_exact(6).map(|v| at(&v[3..])).collect(),
+            triangles: self.indices.chunks_exact(3).map(|t| [t[0], t[1], t[2]]).collect(),
+        }
+    }
+
+    /// Extracts the surface f = `iso` of `spheres` on `grid`.
+    pub fn mesh(&mut self, spheres: &[Sphere], iso: f32, grid: Grid, construction: Construction) {
+        let n = grid.cells_per_axis;
+        self.prepare(spheres, grid);
+        self.classify_blocks(iso, n, construction.blend);
+        let points = (n as usize + 1).pow(2);
+        for plane in 0..2 {
+            self.values[plane].resize(points, 0.0);
+            self.plane_edges[plane].resize(2 * points, NONE);
+        }
+        self.z_edges.resize(points, NONE);
+        self.vertices.clear();
+        self.indices.clear();
+        self.vertex_edges.clear();
+        self.stats.active_cells = 0;
+        self.sample_plane(0, n, construction.blend);
+        for z in 0..n {
+            self.sample_plane(z + 1, n, construction.blend);
+            self.march_layer(spheres, z, iso, grid, construction);
+        }
+    }
+
+    fn prepare(&mut self, spheres: &[Sphere], grid: Grid) {
+        let s = &mut self.spheres;
+        s.x.clear();
+        s.y.clear();
+        s.z.clear();
+        s.r2.clear();
+        for sphere in spheres {
+            s.x.push(sphere.center.x);
+            s.y.push(sphere.center.y);
+            s.z.push(sphere.center.z);
+            s.r2.push(sphere.radius * sphere.radius);
+        }
+        let cell = grid.cell_size();
+        self.coords.clear();
+        self.coords.extend((0..=grid.cells_per_axis).map(|i| -BOX_HALF_EXTENT + i as f32 * cell));
+    }
+
+    /// Keeps the blocks whose field bounds straddle `iso`, as `classify_blocks` in
+    /// `shaders/blocks.wgsl` does, and lists them by layer.
+    fn classify_blocks(&mut self, iso: f32, n: u32, blend: Blend) {
+        let nb = n.div_ceil(BLOCK_CELLS);
+        let total = (nb as usize).pow(3);
+        self.layer_blocks.resize_with(nb as usize, Vec::new);
+        self.layer_blocks.truncate(nb as usize);
+        let by_max = blend == Blend::Max;
+        let mut active = 0;
+        for bz in 0..nb {
+            let layer = &mut self.layer_blocks[bz as usize];
+            layer.clear();
+            for by in 0..nb {
+                for bx in 0..nb {
+                    let first = [bx, by, bz].map(|b| b * BLOCK_CELLS);
+                    let last = first.map(|f| (f + BLOCK_CELLS).min(n));
+                    let low = Vec3::from_array(first.map(|i| self.coords[i as usize]));
+                    let high = Vec3::from_array(last.map(|i| self.coords[i as usize]));
+                    let centre = 0.5 * (low + high);
+                    let h = 0.5 * (high - low).length();
+                    let (mut lower, mut upper, mut unbounded) = (0.0f32, 0.0f32, false);
+                    let s = &self.spheres;
+                    for i in 0..s.r2.len() {
+                        let d = (centre - Vec3::new(s.x[i], s.y[i], s.z[i])).length();
+                        let low_term = s.r2[i] / ((d + h) * (d + h));
+                        let gap = d - h;
+                        let high_term = if gap <= 0.0 {
+                            unbounded = true;
+                            0.0
+                        } else {
+                            s.r2[i] / (gap * gap)
+                        };
+                        if by_max {
+                            lower = lower.max(low_term);
+                            upper = upper.max(high_term);
+                        } else {
+                            lower += low_term;
+                            upper += high_term;
+                        }
+                    }
+                    let touches_walls = first.contains(&0) || last.contains(&n);
+                    let all_outside = !unbounded && upper * (1.0 + BOUND_MARGIN) <= iso;
+                    let all_inside = !touches_walls && lower * (1.0 - BOUND_MARGIN) > iso;
+                    if !all_outside && !all_inside {
+                        layer.push((bx, by));
+                        active += 1;
+                    }
+                }
+            }
+        }
+        self.stats.active_blocks = active;
+        self.stats.total_blocks = total as u32;
+    }
+
+    /// Field values at the points of plane `z` that kept blocks use (boundary points read 0).
+    fn sample_plane(&mut self, z: u32, n: u32, blend: Blend) {
+        let nb = n.div_ceil(BLOCK_CELLS);
+        let width = n as usize + 1;
+        // The block layers holding this plane: the one above it and, on a layer boundary, the one below.
+        self.columns.clear();
+        self.columns.resize((nb * nb) as usize, false);
+        let layers = [z / BLOCK_CELLS, (z / BLOCK_CELLS).wrapping_sub(1)];
+        for (k, &layer) in layers.iter().enumerate() {
+            if layer >= nb || (k == 1 && !z.is_multiple_of(BLOCK_CELLS)) {
+                continue;
+            }
+            for &(bx, by) in &self.layer_blocks[layer as usize] {
+                self.columns[(bx + nb * by) as usize] = true;
+            }
+        }
+        let values = &mut self.values[(z % 2) as usize];
+        let boundary_plane = z == 0 || z == n;
+        let pz = self.coords[z as usize];
+        for y in 0..=n {
+            let rows = [y / BLOCK_CELLS, (y / BLOCK_CELLS).wrapping_sub(1)];
+            let needed = |bx: u32| {
+                rows.iter().enumerate().any(|(k, &by)| {
+                    by < nb
+                        && (k == 0 || y.is_multiple_of(BLOCK_CELLS))
+                        && self.columns[(bx + nb * by) as usize]
+                })
+            };
+            let row = &mut values[y as usize * width..(y as usize + 1) * width];
+            // Runs of consecutive needed blocks become runs of points.
+            let mut bx = 0;
+            while bx < nb {
+                if !needed(bx) {
+                    bx += 1;
+                    continue;
+                }
+                let start = bx;
+                while bx < nb && needed(bx) {
+                    bx += 1;
+                }
+                let x0 = (start * BLOCK_CELLS) as usize;
+                let x1 = ((bx * BLOCK_CELLS).min(n)) as usize;
+                let run = &mut row[x0..=x1];
+                if boundary_plane || y == 0 || y == n {
+                    run.fill(0.0);
+                    continue;
+                }
+                sample_run(run, &self.coords[x0..=x1], self.coords[y as usize], pz, &self.spheres, blend);
+                if x0 == 0 {
+                    run[0] = 0.0;
+                }
+                if x1 == n as usize {
+                    run[x1 - x0] = 0.0;
+                }
+            }
+        }
+    }
+
+    /// Classifies the cells of kept blocks between planes `z` and `z + 1` and emits their triangles.
+    fn march_layer(&mut self, spheres: &[Sphere], z: u32, iso: f32, grid: Grid, construction: Construction) {
+        let n = grid.cells_per_axis;
+        let width = n as usize + 1;
+        let (low, high) = ((z % 2) as usize, ((z + 1) % 2) as usize);
+        let blocks = std::mem::take(&mut self.layer_blocks[(z / BLOCK_CELLS) as usize]);
+        for &(bx, by) in &blocks {
+            let y_end = (by * BLOCK_CELLS + BLOCK_CELLS).min(n);
+            let x_end = (bx * BLOCK_CELLS + BLOCK_CELLS).min(n);
+            for y in by * BLOCK_CELLS..y_end {
+                for x in bx * BLOCK_CELLS..x_end {
+                    let at = x as usize + width * y as usize;
+                    let corners = [at, at + 1, at + 1 + width, at + width];
+                    let (lo, hi) = (&self.values[low], &self.values[high]);
+                    let mut case = 0usize;
+                    for (c, &p) in corners.iter().enumerate() {
+                        case |= ((lo[p] > iso) as usize) << c;
+                        case |= ((hi[p] > iso) as usize) << (c + 4);
+                    }
+                    if EDGE_TABLE[case] == 0 {
+                        continue;
+                    }
+                    self.stats.active_cells += 1;
+                    let row = &TRI_TABLE[case];
+                    for t in 0..CASE_TRIANGLES[case] as usize {
+                        // The table winds clockwise seen from outside; emit counter-clockwise.
+                        for k in [0, 2, 1] {
+                            let edge = row[3 * t + k] as usize;
+                            let id = self.vertex_on(spheres, edge, [x, y, z], iso, grid, construction);
+                            self.indices.push(id);
+                        }
+                    }
+                }
+            }
+        }
+        self.layer_blocks[(z / BLOCK_CELLS) as usize] = blocks;
+    }
+
+    /// The vertex on edge `edge` of `cell`, made on first use.
+    fn vertex_on(
+        &mut self,
+        spheres: &[Sphere],
+        edge: usize,
+        cell: [u32; 3],
+        iso: f32,
+        grid: Grid,
+        construction: Construction,
+    ) -> u32 {
+        let n = grid.cells_per_axis;
+        let width = n as usize + 1;
+        let (offset, axis) = EDGE_START[edge];
+        let a = [cell[0] + offset[0], cell[1] + offset[1], cell[2] + offset[2]];
+        let planar = a[0] as usize + width * a[1] as usize;
+        let key = (a[0] + (n + 1) * (a[1] + (n + 1) * a[2])) * 3 + axis as u32;
+        let plane = (a[2] % 2) as usize;
+        let slot = match axis {
+            2 => &mut self.z_edges[planar],
+            _ => &mut self.plane_edges[plane][2 * planar + axis],
+        };
+        let known = *slot;
+        if (known as usize) < self.vertex_edges.len() && self.vertex_edges[known as usize] == key {
+            return known;
+        }
+        let id = self.vertex_edges.len() as u32;
+        *slot = id;
+        self.vertex_edges.push(key);
+
+        let mut b = a;
+        b[axis] += 1;
+        let value = |p: [u32; 3]| self.values[(p[2] % 2) as usize][p[0] as usize + width * p[1] as usize];
+        let (fa, fb) = (value(a), value(b));
+        let point = |p: [u32; 3]| Vec3::from_array(p.map(|i| self.coords[i as usize]));
+        let (pa, pb) = (point(a), point(b));
+        let t = construction.edge_parameter(iso, fa, fb);
+        let p = pa + (pb - pa) * t;
+        let boundary = |p: [u32; 3]| p.contains(&0) || p.contains(&n);
+        let normal = if boundary(a) {
+            (pa - pb).normalize()
+        } else if boundary(b) {
+            (pb - pa).normalize()
+        } else {
+            let g = reference::outward_gradient(spheres, p, construction.blend);
+            let fallback = if fa > iso { pb - pa } else { pa - pb };
+            g.try_normalize().unwrap_or(fallback.normalize())
+        };
+        self.vertices.extend_from_slice(&[p.x, p.y, p.z, normal.x, normal.y, normal.z]);
+        id
+    }
+}
+
+/// Field values along a run of points sharing y and z: the sphere loop outside, the points inside, so
+/// the inner loop has no dependence between iterations and vectorises; each point still sums its
+/// spheres in order.
+fn sample_run(run: &mut [f32], xs: &[f32], py: f32, pz: f32, s: &Spheres, blend: Blend) {
+    run.fill(0.0);
+    for i in 0..s.r2.len() {
+        let (dy, dz, r2) = (py - s.y[i], pz - s.z[i], s.r2[i]);
+        let (dy2, dz2, cx) = (dy * dy, dz * dz, s.x[i]);
+        match blend {
+            Blend::Sum => {
+                for (f, &x) in run.iter_mut().zip(xs) {
+                    let dx = x - cx;
+                    let d2 = dx * dx + dy2 + dz2;
+                    *f += r2 / if d2 < MIN_DISTANCE_SQUARED { MIN_DISTANCE_SQUARED } else { d2 };
+                }
+            }
+            Blend::Max => {
+                for (f, &x) in run.iter_mut().zip(xs) {
+                    let dx = x - cx;
+                    let d2 = dx * dx + dy2 + dz2;
+                    let term = r2 / if d2 < MIN_DISTANCE_SQUARED { MIN_DISTANCE_SQUARED } else { d2 };
+                    *f = if term > *f { term } else { *f };
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::Scene;
+
+    fn assert_matches_oracle(spheres: &[Sphere], iso: f32, n: u32, construction: Construction) {
+        let grid = Grid { cells_per_axis: n };
+        let mut mesher = CpuMesher::new();
+        mesher.mesh(spheres, iso, grid, construction);
+        let oracle = reference::extract_with(spheres, iso, grid, construction);
+        let ours = mesher.to_indexed().to_soup();
+        ours.matches(&oracle, 0.0, 1e-3).unwrap_or_else(|e| panic!("{n} cells, iso {iso}: {e}"));
+    }
+
+    #[test]
+    fn matches_the_oracle_exactly_on_seeded_scenes() {
+        for (seed, count, n) in [(1, 1, 8), (2, 5, 13), (3, 16, 32), (4, 64, 24)] {
+            let scene = Scene::new(seed, count).unwrap();
+            assert_matches_oracle(scene.spheres(), 1.0, n, Construction::default());
+        }
+    }
+}

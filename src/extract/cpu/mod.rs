@@ -1,0 +1,80 @@
+//! Extraction on the CPU: the [`CpuMesher`] meshes the frame in `prepare`, then `write` uploads its
+//! vertices and indices into the same buffers the compute passes fill (`Queue::write_buffer`), and the
+//! mesh is drawn the same way. On a software adapter it beats compute passes emulated on the CPU; on
+//! WebGL2 it is the only extractor.
+
+pub mod mesher;
+
+pub use mesher::CpuMesher;
+
+use super::extractor::{Capabilities, Extractor, Job, MeshCount, Output};
+use super::mesh::IndexedMesh;
+use super::uniforms::Counters;
+
+/// The CPU mesher and what it last uploaded.
+#[derive(Default)]
+pub struct CpuExtractor {
+    mesher: CpuMesher,
+    /// Indices the latest `write` uploaded.
+    written: u32,
+}
+
+impl CpuExtractor {
+    /// Runs anywhere: there is nothing to compile.
+    pub fn compile(_device: &wgpu::Device) -> Option<Box<dyn Extractor>> {
+        Some(Box::<Self>::default())
+    }
+}
+
+impl Extractor for CpuExtractor {
+    fn name(&self) -> &'static str {
+        "cpu"
+    }
+
+    fn capabilities(&self) -> Capabilities {
+        Capabilities { needs_compute: false, cell_lists: false, cpu_copy: true }
+    }
+
+    fn fresh(&self) -> Box<dyn Extractor> {
+        Box::<Self>::default()
+    }
+
+    /// Meshes the frame; the buffers need room for its vertices and indices only.
+    fn prepare(&mut self, job: &Job) -> Option<Counters> {
+        self.mesher.mesh(job.spheres, job.iso, job.grid, job.construction);
+        let (vertices, indices) = (self.mesher.vertex_count(), self.mesher.indices.len() as u32);
+        Some(Counters { active_blocks: 0, vertices, indices, active_cells: 0 })
+    }
+
+    fn write(&mut self, output: Output) -> MeshCount {
+        let Output { queue, buffers, .. } = output;
+        let mesher = &self.mesher;
+        let (vertices, requested) = (mesher.vertex_count(), mesher.indices.len() as u32);
+        let indices = requested.min(buffers.capacity.indices);
+        if vertices > 0 && vertices <= buffers.capacity.vertices {
+            queue.write_buffer(&buffers.vertices, 0, bytemuck::cast_slice(&mesher.vertices));
+        }
+        if indices > 0 {
+            queue.write_buffer(
+                &buffers.indices,
+                0,
+                bytemuck::cast_slice(&mesher.indices[..indices as usize]),
+            );
+        }
+        self.written = indices;
+        let stats = mesher.stats();
+        let needed = Counters {
+            active_blocks: stats.active_blocks,
+            vertices,
+            indices: requested,
+            active_cells: stats.active_cells,
+        };
+        MeshCount::Known { needed, indices }
+    }
+
+    fn cpu_mesh(&self) -> Option<IndexedMesh> {
+        let mut mesh = self.mesher.to_indexed();
+        mesh.triangles.truncate(self.written as usize / 3);
+        Some(mesh)
+    }
+}

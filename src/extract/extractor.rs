@@ -1,0 +1,87 @@
+//! The interface every extractor implements: what it can do, the frame's problem, where the mesh
+//! goes, and how it is counted.
+
+use super::buffers::MeshBuffers;
+use super::gpu::scene_buffers::SceneBuffers;
+use super::mesh::IndexedMesh;
+use super::reference::{Construction, Grid};
+use super::uniforms::Counters;
+use crate::device::timing::Timing;
+use crate::scene::Sphere;
+
+/// What an extractor can do. The renderer chooses by these (and by name only for the `mesher`
+/// setting), never by type.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Capabilities {
+    /// Runs in compute shaders, so on the device (not on WebGL2, and emulated on a software adapter).
+    pub needs_compute: bool,
+    /// Fills the active-block and active-cell lists and the per-block field values and cases that the
+    /// teaching views read.
+    pub cell_lists: bool,
+    /// Keeps its latest mesh on the CPU, so exports and tests need no readback.
+    pub cpu_copy: bool,
+}
+
+/// One frame's extraction problem: the surface f = `iso` of `spheres` on `grid`.
+#[derive(Clone, Copy, Debug)]
+pub struct Job<'a> {
+    pub spheres: &'a [Sphere],
+    pub iso: f32,
+    pub grid: Grid,
+    pub construction: Construction,
+}
+
+/// Where a frame's mesh goes: the shared buffers (already bound with [`Extractor::bind`]) and the
+/// frame's command encoder.
+pub struct Output<'a> {
+    pub queue: &'a wgpu::Queue,
+    pub encoder: &'a mut wgpu::CommandEncoder,
+    pub buffers: &'a MeshBuffers,
+    /// Timestamp queries for the stages, when a timed frame asks for them.
+    pub timing: Option<&'a Timing>,
+}
+
+/// How a frame's mesh is counted.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MeshCount {
+    /// On the device: the buffers' counters and indirect draw arguments hold it, and the renderer
+    /// reads the counters a frame or two later (nothing waits).
+    OnDevice,
+    /// Known at once.
+    Known {
+        /// What the surface needed (vertices, indices, active blocks and cells), even past capacity.
+        needed: Counters,
+        /// Indices written, at most the index buffer's capacity.
+        indices: u32,
+    },
+}
+
+/// One way of making the mesh. Each renderer holds its own instance of every extractor the device
+/// can run ([`Extractor::fresh`] from the device's compiled one).
+pub trait Extractor {
+    /// Its word in the `mesher` setting and the HUD (`gpu`, `cpu`).
+    fn name(&self) -> &'static str;
+
+    /// What it can do.
+    fn capabilities(&self) -> Capabilities;
+
+    /// A new instance for one renderer, sharing what was compiled for the device.
+    fn fresh(&self) -> Box<dyn Extractor>;
+
+    /// Follows new buffers (made at start, grown, or for a new resolution). `scene` holds the grid
+    /// and spheres as the compute passes read them.
+    fn bind(&mut self, _device: &wgpu::Device, _scene: &SceneBuffers, _buffers: &MeshBuffers) {}
+
+    /// Does whatever work happens on the CPU and returns the room it needs in the buffers, so they
+    /// can grow before [`Extractor::write`]; `None` when only the device will know.
+    fn prepare(&mut self, job: &Job) -> Option<Counters>;
+
+    /// Puts this frame's mesh into the buffers: records compute passes into the encoder, or uploads
+    /// what `prepare` made. Never writes past the buffers' capacity.
+    fn write(&mut self, output: Output) -> MeshCount;
+
+    /// The latest mesh as written (clamped as the buffers held it), where it is kept on the CPU.
+    fn cpu_mesh(&self) -> Option<IndexedMesh> {
+        None
+    }
+}

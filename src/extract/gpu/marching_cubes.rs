@@ -1,0 +1,128 @@
+//! The marching-cubes passes (`shaders/marching_cubes.wgsl`), over the active cells: vertices on the
+//! edges each cell owns, then triangles as indices into them, then the indexed indirect draw's arguments.
+
+use crate::device::{bind_buffers, compute_module, compute_pipeline};
+use crate::extract::buffers::MeshBuffers;
+use crate::extract::gpu::scene_buffers::SceneBuffers;
+use crate::extract::tables::{CASE_TRIANGLES, EDGE_TABLE, TRI_TABLE};
+use wgpu::util::DeviceExt;
+
+/// The case table as the shader reads it: crossed-edge mask in bits 0..11, triangle count from bit 16.
+pub fn packed_case_table() -> [u32; 256] {
+    std::array::from_fn(|case| EDGE_TABLE[case] as u32 | (CASE_TRIANGLES[case] as u32) << 16)
+}
+
+/// The triangle table flattened to 16 `i32` per case.
+pub fn flat_triangle_table() -> Vec<i32> {
+    TRI_TABLE.iter().flatten().map(|&e| e as i32).collect()
+}
+
+/// Owns the marching-cubes pipelines, the tables on the GPU, and bind groups for the current buffers.
+#[derive(Clone)]
+pub struct MarchingCubesPass {
+    vertices: wgpu::ComputePipeline,
+    triangles: wgpu::ComputePipeline,
+    finalize: wgpu::ComputePipeline,
+    case_table: wgpu::Buffer,
+    triangle_table: wgpu::Buffer,
+    groups: Option<[wgpu::BindGroup; 3]>,
+}
+
+impl MarchingCubesPass {
+    pub fn new(device: &wgpu::Device) -> Self {
+        let module = compute_module(
+            device,
+            "marching cubes: shader",
+            include_str!("../../../shaders/extract/marching_cubes.wgsl"),
+        );
+        Self {
+            vertices: compute_pipeline(device, "marching cubes: vertex pipeline", &module, "make_vertices"),
+            triangles: compute_pipeline(
+                device,
+                "marching cubes: triangle pipeline",
+                &module,
+                "make_triangles",
+            ),
+            finalize: compute_pipeline(device, "marching cubes: finalize pipeline", &module, "finalize_draw"),
+            case_table: device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some("marching cubes: case table"),
+                contents: bytemuck::cast_slice(&packed_case_table()),
+                usage: wgpu::BufferUsages::STORAGE,
+            }),
+            triangle_table: device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some("marching cubes: triangle table"),
+                contents: bytemuck::cast_slice(&flat_triangle_table()),
+                usage: wgpu::BufferUsages::STORAGE,
+            }),
+            groups: None,
+        }
+    }
+
+    /// Binds the passes to new buffers.
+    pub fn bind(&mut self, device: &wgpu::Device, scene: &SceneBuffers, mesh: &MeshBuffers) {
+        self.groups = Some([
+            bind_buffers(
+                device,
+                "marching cubes: vertex bind group",
+                &self.vertices,
+                &[
+                    (0, &scene.grid),
+                    (1, &scene.spheres),
+                    (2, &mesh.counters),
+                    (3, &mesh.active_blocks),
+                    (5, &mesh.block_values),
+                    (9, &mesh.edge_vertices),
+                    (10, &mesh.vertices),
+                    (13, &mesh.active_cells),
+                ],
+            ),
+            bind_buffers(
+                device,
+                "marching cubes: triangle bind group",
+                &self.triangles,
+                &[
+                    (0, &scene.grid),
+                    (2, &mesh.counters),
+                    (3, &mesh.active_blocks),
+                    (4, &mesh.block_slots),
+                    (6, &self.case_table),
+                    (7, &self.triangle_table),
+                    (8, &mesh.cell_cases),
+                    (9, &mesh.edge_vertices),
+                    (11, &mesh.indices),
+                    (13, &mesh.active_cells),
+                ],
+            ),
+            bind_buffers(
+                device,
+                "marching cubes: finalize bind group",
+                &self.finalize,
+                &[(0, &scene.grid), (2, &mesh.counters), (12, &mesh.draw_args)],
+            ),
+        ]);
+    }
+
+    /// Vertices, then triangles, then the draw arguments, over the active blocks.
+    pub fn encode(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        mesh: &MeshBuffers,
+        timestamp_writes: Option<wgpu::ComputePassTimestampWrites>,
+    ) {
+        let [vertices, triangles, finalize] =
+            self.groups.as_ref().expect("MarchingCubesPass::bind before encode");
+        let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+            label: Some("marching cubes: pass"),
+            timestamp_writes,
+        });
+        pass.set_pipeline(&self.vertices);
+        pass.set_bind_group(0, vertices, &[]);
+        pass.dispatch_workgroups_indirect(&mesh.cell_dispatch, 0);
+        pass.set_pipeline(&self.triangles);
+        pass.set_bind_group(0, triangles, &[]);
+        pass.dispatch_workgroups_indirect(&mesh.cell_dispatch, 0);
+        pass.set_pipeline(&self.finalize);
+        pass.set_bind_group(0, finalize, &[]);
+        pass.dispatch_workgroups(1, 1, 1);
+    }
+}

@@ -1,0 +1,34 @@
+//! Isosurface extraction: every way of making a frame's mesh sits behind one [`Extractor`] interface
+//! and fills the same [`MeshBuffers`](buffers::MeshBuffers) (shared vertices, indices, counters), so
+//! the renderer orders a frame without knowing which one ran.
+//!
+//! - [`tables`]: the 256-case marching-cubes tables, once, for the GPU and every CPU path.
+//! - [`reference`]: the CPU oracle every extractor must equal exactly.
+//! - [`gpu`]: the compute passes (blocks → field → marching cubes), all on the device, no readback.
+//! - [`cpu`]: the CPU mesher, uploaded into the same buffers (faster on software adapters, the only
+//!   one on WebGL2).
+//!
+//! Imports `scene` and `device`; knows nothing of drawing.
+
+pub mod buffers;
+pub mod cpu;
+pub mod extractor;
+pub mod gpu;
+pub mod mesh;
+pub mod reference;
+pub mod tables;
+pub mod uniforms;
+
+pub use extractor::{Capabilities, Extractor, Job, MeshCount, Output};
+
+/// Builds an extractor on a device, compiling what every renderer on that device shares (its
+/// pipelines); `None` where it cannot run there.
+pub type Compile = fn(&wgpu::Device) -> Option<Box<dyn Extractor>>;
+
+/// Every extractor, in order of preference. Adding one is a module and a line here.
+pub const EXTRACTORS: &[Compile] = &[gpu::GpuExtractor::compile, cpu::CpuExtractor::compile];
+
+/// The extractors `device` can run, in the order of [`EXTRACTORS`].
+pub fn compile_all(device: &wgpu::Device) -> Vec<Box<dyn Extractor>> {
+    EXTRACTORS.iter().filter_map(|compile| compile(device)).collect()
+}

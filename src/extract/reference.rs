@@ -1,0 +1,182 @@
+//! The CPU oracle: the same field, tables and interpolation as the GPU passes, in plain Rust, for tests
+//! and tools. It favours being obviously right over being fast.
+
+use crate::extract::mesh::Mesh;
+use crate::extract::tables::{CORNER_OFFSETS, EDGE_CORNERS, EDGE_TABLE, TRI_TABLE};
+use crate::scene::params::view::{Blend, Interpolation};
+use crate::scene::{BOX_HALF_EXTENT, Sphere};
+use glam::{UVec3, Vec3};
+
+/// Squared distances are clamped to this, so a grid point at a sphere's centre reads a huge but finite
+/// value. The GPU uses the same constant (`MIN_DISTANCE_SQUARED` in `shaders/common.wgsl`).
+pub const MIN_DISTANCE_SQUARED: f32 = 1e-20;
+
+/// The sampling grid over the box: `cells_per_axis` cells, `cells_per_axis + 1` points, along each axis.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Grid {
+    pub cells_per_axis: u32,
+}
+
+impl Grid {
+    /// Width of one cell in world units.
+    pub fn cell_size(&self) -> f32 {
+        2.0 * BOX_HALF_EXTENT / self.cells_per_axis as f32
+    }
+
+    /// Grid points along each axis.
+    pub fn points_per_axis(&self) -> u32 {
+        self.cells_per_axis + 1
+    }
+
+    /// World position of grid point `id`, computed as the GPU does.
+    pub fn point(&self, id: UVec3) -> Vec3 {
+        Vec3::splat(-BOX_HALF_EXTENT) + id.as_vec3() * self.cell_size()
+    }
+
+    /// Index of grid point `id` in the field buffer (x fastest).
+    pub fn point_index(&self, id: UVec3) -> usize {
+        let n = self.points_per_axis() as usize;
+        id.x as usize + n * (id.y as usize + n * id.z as usize)
+    }
+
+    /// Points on the box's faces read as outside, which closes the surface where it meets a wall.
+    pub fn is_boundary(&self, id: UVec3) -> bool {
+        id.min_element() == 0 || id.max_element() == self.cells_per_axis
+    }
+}
+
+/// How the surface is built: where vertices land on edges and how the spheres' fields combine.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Construction {
+    pub interpolation: Interpolation,
+    pub blend: Blend,
+}
+
+impl Construction {
+    /// Where on an edge from value `fa` to value `fb` the vertex for level `iso` lands.
+    pub fn edge_parameter(&self, iso: f32, fa: f32, fb: f32) -> f32 {
+        match self.interpolation {
+            Interpolation::Linear => (iso - fa) / (fb - fa),
+            Interpolation::Midpoint => 0.5,
+        }
+    }
+}
+
+/// f(p) = Σ rᵢ² / |p − cᵢ|², summed in sphere order in `f32` like the GPU.
+pub fn field_at(spheres: &[Sphere], p: Vec3) -> f32 {
+    blended_field_at(spheres, p, Blend::Sum)
+}
+
+/// f(p) with the spheres' terms summed or, with `Blend::Max`, the largest term alone.
+pub fn blended_field_at(spheres: &[Sphere], p: Vec3, blend: Blend) -> f32 {
+    let mut f = 0.0f32;
+    for s in spheres {
+        let d = p - s.center;
+        let term = s.radius * s.radius / d.dot(d).max(MIN_DISTANCE_SQUARED);
+        f = match blend {
+            Blend::Sum => f + term,
+            Blend::Max => f.max(term),
+        };
+    }
+    f
+}
+
+/// −∇f / 2 = Σ rᵢ² (p − cᵢ) / |p − cᵢ|⁴: it points out of the surface (the field falls outwards).
+/// With `Blend::Max`, the largest term's alone.
+pub fn outward_gradient(spheres: &[Sphere], p: Vec3, blend: Blend) -> Vec3 {
+    let mut g = Vec3::ZERO;
+    let mut largest = -1.0f32;
+    for s in spheres {
+        let d = p - s.center;
+        let d2 = d.dot(d).max(MIN_DISTANCE_SQUARED);
+        let term = d * (s.radius * s.radius / (d2 * d2));
+        match blend {
+            Blend::Sum => g += term,
+            Blend::Max => {
+                let value = s.radius * s.radius / d2;
+                if value > largest {
+                    largest = value;
+                    g = term;
+                }
+            }
+        }
+    }
+    g
+}
+
+/// Field values at every grid point, boundary points forced to 0 (outside).
+pub fn sample_field(spheres: &[Sphere], grid: Grid) -> Vec<f32> {
+    sample_blended_field(spheres, grid, Blend::Sum)
+}
+
+/// Field values at every grid point with `blend`, boundary points forced to 0 (outside).
+pub fn sample_blended_field(spheres: &[Sphere], grid: Grid, blend: Blend) -> Vec<f32> {
+    let n = grid.points_per_axis();
+    let mut values = vec![0.0; (n as usize).pow(3)];
+    for z in 0..n {
+        for y in 0..n {
+            for x in 0..n {
+                let id = UVec3::new(x, y, z);
+                if !grid.is_boundary(id) {
+                    values[grid.point_index(id)] = blended_field_at(spheres, grid.point(id), blend);
+                }
+            }
+        }
+    }
+    values
+}
+
+/// Extracts the surface f = iso as a triangle soup, cell by cell in x-fastest order, each cell's
+/// triangles in table order with counter-clockwise winding seen from outside. Each vertex carries the
+/// id of the grid edge it lies on (`Mesh::edge_ids`).
+pub fn extract(spheres: &[Sphere], iso: f32, grid: Grid) -> Mesh {
+    extract_with(spheres, iso, grid, Construction::default())
+}
+
+/// `extract` with the vertex placement and blend of `construction`.
+pub fn extract_with(spheres: &[Sphere], iso: f32, grid: Grid, construction: Construction) -> Mesh {
+    let values = sample_blended_field(spheres, grid, construction.blend);
+    let mut mesh = Mesh::default();
+    let n = grid.cells_per_axis;
+    for z in 0..n {
+        for y in 0..n {
+            for x in 0..n {
+                let cell = UVec3::new(x, y, z);
+                let corner = |c: usize| cell + UVec3::from_array(CORNER_OFFSETS[c]);
+                let value = |c: usize| values[grid.point_index(corner(c))];
+                let case = (0..8).fold(0usize, |m, c| m | (((value(c) > iso) as usize) << c));
+                if EDGE_TABLE[case] == 0 {
+                    continue;
+                }
+                let vertex = |e: usize| {
+                    let [a, b] = EDGE_CORNERS[e];
+                    let (ia, ib) = (corner(a), corner(b));
+                    let (pa, pb) = (grid.point(ia), grid.point(ib));
+                    let (fa, fb) = (value(a), value(b));
+                    let t = construction.edge_parameter(iso, fa, fb);
+                    let p = pa + (pb - pa) * t;
+                    let normal = if grid.is_boundary(ia) {
+                        (pa - pb).normalize()
+                    } else if grid.is_boundary(ib) {
+                        (pb - pa).normalize()
+                    } else {
+                        let g = outward_gradient(spheres, p, construction.blend);
+                        let fallback = if fa > iso { pb - pa } else { pa - pb };
+                        g.try_normalize().unwrap_or(fallback.normalize())
+                    };
+                    let axis = (0..3).find(|&i| ia[i] != ib[i]).unwrap() as u64;
+                    (p, normal, grid.point_index(ia) as u64 * 3 + axis)
+                };
+                for tri in TRI_TABLE[case].chunks(3).take_while(|t| t[0] >= 0) {
+                    for &e in &[tri[0], tri[2], tri[1]] {
+                        let (p, normal, edge) = vertex(e as usize);
+                        mesh.positions.push(p);
+                        mesh.normals.push(normal);
+                        mesh.edge_ids.push(edge);
+                    }
+                }
+            }
+        }
+    }
+    mesh
+}

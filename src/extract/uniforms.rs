@@ -1,0 +1,34 @@
+//! The compute passes' uniform and storage blocks as the shaders read them: `#[repr(C)]` mirrors of the
+//! WGSL structs in `shaders/common.wgsl`, with their sizes checked at compile time.
+
+use bytemuck::{Pod, Zeroable};
+
+/// The grid, iso level and buffer capacities, for the compute passes (`Grid` in `shaders/common.wgsl`).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, Pod, Zeroable, PartialEq)]
+pub struct GridUniform {
+    pub box_min: [f32; 3],
+    pub cell_size: f32,
+    pub iso: f32,
+    pub cells_per_axis: u32,
+    pub sphere_count: u32,
+    pub max_blocks: u32,
+    pub max_vertices: u32,
+    pub max_indices: u32,
+    pub max_cells: u32,
+    /// Bit 0: vertices at edge midpoints; bit 1: blend by max (`FLAG_*` in `shaders/common.wgsl`).
+    pub flags: u32,
+}
+const _: () = assert!(std::mem::size_of::<GridUniform>() == 48);
+
+/// The counts the passes append with (`Counters` in `shaders/common.wgsl`); a count above its
+/// capacity means that buffer overflowed.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, Pod, Zeroable, PartialEq, Eq)]
+pub struct Counters {
+    pub active_blocks: u32,
+    pub vertices: u32,
+    pub indices: u32,
+    pub active_cells: u32,
+}
+const _: () = assert!(std::mem::size_of::<Counters>() == 16);

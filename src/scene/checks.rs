@@ -1,0 +1,78 @@
+//! The range checks every parameter and sphere goes through: a refused value comes back as a
+//! [`ParamError`] whose message names the parameter, the value given and the accepted range.
+
+use glam::Vec3;
+use std::fmt;
+
+/// A refused parameter value, with a message a person can act on.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ParamError {
+    /// The value is NaN.
+    NotANumber { name: &'static str },
+    /// The value is infinite.
+    Infinite { name: &'static str },
+    /// The text is not a value of the expected kind.
+    Invalid { name: &'static str, value: String, expected: String },
+    /// The value lies outside the accepted range.
+    OutOfRange { name: &'static str, value: String, min: String, max: String },
+    /// The device cannot hold what the value asks for.
+    DeviceLimit { name: &'static str, value: String, detail: String },
+}
+
+impl fmt::Display for ParamError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::NotANumber { name } => write!(f, "{name} must be a number, got NaN"),
+            Self::Infinite { name } => write!(f, "{name} must be finite, got infinity"),
+            Self::Invalid { name, value, expected } => write!(f, "{name} must be {expected}, got {value:?}"),
+            Self::OutOfRange { name, value, min, max } => {
+                write!(f, "{name} must be between {min} and {max}, got {value}")
+            }
+            Self::DeviceLimit { name, value, detail } => {
+                write!(f, "{name} {value} is more than this device can hold: {detail}")
+            }
+        }
+    }
+}
+
+impl std::error::Error for ParamError {}
+
+/// Checks that `value` is a finite number within `[min, max]`.
+pub fn check_f32(name: &'static str, value: f32, min: f32, max: f32) -> Result<f32, ParamError> {
+    if value.is_nan() {
+        return Err(ParamError::NotANumber { name });
+    }
+    if value.is_infinite() {
+        return Err(ParamError::Infinite { name });
+    }
+    check_range(name, value, min, max)
+}
+
+/// Checks that an integer `value` lies within `[min, max]`.
+pub fn check_u32(name: &'static str, value: u32, min: u32, max: u32) -> Result<u32, ParamError> {
+    check_range(name, value, min, max)
+}
+
+pub(crate) fn check_range<T: PartialOrd + fmt::Display>(
+    name: &'static str,
+    value: T,
+    min: T,
+    max: T,
+) -> Result<T, ParamError> {
+    if value < min || value > max {
+        return Err(ParamError::OutOfRange {
+            name,
+            value: value.to_string(),
+            min: min.to_string(),
+            max: max.to_string(),
+        });
+    }
+    Ok(value)
+}
+
+pub(crate) fn check_vec3(name: &'static str, v: Vec3, min: f32, max: f32) -> Result<Vec3, ParamError> {
+    for c in v.to_array() {
+        check_f32(name, c, min, max)?;
+    }
+    Ok(v)
+}

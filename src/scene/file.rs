@@ -1,0 +1,258 @@
+//! Scenes as files: the spheres (centre, radius, velocity) and every setting of the picture, as a small
+//! versioned JSON document, and a compact text form of the spheres alone for links.
+//!
+//! A document is read whole and checked whole before anything uses it: whatever is wrong (not JSON, cut
+//! short, too large, another version, a missing field, a value out of range) comes back as one message
+//! naming the field and the value, and the caller's scene stays as it was.
+//!
+//! ```json
+//! { "format": "metaballs-scene", "version": 1,
+//!   "spheres": [ { "center": [-0.3, 0, 0], "radius": 0.35, "velocity": [0, 0, 0] } ],
+//!   "settings": { "iso": 1, "resolution": 64, "color": "#e77661", "yaw": 30 } }
+//! ```
+
+use super::params::{Value, parameter};
+use super::sphere::{SceneError, Sphere, at, check_count, check_sphere};
+use glam::Vec3;
+use serde_json::{Map, Number, json};
+
+/// The `format` field of every scene document.
+pub const FORMAT: &str = "metaballs-scene";
+/// The document version this build writes and reads.
+pub const VERSION: u64 = 1;
+/// Largest document read, in bytes: 64 spheres take about 10 KB.
+pub const MAX_BYTES: usize = 1 << 20;
+/// Parameters that belong to the figure on its page rather than to the scene: a document neither
+/// saves nor restores them. The sphere count is the length of `spheres`.
+pub const NOT_IN_SCENE: &[&str] =
+    &["spheres", "balls", "controls", "hud", "autoplay", "max-pixel-ratio", "edit"];
+
+/// A checked scene: the spheres, and settings by parameter name (only names a scene holds, each
+/// value checked by the parameter table).
+#[derive(Clone, Debug, PartialEq)]
+pub struct SceneFile {
+    pub spheres: Vec<Sphere>,
+    pub settings: Vec<(&'static str, Value)>,
+}
+
+/// Refuses a file longer than a scene document can be (before reading it, where the size is known).
+pub fn check_size(bytes: u64) -> Result<(), SceneError> {
+    if bytes > MAX_BYTES as u64 {
+        return Err(SceneError(format!(
+            "the file is {:.1} MB; a scene file is at most {} MB",
+            bytes as f64 / (1 << 20) as f64,
+            MAX_BYTES >> 20
+        )));
+    }
+    Ok(())
+}
+
+/// The parameters a scene document holds, in table order.
+pub fn scene_parameters() -> impl Iterator<Item = &'static crate::scene::params::Parameter> {
+    crate::scene::params::PARAMETERS.iter().filter(|p| !NOT_IN_SCENE.contains(&p.name))
+}
+
+/// Describes a JSON value for messages: short values whole, long ones by kind.
+fn describe(value: &serde_json::Value) -> String {
+    let text = value.to_string();
+    if text.len() <= 40 {
+        return text;
+    }
+    match value {
+        serde_json::Value::Array(a) => format!("an array of {} items", a.len()),
+        serde_json::Value::Object(o) => format!("an object with {} fields", o.len()),
+        _ => format!("{}…", text.chars().take(37).collect::<String>()),
+    }
+}
+
+fn number(value: &serde_json::Value, field: &str) -> Result<f32, SceneError> {
+    match value {
+        // Through the shortest decimal text, so that an f32 written by `to_json` reads back exactly.
+        serde_json::Value::Number(n) => {
+            n.to_string().parse::<f32>().map_err(|_| SceneError(format!("{field} must be a number, got {n}")))
+        }
+        other => Err(SceneError(format!("{field} must be a number, got {}", describe(other)))),
+    }
+}
+
+fn vector(value: &serde_json::Value, field: &str) -> Result<Vec3, SceneError> {
+    match value.as_array() {
+        Some(items) if items.len() == 3 => {
+            let c = |k: usize| number(&items[k], &format!("{field}[{k}]"));
+            Ok(Vec3::new(c(0)?, c(1)?, c(2)?))
+        }
+        _ => Err(SceneError(format!("{field} must be three numbers [x, y, z], got {}", describe(value)))),
+    }
+}
+
+fn sphere(value: &serde_json::Value, field: &str) -> Result<Sphere, SceneError> {
+    let object = value.as_object().ok_or_else(|| {
+        SceneError(format!("{field} must be an object with center and radius, got {}", describe(value)))
+    })?;
+    let get = |name: &str| object.get(name).ok_or_else(|| SceneError(format!("{field}.{name} is missing")));
+    let velocity = match object.get("velocity") {
+        Some(v) => vector(v, &format!("{field}.velocity"))?,
+        None => Vec3::ZERO,
+    };
+    let s = Sphere {
+        center: vector(get("center")?, &format!("{field}.center"))?,
+        radius: number(get("radius")?, &format!("{field}.radius"))?,
+        velocity,
+    };
+    check_sphere(field, s)
+}
+
+fn setting(name: &str, value: &serde_json::Value) -> Result<(&'static str, Value), SceneError> {
+    let field = format!("settings.{name}");
+    let spec = parameter(name)
+        .filter(|p| p.name == name && !NOT_IN_SCENE.contains(&p.name))
+        .ok_or_else(|| SceneError(format!("{field}: not a setting a scene holds")))?;
+    let text = match value {
+        // Whole numbers written with a fraction (`64.0`) read as whole numbers.
+        serde_json::Value::Number(n) => match n.as_f64() {
+            Some(x) if x.fract() == 0.0 && x.abs() < 1e15 => (x as i64).to_string(),
+            _ => n.to_string(),
+        },
+        serde_json::Value::Bool(b) => b.to_string(),
+        serde_json::Value::String(s) => s.clone(),
+        other => {
+            return Err(SceneError(format!(
+                "{field} must be a number, true/false or text, got {}",
+                describe(other)
+            )));
+        }
+    };
+    spec.parse(&text).map(|v| (spec.name, v)).map_err(|e| at(&field, e))
+}
+
+impl SceneFile {
+    /// Reads and checks a scene document.
+    pub fn parse(text: &str) -> Result<SceneFile, SceneError> {
+        check_size(text.len() as u64)?;
+        let document: serde_json::Value = serde_json::from_str(text).map_err(|e| {
+            let what = if e.is_eof() { "the file ends early (is it cut short?)" } else { "not valid JSON" };
+            SceneError(format!("{what}: {e}"))
+        })?;
+        let object = document
+            .as_object()
+            .ok_or_else(|| SceneError(format!("a scene is a JSON object, got {}", describe(&document))))?;
+        match object.get("format") {
+            Some(serde_json::Value::String(f)) if f == FORMAT => {}
+            Some(other) => {
+                return Err(SceneError(format!("format must be \"{FORMAT}\", got {}", describe(other))));
+            }
+            None => return Err(SceneError(format!("format is missing: this is not a {FORMAT} document"))),
+        }
+        match object.get("version") {
+            Some(v) if v.as_u64() == Some(VERSION) => {}
+            Some(other) => {
+                return Err(SceneError(format!(
+                    "version {} is not one this build reads (it reads version {VERSION})",
+                    describe(other)
+                )));
+            }
+            None => return Err(SceneError("version is missing".into())),
+        }
+        let list = object
+            .get("spheres")
+            .ok_or_else(|| SceneError("spheres is missing".into()))?
+            .as_array()
+            .ok_or_else(|| {
+            SceneError(format!("spheres must be an array, got {}", describe(&object["spheres"])))
+        })?;
+        check_count("spheres", list.len())?;
+        let spheres = list
+            .iter()
+            .enumerate()
+            .map(|(i, s)| sphere(s, &format!("spheres[{i}]")))
+            .collect::<Result<_, _>>()?;
+        let settings = match object.get("settings") {
+            None => Vec::new(),
+            Some(serde_json::Value::Object(map)) => {
+                map.iter().map(|(name, value)| setting(name, value)).collect::<Result<_, _>>()?
+            }
+            Some(other) => {
+                return Err(SceneError(format!("settings must be an object, got {}", describe(other))));
+            }
+        };
+        Ok(SceneFile { spheres, settings })
+    }
+
+    /// Checks spheres and settings given by name (a page's state) and makes them a scene.
+    pub fn new(
+        spheres: Vec<Sphere>,
+        settings: &Map<String, serde_json::Value>,
+    ) -> Result<SceneFile, SceneError> {
+        check_count("spheres", spheres.len())?;
+        for (i, s) in spheres.iter().enumerate() {
+            check_sphere(&format!("spheres[{i}]"), *s)?;
+        }
+        let settings = settings
+            .iter()
+            .filter(|(name, _)| !NOT_IN_SCENE.contains(&name.as_str()))
+            .map(|(name, value)| setting(name, value))
+            .collect::<Result<_, _>>()?;
+        Ok(SceneFile { spheres, settings })
+    }
+
+    /// The document, indented, with numbers written as short as they read back exactly.
+    pub fn to_json(&self) -> String {
+        let spheres: Vec<serde_json::Value> = self
+            .spheres
+            .iter()
+            .map(|s| {
+                json!({
+                    "center": s.center.to_array().map(short),
+                    "radius": short(s.radius),
+                    "velocity": s.velocity.to_array().map(short),
+                })
+            })
+            .collect();
+        let settings: Map<String, serde_json::Value> = self
+            .settings
+            .iter()
+            .map(|(name, value)| {
+                let v = match value {
+                    Value::Number(n) if n.fract() == 0.0 && n.abs() < 1e15 => (*n as i64).into(),
+                    Value::Number(n) => Number::from_f64(*n).map_or(serde_json::Value::Null, Into::into),
+                    Value::Boolean(b) => (*b).into(),
+                    Value::Text(t) => t.clone().into(),
+                };
+                (name.to_string(), v)
+            })
+            .collect();
+        let document =
+            json!({ "format": FORMAT, "version": VERSION, "spheres": spheres, "settings": settings });
+        serde_json::to_string_pretty(&document).expect("a scene always serialises")
+    }
+
+    /// A setting's value, if the scene holds it.
+    pub fn setting(&self, name: &str) -> Option<&Value> {
+        self.settings.iter().find(|(n, _)| *n == name).map(|(_, v)| v)
+    }
+
+    /// `base` with every setting of this scene the renderer takes (the animation's speed and pause
+    /// belong to the page, and are left out), and the sphere count of this scene.
+    pub fn applied_to(&self, base: crate::Settings) -> Result<crate::Settings, SceneError> {
+        let mut settings = crate::Settings { sphere_count: self.spheres.len() as u32, ..base };
+        for (name, value) in &self.settings {
+            if matches!(*name, "speed" | "paused") {
+                continue;
+            }
+            let text = match value {
+                Value::Number(n) => n.to_string(),
+                Value::Boolean(b) => b.to_string(),
+                Value::Text(t) => t.clone(),
+            };
+            settings =
+                settings.with_parameter(name, &text).map_err(|e| at(&format!("settings.{name}"), e))?;
+        }
+        Ok(settings)
+    }
+}
+
+/// An f32 as the JSON number with the shortest decimal text that reads back as the same f32.
+fn short(x: f32) -> serde_json::Value {
+    let text = x.to_string();
+    text.parse::<f64>().ok().and_then(Number::from_f64).map_or(serde_json::Value::Null, Into::into)
+}

@@ -1,0 +1,158 @@
+//! One sphere of the field, the checks every sphere passes (wherever it comes from: a layout, a hand
+//! edit, a scene file, a link), and the compact text form of a sphere list that links carry.
+
+use super::checks::{ParamError, check_f32, check_u32};
+use glam::Vec3;
+use std::fmt;
+
+/// Half the width of the cubic box the spheres move in; the box spans `[-BOX_HALF_EXTENT, BOX_HALF_EXTENT]`
+/// on every axis.
+pub const BOX_HALF_EXTENT: f32 = 1.0;
+
+/// The most spheres a scene holds; raise it here and every buffer follows.
+pub const MAX_SPHERES: u32 = 64;
+/// Smallest and largest sphere radius accepted (the centre must keep the sphere inside the box).
+pub const RADIUS_RANGE: (f32, f32) = (0.01, BOX_HALF_EXTENT);
+/// Largest speed along each axis accepted, box half-widths per second.
+pub const MAX_VELOCITY: f32 = 100.0;
+
+/// One sphere of the field: it adds `radius² / |p − center|²` at every point `p`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sphere {
+    pub center: Vec3,
+    pub radius: f32,
+    /// Box half-widths per second.
+    pub velocity: Vec3,
+}
+
+impl Sphere {
+    /// Centre and radius packed as the GPU reads them.
+    pub fn to_gpu(&self) -> [f32; 4] {
+        [self.center.x, self.center.y, self.center.z, self.radius]
+    }
+}
+
+/// A refused scene document or sphere list: which field, and what is wrong with its value.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SceneError(pub String);
+
+impl fmt::Display for SceneError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for SceneError {}
+
+pub(crate) fn at(field: &str, error: ParamError) -> SceneError {
+    SceneError(format!("{field}: {error}"))
+}
+
+/// Checks one sphere: radius in range, centre keeping it inside the box, finite bounded velocity.
+pub fn check_sphere(field: &str, sphere: Sphere) -> Result<Sphere, SceneError> {
+    let (min, max) = RADIUS_RANGE;
+    check_f32("sphere radius", sphere.radius, min, max).map_err(|e| at(&format!("{field}.radius"), e))?;
+    let limit = BOX_HALF_EXTENT - sphere.radius;
+    for (axis, c) in sphere.center.to_array().into_iter().enumerate() {
+        check_f32("centre coordinate (inside the box for this radius)", c, -limit, limit)
+            .map_err(|e| at(&format!("{field}.center[{axis}]"), e))?;
+    }
+    for (axis, v) in sphere.velocity.to_array().into_iter().enumerate() {
+        check_f32("velocity", v, -MAX_VELOCITY, MAX_VELOCITY)
+            .map_err(|e| at(&format!("{field}.velocity[{axis}]"), e))?;
+    }
+    Ok(sphere)
+}
+
+/// Checks a sphere count.
+pub fn check_sphere_count(count: u32) -> Result<u32, ParamError> {
+    check_u32("sphere count", count, 1, MAX_SPHERES)
+}
+
+pub(crate) fn check_count(field: &str, count: usize) -> Result<(), SceneError> {
+    if count == 0 || count > MAX_SPHERES as usize {
+        return Err(SceneError(format!("{field}: a scene holds 1 to {MAX_SPHERES} spheres, got {count}")));
+    }
+    Ok(())
+}
+
+/// The compact form of spheres in links: `x,y,z,r` (a still sphere) or `x,y,z,r,vx,vy,vz`, joined by
+/// `;`, positions to 3 decimals and speeds to 2.
+pub fn spheres_text(spheres: &[Sphere]) -> String {
+    let n = |x: f32, places: usize| {
+        let t = format!("{x:.places$}");
+        let t = t.trim_end_matches('0').trim_end_matches('.');
+        if t == "-0" || t.is_empty() { "0".to_string() } else { t.to_string() }
+    };
+    spheres
+        .iter()
+        .map(|s| {
+            let mut parts: Vec<String> = s.center.to_array().iter().map(|&c| n(c, 3)).collect();
+            parts.push(n(s.radius, 3));
+            let v: Vec<String> = s.velocity.to_array().iter().map(|&c| n(c, 2)).collect();
+            if v.iter().any(|c| c != "0") {
+                parts.extend(v);
+            }
+            parts.join(",")
+        })
+        .collect::<Vec<_>>()
+        .join(";")
+}
+
+/// Reads the compact form written by [`spheres_text`]; every sphere is checked as in a document.
+pub fn parse_spheres_text(text: &str) -> Result<Vec<Sphere>, SceneError> {
+    let groups: Vec<&str> = text.split(';').map(str::trim).filter(|g| !g.is_empty()).collect();
+    check_count("balls", groups.len())?;
+    groups
+        .iter()
+        .enumerate()
+        .map(|(i, group)| {
+            let field = format!("balls sphere {}", i + 1);
+            let numbers = group
+                .split(',')
+                .map(|t| {
+                    t.trim()
+                        .parse::<f32>()
+                        .map_err(|_| SceneError(format!("{field}: {:?} is not a number", t.trim())))
+                })
+                .collect::<Result<Vec<f32>, _>>()?;
+            let s = match numbers[..] {
+                [x, y, z, r] => Sphere { center: Vec3::new(x, y, z), radius: r, velocity: Vec3::ZERO },
+                [x, y, z, r, vx, vy, vz] => {
+                    Sphere { center: Vec3::new(x, y, z), radius: r, velocity: Vec3::new(vx, vy, vz) }
+                }
+                _ => {
+                    return Err(SceneError(format!(
+                        "{field}: expected x,y,z,radius or x,y,z,radius,vx,vy,vz, got {} numbers",
+                        numbers.len()
+                    )));
+                }
+            };
+            check_sphere(&field, s)
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_compact_form_reads_back_to_its_precision() {
+        let spheres = vec![
+            Sphere { center: Vec3::new(-0.3, 0.1234, 0.0), radius: 0.35, velocity: Vec3::ZERO },
+            Sphere { center: Vec3::new(0.4, -0.2, 0.25), radius: 0.3, velocity: Vec3::new(0.5, -0.25, 0.0) },
+        ];
+        let text = spheres_text(&spheres);
+        assert_eq!(text, "-0.3,0.123,0,0.35;0.4,-0.2,0.25,0.3,0.5,-0.25,0");
+        let back = parse_spheres_text(&text).unwrap();
+        assert_eq!(back.len(), 2);
+        assert!((back[0].center - spheres[0].center).abs().max_element() < 1e-3);
+        assert_eq!(back[1].velocity, spheres[1].velocity);
+        let e = parse_spheres_text("0,0,0,0.3;0.9,0,0,0.3").unwrap_err().to_string();
+        assert!(e.contains("balls sphere 2.center[0]") && e.contains("got 0.9"), "{e}");
+        assert!(parse_spheres_text("0,0,0").unwrap_err().to_string().contains("got 3 numbers"));
+        assert!(parse_spheres_text("0,0,x,1").unwrap_err().to_string().contains("\"x\" is not a number"));
+        assert!(parse_spheres_text("").is_err());
+    }
+}

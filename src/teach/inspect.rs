@@ -1,0 +1,207 @@
+//! The cell inspector: which cell a ray from the eye meets first among those the surface crosses, and
+//! for one cell everything marching cubes decides there — its corner values and signs, its case and
+//! class, the triangles the case emits, and where each crossed edge's vertex lands. Computed on the CPU
+//! from the spheres with the oracle's field, on a click and for the selected cell only: nothing is
+//! read back from the GPU.
+
+use crate::extract::reference::{Construction, Grid, blended_field_at};
+use crate::extract::tables::{CORNER_OFFSETS, EDGE_CORNERS, EDGE_TABLE, TRI_TABLE};
+use crate::scene::Sphere;
+use crate::teach::case_classes::case_classes;
+use glam::{UVec3, Vec3};
+
+/// One crossed edge of the inspected cell.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct EdgeCrossing {
+    /// Edge number (0..11, src/tables.rs).
+    pub edge: u8,
+    /// Where on the edge, from its first corner (`EDGE_CORNERS`) to its second.
+    pub t: f32,
+    /// The vertex, in world space.
+    pub vertex: Vec3,
+}
+
+/// What marching cubes decides in one cell.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CellReport {
+    /// Grid coordinates of the cell's lowest corner.
+    pub cell: UVec3,
+    /// f at the eight corners, numbered as in src/tables.rs (points on the box's faces read 0).
+    pub corners: [f32; 8],
+    /// Bit c set when corner c is inside (f > iso).
+    pub case: u8,
+    /// Its class among the 15 (src/case_classes.rs).
+    pub class: u8,
+    /// The triangles the case emits, as edge numbers, wound as drawn.
+    pub triangles: Vec<[u8; 3]>,
+    pub edges: Vec<EdgeCrossing>,
+}
+
+/// Inspects `cell` (its coordinates must be below `grid.cells_per_axis`).
+pub fn inspect(
+    spheres: &[Sphere],
+    iso: f32,
+    grid: Grid,
+    construction: Construction,
+    cell: UVec3,
+) -> CellReport {
+    let point = |c: usize| cell + UVec3::from_array(CORNER_OFFSETS[c]);
+    let corners: [f32; 8] = std::array::from_fn(|c| {
+        let id = point(c);
+        if grid.is_boundary(id) { 0.0 } else { blended_field_at(spheres, grid.point(id), construction.blend) }
+    });
+    let case = (0..8).fold(0u8, |m, c| m | ((corners[c] > iso) as u8) << c);
+    let triangles = TRI_TABLE[case as usize]
+        .chunks(3)
+        .take_while(|t| t[0] >= 0)
+        .map(|t| [t[0] as u8, t[2] as u8, t[1] as u8])
+        .collect();
+    let edges = (0..12)
+        .filter(|&e| EDGE_TABLE[case as usize] >> e & 1 == 1)
+        .map(|e| {
+            let [a, b] = EDGE_CORNERS[e];
+            let t = construction.edge_parameter(iso, corners[a], corners[b]);
+            let (pa, pb) = (grid.point(point(a)), grid.point(point(b)));
+            EdgeCrossing { edge: e as u8, t, vertex: pa + (pb - pa) * t }
+        })
+        .collect();
+    CellReport { cell, corners, case, class: case_classes()[case as usize], triangles, edges }
+}
+
+/// What a ray picks.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Target {
+    /// The cell whose triangles the ray meets first: the surface under the pointer.
+    Surface,
+    /// The first cell the ray enters among those the surface crosses: the box under the pointer in the
+    /// cells view.
+    CrossedCell,
+}
+
+/// The sphere whose term dominates the field at `point` (where a ray met the surface): the sphere a
+/// person points at, also where several have merged.
+pub fn dominant_sphere(spheres: &[Sphere], point: Vec3) -> Option<usize> {
+    let influence = |s: &Sphere| s.radius * s.radius / (point - s.center).length_squared().max(1e-12);
+    (0..spheres.len()).max_by(|&a, &b| influence(&spheres[a]).total_cmp(&influence(&spheres[b])))
+}
+
+/// The cell the ray from `origin` towards `direction` picks, walking the grid cell by cell through the
+/// cells the surface crosses, and the point picked: where the ray meets the surface, or (crossed cells)
+/// the centre of the cell it enters. `None` when it meets no `target`.
+pub fn pick(
+    spheres: &[Sphere],
+    iso: f32,
+    grid: Grid,
+    construction: Construction,
+    origin: Vec3,
+    direction: Vec3,
+    target: Target,
+) -> Option<(UVec3, Vec3)> {
+    let n = grid.cells_per_axis as f32;
+    // In grid units: the box spans [0, n]³.
+    let start = (origin - grid.point(UVec3::ZERO)) / grid.cell_size();
+    let dir = direction.normalize_or_zero();
+    let inverse = dir.recip();
+    let (t0, t1) = (-start * inverse, (Vec3::splat(n) - start) * inverse);
+    let enter = t0.min(t1).max_element().max(0.0);
+    let exit = t0.max(t1).min_element();
+    if enter.partial_cmp(&exit) != Some(std::cmp::Ordering::Less) {
+        return None;
+    }
+    let p = start + dir * (enter + 1e-4);
+    let mut cell = p.floor().clamp(Vec3::ZERO, Vec3::splat(n - 1.0));
+    let step = dir.signum();
+    let next_boundary = cell + step.max(Vec3::ZERO);
+    let mut t_max = (next_boundary - start) * inverse;
+    let t_delta = inverse.abs();
+    for _ in 0..3 * grid.cells_per_axis + 3 {
+        let id = cell.as_uvec3();
+        let report = inspect(spheres, iso, grid, construction, id);
+        let vertex = |e: u8| report.edges.iter().find(|c| c.edge == e).map(|c| c.vertex);
+        let crossed = report.case != 0 && report.case != 255;
+        if crossed && target == Target::CrossedCell {
+            return Some((id, grid.point(id) + Vec3::splat(0.5 * grid.cell_size())));
+        }
+        let nearest = report
+            .triangles
+            .iter()
+            .filter_map(|t| {
+                let [a, b, c] = t.map(|e| vertex(e).expect("a triangle's edges are crossed"));
+                ray_triangle(origin, dir, [a, b, c])
+            })
+            .min_by(f32::total_cmp);
+        if let Some(t) = nearest {
+            return Some((id, origin + dir * t));
+        }
+        let axis = if t_max.x < t_max.y && t_max.x < t_max.z {
+            0
+        } else if t_max.y < t_max.z {
+            1
+        } else {
+            2
+        };
+        if t_max[axis] > exit {
+            return None;
+        }
+        cell[axis] += step[axis];
+        if cell[axis] < 0.0 || cell[axis] >= n {
+            return None;
+        }
+        t_max[axis] += t_delta[axis];
+    }
+    None
+}
+
+/// Möller–Trumbore: the distance along the ray (unit `direction`) to triangle `[a, b, c]`, if it
+/// meets it in front of `origin`.
+pub fn ray_triangle(origin: Vec3, direction: Vec3, [a, b, c]: [Vec3; 3]) -> Option<f32> {
+    let (e1, e2) = (b - a, c - a);
+    let p = direction.cross(e2);
+    let det = e1.dot(p);
+    if det.abs() < 1e-12 {
+        return None;
+    }
+    let s = origin - a;
+    let u = s.dot(p) / det;
+    let q = s.cross(e1);
+    let v = direction.dot(q) / det;
+    let t = e2.dot(q) / det;
+    (u >= 0.0 && v >= 0.0 && u + v <= 1.0 && t > 0.0).then_some(t)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_ray_at_a_sphere_picks_a_crossed_cell_on_its_near_side() {
+        let spheres = [Sphere { center: Vec3::ZERO, radius: 0.5, velocity: Vec3::ZERO }];
+        let grid = Grid { cells_per_axis: 16 };
+        let origin = Vec3::new(0.03, 0.02, 3.0);
+        let (cell, point) =
+            pick(&spheres, 1.0, grid, Construction::default(), origin, -Vec3::Z, Target::Surface)
+                .expect("the ray meets the sphere");
+        assert!((point.length() - 0.5).abs() < 0.02 && point.z > 0.4, "the near side: {point}");
+        let first = pick(&spheres, 1.0, grid, Construction::default(), origin, -Vec3::Z, Target::CrossedCell);
+        assert!(
+            first.is_some_and(|(c, _)| c.z >= cell.z),
+            "the first crossed cell is no farther than the surface"
+        );
+        let report = inspect(&spheres, 1.0, grid, Construction::default(), cell);
+        assert!(report.case != 0 && report.case != 255);
+        // The near side: the cell holds z ≈ +0.5.
+        assert!((grid.point(cell).z - 0.5).abs() <= grid.cell_size(), "{cell}");
+        for e in &report.edges {
+            assert!((0.0..=1.0).contains(&e.t));
+            assert!((e.vertex.length() - 0.5).abs() < 0.02, "vertex {} near the sphere", e.vertex);
+        }
+        assert_eq!(
+            report.triangles.len() as u8,
+            crate::extract::tables::CASE_TRIANGLES[report.case as usize]
+        );
+        let miss = Vec3::new(0.9, 0.9, 3.0);
+        for target in [Target::Surface, Target::CrossedCell] {
+            assert_eq!(pick(&spheres, 1.0, grid, Construction::default(), miss, -Vec3::Z, target), None);
+        }
+    }
+}

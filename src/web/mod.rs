@@ -1,0 +1,421 @@
+//! The browser side: a `Gpu` (one adapter, device and pipeline set, shared by every view on a page) and
+//! a `View` (one canvas with its own renderer, scene and buffers). Every setter validates and returns an
+//! error with a message for the page to show; a refused value leaves the view running as it was.
+
+use crate::scene::Scene;
+use crate::scene::params::{self, Camera, Kind, PARAMETERS, Value};
+use crate::{FrameStats, Renderer, Settings, Sphere};
+use glam::Vec3;
+use std::cell::RefCell;
+use std::rc::Rc;
+use wasm_bindgen::prelude::*;
+use web_sys::HtmlCanvasElement;
+
+mod editing;
+mod gpu;
+mod teaching;
+
+pub use gpu::Gpu;
+
+#[wasm_bindgen]
+extern "C" {
+    /// Reports a panic to the page (defined by the page's script before the module starts).
+    #[wasm_bindgen(js_namespace = globalThis, js_name = metaballsShowPanic)]
+    fn show_panic(message: &str);
+}
+
+#[wasm_bindgen(start)]
+fn start() {
+    std::panic::set_hook(Box::new(|info| {
+        console_error_panic_hook::hook(info);
+        show_panic(&info.to_string());
+    }));
+}
+
+/// Resolves in a later browser task (a zero-delay timer), letting the browser run in between.
+async fn next_task() {
+    let promise = js_sys::Promise::new(&mut |resolve, _| {
+        if let Some(window) = web_sys::window() {
+            let _ = window.set_timeout_with_callback_and_timeout_and_arguments_0(&resolve, 0);
+        }
+    });
+    let _ = wasm_bindgen_futures::JsFuture::from(promise).await;
+}
+
+/// Polls a WebGL2 device between browser tasks until dropped, so that buffer mappings and
+/// submitted-work callbacks on it resolve (WebGPU resolves them by itself; nothing is polled there).
+struct Polling(Rc<std::cell::Cell<bool>>);
+
+impl Polling {
+    fn start(device: &wgpu::Device) -> Polling {
+        let stop = Rc::new(std::cell::Cell::new(false));
+        if !crate::device::has_compute(device) {
+            let (device, stop) = (device.clone(), stop.clone());
+            wasm_bindgen_futures::spawn_local(async move {
+                while !stop.get() {
+                    let _ = device.poll(wgpu::PollType::Poll);
+                    next_task().await;
+                }
+            });
+        }
+        Polling(stop)
+    }
+}
+
+impl Drop for Polling {
+    fn drop(&mut self) {
+        self.0.set(true);
+    }
+}
+
+/// Spheres as the page passes them: 7 numbers each (centre, radius, velocity).
+fn pack_spheres(spheres: &[Sphere]) -> Vec<f32> {
+    spheres
+        .iter()
+        .flat_map(|s| {
+            [s.center.x, s.center.y, s.center.z, s.radius, s.velocity.x, s.velocity.y, s.velocity.z]
+        })
+        .collect()
+}
+
+fn unpack_spheres(packed: &[f32]) -> Result<Vec<Sphere>, JsError> {
+    if !packed.len().is_multiple_of(7) {
+        return Err(js_error("spheres come as 7 numbers each (centre, radius, velocity)"));
+    }
+    Ok(packed
+        .chunks(7)
+        .map(|s| Sphere {
+            center: Vec3::new(s[0], s[1], s[2]),
+            radius: s[3],
+            velocity: Vec3::new(s[4], s[5], s[6]),
+        })
+        .collect())
+}
+
+fn js_error(error: impl std::fmt::Display) -> JsError {
+    JsError::new(&error.to_string())
+}
+
+/// The parameter table (name, short name in links, label, kind, accepted range, slider, default), for
+/// the page and the element to build their attributes, URL parsing and controls from.
+#[wasm_bindgen]
+pub fn parameters() -> js_sys::Array {
+    let set = |object: &js_sys::Object, key: &str, value: JsValue| {
+        let _ = js_sys::Reflect::set(object, &key.into(), &value);
+    };
+    PARAMETERS
+        .iter()
+        .map(|p| {
+            let object = js_sys::Object::new();
+            set(&object, "name", p.name.into());
+            set(&object, "url", p.url.into());
+            set(&object, "label", p.label.into());
+            let (kind, words): (&str, &[&str]) = match p.kind {
+                Kind::Integer => ("integer", &[]),
+                Kind::Number => ("number", &[]),
+                Kind::Boolean => ("boolean", &[]),
+                Kind::Color => ("color", &[]),
+                Kind::Choice(words) => ("choice", words),
+                Kind::List(words) => ("list", words),
+                Kind::Slice => ("slice", &[]),
+                Kind::Spheres => ("spheres", &[]),
+            };
+            set(&object, "kind", kind.into());
+            set(
+                &object,
+                "words",
+                words.iter().map(|w| JsValue::from_str(w)).collect::<js_sys::Array>().into(),
+            );
+            set(&object, "min", p.min.into());
+            set(&object, "max", p.max.into());
+            set(&object, "sliderMin", p.slider.0.into());
+            set(&object, "sliderMax", p.slider.1.into());
+            set(&object, "step", p.slider.2.into());
+            set(&object, "default", p.default.into());
+            JsValue::from(object)
+        })
+        .collect()
+}
+
+/// Reads `text` as the value of parameter `name` (or its short name in links): a number, a boolean or
+/// a string; throws with a message naming what is accepted.
+#[wasm_bindgen]
+pub fn parse_parameter(name: &str, text: &str) -> Result<JsValue, JsError> {
+    Ok(value_to_js(params::parse_parameter(name, text).map_err(js_error)?))
+}
+
+/// A parameter's value as the page holds it: a number, a boolean or a string.
+fn value_to_js(value: Value) -> JsValue {
+    match value {
+        Value::Number(v) => v.into(),
+        Value::Boolean(b) => b.into(),
+        Value::Text(s) => s.into(),
+    }
+}
+
+/// Figures from the GPU about a recent frame.
+#[wasm_bindgen]
+#[derive(Clone, Copy)]
+pub struct Stats {
+    /// Frame the figures are for.
+    pub frame: f64,
+    /// Triangles drawn.
+    pub triangles: u32,
+    /// Triangles the surface needed (more than `max_triangles` on overflow).
+    pub triangles_requested: u32,
+    /// Capacity of the index buffer in triangles.
+    pub max_triangles: u32,
+    /// True when triangles were dropped because the budget was full.
+    pub overflowed: bool,
+}
+
+impl From<FrameStats> for Stats {
+    fn from(s: FrameStats) -> Self {
+        Self {
+            frame: s.frame as f64,
+            triangles: s.triangles,
+            triangles_requested: s.triangles_requested,
+            max_triangles: s.max_triangles,
+            overflowed: s.overflowed(),
+        }
+    }
+}
+
+/// A view: one canvas, its renderer, scene and buffers, on a shared `Gpu`.
+#[wasm_bindgen]
+pub struct View {
+    renderer: Renderer,
+    surface: wgpu::Surface<'static>,
+    config: wgpu::SurfaceConfiguration,
+    device: wgpu::Device,
+    /// The first GPU error this view's frames raised (caught in error scopes around each frame).
+    error: Rc<RefCell<Option<String>>>,
+}
+
+#[wasm_bindgen]
+impl View {
+    /// Starts drawing on `canvas` (sized by the page beforehand) with the given scene settings;
+    /// material and camera follow through their setters.
+    pub fn create(
+        gpu: &Gpu,
+        canvas: HtmlCanvasElement,
+        spheres: u32,
+        iso: f32,
+        resolution: u32,
+        seed: u32,
+        antialiasing: bool,
+    ) -> Result<View, JsError> {
+        let (width, height) = (canvas.width().max(1), canvas.height().max(1));
+        let surface = gpu.surface_for(canvas)?;
+        let capabilities = surface.get_capabilities(&gpu.adapter);
+        let format =
+            *capabilities.formats.first().ok_or_else(|| js_error("the canvas offers no texture format"))?;
+        let device = gpu.context.device().clone();
+        let config = wgpu::SurfaceConfiguration {
+            usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
+            format,
+            width,
+            height,
+            present_mode: wgpu::PresentMode::Fifo,
+            desired_maximum_frame_latency: 2,
+            alpha_mode: wgpu::CompositeAlphaMode::Opaque,
+            view_formats: vec![],
+            color_space: wgpu::SurfaceColorSpace::Auto,
+        };
+        let settings = Settings {
+            sphere_count: spheres,
+            iso,
+            resolution,
+            seed: seed as u64,
+            antialiasing,
+            ..Settings::default()
+        };
+        let renderer =
+            Renderer::on_context(&gpu.context, format, width, height, settings).map_err(js_error)?;
+        surface.configure(&device, &config);
+        Ok(View { renderer, surface, config, device, error: Rc::default() })
+    }
+
+    /// Advances the animation by `dt` seconds and draws a frame on the canvas.
+    pub fn frame(&mut self, dt: f32) -> Result<(), JsError> {
+        self.renderer.update(dt).map_err(js_error)?;
+        let texture = match self.surface.get_current_texture() {
+            wgpu::CurrentSurfaceTexture::Success(t) | wgpu::CurrentSurfaceTexture::Suboptimal(t) => t,
+            wgpu::CurrentSurfaceTexture::Outdated | wgpu::CurrentSurfaceTexture::Lost => {
+                self.surface.configure(&self.device, &self.config);
+                return Ok(());
+            }
+            _ => return Ok(()),
+        };
+        let validation = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let memory = self.device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
+        let view = texture.texture.create_view(&wgpu::TextureViewDescriptor::default());
+        self.renderer.render(&view);
+        self.renderer.queue().present(texture);
+        let (memory, validation) = (memory.pop(), validation.pop());
+        let sink = self.error.clone();
+        wasm_bindgen_futures::spawn_local(async move {
+            let error = match memory.await {
+                Some(error) => Some(error),
+                None => validation.await,
+            };
+            if let Some(error) = error {
+                web_sys::console::error_1(&format!("GPU error: {error}").into());
+                sink.borrow_mut().get_or_insert(error.to_string());
+            }
+        });
+        Ok(())
+    }
+
+    /// Takes in the GPU's figures for past frames without drawing (a paused view).
+    pub fn poll(&mut self) {
+        self.renderer.poll_stats();
+    }
+
+    /// True when the next frame would differ even with nothing changed (the buffers are growing).
+    pub fn needs_redraw(&self) -> bool {
+        self.renderer.needs_redraw()
+    }
+
+    /// Follows a new canvas size in device pixels.
+    pub fn resize(&mut self, width: u32, height: u32) -> Result<(), JsError> {
+        self.renderer.resize(width, height).map_err(js_error)?;
+        if (width, height) != (self.config.width, self.config.height) {
+            self.config.width = width;
+            self.config.height = height;
+            self.surface.configure(&self.device, &self.config);
+        }
+        Ok(())
+    }
+
+    pub fn set_sphere_count(&mut self, count: u32) -> Result<(), JsError> {
+        self.renderer.set_sphere_count(count).map_err(js_error)
+    }
+
+    pub fn set_iso(&mut self, iso: f32) -> Result<(), JsError> {
+        self.renderer.set_iso(iso).map_err(js_error)
+    }
+
+    pub fn set_resolution(&mut self, cells_per_axis: u32) -> Result<(), JsError> {
+        self.renderer.set_resolution(cells_per_axis).map_err(js_error)
+    }
+
+    pub fn set_seed(&mut self, seed: u32) -> Result<(), JsError> {
+        self.renderer.set_seed(seed as u64).map_err(js_error)
+    }
+
+    /// Orbit angles in degrees and distance in box half-widths.
+    pub fn set_camera(&mut self, yaw: f32, pitch: f32, distance: f32) -> Result<(), JsError> {
+        let camera =
+            Camera { yaw_degrees: yaw, pitch_degrees: pitch, distance, ..self.renderer.settings().camera };
+        self.renderer.set_camera(camera).map_err(js_error)
+    }
+
+    pub fn set_shininess(&mut self, shininess: f32) -> Result<(), JsError> {
+        let material = crate::Material { shininess, ..self.renderer.settings().material };
+        self.renderer.set_material(material).map_err(js_error)
+    }
+
+    /// Base colour as linear RGB in [0, 1].
+    pub fn set_color(&mut self, r: f32, g: f32, b: f32) -> Result<(), JsError> {
+        let material =
+            crate::Material { base_color: Vec3::new(r, g, b), ..self.renderer.settings().material };
+        self.renderer.set_material(material).map_err(js_error)
+    }
+
+    /// 4× multisampling on or off (software adapters draw much faster without it).
+    pub fn set_antialiasing(&mut self, on: bool) -> Result<(), JsError> {
+        self.renderer.set_antialiasing(on).map_err(js_error)
+    }
+
+    /// The spheres as they are now, 7 numbers each (centre, radius, velocity), so a view rebuilt on a
+    /// new device carries on from where it was.
+    pub fn spheres(&self) -> Vec<f32> {
+        pack_spheres(self.renderer.scene().spheres())
+    }
+
+    /// Puts back spheres saved by `spheres`.
+    pub fn set_spheres(&mut self, packed: Vec<f32>) -> Result<(), JsError> {
+        let spheres = unpack_spheres(&packed)?;
+        let seed = self.renderer.settings().seed;
+        let scene = Scene::from_spheres(spheres).map_err(js_error)?.with_seed(seed);
+        self.renderer.set_scene(scene);
+        Ok(())
+    }
+
+    /// Where the latest frame's mesh came from: `gpu` (compute passes) or `cpu` (the CPU mesher).
+    pub fn mesh_source(&self) -> String {
+        self.renderer.mesh_source().into()
+    }
+
+    /// Runs mesh generation alone (no drawing), for the benchmark.
+    pub fn extract(&mut self) {
+        self.renderer.extract();
+    }
+
+    /// A promise that resolves when the GPU has finished all work submitted so far. WebGPU reports it
+    /// by itself; a WebGL2 device is polled (between browser tasks) until it does.
+    pub fn work_done(&self) -> js_sys::Promise {
+        let (sender, receiver) = futures_channel::oneshot::channel::<()>();
+        self.renderer.queue().on_submitted_work_done(move || {
+            let _ = sender.send(());
+        });
+        let polling = Polling::start(&self.device);
+        wasm_bindgen_futures::future_to_promise(async move {
+            let _polling = polling;
+            receiver.await.map_err(|_| JsValue::from_str("the GPU queue was dropped"))?;
+            Ok(JsValue::UNDEFINED)
+        })
+    }
+
+    /// Active blocks and cells of the newest figures, as fractions of the grid: [blocks, cells].
+    pub fn active_fractions(&self) -> Vec<f64> {
+        self.renderer.stats().map_or(vec![0.0, 0.0], |s| {
+            vec![
+                s.active_blocks as f64 / s.total_blocks.max(1) as f64,
+                s.active_cells as f64 / s.total_cells.max(1) as f64,
+            ]
+        })
+    }
+
+    /// GPU memory held by the mesh buffers, in bytes.
+    pub fn mesh_bytes(&self) -> f64 {
+        self.renderer.mesh_bytes() as f64
+    }
+
+    /// GPU memory held by this view's buffers and targets, in bytes.
+    pub fn gpu_bytes(&self) -> f64 {
+        self.renderer.gpu_bytes() as f64
+    }
+
+    /// The newest figures the GPU reported, if any yet.
+    pub fn stats(&self) -> Option<Stats> {
+        self.renderer.stats().map(Stats::from)
+    }
+
+    /// The first GPU error this view's frames raised, if any.
+    pub fn gpu_error(&self) -> Option<String> {
+        self.error.borrow().clone()
+    }
+
+    /// The largest resolution this device holds.
+    pub fn max_resolution(&self) -> u32 {
+        self.renderer.max_resolution()
+    }
+
+    pub fn sphere_count(&self) -> u32 {
+        self.renderer.settings().sphere_count
+    }
+
+    pub fn iso(&self) -> f32 {
+        self.renderer.settings().iso
+    }
+
+    pub fn resolution(&self) -> u32 {
+        self.renderer.settings().resolution
+    }
+
+    pub fn seed(&self) -> u32 {
+        self.renderer.settings().seed as u32
+    }
+}
