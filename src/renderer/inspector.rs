@@ -1,8 +1,8 @@
 //! What the teaching views ask of the renderer: options by name, and picking and inspecting a cell.
 
 use super::Renderer;
-use crate::ParamError;
 use crate::extract::reference::Construction;
+use crate::scene::params::ParamError;
 use crate::scene::params::view::GridView;
 use crate::teach::inspect::{self, CellReport, Target};
 use glam::UVec3;

@@ -2,11 +2,11 @@
 //! the lights and the view options for the shading and the teaching views.
 
 use super::Renderer;
-use crate::Settings;
 use crate::draw::uniforms::{LightUniform, ShadingUniform};
 use crate::draw::views;
 use crate::extract::uniforms::GridUniform;
 use crate::scene::BOX_HALF_EXTENT;
+use crate::scene::params::Settings;
 use crate::scene::params::view::{Blend, Interpolation, Projection};
 use glam::{Mat4, UVec3, Vec3};
 

@@ -11,7 +11,7 @@
 //!   "settings": { "iso": 1, "resolution": 64, "color": "#e77661", "yaw": 30 } }
 //! ```
 
-use super::params::{Value, parameter};
+use super::params::{Settings, Value, parameter};
 use super::sphere::{SceneError, Sphere, at, check_count, check_sphere};
 use glam::Vec3;
 use serde_json::{Map, Number, json};
@@ -48,8 +48,8 @@ pub fn check_size(bytes: u64) -> Result<(), SceneError> {
 }
 
 /// The parameters a scene document holds, in table order.
-pub fn scene_parameters() -> impl Iterator<Item = &'static crate::scene::params::Parameter> {
-    crate::scene::params::PARAMETERS.iter().filter(|p| !NOT_IN_SCENE.contains(&p.name))
+pub fn scene_parameters() -> impl Iterator<Item = &'static super::params::Parameter> {
+    super::params::PARAMETERS.iter().filter(|p| !NOT_IN_SCENE.contains(&p.name))
 }
 
 /// Describes a JSON value for messages: short values whole, long ones by kind.
@@ -233,8 +233,8 @@ impl SceneFile {
 
     /// `base` with every setting of this scene the renderer takes (the animation's speed and pause
     /// belong to the page, and are left out), and the sphere count of this scene.
-    pub fn applied_to(&self, base: crate::Settings) -> Result<crate::Settings, SceneError> {
-        let mut settings = crate::Settings { sphere_count: self.spheres.len() as u32, ..base };
+    pub fn applied_to(&self, base: Settings) -> Result<Settings, SceneError> {
+        let mut settings = Settings { sphere_count: self.spheres.len() as u32, ..base };
         for (name, value) in &self.settings {
             if matches!(*name, "speed" | "paused") {
                 continue;

@@ -3,6 +3,7 @@
 
 pub mod conditioning;
 pub mod pictures;
+pub mod scenes;
 
 #[allow(unused_imports)]
 pub use conditioning::*;

@@ -341,7 +341,7 @@ pub fn parse_parameter(name: &str, text: &str) -> Result<Value, ParamError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::Settings;
+    use crate::scene::params::Settings;
 
     #[test]
     fn every_default_in_the_table_parses() {

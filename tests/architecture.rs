@@ -1,0 +1,144 @@
+//! The layout's rules, checked on the source: each folder of `src/` imports only the folders below it
+//! (`docs/architecture.md`), the scene's modules import in one direction, the extractors do not know
+//! each other, and the scene and the tables know nothing of wgpu.
+#![cfg(not(target_arch = "wasm32"))]
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+/// The folders of `src/`, lowest first; a folder may import its own and those before it. Modules at
+/// the top of `src/` (the native tools, `lib.rs`, `main.rs`) and `web/` may import any.
+const LAYERS: &[&str] = &["scene", "device", "extract", "teach", "draw", "renderer"];
+const SHELLS: &[&str] = &["web"];
+/// The scene's modules, in the only order they may import each other.
+const SCENE_ORDER: &[&str] = &["checks", "sphere", "params", "motion", "file"];
+
+fn sources(dir: &Path, found: &mut Vec<PathBuf>) {
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let path = entry.unwrap().path();
+        if path.is_dir() {
+            sources(&path, found);
+        } else if path.extension().is_some_and(|e| e == "rs") {
+            found.push(path);
+        }
+    }
+}
+
+/// Every source file under `src/`, relative to it, with its code (line comments removed).
+fn code() -> BTreeMap<String, String> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut files = Vec::new();
+    sources(&root, &mut files);
+    files
+        .into_iter()
+        .map(|path| {
+            let text = std::fs::read_to_string(&path).unwrap();
+            let code: Vec<&str> = text.lines().map(|l| l.split("//").next().unwrap_or("")).collect();
+            (path.strip_prefix(&root).unwrap().to_string_lossy().replace('\\', "/"), code.join("\n"))
+        })
+        .collect()
+}
+
+/// The names that follow `prefix` in `code` (`crate::` → the top modules it names).
+fn named_after<'a>(code: &'a str, prefix: &str) -> Vec<&'a str> {
+    code.match_indices(prefix)
+        .filter(|(at, _)| !code[..*at].ends_with(|c: char| c.is_alphanumeric() || c == '_' || c == ':'))
+        .map(|(at, _)| {
+            let rest = &code[at + prefix.len()..];
+            let end =
+                rest.find(|c: char| !(c.is_alphanumeric() || c == '_' || c == '{')).unwrap_or(rest.len());
+            &rest[..end]
+        })
+        .collect()
+}
+
+fn layer_of(file: &str) -> Option<usize> {
+    let top = file.split('/').next()?;
+    LAYERS.iter().position(|&l| l == top)
+}
+
+#[test]
+fn each_folder_imports_only_the_folders_below_it() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    for entry in std::fs::read_dir(&root).unwrap() {
+        let path = entry.unwrap().path();
+        if path.is_dir() {
+            let name = path.file_name().unwrap().to_string_lossy().to_string();
+            assert!(
+                LAYERS.contains(&name.as_str()) || SHELLS.contains(&name.as_str()),
+                "src/{name}/ has no place among the layers: add it here and to docs/architecture.md"
+            );
+        }
+    }
+    let mut violations = Vec::new();
+    for (file, code) in code() {
+        let Some(own) = layer_of(&file) else { continue };
+        for name in named_after(&code, "crate::") {
+            if name.starts_with('{') {
+                violations.push(format!("{file}: imports through the crate root (crate::{{…}})"));
+                continue;
+            }
+            match LAYERS.iter().position(|&l| l == name) {
+                Some(target) if target <= own => {}
+                _ => violations.push(format!("{file} ({}) imports crate::{name}", LAYERS[own])),
+            }
+        }
+    }
+    assert!(violations.is_empty(), "imports against the layering:\n{}", violations.join("\n"));
+}
+
+#[test]
+fn the_scene_modules_import_in_one_direction() {
+    let rank = |name: &str| SCENE_ORDER.iter().position(|&m| m == name);
+    let mut violations = Vec::new();
+    for (file, code) in code() {
+        let Some(rest) = file.strip_prefix("scene/") else { continue };
+        let module = rest.split(['/', '.']).next().unwrap();
+        let Some(own) = rank(module) else { continue };
+        // `super::` from scene/x.rs or scene/params/mod.rs names a scene module; from deeper files
+        // (scene/params/table.rs) it names their own module.
+        let depth = rest.matches('/').count();
+        let mut named: Vec<&str> = named_after(&code, "crate::scene::");
+        if depth == 0 || rest.ends_with("/mod.rs") {
+            named.extend(named_after(&code, "super::"));
+        }
+        for name in named {
+            if let Some(target) = rank(name)
+                && target > own
+            {
+                violations.push(format!("{file} ({module}) imports {name}, which comes after it"));
+            }
+        }
+    }
+    assert!(violations.is_empty(), "the scene's modules import in a loop:\n{}", violations.join("\n"));
+}
+
+#[test]
+fn extractors_do_not_know_each_other_and_the_scene_knows_no_gpu() {
+    for (file, code) in code() {
+        if file.starts_with("extract/cpu/") {
+            assert!(named_after(&code, "gpu::").is_empty(), "{file} names the GPU extractor");
+        }
+        if file.starts_with("extract/gpu/") {
+            assert!(named_after(&code, "cpu::").is_empty(), "{file} names the CPU extractor");
+        }
+        let plain = file.starts_with("scene/")
+            || ["extract/tables.rs", "extract/reference.rs", "extract/mesh.rs", "extract/cpu/mesher.rs"]
+                .contains(&file.as_str());
+        if plain {
+            assert!(!code.contains("wgpu"), "{file} uses wgpu");
+        }
+    }
+}
+
+#[test]
+fn the_architecture_page_names_every_folder() {
+    let page = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/architecture.md"))
+        .expect("docs/architecture.md");
+    for folder in LAYERS.iter().chain(SHELLS) {
+        assert!(page.contains(&format!("src/{folder}/")), "docs/architecture.md does not name src/{folder}/");
+    }
+    for folder in ["shaders/extract/", "shaders/draw/", "shaders/draw/views/"] {
+        assert!(page.contains(folder), "docs/architecture.md does not name {folder}");
+    }
+}

@@ -1,0 +1,72 @@
+//! The scenes every extractor is held to against the oracle: the seeded random draws of the GPU and
+//! CPU tests, spheres against the walls, overlapping and on a grid point at extreme iso levels, with
+//! both vertex placements and both blends.
+
+use super::sphere;
+use metaballs::extract::reference::Construction;
+use metaballs::scene::params::view::{Blend, Interpolation};
+use metaballs::{Scene, Sphere};
+use rand::{RngExt, SeedableRng};
+
+/// One extraction problem, named for messages.
+pub struct OracleScene {
+    pub what: String,
+    pub spheres: Vec<Sphere>,
+    pub iso: f32,
+    pub resolution: u32,
+    pub construction: Construction,
+}
+
+/// `random` seeded random scenes (the generator of `tests/gpu_matches_oracle.rs`), then the walls,
+/// overlaps and grid-point scenes at five iso levels, two placements and two blends.
+pub fn oracle_scenes(random: usize) -> Vec<OracleScene> {
+    let mut scenes = Vec::new();
+    let mut rng = rand_pcg::Pcg32::seed_from_u64(0x6d65_7461);
+    for case in 0..random {
+        let count = rng.random_range(1..=64);
+        let resolution = rng.random_range(8..=48);
+        let iso = 10f32.powf(rng.random_range(-1.0..1.0));
+        let seed = rng.random_range(0..1_000_000);
+        let time = rng.random_range(0.0..20.0);
+        let mut scene = Scene::new(seed, count).unwrap();
+        scene.step(time).unwrap();
+        scenes.push(OracleScene {
+            what: format!("case {case}: seed {seed}, {count} spheres, {resolution} cells, iso {iso}"),
+            spheres: scene.spheres().to_vec(),
+            iso,
+            resolution,
+            construction: Construction::default(),
+        });
+    }
+    let touching_walls = vec![
+        sphere([-0.7, 0.0, 0.0], 0.3),
+        sphere([0.0, 0.75, 0.0], 0.25),
+        sphere([0.55, -0.55, 0.55], 0.45),
+    ];
+    let overlapping = vec![
+        sphere([0.0, 0.0, 0.0], 0.3),
+        sphere([0.05, 0.0, 0.0], 0.3),
+        sphere([0.0, 0.0, 0.0], 0.2),
+        sphere([0.2, 0.1, -0.1], 0.25),
+    ];
+    // At 32 cells the origin is a grid point, where |p - c| = 0.
+    let on_grid_point = vec![sphere([0.0, 0.0, 0.0], 0.4)];
+    for (name, spheres) in
+        [("touching walls", touching_walls), ("overlapping", overlapping), ("on a grid point", on_grid_point)]
+    {
+        for iso in [0.05, 0.3, 1.0, 4.0, 20.0] {
+            for interpolation in [Interpolation::Linear, Interpolation::Midpoint] {
+                for blend in [Blend::Sum, Blend::Max] {
+                    scenes.push(OracleScene {
+                        what: format!("{name}, iso {iso}, {interpolation:?}, {blend:?}"),
+                        spheres: spheres.clone(),
+                        iso,
+                        resolution: 32,
+                        construction: Construction { interpolation, blend },
+                    });
+                }
+            }
+        }
+    }
+    scenes
+}

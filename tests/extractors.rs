@@ -1,0 +1,67 @@
+//! Every extractor in `extract::EXTRACTORS`, run through the renderer, against the CPU oracle on the
+//! scenes the GPU and CPU tests use. A new extractor added to that list is held to the same scenes
+//! without a line here.
+#![cfg(not(target_arch = "wasm32"))]
+
+mod common;
+
+use common::scenes::oracle_scenes;
+use common::*;
+use metaballs::extract::reference::{self, Grid};
+use metaballs::extract::{EXTRACTORS, compile_all};
+use metaballs::{Scene, Settings};
+
+#[test]
+fn the_renderer_holds_every_extractor_the_list_builds_on_this_device() {
+    let (_, device, _) = device();
+    let names: Vec<&str> = compile_all(&device).iter().map(|e| e.name()).collect();
+    // The adapter at hand has compute shaders, so every extractor can run on it.
+    assert_eq!(names.len(), EXTRACTORS.len(), "extractors built here: {names:?}");
+    let mut unique = names.clone();
+    unique.sort();
+    unique.dedup();
+    assert_eq!(unique.len(), names.len(), "two extractors share a name: {names:?}");
+    with_renderer(settings(1, 3, 16, 1.0), 16, 16, |o| {
+        assert_eq!(o.renderer.extractor_names(), names);
+        let error = o.renderer.pin_extractor(Some("fpga")).unwrap_err().to_string();
+        assert!(error.contains("fpga") && names.iter().all(|n| error.contains(n)), "{error}");
+    });
+}
+
+#[test]
+fn every_extractor_in_the_list_matches_the_oracle() {
+    let scenes = oracle_scenes(40);
+    with_renderer(settings(1, 1, 16, 1.0), 16, 16, |o| {
+        for name in o.renderer.extractor_names() {
+            o.renderer.pin_extractor(Some(name)).unwrap();
+            let mut with_surface = 0;
+            for scene in &scenes {
+                let what = format!("{name}: {}", scene.what);
+                let iso = conditioned_iso(&scene.spheres, scene.iso, scene.resolution);
+                let mut settings = Settings { resolution: scene.resolution, iso, ..Settings::default() };
+                settings.view.interpolation = scene.construction.interpolation;
+                settings.view.blend = scene.construction.blend;
+                o.renderer.set_settings(settings).unwrap();
+                o.renderer.set_scene(Scene::from_spheres(scene.spheres.clone()).unwrap());
+                let ours = pollster::block_on(o.renderer.extract_mesh());
+                assert_eq!(o.renderer.mesh_source(), name, "{what}: another extractor ran");
+                let grid = Grid { cells_per_axis: scene.resolution };
+                let oracle = reference::extract_with(&scene.spheres, iso, grid, scene.construction);
+                assert_eq!(ours.triangles.len(), oracle.triangle_count(), "{what}: triangle counts differ");
+                let tolerance = 1e-4 * grid.cell_size();
+                if let Err(e) = ours.to_soup().matches(&oracle, tolerance, 0.01f32.to_radians()) {
+                    panic!("{what}: {e}");
+                }
+                let welded = oracle.weld_by_edge();
+                assert_eq!(
+                    ours.positions.len(),
+                    welded.positions.len(),
+                    "{what}: one vertex per crossed edge"
+                );
+                with_surface += (oracle.triangle_count() > 0) as u32;
+            }
+            println!("{name}: {} scenes equal the oracle, {with_surface} with a surface", scenes.len());
+            assert!(with_surface >= 60, "{name}: only {with_surface} scenes had a surface");
+        }
+    });
+}
