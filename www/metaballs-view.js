@@ -3,33 +3,20 @@
 // page shares one GPU device, starts when it first comes near the viewport, draws only while on screen,
 // takes keys only while focused, and survives a lost GPU.
 
-import {
-  caseGallery, hub, loadWasm, parameterTable, parseParameter, propertyName, wasmModule, within, WEBGL_WAIT,
-} from './lib/engine.js';
+import { hub, propertyName } from './lib/engine.js';
 import { Inspector } from './lib/inspector.js';
 import { wireCameraInput } from './lib/camera-input.js';
 import { buildPanel, listedControls } from './lib/panel.js';
 import { elementStyle, flasher, TEMPLATE } from './lib/element-dom.js';
 import { Hud } from './lib/hud.js';
-import { applySetting, isRendererSetting } from './lib/view-settings.js';
-import { canvasPixels, pixelRatio } from './lib/canvas-size.js';
 import { CostGuard } from './lib/frame-cost.js';
 import { SphereEditor } from './lib/editor.js';
 import { wireDrop } from './lib/scene-files.js';
 import { SceneIO } from './lib/scene-io.js';
-
-const wasmError = await loadWasm().then(() => null, (error) => error);
-const TABLE = wasmError ? [] : parameterTable();
-const NAMES = TABLE.map((p) => p.name);
-const CONTROL_NAMES = TABLE.find((p) => p.name === 'controls')?.words ?? [];
-const GALLERY = wasmError ? { classes: [], cube: { corners: [], edges: [] } } : caseGallery();
-// Settings a renderer takes at creation; every other renderer setting is applied after.
-const CREATION = new Set(['spheres', 'iso', 'resolution', 'seed', 'antialiasing']);
-
-/** The default values of every parameter, typed. */
-function defaults() {
-  return Object.fromEntries(TABLE.map((p) => [p.name, parseParameter(p.name, p.default)]));
-}
+import {
+  CONTROL_NAMES, defaultOf, defaults, FigureState, GALLERY, NAMES, TABLE, wasmError,
+} from './lib/figure-state.js';
+import { FigureFrames } from './lib/figure-frames.js';
 
 // A shared pair of observers: one starts elements as they come near the viewport, the other tells
 // whether each is on screen at all.
@@ -59,34 +46,20 @@ export class MetaballsView extends HTMLElement {
   /** GPU memory held by every element's buffers and targets, in bytes. */
   static get gpuBytes() {
     let bytes = 0;
-    for (const element of hub.elements) bytes += element.#view?.gpu_bytes() ?? 0;
+    for (const element of hub.elements) bytes += element.#frames.view?.gpu_bytes() ?? 0;
     return bytes;
   }
   /** Destroys the shared device, as a driver reset would (for testing recovery). */
   static destroyDevice() { hub.gpu?.destroy(); hub.requestFrame(); }
 
-  #state = defaults();
-  #applied = { ...this.#state };
-  #changed = new Set();
-  #given = new Set();
-  #view = null;
-  // The device this figure draws with: the hub's shared WebGPU one, or a WebGL2 one of its own.
-  #gpu = null;
+  // Values in effect, held by the renderer, changed, and given (attribute reflection).
+  #settings = new FigureState(this);
+  #state = this.#settings.state;
+  // The renderer from start to end, and its frames.
+  #frames;
   // Frame time per resolution and sphere count on this adapter, and changes waiting for confirmation.
   #guard;
-  #starting = null;
-  #near = false;
-  #onScreen = false;
-  #failed = false;
-  #software = false;
-  #savedSpheres = null;
-  #dirty = 0;
-  #stepRequested = false;
-  #last = 0;
-  #framesDrawn = 0;
   #hud;
-  #held = false;
-  #reflecting = false;
   #showPanel = () => {};
   // Shows a message in one of the shadow root's boxes for a while: flash(id, text, ms).
   #flash;
@@ -120,38 +93,52 @@ export class MetaballsView extends HTMLElement {
     $('retry').addEventListener('click', () => hub.retry());
     this.#guard = new CostGuard(this.#root, (name, value) => this.#set(name, value));
     this.#flash = flasher(this.#root);
+    this.#frames = new FigureFrames({
+      element: this,
+      root: this.#root,
+      canvas: this.#canvas,
+      settings: this.#settings,
+      guard: this.#guard,
+      hud: this.#hud,
+      editor: () => this.#editor,
+      io: () => this.#io,
+      inspector: () => this.#inspector,
+      notice: (text, ms) => this.#notice(text, ms),
+      showPanel: () => this.#showPanel(this.#state),
+      buildPanel: () => this.#buildPanel(),
+      emit: (type, detail) => this.dispatchEvent(new CustomEvent(type, { detail })),
+    });
     this.#inspector = new Inspector(this.#root, GALLERY.cube, {
-      view: () => this.#view,
+      view: () => this.#frames.view,
       iso: () => this.#state.iso,
       onShow: (report) => {
-        this.#dirty = Math.max(this.#dirty, 2);
-        hub.requestFrame();
+        this.#frames.redraw(2);
         this.dispatchEvent(new CustomEvent('metaballs-inspect', { detail: { cell: report } }));
       },
       onClass: (k) => this.#showPanel(this.#state, k),
     });
     this.#editor = new SphereEditor(this.#root, {
-      view: () => this.#view,
+      view: () => this.#frames.view,
       scale: () => this.#canvas.width / Math.max(1, this.#canvas.clientWidth),
       edited: () => this.#io.edited(),
-      redraw: () => { this.#dirty = Math.max(this.#dirty, 1); hub.requestFrame(); },
+      redraw: () => this.#frames.redraw(1),
       notice: (text) => this.#notice(text),
     });
     this.#io = new SceneIO({
-      view: () => this.#view,
+      view: () => this.#frames.view,
       state: () => this.#state,
       set: (name, value) => this.#set(name, value),
       adopt: (name, value) => this.#adopt(name, value),
-      apply: () => this.#apply(),
-      restoreLater: (packed) => { this.#savedSpheres = packed; },
-      changed: () => { this.#dirty = Math.max(this.#dirty, 2); hub.requestFrame(); },
+      apply: () => this.#frames.apply(),
+      restoreLater: (packed) => { this.#frames.savedSpheres = packed; },
+      changed: () => this.#frames.redraw(2),
       editor: this.#editor,
       canvas: this.#canvas,
       ready: () => this.ready(),
       notice: (text, ms) => this.#notice(text, ms),
       emit: (type, detail) => this.dispatchEvent(new CustomEvent(type, { detail })),
     });
-    const editing = () => this.#state.edit && this.#view !== null;
+    const editing = () => this.#state.edit && this.#frames.view !== null;
     wireCameraInput(this, this.#canvas, {
       get: () => ({ yaw: this.#state.yaw, pitch: this.#state.pitch, distance: this.#state.distance }),
       set: (camera) => {
@@ -179,7 +166,7 @@ export class MetaballsView extends HTMLElement {
     });
     wireDrop(this, () => this.#state.edit || listedControls(this.#state.controls, CONTROL_NAMES).includes('scene'),
       (dropped) => this.#io.loadFile(dropped));
-    new ResizeObserver(([entry]) => this.#resize(entry)).observe(this.#canvas);
+    new ResizeObserver(([entry]) => this.#frames.resize(entry)).observe(this.#canvas);
   }
 
   // Properties mirror the attributes (camelCase for dashed names): reading gives the value in effect,
@@ -217,28 +204,23 @@ export class MetaballsView extends HTMLElement {
     nearObserver.unobserve(this);
     visibleObserver.unobserve(this);
     hub.unregister(this);
-    this.#release();
-    this.#near = false;
-    this.#onScreen = false;
+    this.#frames.detach();
   }
 
   attributeChangedCallback(name, _old, text) {
-    if (this.#reflecting || wasmError) return;
+    if (this.#settings.reflecting || wasmError) return;
     if (text === null) {
-      this.#given.delete(name);
-      this.#accept(name, parseParameter(name, TABLE.find((p) => p.name === name).default));
+      this.#settings.given.delete(name);
+      this.#accept(name, defaultOf(name));
       return;
     }
-    let value;
-    try {
-      value = parseParameter(name, text);
-    } catch (error) {
-      const message = `${name}="${text}": ${error.message}; keeping ${this.#format(name)}`;
+    const { value, message } = this.#settings.parse(name, text);
+    if (message) {
       console.warn(`<metaballs-view> ${message}`);
       this.#notice(message);
       return;
     }
-    this.#given.add(name);
+    this.#settings.given.add(name);
     this.#accept(name, value);
   }
 
@@ -247,15 +229,15 @@ export class MetaballsView extends HTMLElement {
     if (this.#state[name] === value) return;
     if (this.#guard.tooSlow(this.#state, { ...this.#state, [name]: value })) {
       this.#guard.ask(this.#state, { [name]: value });
-      this.#reflect(name);
+      this.#settings.reflect(name);
       this.#showPanel(this.#state);
       return;
     }
     this.#state[name] = value;
-    this.#changed.add(name);
+    this.#settings.changed.add(name);
     if (name === 'controls') this.#buildPanel();
     if (name === 'hud') this.#root.getElementById('hud').hidden = value !== 'on';
-    if (name === 'max-pixel-ratio') this.#resize();
+    if (name === 'max-pixel-ratio') this.#frames.resize();
     if (name === 'paused') this.#root.getElementById('play').hidden = !this.#showsPlayButton();
     if (name === 'edit') {
       this.#editor.reset();
@@ -271,14 +253,9 @@ export class MetaballsView extends HTMLElement {
   #set(name, value) {
     // A new count or layout replaces hand-placed spheres with the seeded ones.
     if ((name === 'spheres' || name === 'seed') && this.#state.balls) this.#adopt('balls', '');
-    this.#reflect(name, value);
-    this.#given.add(name);
+    this.#settings.reflect(name, value);
+    this.#settings.given.add(name);
     this.#accept(name, value);
-  }
-
-  #format(name) {
-    const value = this.#state[name];
-    return typeof value === 'string' ? `"${value}"` : String(value);
   }
 
   #showsPlayButton() {
@@ -290,236 +267,38 @@ export class MetaballsView extends HTMLElement {
     const maxResolution = hub.gpu?.max_resolution() ?? 512;
     this.#showPanel = buildPanel(this.#root.getElementById('panel'), names, TABLE, this.#state,
       (name, value) => this.#set(name, value), this.#actions, {
-        maxResolution: this.#software ? Math.min(256, maxResolution) : maxResolution,
-        withoutCompute: Boolean(this.#gpu && !this.#gpu.has_compute()),
+        maxResolution: this.#frames.software ? Math.min(256, maxResolution) : maxResolution,
+        withoutCompute: Boolean(this.#frames.gpu && !this.#frames.gpu.has_compute()),
         small: this.clientWidth > 0 && this.clientWidth < 560,
         gallery: GALLERY,
       });
     this.#root.getElementById('play').hidden = !this.#showsPlayButton();
   }
 
-  // ---------------------------------------------------------------- starting and stopping
+  // ---------------------------------------------------------------- the renderer and its frames
 
   /** Called when the element first comes near the viewport: starts its renderer. */
-  approach() {
-    this.#near = true;
-    this.#start();
-  }
+  approach() { this.#frames.approach(); }
 
   /** Called as the element enters or leaves the screen. */
-  setOnScreen(onScreen) {
-    this.#onScreen = onScreen;
-    this.#last = 0;
-    if (onScreen) hub.requestFrame();
-  }
-
-  #start() {
-    if (this.#view || this.#starting || this.#failed || !this.#near || !this.isConnected) return;
-    this.#starting = this.#create().finally(() => { this.#starting = null; });
-  }
-
-  async #create() {
-    let gpu;
-    try {
-      gpu = await hub.deviceFor(this, this.#canvas);
-    } catch (error) {
-      this.fail(error.title, error.message, { retry: Boolean(hub.stopped) });
-      return;
-    }
-    if (gpu === null) {
-      this.#failed = true;
-      this.#showMessage('Paused', WEBGL_WAIT);
-      return;
-    }
-    if (!this.isConnected || this.#view) {
-      hub.giveBack(this, gpu);
-      return;
-    }
-    this.#gpu = gpu;
-    const webgl = !gpu.has_compute();
-    this.#software = Boolean(hub.adapter?.software || gpu.is_fallback());
-    this.#hud.setAdapter(hub.adapter?.label ?? 'WebGPU');
-    if (this.#software && !this.#given.has('antialiasing')) this.#state.antialiasing = false;
-    this.#guard.start(this.#software || webgl);
-    for (const name of this.#guard.startAffordably(this.#state, defaults())) this.#reflect(name);
-    this.#sizeCanvas();
-    const s = this.#state;
-    const create = (resolution) => within(this, () => wasmModule().View.create(
-      gpu, this.#canvas, s.spheres, s.iso, resolution, s.seed, s.antialiasing));
-    try {
-      this.#view = create(s.resolution);
-    } catch (error) {
-      // Most likely a resolution beyond this device: start at the default and say why.
-      const fallback = parseParameter('resolution', TABLE.find((p) => p.name === 'resolution').default);
-      this.#notice(`resolution ${s.resolution}: ${error.message}`);
-      s.resolution = fallback;
-      try {
-        this.#view = create(fallback);
-      } catch (again) {
-        this.fail('The figure could not start', again.message);
-        return;
-      }
-    }
-    this.#applied = { ...s };
-    this.#changed = new Set(NAMES.filter((name) => (isRendererSetting(name) && !CREATION.has(name))
-      || (name === 'balls' && s.balls)));
-    this.#apply();
-    if (this.#savedSpheres) {
-      try {
-        this.#view.set_spheres(this.#savedSpheres);
-      } catch (error) {
-        console.warn(`<metaballs-view> could not restore the spheres: ${error.message}`);
-      }
-      this.#savedSpheres = null;
-    }
-    this.#editor.reset();
-    this.#buildPanel();
-    this.#hideMessage();
-    this.#dirty = 3;
-    this.#last = 0;
-    hub.requestFrame();
-  }
-
-  // Frees the renderer's GPU memory and leaves the canvas unconfigured (a WebGL2 figure gives its
-  // device back, so a waiting figure can start).
-  #release() {
-    if (this.#view) {
-      this.#view.free();
-      this.#view = null;
-      try {
-        this.#canvas.getContext('webgpu')?.unconfigure();
-      } catch { /* the context is gone with the device, or the canvas draws with WebGL2 */ }
-    }
-    hub.giveBack(this, this.#gpu);
-    this.#gpu = null;
-  }
+  setOnScreen(onScreen) { this.#frames.setOnScreen(onScreen); }
 
   /** The device is lost: keep the scene on the CPU and let go of the GPU. */
-  suspend(reason) {
-    if (this.#view) {
-      try {
-        this.#savedSpheres = this.#view.spheres();
-      } catch { /* keep what was saved before */ }
-    }
-    this.#release();
-    if (this.#near) this.#notice(`The GPU was lost (${reason}); starting again…`, 4000);
-  }
+  suspend(reason) { this.#frames.suspend(reason); }
 
   /** A new device is ready (or a retry was asked for): start again with the current state. */
-  resume() {
-    this.#failed = false;
-    this.#hideMessage();
-    this.#start();
-  }
+  resume() { this.#frames.resume(); }
 
   /** Shows a message in this element's box and stops drawing it. */
-  fail(title, text, { retry = false } = {}) {
-    this.#failed = true;
-    this.#release();
-    this.#showMessage(title, text, retry);
-    this.dispatchEvent(new CustomEvent('metaballs-error', { detail: { message: `${title}: ${text}` } }));
-  }
-
-  #showMessage(title, text, retry = false) {
-    const $ = (id) => this.#root.getElementById(id);
-    $('message-title').textContent = title;
-    $('message-text').textContent = text;
-    $('retry').hidden = !retry;
-    $('message').hidden = false;
-  }
-
-  #hideMessage() {
-    this.#root.getElementById('message').hidden = true;
-  }
-
-  // ---------------------------------------------------------------- frames
-
-  // Pushes the changed values into the renderer. A value it refuses (a resolution beyond the device)
-  // goes back to the last one that worked, with a notice.
-  #apply() {
-    const view = this.#view;
-    if (!view) return;
-    const s = this.#state;
-    for (const name of this.#changed) {
-      if (name === 'balls') {
-        this.#applied.balls = s.balls;
-        this.#io.applyBalls(s.balls);
-        continue;
-      }
-      if (!isRendererSetting(name)) continue;
-      try {
-        within(this, () => applySetting(view, name, s));
-        this.#applied[name] = s[name];
-      } catch (error) {
-        this.#notice(`${name} ${s[name]}: ${error.message}`);
-        s[name] = this.#applied[name];
-        this.#reflect(name);
-        this.#showPanel(s);
-      }
-    }
-    if (this.#changed.size) this.#dirty = Math.max(this.#dirty, 3);
-    this.#changed.clear();
-  }
-
-  // Writes a value to its attribute without taking it in again.
-  #reflect(name, value = this.#state[name]) {
-    this.#reflecting = true;
-    try {
-      this.setAttribute(name, String(value));
-    } finally {
-      this.#reflecting = false;
-    }
-  }
+  fail(title, text, options) { this.#frames.fail(title, text, options); }
 
   /**
    * One animation frame of the page: draws if this element is on screen and has something to show.
    * Returns whether it wants the next frame too.
    */
-  tick(now) {
-    const view = this.#view;
-    if (!view || this.#failed || this.#held || !this.#onScreen || document.visibilityState === 'hidden') {
-      return false;
-    }
-    try {
-      this.#apply();
-      const elapsed = this.#last ? Math.min(Math.max(now - this.#last, 0) / 1000, 0.1) : 0;
-      this.#last = now;
-      // A sphere being dragged holds the animation still.
-      const animating = !this.#state.paused && this.#state.speed > 0 && !this.#editor.dragging;
-      if (animating || this.#dirty > 0 || this.#stepRequested || view.needs_redraw()) {
-        const dt = animating ? elapsed * this.#state.speed : this.#stepRequested ? 1 / 60 : 0;
-        this.#stepRequested = false;
-        const started = performance.now();
-        within(this, () => view.frame(dt));
-        const blocked = performance.now() - started;
-        if (blocked > 100) this.#observeCost(blocked);
-        this.#framesDrawn += 1;
-        this.#hud.countFrame();
-        this.#dirty = Math.max(0, this.#dirty - 1);
-      } else {
-        view.poll();
-      }
-    } catch (error) {
-      this.fail('The renderer stopped', error?.message ?? String(error));
-      return false;
-    }
-    const frameMs = this.#hud.update(now, view);
-    if (frameMs && !this.#state.paused) this.#observeCost(frameMs);
-    this.#inspector.follow(now);
-    if (this.#state.edit) this.#editor.draw();
-    const error = view.gpu_error();
-    if (error) {
-      this.fail('The GPU reported an error', error);
-      return false;
-    }
-    return true;
-  }
+  tick(now) { return this.#frames.tick(now); }
 
   // ---------------------------------------------------------------- costly settings
-
-  #observeCost(ms) {
-    this.#guard.observe(this.#applied, ms);
-  }
 
   /** The change waiting for the person's confirmation (a slow frame), or null. */
   get pendingChange() { return this.#guard.pending ? { ...this.#guard.pending } : null; }
@@ -543,8 +322,8 @@ export class MetaballsView extends HTMLElement {
   #adopt(name, value) {
     if (this.#state[name] === value) return;
     this.#state[name] = value;
-    this.#applied[name] = value;
-    this.#reflect(name);
+    this.#settings.applied[name] = value;
+    this.#settings.reflect(name);
     this.#showPanel(this.#state);
     this.dispatchEvent(new CustomEvent('metaballs-change', { detail: { property: propertyName(name), value } }));
   }
@@ -555,7 +334,7 @@ export class MetaballsView extends HTMLElement {
   }
 
   /** The spheres in play: [{ center: [x, y, z], radius, velocity: [x, y, z] }]. */
-  get sphereList() { return this.#io.list(this.#savedSpheres); }
+  get sphereList() { return this.#io.list(this.#frames.savedSpheres); }
 
   /** Where sphere `index` is drawn: { x, y, radius } in CSS pixels from the figure's top left, or null. */
   sphereOnScreen(index) { return this.#io.onScreen(index); }
@@ -580,31 +359,6 @@ export class MetaballsView extends HTMLElement {
   picture(scale = 1) { return this.#io.picture(scale); }
 
   downloadPicture(scale = 1) { return this.#io.downloadPicture(scale); }
-
-  // ---------------------------------------------------------------- size
-
-  #ratio() {
-    return pixelRatio(this.#state['max-pixel-ratio'], this.#software);
-  }
-
-  #sizeCanvas() {
-    [this.#canvas.width, this.#canvas.height] = canvasPixels(this.#canvas, this.#ratio());
-  }
-
-  #resize(entry) {
-    const [width, height] = canvasPixels(this.#canvas, this.#ratio(), entry);
-    if (this.#canvas.width === width && this.#canvas.height === height) return;
-    this.#canvas.width = width;
-    this.#canvas.height = height;
-    if (!this.#view) return;
-    try {
-      this.#view.resize(width, height);
-    } catch (error) {
-      this.#notice(error.message);
-    }
-    this.#dirty = Math.max(this.#dirty, 2);
-    hub.requestFrame();
-  }
 
   // ---------------------------------------------------------------- notices
 
@@ -632,40 +386,22 @@ export class MetaballsView extends HTMLElement {
   /** Draws one frame of animation (1/60 s) and stays paused. */
   step() {
     if (!this.#state.paused) this.pause();
-    this.#stepRequested = true;
-    hub.requestFrame();
+    this.#frames.stepOnce();
   }
 
   /** Figures of the newest frames: triangles, fps, frame time (ms), adapter, overflowed. */
   get stats() { return { ...this.#hud.stats }; }
 
   /** Frames this element has drawn (none while off screen). */
-  get framesDrawn() { return this.#framesDrawn; }
+  get framesDrawn() { return this.#frames.framesDrawn; }
 
   /** Resolves once the renderer has started (or rejects with why it could not). */
-  async ready() {
-    while (!this.#view) {
-      if (this.#failed) throw new Error(this.#root.getElementById('message-text').textContent);
-      await new Promise((r) => setTimeout(r, 50));
-    }
-  }
+  ready() { return this.#frames.ready(); }
 
   /**
    * Runs `f(view)` with the wasm view while the element's own frames are held (the benchmark uses it).
    */
-  async withView(f) {
-    await this.ready();
-    this.#held = true;
-    try {
-      return await f(this.#view);
-    } finally {
-      this.#held = false;
-      // Whatever `f` changed, the figure goes back to its own settings.
-      for (const name of ['spheres', 'resolution', 'iso', 'seed', 'mesher']) this.#changed.add(name);
-      this.#dirty = 3;
-      hub.requestFrame();
-    }
-  }
+  withView(f) { return this.#frames.withView(f); }
 }
 
 if (!customElements.get('metaballs-view')) customElements.define('metaballs-view', MetaballsView);

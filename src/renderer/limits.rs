@@ -1,5 +1,7 @@
-//! What the device holds: the largest grid, buffer and output sizes, and the checks that say so.
+//! What the device holds: the largest grid, buffer and output sizes, the checks that say so, and the
+//! capacity the mesh buffers start from (grown with the surface, or a fixed triangle budget).
 
+use super::{Renderer, Sizing};
 use crate::device::has_compute;
 use crate::extract::buffers::{BLOCK_CELLS, Capacity};
 use crate::extract::reference::Grid;
@@ -69,4 +71,32 @@ pub(super) fn check_size(device: &wgpu::Device, width: u32, height: u32) -> Resu
     params::check_u32("output width (pixels)", width, 1, max)?;
     params::check_u32("output height (pixels)", height, 1, max)?;
     Ok(())
+}
+
+impl Renderer {
+    /// Fixes the triangle budget (`None` returns to buffers that grow with the surface). Past a fixed
+    /// budget, triangles are dropped and `stats` says so.
+    pub fn set_max_triangles(&mut self, max_triangles: Option<u32>) -> Result<(), ParamError> {
+        self.sizing = match max_triangles {
+            Some(n) => {
+                let fits = Capacity::largest(self.grid(), storage_limit(&self.device)).indices / 3;
+                Sizing::FixedTriangles(params::check_u32("triangle budget", n, 1, fits)?)
+            }
+            None => Sizing::Automatic,
+        };
+        self.reallocate(self.starting_capacity());
+        Ok(())
+    }
+
+    pub(super) fn starting_capacity(&self) -> Capacity {
+        let automatic = automatic_capacity(&self.device, self.grid(), self.context.has_compute());
+        match self.sizing {
+            Sizing::Automatic => automatic,
+            // Everything but the index buffer holds the whole grid, so only triangles overflow.
+            Sizing::FixedTriangles(n) => {
+                let largest = Capacity::largest(self.grid(), storage_limit(&self.device));
+                Capacity { vertices: largest.vertices.min(3 * largest.cells), indices: 3 * n, ..largest }
+            }
+        }
+    }
 }

@@ -23,10 +23,10 @@ use crate::extract::buffers::{Capacity, MeshBuffers};
 use crate::extract::gpu::scene_buffers::SceneBuffers;
 use crate::extract::reference::Grid;
 use crate::scene::Scene;
-use crate::scene::params::{self, ParamError, Settings};
+use crate::scene::params::{ParamError, Settings};
 use context::{GpuContext, RendererToken};
 use glam::UVec3;
-use limits::{automatic_capacity, check_resolution_fits, check_size, storage_limit};
+use limits::{automatic_capacity, check_resolution_fits, check_size};
 use stats::StatsRing;
 
 /// How the buffers are sized.
@@ -257,34 +257,8 @@ impl Renderer {
         self.scene = scene;
     }
 
-    /// Fixes the triangle budget (`None` returns to buffers that grow with the surface). Past a fixed
-    /// budget, triangles are dropped and `stats` says so.
-    pub fn set_max_triangles(&mut self, max_triangles: Option<u32>) -> Result<(), ParamError> {
-        self.sizing = match max_triangles {
-            Some(n) => {
-                let fits = Capacity::largest(self.grid(), storage_limit(&self.device)).indices / 3;
-                Sizing::FixedTriangles(params::check_u32("triangle budget", n, 1, fits)?)
-            }
-            None => Sizing::Automatic,
-        };
-        self.reallocate(self.starting_capacity());
-        Ok(())
-    }
-
     fn grid(&self) -> Grid {
         Grid { cells_per_axis: self.settings.resolution }
-    }
-
-    fn starting_capacity(&self) -> Capacity {
-        let automatic = automatic_capacity(&self.device, self.grid(), self.context.has_compute());
-        match self.sizing {
-            Sizing::Automatic => automatic,
-            // Everything but the index buffer holds the whole grid, so only triangles overflow.
-            Sizing::FixedTriangles(n) => {
-                let largest = Capacity::largest(self.grid(), storage_limit(&self.device));
-                Capacity { vertices: largest.vertices.min(3 * largest.cells), indices: 3 * n, ..largest }
-            }
-        }
     }
 
     fn reallocate(&mut self, capacity: Capacity) {

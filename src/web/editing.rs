@@ -1,7 +1,8 @@
 //! Hands on the scene from the page: picking, moving, adding and removing spheres; scenes as files and
 //! the compact form links carry; the mesh and pictures as downloads (one readback each, on demand).
 
-use super::{Polling, View, js_error, pack_spheres, unpack_spheres, value_to_js};
+use super::parameters::value_to_js;
+use super::{Polling, View, js_error, pack_spheres, unpack_spheres};
 use crate::device::{read_texture, render_target};
 use crate::export::{MeshFormat, encode};
 use crate::scene::file::{self as scene_file, SceneFile};

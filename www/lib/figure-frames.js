@@ -1,0 +1,324 @@
+// A figure's renderer from start to end: made when the figure first comes near the viewport (on the
+// page's shared WebGPU device, or a WebGL2 device of its own), fed the changed settings before each
+// frame, drawn only while on screen, sized with its canvas, let go of when the GPU is lost and made
+// again from the figure's own state.
+
+import { hub, wasmModule, within, WEBGL_WAIT } from './engine.js';
+import { applySetting, isRendererSetting } from './view-settings.js';
+import { canvasPixels, pixelRatio } from './canvas-size.js';
+import { CREATION, NAMES, defaultOf, defaults } from './figure-state.js';
+
+export class FigureFrames {
+  #f;
+  #view = null;
+  // The device this figure draws with: the hub's shared WebGPU one, or a WebGL2 one of its own.
+  #gpu = null;
+  #starting = null;
+  #near = false;
+  #onScreen = false;
+  #failed = false;
+  #software = false;
+  #savedSpheres = null;
+  #dirty = 0;
+  #stepRequested = false;
+  #last = 0;
+  #framesDrawn = 0;
+  #held = false;
+
+  /**
+   * `figure`: { element, root, canvas, settings (a FigureState), guard, hud, editor(), io(),
+   * inspector(), notice(text, ms), showPanel(), buildPanel(), emit(type, detail) }.
+   */
+  constructor(figure) {
+    this.#f = figure;
+  }
+
+  /** The wasm view, once started. */
+  get view() { return this.#view; }
+  /** The device drawn with, once started. */
+  get gpu() { return this.#gpu; }
+  /** True on a software adapter (or a fallback one). */
+  get software() { return this.#software; }
+  get failed() { return this.#failed; }
+  get framesDrawn() { return this.#framesDrawn; }
+  /** Spheres kept on the CPU while no renderer holds them (after a loss, or before the start). */
+  get savedSpheres() { return this.#savedSpheres; }
+  set savedSpheres(packed) { this.#savedSpheres = packed; }
+
+  /** Asks for at least `frames` more frames even while paused. */
+  redraw(frames) {
+    this.#dirty = Math.max(this.#dirty, frames);
+    hub.requestFrame();
+  }
+
+  /** Draws one frame of animation (1/60 s) at the next tick. */
+  stepOnce() {
+    this.#stepRequested = true;
+    hub.requestFrame();
+  }
+
+  /** The figure came near the viewport: start its renderer. */
+  approach() {
+    this.#near = true;
+    this.start();
+  }
+
+  /** The figure entered or left the screen. */
+  setOnScreen(onScreen) {
+    this.#onScreen = onScreen;
+    this.#last = 0;
+    if (onScreen) hub.requestFrame();
+  }
+
+  /** The figure left the page: free the renderer and forget where it was. */
+  detach() {
+    this.release();
+    this.#near = false;
+    this.#onScreen = false;
+  }
+
+  start() {
+    if (this.#view || this.#starting || this.#failed || !this.#near || !this.#f.element.isConnected) return;
+    this.#starting = this.#create().finally(() => { this.#starting = null; });
+  }
+
+  async #create() {
+    const f = this.#f;
+    let gpu;
+    try {
+      gpu = await hub.deviceFor(f.element, f.canvas);
+    } catch (error) {
+      this.fail(error.title, error.message, { retry: Boolean(hub.stopped) });
+      return;
+    }
+    if (gpu === null) {
+      this.#failed = true;
+      this.#showMessage('Paused', WEBGL_WAIT);
+      return;
+    }
+    if (!f.element.isConnected || this.#view) {
+      hub.giveBack(f.element, gpu);
+      return;
+    }
+    this.#gpu = gpu;
+    const webgl = !gpu.has_compute();
+    const settings = f.settings;
+    this.#software = Boolean(hub.adapter?.software || gpu.is_fallback());
+    f.hud.setAdapter(hub.adapter?.label ?? 'WebGPU');
+    if (this.#software && !settings.given.has('antialiasing')) settings.state.antialiasing = false;
+    f.guard.start(this.#software || webgl);
+    for (const name of f.guard.startAffordably(settings.state, defaults())) settings.reflect(name);
+    this.sizeCanvas();
+    const s = settings.state;
+    const create = (resolution) => within(f.element, () => wasmModule().View.create(
+      gpu, f.canvas, s.spheres, s.iso, resolution, s.seed, s.antialiasing));
+    try {
+      this.#view = create(s.resolution);
+    } catch (error) {
+      // Most likely a resolution beyond this device: start at the default and say why.
+      const fallback = defaultOf('resolution');
+      f.notice(`resolution ${s.resolution}: ${error.message}`);
+      s.resolution = fallback;
+      try {
+        this.#view = create(fallback);
+      } catch (again) {
+        this.fail('The figure could not start', again.message);
+        return;
+      }
+    }
+    settings.applied = { ...s };
+    settings.changed = new Set(NAMES.filter((name) => (isRendererSetting(name) && !CREATION.has(name))
+      || (name === 'balls' && s.balls)));
+    this.apply();
+    if (this.#savedSpheres) {
+      try {
+        this.#view.set_spheres(this.#savedSpheres);
+      } catch (error) {
+        console.warn(`<metaballs-view> could not restore the spheres: ${error.message}`);
+      }
+      this.#savedSpheres = null;
+    }
+    f.editor().reset();
+    f.buildPanel();
+    this.#hideMessage();
+    this.#dirty = 3;
+    this.#last = 0;
+    hub.requestFrame();
+  }
+
+  // Frees the renderer's GPU memory and leaves the canvas unconfigured (a WebGL2 figure gives its
+  // device back, so a waiting figure can start).
+  release() {
+    if (this.#view) {
+      this.#view.free();
+      this.#view = null;
+      try {
+        this.#f.canvas.getContext('webgpu')?.unconfigure();
+      } catch { /* the context is gone with the device, or the canvas draws with WebGL2 */ }
+    }
+    hub.giveBack(this.#f.element, this.#gpu);
+    this.#gpu = null;
+  }
+
+  /** The device is lost: keep the scene on the CPU and let go of the GPU. */
+  suspend(reason) {
+    if (this.#view) {
+      try {
+        this.#savedSpheres = this.#view.spheres();
+      } catch { /* keep what was saved before */ }
+    }
+    this.release();
+    if (this.#near) this.#f.notice(`The GPU was lost (${reason}); starting again…`, 4000);
+  }
+
+  /** A new device is ready (or a retry was asked for): start again with the current state. */
+  resume() {
+    this.#failed = false;
+    this.#hideMessage();
+    this.start();
+  }
+
+  /** Shows a message in the figure's box and stops drawing it. */
+  fail(title, text, { retry = false } = {}) {
+    this.#failed = true;
+    this.release();
+    this.#showMessage(title, text, retry);
+    this.#f.emit('metaballs-error', { message: `${title}: ${text}` });
+  }
+
+  #showMessage(title, text, retry = false) {
+    const $ = (id) => this.#f.root.getElementById(id);
+    $('message-title').textContent = title;
+    $('message-text').textContent = text;
+    $('retry').hidden = !retry;
+    $('message').hidden = false;
+  }
+
+  #hideMessage() {
+    this.#f.root.getElementById('message').hidden = true;
+  }
+
+  // Pushes the changed values into the renderer. A value it refuses (a resolution beyond the device)
+  // goes back to the last one that worked, with a notice.
+  apply() {
+    const view = this.#view;
+    if (!view) return;
+    const settings = this.#f.settings;
+    const s = settings.state;
+    for (const name of settings.changed) {
+      if (name === 'balls') {
+        settings.applied.balls = s.balls;
+        this.#f.io().applyBalls(s.balls);
+        continue;
+      }
+      if (!isRendererSetting(name)) continue;
+      try {
+        within(this.#f.element, () => applySetting(view, name, s));
+        settings.applied[name] = s[name];
+      } catch (error) {
+        this.#f.notice(`${name} ${s[name]}: ${error.message}`);
+        s[name] = settings.applied[name];
+        settings.reflect(name);
+        this.#f.showPanel();
+      }
+    }
+    if (settings.changed.size) this.#dirty = Math.max(this.#dirty, 3);
+    settings.changed.clear();
+  }
+
+  /**
+   * One animation frame of the page: draws if the figure is on screen and has something to show.
+   * Returns whether it wants the next frame too.
+   */
+  tick(now) {
+    const view = this.#view;
+    const f = this.#f;
+    if (!view || this.#failed || this.#held || !this.#onScreen || document.visibilityState === 'hidden') {
+      return false;
+    }
+    const state = f.settings.state;
+    try {
+      this.apply();
+      const elapsed = this.#last ? Math.min(Math.max(now - this.#last, 0) / 1000, 0.1) : 0;
+      this.#last = now;
+      // A sphere being dragged holds the animation still.
+      const animating = !state.paused && state.speed > 0 && !f.editor().dragging;
+      if (animating || this.#dirty > 0 || this.#stepRequested || view.needs_redraw()) {
+        const dt = animating ? elapsed * state.speed : this.#stepRequested ? 1 / 60 : 0;
+        this.#stepRequested = false;
+        const started = performance.now();
+        within(f.element, () => view.frame(dt));
+        const blocked = performance.now() - started;
+        if (blocked > 100) this.#observeCost(blocked);
+        this.#framesDrawn += 1;
+        f.hud.countFrame();
+        this.#dirty = Math.max(0, this.#dirty - 1);
+      } else {
+        view.poll();
+      }
+    } catch (error) {
+      this.fail('The renderer stopped', error?.message ?? String(error));
+      return false;
+    }
+    const frameMs = f.hud.update(now, view);
+    if (frameMs && !state.paused) this.#observeCost(frameMs);
+    f.inspector().follow(now);
+    if (state.edit) f.editor().draw();
+    const error = view.gpu_error();
+    if (error) {
+      this.fail('The GPU reported an error', error);
+      return false;
+    }
+    return true;
+  }
+
+  #observeCost(ms) {
+    this.#f.guard.observe(this.#f.settings.applied, ms);
+  }
+
+  #ratio() {
+    return pixelRatio(this.#f.settings.state['max-pixel-ratio'], this.#software);
+  }
+
+  sizeCanvas() {
+    const canvas = this.#f.canvas;
+    [canvas.width, canvas.height] = canvasPixels(canvas, this.#ratio());
+  }
+
+  resize(entry) {
+    const canvas = this.#f.canvas;
+    const [width, height] = canvasPixels(canvas, this.#ratio(), entry);
+    if (canvas.width === width && canvas.height === height) return;
+    canvas.width = width;
+    canvas.height = height;
+    if (!this.#view) return;
+    try {
+      this.#view.resize(width, height);
+    } catch (error) {
+      this.#f.notice(error.message);
+    }
+    this.redraw(2);
+  }
+
+  /** Resolves once the renderer has started (or rejects with why it could not). */
+  async ready() {
+    while (!this.#view) {
+      if (this.#failed) throw new Error(this.#f.root.getElementById('message-text').textContent);
+      await new Promise((r) => setTimeout(r, 50));
+    }
+  }
+
+  /** Runs `f(view)` while the figure's own frames are held; then it goes back to its own settings. */
+  async withView(f) {
+    await this.ready();
+    this.#held = true;
+    try {
+      return await f(this.#view);
+    } finally {
+      this.#held = false;
+      for (const name of ['spheres', 'resolution', 'iso', 'seed', 'mesher']) this.#f.settings.changed.add(name);
+      this.#dirty = 3;
+      hub.requestFrame();
+    }
+  }
+}
