@@ -1,6 +1,6 @@
 // Shared by the compute passes: the grid, the spheres, the field, and the blocks of cells that
-// empty-space skipping works on. Mirrors `GridUniform` and `Counters` in src/uniforms.rs and the oracle
-// in src/reference.rs.
+// empty-space skipping works on. Mirrors `GridUniform` and `Counters` in src/extract/uniforms.rs and the oracle
+// in src/extract/reference.rs.
 
 struct Grid {
     box_min: vec3<f32>,
@@ -49,7 +49,7 @@ struct Totals {
 }
 
 @group(0) @binding(0) var<uniform> grid: Grid;
-// xyz: centre, w: radius; a uniform array (MAX_SPHERES is prepended from src/params.rs), which software
+// xyz: centre, w: radius; a uniform array (MAX_SPHERES is prepended from src/scene/params/), which software
 // adapters read much faster than storage.
 @group(0) @binding(1) var<uniform> spheres: array<vec4<f32>, MAX_SPHERES>;
 
@@ -92,7 +92,7 @@ fn slot_of(workgroup: vec3<u32>) -> u32 {
 }
 
 // Corner c of a cell sits at (c bit 0 xor c bit 1, c bit 1, c bit 2): 0 (0,0,0), 1 (1,0,0), 2 (1,1,0),
-// 3 (0,1,0), then the same at z = 1 (src/tables.rs, CORNER_OFFSETS).
+// 3 (0,1,0), then the same at z = 1 (src/extract/tables.rs, CORNER_OFFSETS).
 fn corner_offset(c: u32) -> vec3<u32> {
     return vec3<u32>(((c >> 1u) ^ c) & 1u, (c >> 1u) & 1u, (c >> 2u) & 1u);
 }

@@ -1,7 +1,7 @@
 // Overlay pass, after marching cubes: the field slice's samples and its iso contour (marching squares
 // on the same grid points, interpolated as the surface's vertices are, so the contour meets the surface
 // exactly where the plane cuts it), then the indirect draw arguments of every teaching view, from the
-// counts the compute passes left. Compiled after shaders/common.wgsl and shaders/shade.wgsl.
+// counts the compute passes left. Compiled after shaders/common.wgsl and shaders/draw/shade.wgsl.
 
 @group(0) @binding(2) var<storage, read_write> counters: Counters;
 // (n + 1)² samples of the slice plane, first in-plane axis fastest.
@@ -14,13 +14,13 @@ struct Overlays {
     _pad0: u32,
     _pad1: u32,
     _pad2: u32,
-    // Seven indirect draws of four words (src/views.rs, `Draw`).
+    // Seven indirect draws of four words (src/draw/views/, `Draw`).
     draws: array<u32, 28>,
 }
 
 @group(0) @binding(24) var<storage, read_write> overlays: Overlays;
 // Per marching-squares case: its segments as pairs of square edges, 4 bits each, low pair first,
-// 0xf after the last (src/slice.rs, SQUARE_SEGMENTS).
+// 0xf after the last (src/draw/slice.rs, SQUARE_SEGMENTS).
 @group(0) @binding(25) var<uniform> square_segments: array<vec4<u32>, 4>;
 
 // Grid point (i, j) of the slice plane.

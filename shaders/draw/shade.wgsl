@@ -1,7 +1,7 @@
 // Shading pass: a background gradient, the box's edges, then the surface lit by up to three lights
-// (point, directional, spot) with Blinn-Phong. The teaching views (shaders/views.wgsl) share the
+// (point, directional, spot) with Blinn-Phong. The teaching views (shaders/draw/views/) share the
 // uniforms and the lighting defined here.
-// Mirrors `ShadingUniform` and `LightUniform` in src/uniforms.rs.
+// Mirrors `ShadingUniform` and `LightUniform` in src/draw/uniforms.rs.
 
 const LIGHT_POINT: u32 = 1u;
 const LIGHT_DIRECTIONAL: u32 = 2u;

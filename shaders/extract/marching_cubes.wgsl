@@ -27,7 +27,7 @@
 @group(0) @binding(10) var<storage, read_write> vertices: array<f32>;
 @group(0) @binding(11) var<storage, read_write> indices: array<u32>;
 
-// Edge e starts at the corner returned in xyz and runs along axis w (src/tables.rs, EDGE_CORNERS).
+// Edge e starts at the corner returned in xyz and runs along axis w (src/extract/tables.rs, EDGE_CORNERS).
 fn edge_start(e: u32) -> vec4<u32> {
     switch e {
         case 0u: { return vec4<u32>(0u, 0u, 0u, 0u); }

@@ -1,4 +1,4 @@
-//! The shading pass (`shaders/shade.wgsl`): background, the box's edges, then the surface with
+//! The shading pass (`shaders/draw/shade.wgsl`): background, the box's edges, then the surface with
 //! Blinn-Phong, depth-tested and (with antialiasing) multisampled and resolved into the caller's view.
 
 use crate::draw::uniforms::ShadingUniform;

@@ -1,7 +1,7 @@
 //! The field slice: a grid plane through the box, its samples, and its iso contour by marching squares
 //! on those samples — interpolated from each edge's lower end exactly as marching cubes places its
 //! vertices, so the contour meets the surface where the plane cuts it. The GPU draws it
-//! (`shaders/overlays.wgsl`); this is the CPU oracle and the table both use.
+//! (`shaders/draw/overlays.wgsl`); this is the CPU oracle and the table both use.
 
 use crate::extract::reference::{Construction, Grid, blended_field_at};
 use crate::scene::Sphere;

@@ -3,13 +3,13 @@
 
 use bytemuck::{Pod, Zeroable};
 
-/// One light (`Light` in `shaders/shade.wgsl`).
+/// One light (`Light` in `shaders/draw/shade.wgsl`).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, Pod, Zeroable, PartialEq)]
 pub struct LightUniform {
     /// Where a point or spot light sits.
     pub position: [f32; 3],
-    /// `LIGHT_*` in `shaders/shade.wgsl`: 0 off, 1 point, 2 directional, 3 spot.
+    /// `LIGHT_*` in `shaders/draw/shade.wgsl`: 0 off, 1 point, 2 directional, 3 spot.
     pub kind: u32,
     /// Where a directional or spot light shines, unit length.
     pub direction: [f32; 3],
@@ -23,7 +23,7 @@ pub struct LightUniform {
 const _: () = assert!(std::mem::size_of::<LightUniform>() == 48);
 
 /// Camera, lights, material and view options for the shading pass (`Shading` in
-/// `shaders/shade.wgsl`).
+/// `shaders/draw/shade.wgsl`).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, Pod, Zeroable, PartialEq)]
 pub struct ShadingUniform {

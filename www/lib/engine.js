@@ -285,7 +285,7 @@ function describeAdapter(adapter) {
   }
 }
 
-// A Rust panic reaches the page here (see src/web.rs): the element whose call panicked shows it.
+// A Rust panic reaches the page here (see src/web/): the element whose call panicked shows it.
 let current = null;
 /** Runs `f` with `element` as the one a panic would be reported in. */
 export function within(element, f) {

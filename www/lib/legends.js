@@ -1,4 +1,4 @@
-// Colour keys for the teaching views, drawn with the colours shaders/views.wgsl uses: the ramp (area,
+// Colour keys for the teaching views, drawn with the colours shaders/draw/views/ uses: the ramp (area,
 // shape, field slice) and the 15 case classes.
 
 /** The ramp's stops (sRGB), dark violet to yellow. */

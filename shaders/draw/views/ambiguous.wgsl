@@ -1,6 +1,6 @@
 // The ambiguous faces (ambiguous).
 
-// The corner of a cell at offset o (each 0 or 1), numbered as in src/tables.rs.
+// The corner of a cell at offset o (each 0 or 1), numbered as in src/extract/tables.rs.
 fn corner_number(o: vec3<u32>) -> u32 {
     return (o.z << 2u) | (o.y << 1u) | (o.x ^ o.y);
 }

@@ -13,7 +13,7 @@
 @group(0) @binding(21) var<storage, read> slice_values: array<f32>;
 // The slice's contour: two points per segment.
 @group(0) @binding(22) var<storage, read> segments: array<vec4<f32>>;
-// The class (0..14) of each case, four to an element (src/case_classes.rs).
+// The class (0..14) of each case, four to an element (src/teach/case_classes.rs).
 @group(0) @binding(23) var<uniform> case_classes: array<vec4<u32>, 64>;
 
 fn class_of(case_index: u32) -> u32 {

@@ -1,4 +1,4 @@
-//! The teaching views (`shaders/views.wgsl`, `shaders/overlays.wgsl`): display modes, the lattice,
+//! The teaching views (`shaders/draw/views/`, `shaders/draw/overlays.wgsl`): display modes, the lattice,
 //! crossed cells and kept blocks, ambiguous faces, the field slice with its contour, the selected cell
 //! and an axis gizmo. Everything is drawn from the buffers the compute passes fill, with indirect draws
 //! whose counts a one-invocation pass writes on the GPU: no readback.

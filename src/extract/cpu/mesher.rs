@@ -17,13 +17,13 @@ use crate::scene::params::view::Blend;
 use crate::scene::{BOX_HALF_EXTENT, Sphere};
 use glam::Vec3;
 
-/// Bounds skip a block only with this relative margin (`BOUND_MARGIN` in `shaders/blocks.wgsl`).
+/// Bounds skip a block only with this relative margin (`BOUND_MARGIN` in `shaders/extract/blocks.wgsl`).
 const BOUND_MARGIN: f32 = 1e-4;
 /// Marks an edge without a vertex yet.
 const NONE: u32 = u32::MAX;
 
 /// Edge `e` of a cell starts at this corner offset and runs along this axis (`EDGE_CORNERS` in
-/// `src/tables.rs`, each edge from its lower corner).
+/// `src/extract/tables.rs`, each edge from its lower corner).
 const EDGE_START: [([u32; 3], usize); 12] = [
     ([0, 0, 0], 0),
     ([1, 0, 0], 1),
@@ -155,7 +155,7 @@ impl CpuMesher {
     }
 
     /// Keeps the blocks whose field bounds straddle `iso`, as `classify_blocks` in
-    /// `shaders/blocks.wgsl` does, and lists them by layer.
+    /// `shaders/extract/blocks.wgsl` does, and lists them by layer.
     fn classify_blocks(&mut self, iso: f32, n: u32, blend: Blend) {
         let nb = n.div_ceil(BLOCK_CELLS);
         let total = (nb as usize).pow(3);

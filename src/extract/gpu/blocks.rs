@@ -1,4 +1,4 @@
-//! The block pass (`shaders/blocks.wgsl`): bound the field over blocks of 4³ cells, keep the blocks the
+//! The block pass (`shaders/extract/blocks.wgsl`): bound the field over blocks of 4³ cells, keep the blocks the
 //! surface may cross, and size the per-block passes' indirect dispatch to them.
 
 use crate::device::{bind_buffers, compute_module, compute_pipeline};

@@ -1,4 +1,4 @@
-//! The field pass (`shaders/field.wgsl`): f at the 5³ grid points of every active block, then the cells
+//! The field pass (`shaders/extract/field.wgsl`): f at the 5³ grid points of every active block, then the cells
 //! the surface crosses, compacted into a list with its indirect dispatch.
 
 use crate::device::{bind_buffers, compute_module, compute_pipeline};

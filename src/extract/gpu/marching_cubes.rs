@@ -1,4 +1,4 @@
-//! The marching-cubes passes (`shaders/marching_cubes.wgsl`), over the active cells: vertices on the
+//! The marching-cubes passes (`shaders/extract/marching_cubes.wgsl`), over the active cells: vertices on the
 //! edges each cell owns, then triangles as indices into them, then the indexed indirect draw's arguments.
 
 use crate::device::{bind_buffers, compute_module, compute_pipeline};
