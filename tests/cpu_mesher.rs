@@ -4,6 +4,7 @@
 
 mod common;
 
+use common::scenes::{on_grid_point, overlapping, touching_walls};
 use common::*;
 use metaballs::extract::cpu::mesher::CpuMesher;
 use metaballs::extract::reference::{self, Construction, Grid};
@@ -65,19 +66,7 @@ fn seeded_random_scenes_equal_the_oracle() {
 
 #[test]
 fn walls_overlaps_extreme_levels_and_constructions_equal_the_oracle() {
-    let touching_walls = vec![
-        sphere([-0.7, 0.0, 0.0], 0.3),
-        sphere([0.0, 0.75, 0.0], 0.25),
-        sphere([0.55, -0.55, 0.55], 0.45),
-    ];
-    let overlapping = vec![
-        sphere([0.0, 0.0, 0.0], 0.3),
-        sphere([0.05, 0.0, 0.0], 0.3),
-        sphere([0.0, 0.0, 0.0], 0.2),
-        sphere([0.2, 0.1, -0.1], 0.25),
-    ];
-    // At 32 cells the origin is a grid point, where |p - c| = 0.
-    let on_grid_point = vec![sphere([0.0, 0.0, 0.0], 0.4)];
+    let (touching_walls, overlapping, on_grid_point) = (touching_walls(), overlapping(), on_grid_point());
     let mut mesher = CpuMesher::new();
     for (name, spheres) in [
         ("touching walls", &touching_walls),

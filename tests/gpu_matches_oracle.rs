@@ -3,6 +3,7 @@
 
 mod common;
 
+use common::scenes::{overlapping, touching_walls};
 use common::*;
 use metaballs::extract::reference::{self, Grid};
 use metaballs::{Scene, Settings};
@@ -78,19 +79,8 @@ fn gpu_mesh_matches_the_oracle_while_spheres_move() {
 
 #[test]
 fn gpu_mesh_matches_the_oracle_against_walls_overlaps_and_extreme_levels() {
-    let touching_walls = Scene::from_spheres(vec![
-        sphere([-0.7, 0.0, 0.0], 0.3),
-        sphere([0.0, 0.75, 0.0], 0.25),
-        sphere([0.55, -0.55, 0.55], 0.45),
-    ])
-    .unwrap();
-    let overlapping = Scene::from_spheres(vec![
-        sphere([0.0, 0.0, 0.0], 0.3),
-        sphere([0.05, 0.0, 0.0], 0.3),
-        sphere([0.0, 0.0, 0.0], 0.2),
-        sphere([0.2, 0.1, -0.1], 0.25),
-    ])
-    .unwrap();
+    let touching_walls = Scene::from_spheres(touching_walls()).unwrap();
+    let overlapping = Scene::from_spheres(overlapping()).unwrap();
     with_renderer(settings(1, 1, 32, 1.0), 16, 16, |o| {
         for (name, scene) in [("touching walls", &touching_walls), ("overlapping", &overlapping)] {
             for iso in [0.05, 0.3, 1.0, 4.0, 20.0] {

@@ -38,22 +38,11 @@ pub fn oracle_scenes(random: usize) -> Vec<OracleScene> {
             construction: Construction::default(),
         });
     }
-    let touching_walls = vec![
-        sphere([-0.7, 0.0, 0.0], 0.3),
-        sphere([0.0, 0.75, 0.0], 0.25),
-        sphere([0.55, -0.55, 0.55], 0.45),
-    ];
-    let overlapping = vec![
-        sphere([0.0, 0.0, 0.0], 0.3),
-        sphere([0.05, 0.0, 0.0], 0.3),
-        sphere([0.0, 0.0, 0.0], 0.2),
-        sphere([0.2, 0.1, -0.1], 0.25),
-    ];
-    // At 32 cells the origin is a grid point, where |p - c| = 0.
-    let on_grid_point = vec![sphere([0.0, 0.0, 0.0], 0.4)];
-    for (name, spheres) in
-        [("touching walls", touching_walls), ("overlapping", overlapping), ("on a grid point", on_grid_point)]
-    {
+    for (name, spheres) in [
+        ("touching walls", touching_walls()),
+        ("overlapping", overlapping()),
+        ("on a grid point", on_grid_point()),
+    ] {
         for iso in [0.05, 0.3, 1.0, 4.0, 20.0] {
             for interpolation in [Interpolation::Linear, Interpolation::Midpoint] {
                 for blend in [Blend::Sum, Blend::Max] {
@@ -69,4 +58,24 @@ pub fn oracle_scenes(random: usize) -> Vec<OracleScene> {
         }
     }
     scenes
+}
+
+/// Three spheres pressed against the walls of the box.
+pub fn touching_walls() -> Vec<Sphere> {
+    vec![sphere([-0.7, 0.0, 0.0], 0.3), sphere([0.0, 0.75, 0.0], 0.25), sphere([0.55, -0.55, 0.55], 0.45)]
+}
+
+/// Four spheres on top of each other, two with the same centre.
+pub fn overlapping() -> Vec<Sphere> {
+    vec![
+        sphere([0.0, 0.0, 0.0], 0.3),
+        sphere([0.05, 0.0, 0.0], 0.3),
+        sphere([0.0, 0.0, 0.0], 0.2),
+        sphere([0.2, 0.1, -0.1], 0.25),
+    ]
+}
+
+/// One sphere centred at the origin, a grid point at even resolutions, where |p - c| = 0.
+pub fn on_grid_point() -> Vec<Sphere> {
+    vec![sphere([0.0, 0.0, 0.0], 0.4)]
 }
