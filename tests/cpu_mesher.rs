@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::scenes::{on_grid_point, overlapping, touching_walls};
+use common::scenes::{on_grid_point, overlapping, random_scenes, touching_walls};
 use common::*;
 use metaballs::extract::cpu::mesher::CpuMesher;
 use metaballs::extract::reference::{self, Construction, Grid};
@@ -39,26 +39,11 @@ fn assert_equals_oracle(
 #[test]
 fn seeded_random_scenes_equal_the_oracle() {
     // The draws of the GPU's test (tests/gpu_matches_oracle.rs), one mesher reused throughout.
-    let mut rng = rand_pcg::Pcg32::seed_from_u64(0x6d65_7461);
     let mut mesher = CpuMesher::new();
     let mut with_surface = 0;
-    for case in 0..60 {
-        let count = rng.random_range(1..=64);
-        let resolution = rng.random_range(8..=48);
-        let iso = 10f32.powf(rng.random_range(-1.0..1.0));
-        let seed = rng.random_range(0..1_000_000);
-        let time = rng.random_range(0.0..20.0);
-        let mut scene = Scene::new(seed, count).unwrap();
-        scene.step(time).unwrap();
-        let what = format!("case {case}: seed {seed}, {count} spheres, {resolution} cells, iso {iso}");
-        let triangles = assert_equals_oracle(
-            &mut mesher,
-            scene.spheres(),
-            iso,
-            resolution,
-            Construction::default(),
-            &what,
-        );
+    for s in random_scenes(60) {
+        let triangles =
+            assert_equals_oracle(&mut mesher, &s.spheres, s.iso, s.resolution, s.construction, &s.what);
         with_surface += (triangles > 0) as u32;
     }
     assert!(with_surface >= 45, "only {with_surface} of 60 scenes had a surface");

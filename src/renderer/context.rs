@@ -9,8 +9,8 @@ use crate::extract::{self, Extractor};
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
 
-/// The pipelines of every pass, unbound: a renderer clones them (sharing the GPU objects) and binds
-/// them to its own buffers.
+/// What is compiled once per device: each renderer takes fresh extractors from these (sharing their
+/// GPU objects) and binds them to its own buffers.
 pub(crate) struct Pipelines {
     /// The extractors this device runs (compiled once; each renderer takes a fresh instance).
     extractors: Vec<Box<dyn Extractor>>,
@@ -35,8 +35,8 @@ pub struct GpuContext {
 }
 
 impl GpuContext {
-    /// Compiles the compute pipelines (where the device has compute shaders) and starts listening for
-    /// the device's errors and loss.
+    /// Compiles every extractor the device runs (`extract::EXTRACTORS`) and starts listening for the
+    /// device's errors and loss.
     pub fn new(device: wgpu::Device, queue: wgpu::Queue) -> Self {
         let error: Arc<Mutex<Option<String>>> = Arc::default();
         let sink = error.clone();

@@ -4,7 +4,6 @@
 use super::{FrameStats, Renderer, Sizing};
 use crate::draw::shade::DrawCount;
 use crate::draw::views;
-use crate::extract::buffers::BLOCK_CELLS;
 use crate::extract::reference::Construction;
 use crate::extract::{Capabilities, Extractor, Job, MeshCount, Output};
 use crate::scene::params::ParamError;
@@ -43,20 +42,10 @@ impl Renderer {
                 DrawCount::Indirect
             }
             MeshCount::Known { needed, indices } => {
-                let grid = self.grid();
-                self.latest_stats = Some(FrameStats {
-                    frame: self.frame,
-                    triangles: indices / 3,
-                    triangles_requested: needed.indices / 3,
-                    max_triangles: self.mesh.capacity.indices / 3,
-                    vertices: needed.vertices,
-                    active_blocks: needed.active_blocks,
-                    total_blocks: grid.cells_per_axis.div_ceil(BLOCK_CELLS).pow(3),
-                    active_cells: needed.active_cells,
-                    total_cells: grid.cells_per_axis.pow(3),
-                    overflowed: indices < needed.indices,
-                    mesh_bytes: self.mesh.bytes(),
-                });
+                let (grid, capacity, bytes) = (self.grid(), self.mesh.capacity, self.mesh.bytes());
+                let overflowed = indices < needed.indices;
+                self.latest_stats =
+                    Some(FrameStats::from_counts(self.frame, grid, capacity, needed, overflowed, bytes));
                 DrawCount::Direct(indices)
             }
         }
@@ -92,11 +81,6 @@ impl Renderer {
             }
         };
         chosen.unwrap_or(0)
-    }
-
-    /// The extractor the next frame will use.
-    pub fn next_source(&self) -> &'static str {
-        self.extractors[self.next_extractor()].name()
     }
 
     /// What the extractor the next frame will use can do.

@@ -4,6 +4,7 @@
 use super::limits::storage_limit;
 use super::{Renderer, Sizing};
 use crate::extract::buffers::{BLOCK_CELLS, Capacity};
+use crate::extract::reference::Grid;
 use crate::extract::uniforms::Counters;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU8, Ordering};
@@ -37,6 +38,31 @@ pub struct FrameStats {
 }
 
 impl FrameStats {
+    /// The figures of frame `frame` on `grid`, from the counts the surface needed and the capacity its
+    /// buffers had: whatever went past the index buffer was not drawn.
+    pub(super) fn from_counts(
+        frame: u64,
+        grid: Grid,
+        capacity: Capacity,
+        needed: Counters,
+        overflowed: bool,
+        mesh_bytes: u64,
+    ) -> Self {
+        Self {
+            frame,
+            triangles: needed.indices.min(capacity.indices) / 3,
+            triangles_requested: needed.indices / 3,
+            max_triangles: capacity.indices / 3,
+            vertices: needed.vertices,
+            active_blocks: needed.active_blocks,
+            total_blocks: grid.cells_per_axis.div_ceil(BLOCK_CELLS).pow(3),
+            active_cells: needed.active_cells,
+            total_cells: grid.cells_per_axis.pow(3),
+            overflowed,
+            mesh_bytes,
+        }
+    }
+
     /// True when the surface needed more room than the buffers had, so some of it was not drawn.
     pub fn overflowed(&self) -> bool {
         self.overflowed
@@ -143,21 +169,10 @@ impl Renderer {
         #[cfg(not(target_arch = "wasm32"))]
         let _ = self.device.poll(wgpu::PollType::Poll);
         let grid = self.grid();
-        let total_blocks = grid.cells_per_axis.div_ceil(BLOCK_CELLS).pow(3);
         for Reading { frame, capacity, counters } in self.stats.take_ready() {
-            let stats = FrameStats {
-                frame,
-                triangles: counters.indices.min(capacity.indices) / 3,
-                triangles_requested: counters.indices / 3,
-                max_triangles: capacity.indices / 3,
-                vertices: counters.vertices,
-                active_blocks: counters.active_blocks,
-                total_blocks,
-                active_cells: counters.active_cells,
-                total_cells: grid.cells_per_axis.pow(3),
-                overflowed: !capacity.holds(&counters),
-                mesh_bytes: self.mesh.bytes(),
-            };
+            let overflowed = !capacity.holds(&counters);
+            let stats =
+                FrameStats::from_counts(frame, grid, capacity, counters, overflowed, self.mesh.bytes());
             if self.latest_stats.is_none_or(|s| s.frame < stats.frame) {
                 self.latest_stats = Some(stats);
             }

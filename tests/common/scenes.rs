@@ -17,27 +17,34 @@ pub struct OracleScene {
     pub construction: Construction,
 }
 
+/// `how_many` scenes drawn from a fixed seed (sphere count, resolution, iso level, layout and time), so
+/// runs repeat: the draws of `tests/gpu_matches_oracle.rs`.
+pub fn random_scenes(how_many: usize) -> Vec<OracleScene> {
+    let mut rng = rand_pcg::Pcg32::seed_from_u64(0x6d65_7461);
+    (0..how_many)
+        .map(|case| {
+            let count = rng.random_range(1..=64);
+            let resolution = rng.random_range(8..=48);
+            let iso = 10f32.powf(rng.random_range(-1.0..1.0));
+            let seed = rng.random_range(0..1_000_000);
+            let time = rng.random_range(0.0..20.0);
+            let mut scene = Scene::new(seed, count).unwrap();
+            scene.step(time).unwrap();
+            OracleScene {
+                what: format!("case {case}: seed {seed}, {count} spheres, {resolution} cells, iso {iso}"),
+                spheres: scene.spheres().to_vec(),
+                iso,
+                resolution,
+                construction: Construction::default(),
+            }
+        })
+        .collect()
+}
+
 /// `random` seeded random scenes (the generator of `tests/gpu_matches_oracle.rs`), then the walls,
 /// overlaps and grid-point scenes at five iso levels, two placements and two blends.
 pub fn oracle_scenes(random: usize) -> Vec<OracleScene> {
-    let mut scenes = Vec::new();
-    let mut rng = rand_pcg::Pcg32::seed_from_u64(0x6d65_7461);
-    for case in 0..random {
-        let count = rng.random_range(1..=64);
-        let resolution = rng.random_range(8..=48);
-        let iso = 10f32.powf(rng.random_range(-1.0..1.0));
-        let seed = rng.random_range(0..1_000_000);
-        let time = rng.random_range(0.0..20.0);
-        let mut scene = Scene::new(seed, count).unwrap();
-        scene.step(time).unwrap();
-        scenes.push(OracleScene {
-            what: format!("case {case}: seed {seed}, {count} spheres, {resolution} cells, iso {iso}"),
-            spheres: scene.spheres().to_vec(),
-            iso,
-            resolution,
-            construction: Construction::default(),
-        });
-    }
+    let mut scenes = random_scenes(random);
     for (name, spheres) in [
         ("touching walls", touching_walls()),
         ("overlapping", overlapping()),
