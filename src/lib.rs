@@ -12,7 +12,8 @@
 //! - [`renderer`]: one [`Renderer`] orders a frame (update the scene → extract → draw) into any
 //!   texture view; renderers on one device share a [`GpuContext`].
 //! - `web` (wasm only): the handle the page drives. Beside `main.rs`, the native tools: [`export`]
-//!   (mesh files, also used by the page), [`offscreen`] and [`bench`].
+//!   (mesh files, also used by the page), [`offscreen`], [`bench`] and [`manifest`] (the element's
+//!   description for editors, written from the parameter table).
 
 pub mod scene;
 
@@ -29,6 +30,8 @@ pub mod renderer;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod bench;
 pub mod export;
+#[cfg(not(target_arch = "wasm32"))]
+pub mod manifest;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod offscreen;
 #[cfg(target_arch = "wasm32")]

@@ -29,6 +29,25 @@ mod cli {
         Export(ExportArgs),
         /// Time animated frames for a table of resolutions and sphere counts.
         Bench(BenchArgs),
+        /// Write the element's description from the parameter table: www/lib/attributes.js,
+        /// www/custom-elements.json and www/metaballs-view.d.ts.
+        Manifest(ManifestArgs),
+    }
+
+    #[derive(clap::Args)]
+    struct ManifestArgs {
+        /// The folder to write into (the repository's www/).
+        #[arg(long, default_value = "www")]
+        out: PathBuf,
+    }
+
+    fn manifest(args: ManifestArgs) -> Result<(), Box<dyn std::error::Error>> {
+        for (path, text) in metaballs::manifest::files() {
+            let path = args.out.join(path);
+            std::fs::write(&path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+            println!("wrote {}", path.display());
+        }
+        Ok(())
     }
 
     #[derive(clap::Args)]
@@ -328,6 +347,7 @@ mod cli {
             Command::Render(args) => render(args),
             Command::Bench(args) => bench(args),
             Command::Export(args) => export(args),
+            Command::Manifest(args) => manifest(args),
         };
         match result {
             Ok(()) => ExitCode::SUCCESS,

@@ -19,7 +19,7 @@ need_deb() {
     as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q "${missing[@]}"
 }
 
-need_deb mesa-vulkan-drivers chromium chromium-driver python3 g++
+need_deb mesa-vulkan-drivers chromium chromium-driver poppler-utils python3 g++
 command -v node >/dev/null && command -v npm >/dev/null || need_deb nodejs npm
 rustup target list --installed | grep -qx wasm32-unknown-unknown || rustup target add wasm32-unknown-unknown
 rustup component list --installed | grep -q '^clippy' || rustup component add clippy
@@ -51,7 +51,11 @@ CHROMEDRIVER=/usr/bin/chromedriver cargo test --target wasm32-unknown-unknown --
 echo "== page end to end (Playwright, headless Chromium)"
 (
     cd tests/e2e
-    [ -d node_modules/playwright-core ] || PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 npm ci --no-audit --no-fund
+    # Installs the locked test tools when any is missing (Playwright, TypeScript, publint, VitePress,
+    # reveal.js, axe-core).
+    node -e 'const d = require("./package.json").devDependencies;
+      for (const n of Object.keys(d)) require("fs").statSync(`node_modules/${n}/package.json`)' 2>/dev/null \
+        || PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 npm ci --no-audit --no-fund
     npm test
 ) 2>&1 | tee -a "$log"
 

@@ -23,12 +23,12 @@ build() {
     local bindgen=()
     while [ "$1" != "--" ]; do bindgen+=("$1"); shift; done
     shift
-    cargo build --release --lib --target wasm32-unknown-unknown "$@"
+    cargo build --profile wasm --lib --target wasm32-unknown-unknown "$@"
     wasm-bindgen --target web --no-typescript "${bindgen[@]}" --out-dir "$out" \
-        target/wasm32-unknown-unknown/release/metaballs.wasm
+        target/wasm32-unknown-unknown/wasm/metaballs.wasm
     echo "built $out/metaballs_bg.wasm ($(wc -c < "$out/metaballs_bg.wasm") bytes, $(gzip -9c "$out/metaballs_bg.wasm" | wc -c) gzipped)"
 }
-build pkg --
-# The WebGL2 build drops the function names (panic traces show indices instead): 15 % fewer bytes to
-# fetch on the slow path; the WebGPU build keeps them.
+# Both builds use the `wasm` profile (Cargo.toml: optimised for size, whole-program) and drop the
+# function names (panic traces show indices instead).
+build pkg --remove-name-section --remove-producers-section --
 build pkg-webgl --remove-name-section --remove-producers-section -- --features webgl

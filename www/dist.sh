@@ -10,7 +10,8 @@ bash www/build.sh
 rm -rf dist
 mkdir -p dist/www dist/pkg dist/pkg-webgl
 cp index.html embed.html dist/
-cp -r www/lib www/examples www/metaballs-view.js www/page.js www/bench.js www/style.css dist/www/
+cp -r www/lib www/examples www/metaballs-view.js www/metaballs-view.css www/page.js www/bench.js www/style.css \
+    dist/www/
 cp pkg/metaballs.js pkg/metaballs_bg.wasm dist/pkg/
 cp pkg-webgl/metaballs.js pkg-webgl/metaballs_bg.wasm dist/pkg-webgl/
 echo "dist/ is ready ($(du -sh dist | cut -f1)): copy it to a static host"

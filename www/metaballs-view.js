@@ -1,9 +1,11 @@
 // <metaballs-view>: merging spheres drawn with marching cubes, as an element a page embeds any number of
-// times. Load it with one <script type="module" src=".../www/metaballs-view.js">; every element on the
-// page shares one GPU device, starts when it first comes near the viewport, draws only while on screen,
-// takes keys only while focused, and survives a lost GPU.
+// times. Load it with one <script type="module" src=".../www/metaballs-view.js"> (or `import
+// 'metaballs-view'`); every element on the page shares one GPU device, starts when it first comes near
+// the viewport, draws only while on screen, takes keys only while focused, and survives a lost GPU.
+// Importing it does nothing but define the element, and only where `customElements` exists (a
+// server-side build imports it safely); the wasm loads when the first figure is connected.
 
-import { hub, propertyName } from './lib/engine.js';
+import { caseGallery, hub, loadWasm, propertyName, wasmLoaded } from './lib/engine.js';
 import { Inspector } from './lib/inspector.js';
 import { wireCameraInput } from './lib/camera-input.js';
 import { buildPanel, listedControls } from './lib/panel.js';
@@ -14,23 +16,16 @@ import { SphereEditor } from './lib/editor.js';
 import { wireDrop } from './lib/scene-files.js';
 import { SceneIO } from './lib/scene-io.js';
 import {
-  CONTROL_NAMES, defaultOf, defaults, FigureState, GALLERY, NAMES, TABLE, wasmError,
+  CONTROL_NAMES, defaultOf, defaults, FigureState, NAMES, TABLE, TEXT_NAMES,
 } from './lib/figure-state.js';
 import { FigureFrames } from './lib/figure-frames.js';
+import { FigureLook } from './lib/figure-look.js';
+import { pageWatch, unwatch } from './lib/page-watch.js';
 
-// A shared pair of observers: one starts elements as they come near the viewport, the other tells
-// whether each is on screen at all.
-const nearObserver = new IntersectionObserver((entries) => {
-  for (const entry of entries) if (entry.isIntersecting) entry.target.approach();
-}, { rootMargin: '200px' });
-const visibleObserver = new IntersectionObserver((entries) => {
-  for (const entry of entries) entry.target.setOnScreen(entry.isIntersecting);
-});
-document.addEventListener('visibilitychange', () => hub.requestFrame());
+// Where the DOM is missing (a server-side build), the class still loads and is never defined.
+const Base = globalThis.HTMLElement ?? class {};
 
-const reducedMotion = matchMedia('(prefers-reduced-motion: reduce)');
-
-export class MetaballsView extends HTMLElement {
+export class MetaballsView extends Base {
   static get observedAttributes() {
     return NAMES;
   }
@@ -80,13 +75,18 @@ export class MetaballsView extends HTMLElement {
     picture: (scale) => this.#run(() => this.downloadPicture(scale)),
   };
   #started = false;
+  #look;
+  // Resolves once the wasm is in and the attributes given so far are read.
+  #loaded = null;
 
   constructor() {
     super();
     this.#root = this.attachShadow({ mode: 'open', delegatesFocus: true });
-    this.#root.adoptedStyleSheets = [elementStyle];
+    this.#root.adoptedStyleSheets = [elementStyle()];
     this.#root.innerHTML = TEMPLATE;
     this.#canvas = this.#root.getElementById('view');
+    this.#look = new FigureLook(this, this.#root, this.#canvas);
+    this.#look.name(this.#state);
     this.#hud = new Hud(this.#root);
     const $ = (id) => this.#root.getElementById(id);
     $('play').addEventListener('click', () => { this.play(); this.#canvas.focus(); });
@@ -100,20 +100,22 @@ export class MetaballsView extends HTMLElement {
       settings: this.#settings,
       guard: this.#guard,
       hud: this.#hud,
+      look: this.#look,
+      loaded: () => this.#load(),
       editor: () => this.#editor,
       io: () => this.#io,
       inspector: () => this.#inspector,
       notice: (text, ms) => this.#notice(text, ms),
       showPanel: () => this.#showPanel(this.#state),
       buildPanel: () => this.#buildPanel(),
-      emit: (type, detail) => this.dispatchEvent(new CustomEvent(type, { detail })),
+      emit: (type, detail) => this.#emit(type, detail),
     });
-    this.#inspector = new Inspector(this.#root, GALLERY.cube, {
+    this.#inspector = new Inspector(this.#root, () => caseGallery().cube, {
       view: () => this.#frames.view,
       iso: () => this.#state.iso,
       onShow: (report) => {
         this.#frames.redraw(2);
-        this.dispatchEvent(new CustomEvent('metaballs-inspect', { detail: { cell: report } }));
+        this.#emit('metaballs-inspect', { cell: report });
       },
       onClass: (k) => this.#showPanel(this.#state, k),
     });
@@ -136,7 +138,7 @@ export class MetaballsView extends HTMLElement {
       canvas: this.#canvas,
       ready: () => this.ready(),
       notice: (text, ms) => this.#notice(text, ms),
-      emit: (type, detail) => this.dispatchEvent(new CustomEvent(type, { detail })),
+      emit: (type, detail) => this.#emit(type, detail),
     });
     const editing = () => this.#state.edit && this.#frames.view !== null;
     wireCameraInput(this, this.#canvas, {
@@ -183,32 +185,59 @@ export class MetaballsView extends HTMLElement {
   // ---------------------------------------------------------------- lifecycle
 
   connectedCallback() {
-    if (wasmError) {
-      this.fail('The figure could not load', `${wasmError?.message ?? wasmError}`);
-      return;
-    }
-    if (!this.#started) {
-      this.#started = true;
-      if (this.#state.autoplay === 'off' || reducedMotion.matches) this.#set('paused', true);
-      // Very small figures start with their statistics folded, like the panel.
-      this.#root.querySelector('#hud details').open = !(this.clientWidth > 0 && this.clientWidth < 300);
-    }
-    this.#buildPanel();
-    this.#root.getElementById('hud').hidden = this.#state.hud !== 'on';
+    const watch = pageWatch();
+    this.#load().then(() => {
+      if (!this.isConnected) return;
+      if (!this.#started) {
+        this.#started = true;
+        if (this.#state.autoplay === 'off' || watch.reducedMotion.matches) this.#set('paused', true);
+        // Very small figures start with their statistics folded, like the panel.
+        this.#root.querySelector('#hud details').open = !(this.clientWidth > 0 && this.clientWidth < 300);
+        // A figure without a poster is drawn once while the page is idle, so it prints as a picture.
+        if (!this.#state.poster) {
+          const later = globalThis.requestIdleCallback ?? ((f) => setTimeout(f, 1000));
+          later(() => this.isConnected && this.#frames.drawForPrint(), { timeout: 4000 });
+        }
+      }
+      this.#buildPanel();
+      this.#root.getElementById('hud').hidden = this.#state.hud !== 'on';
+    }, (error) => this.fail('The figure could not load', `${error?.message ?? error}`));
     hub.register(this);
-    nearObserver.observe(this);
-    visibleObserver.observe(this);
+    watch.near.observe(this);
+    watch.visible.observe(this);
   }
 
   disconnectedCallback() {
-    nearObserver.unobserve(this);
-    visibleObserver.unobserve(this);
+    unwatch(this);
     hub.unregister(this);
     this.#frames.detach();
   }
 
+  // Loads the wasm (once per page) and reads the attributes given before it arrived.
+  #load() {
+    this.#loaded ??= loadWasm().then(() => {
+      for (const name of NAMES) {
+        if (this.hasAttribute(name)) this.attributeChangedCallback(name, null, this.getAttribute(name));
+      }
+    });
+    return this.#loaded;
+  }
+
+  /** The reader's colour scheme changed: a figure with `theme="auto"` follows it. */
+  schemeChanged() {
+    if (this.#state.theme !== 'auto') return;
+    this.#settings.changed.add('theme');
+    hub.requestFrame();
+  }
+
+  #emit(type, detail) {
+    this.dispatchEvent(new CustomEvent(type, { detail, bubbles: true, composed: true }));
+  }
+
   attributeChangedCallback(name, _old, text) {
-    if (this.#settings.reflecting || wasmError) return;
+    if (this.#settings.reflecting) return;
+    // Before the wasm arrives only plain text is taken; the rest is read when it loads.
+    if (!wasmLoaded() && !TEXT_NAMES.has(name)) return;
     if (text === null) {
       this.#settings.given.delete(name);
       this.#accept(name, defaultOf(name));
@@ -244,8 +273,10 @@ export class MetaballsView extends HTMLElement {
       this.#inspector.deselect();
       this.#canvas.classList.toggle('editing', value);
     }
+    if (name === 'poster') this.#look.setPoster(value, this.#frames.framesDrawn > 0);
+    this.#look.name(this.#state);
     this.#showPanel(this.#state);
-    this.dispatchEvent(new CustomEvent('metaballs-change', { detail: { property: propertyName(name), value } }));
+    this.#emit('metaballs-change', { property: propertyName(name), value });
     hub.requestFrame();
   }
 
@@ -255,7 +286,9 @@ export class MetaballsView extends HTMLElement {
     if ((name === 'spheres' || name === 'seed') && this.#state.balls) this.#adopt('balls', '');
     this.#settings.reflect(name, value);
     this.#settings.given.add(name);
+    const before = this.#state[name];
     this.#accept(name, value);
+    if (this.#state[name] !== before) this.#look.announceChange(name, this.#state[name]);
   }
 
   #showsPlayButton() {
@@ -270,7 +303,7 @@ export class MetaballsView extends HTMLElement {
         maxResolution: this.#frames.software ? Math.min(256, maxResolution) : maxResolution,
         withoutCompute: Boolean(this.#frames.gpu && !this.#frames.gpu.has_compute()),
         small: this.clientWidth > 0 && this.clientWidth < 560,
-        gallery: GALLERY,
+        gallery: caseGallery(),
       });
     this.#root.getElementById('play').hidden = !this.#showsPlayButton();
   }
@@ -324,8 +357,9 @@ export class MetaballsView extends HTMLElement {
     this.#state[name] = value;
     this.#settings.applied[name] = value;
     this.#settings.reflect(name);
+    this.#look.name(this.#state);
     this.#showPanel(this.#state);
-    this.dispatchEvent(new CustomEvent('metaballs-change', { detail: { property: propertyName(name), value } }));
+    this.#emit('metaballs-change', { property: propertyName(name), value });
   }
 
   // Runs an action of the panel; a failure becomes a notice.
@@ -398,10 +432,16 @@ export class MetaballsView extends HTMLElement {
   /** Resolves once the renderer has started (or rejects with why it could not). */
   ready() { return this.#frames.ready(); }
 
+  /** Resolves once the figure has a picture for print (its poster, or one of a drawn frame). */
+  printable() { return this.#look.printable(); }
+
   /**
    * Runs `f(view)` with the wasm view while the element's own frames are held (the benchmark uses it).
    */
   withView(f) { return this.#frames.withView(f); }
 }
 
-if (!customElements.get('metaballs-view')) customElements.define('metaballs-view', MetaballsView);
+// Safe to import twice, even from two copies of the package: the first definition stays.
+if (globalThis.customElements && !customElements.get('metaballs-view')) {
+  customElements.define('metaballs-view', MetaballsView);
+}

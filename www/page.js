@@ -3,72 +3,93 @@
 // person changes them, plus the benchmark mode (`?bench`). Bad values in a link are reported inside the
 // figure and replaced by defaults.
 
-import { backendName, loadWasm, parameterTable, parseParameter, propertyName } from './lib/engine.js';
+import { backendName, loadWasm, parseParameter, propertyName } from './lib/engine.js';
+import { TABLE as table } from './lib/attributes.js';
 import { runBenchmark } from './bench.js';
 
-await loadWasm();
-await customElements.whenDefined('metaballs-view');
 const element = document.querySelector('metaballs-view');
-const table = parameterTable();
-const query = new URLSearchParams(location.search);
-// The iframe page shows what the link asks for and nothing more; the full page always has every
-// control and the statistics, so its links do not carry `controls` or `hud`.
-const chromeless = document.body.dataset.page === 'embed';
-const inLinks = (spec) => chromeless || (spec.name !== 'controls' && spec.name !== 'hud');
+// Plain text (the poster, the description) is taken at once, so the poster shows while the wasm loads.
+const early = new URLSearchParams(location.search);
+for (const spec of table.filter((p) => p.kind === 'text')) {
+  const value = early.get(spec.url) ?? early.get(spec.name);
+  if (value !== null) element.setAttribute(spec.name, value);
+}
+loadWasm().then(start, () => { /* the figure says why */ });
 
-const problems = [];
-for (const spec of table.filter(inLinks)) {
-  const key = query.has(spec.url) ? spec.url : query.has(spec.name) ? spec.name : null;
-  if (key === null) continue;
-  const raw = query.get(key);
-  try {
-    parseParameter(spec.name, raw);
-    element.setAttribute(spec.name, raw);
-  } catch (error) {
-    problems.push(`${key}=${raw}: ${error.message}`);
+function start() {
+  const query = new URLSearchParams(location.search);
+  // The iframe page shows what the link asks for and nothing more; the full page always has every
+  // control and the statistics, so its links do not carry `controls` or `hud`.
+  const chromeless = document.body.dataset.page === 'embed';
+  const inLinks = (spec) => chromeless || (spec.name !== 'controls' && spec.name !== 'hud');
+
+  const problems = [];
+  for (const spec of table.filter(inLinks)) {
+    const key = query.has(spec.url) ? spec.url : query.has(spec.name) ? spec.name : null;
+    if (key === null) continue;
+    const raw = query.get(key);
+    try {
+      parseParameter(spec.name, raw);
+      element.setAttribute(spec.name, raw);
+    } catch (error) {
+      problems.push(`${key}=${raw}: ${error.message}`);
+    }
   }
-}
-if (problems.length) {
-  element.showNotice(`Some values in the link were invalid and were replaced by defaults: ${problems.join('; ')}.`);
-}
+  if (problems.length) {
+    element.showNotice(`Some values in the link were invalid and were replaced by defaults: ${problems.join('; ')}.`);
+  }
 
-const MAX_LINK_SPHERES = 16;
+  const MAX_LINK_SPHERES = 16;
 
-// Changes go back into the link (short names, defaults left out), so a link reproduces the view.
-const share = document.getElementById('share');
-let urlTimer = 0;
-function saveUrl() {
-  clearTimeout(urlTimer);
-  urlTimer = setTimeout(() => {
-    const next = new URLSearchParams();
-    for (const spec of table.filter(inLinks)) {
-      const value = element[propertyName(spec.name)];
-      if (value === parseParameter(spec.name, spec.default)) continue;
-      // Hand-placed spheres ride in the link for small scenes; larger ones go in a scene file.
-      if (spec.name === 'balls' && value.split(';').length > MAX_LINK_SPHERES) continue;
-      const text = typeof value === 'boolean' ? (value ? '1' : '0') : String(value);
-      next.set(spec.url, text);
+  // Changes go back into the link (short names, defaults left out), so a link reproduces the view.
+  const share = document.getElementById('share');
+  let urlTimer = 0;
+  function saveUrl() {
+    clearTimeout(urlTimer);
+    urlTimer = setTimeout(() => {
+      const next = new URLSearchParams();
+      for (const spec of table.filter(inLinks)) {
+        const value = element[propertyName(spec.name)];
+        if (value === parseParameter(spec.name, spec.default)) continue;
+        // Hand-placed spheres ride in the link for small scenes; larger ones go in a scene file.
+        if (spec.name === 'balls' && value.split(';').length > MAX_LINK_SPHERES) continue;
+        const text = typeof value === 'boolean' ? (value ? '1' : '0') : String(value);
+        next.set(spec.url, text);
+      }
+      for (const [key, value] of query) {
+        if (key === 'bench' || key.startsWith('bench_')) next.set(key, value);
+      }
+      // Commas, semicolons and colons are fine in a query: keep the spheres and slices readable.
+      const search = next.toString().replace(/%2C/g, ',').replace(/%3B/g, ';').replace(/%3A/g, ':');
+      const url = `${location.pathname}${search ? `?${search}` : ''}`;
+      history.replaceState(null, '', url);
+      if (share) share.href = url;
+    }, 150);
+  }
+  element.addEventListener('metaballs-change', saveUrl);
+  saveUrl();
+
+  // reveal.js tells an iframe on a slide when the slide starts and stops being shown: the figure
+  // pauses while its slide is away and plays again when it comes back (unless it was paused before).
+  let pausedBySlide = false;
+  window.addEventListener('message', (event) => {
+    if (event.data === 'slide:stop' && !element.paused) {
+      pausedBySlide = true;
+      element.pause();
+    } else if (event.data === 'slide:start' && pausedBySlide) {
+      pausedBySlide = false;
+      element.play();
     }
-    for (const [key, value] of query) {
-      if (key === 'bench' || key.startsWith('bench_')) next.set(key, value);
-    }
-    // Commas, semicolons and colons are fine in a query: keep the spheres and slices readable.
-    const search = next.toString().replace(/%2C/g, ',').replace(/%3B/g, ';').replace(/%3A/g, ':');
-    const url = `${location.pathname}${search ? `?${search}` : ''}`;
-    history.replaceState(null, '', url);
-    if (share) share.href = url;
-  }, 150);
-}
-element.addEventListener('metaballs-change', saveUrl);
-saveUrl();
+  });
 
-// For tests and the console.
-window.metaballs = { element };
+  // For tests and the console.
+  window.metaballs = { element };
 
-if (query.has('bench')) {
-  const container = document.getElementById('bench');
-  // The figure goes back to its own settings afterwards; the table stays.
-  element.withView((view) => runBenchmark(view, container, { hasCompute: backendName() === 'webgpu' })).catch(
-    (error) => element.fail('The benchmark stopped', error?.message ?? String(error)),
-  );
+  if (query.has('bench')) {
+    const container = document.getElementById('bench');
+    // The figure goes back to its own settings afterwards; the table stays.
+    element.withView((view) => runBenchmark(view, container, { hasCompute: backendName() === 'webgpu' })).catch(
+      (error) => element.fail('The benchmark stopped', error?.message ?? String(error)),
+    );
+  }
 }

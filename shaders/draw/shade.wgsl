@@ -46,6 +46,11 @@ struct Shading {
     // x: the axis across the lattice's slab; y, z: its first and last grid planes.
     lattice_slab: vec4<u32>,
     lights: array<Light, 3>,
+    // The background's gradient, linear RGB.
+    background_top: vec3<f32>,
+    _pad_top: f32,
+    background_bottom: vec3<f32>,
+    _pad_bottom: f32,
 }
 
 @group(0) @binding(20) var<uniform> shading: Shading;
@@ -112,9 +117,8 @@ fn background_vertex(@builtin(vertex_index) i: u32) -> BackgroundOut {
 
 @fragment
 fn background_fragment(in: BackgroundOut) -> @location(0) vec4<f32> {
-    let bottom = vec3<f32>(0.010, 0.012, 0.018);
-    let top = vec3<f32>(0.060, 0.075, 0.110);
-    return to_output(mix(bottom, top, clamp(in.height * 0.5, 0.0, 1.0)));
+    let t = clamp(in.height * 0.5, 0.0, 1.0);
+    return to_output(mix(shading.background_bottom, shading.background_top, t));
 }
 
 // The box's 12 edges as a line list: vertex i is end (i & 1) of edge i / 2; edge e runs along axis e / 4

@@ -66,5 +66,10 @@ pub struct ShadingUniform {
     /// The lattice's slab: the axis across it, its first and last grid planes, then padding.
     pub lattice_slab: [u32; 4],
     pub lights: [LightUniform; 3],
+    /// The background's gradient, linear RGB: top, then bottom.
+    pub background_top: [f32; 3],
+    pub _pad_top: f32,
+    pub background_bottom: [f32; 3],
+    pub _pad_bottom: f32,
 }
-const _: () = assert!(std::mem::size_of::<ShadingUniform>() == 416);
+const _: () = assert!(std::mem::size_of::<ShadingUniform>() == 448);

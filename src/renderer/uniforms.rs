@@ -52,6 +52,8 @@ impl Renderer {
             selected: self.selected.is_some() as u32,
             selected_cell: self.selected.unwrap_or(UVec3::ZERO).to_array(),
             lights: lights(&self.settings),
+            background_top: s.view.background()[0],
+            background_bottom: s.view.background()[1],
             ..Default::default()
         };
         views::view_fields(&mut shading, &s.view, grid, (-eye).normalize());

@@ -93,6 +93,30 @@ impl View {
         self.renderer.set_parameter(name, text).map_err(js_error)
     }
 
+    /// Sets the background's gradient from the page's colours (`#rrggbb` top and bottom, as the
+    /// element's CSS custom properties give them); empty text for either goes back to the theme's.
+    pub fn set_background(&mut self, top: &str, bottom: &str) -> Result<(), JsError> {
+        let color = |text: &str| -> Result<Option<[f32; 3]>, JsError> {
+            if text.trim().is_empty() {
+                return Ok(None);
+            }
+            match crate::scene::params::parse_parameter("color", text).map_err(js_error)? {
+                crate::scene::params::Value::Text(hex) => {
+                    Ok(Some(crate::scene::params::srgb_hex_to_linear(&hex).to_array()))
+                }
+                _ => Ok(None),
+            }
+        };
+        let mut settings = *self.renderer.settings();
+        settings.view.background = match (color(top)?, color(bottom)?) {
+            (Some(top), Some(bottom)) => Some([top, bottom]),
+            (Some(top), None) => Some([top, settings.view.theme.background()[1]]),
+            (None, Some(bottom)) => Some([settings.view.theme.background()[0], bottom]),
+            (None, None) => None,
+        };
+        self.renderer.set_settings(settings).map_err(js_error)
+    }
+
     /// Selects the cell under canvas pixel (`x`, `y`) (device pixels from the top left), or nothing
     /// over the background; returns the cell's report, or null.
     pub fn pick_cell(&mut self, x: f32, y: f32) -> JsValue {

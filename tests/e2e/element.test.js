@@ -49,6 +49,9 @@ test('five figures: one device, the visible ones draw, the ones below the fold s
   const { page, errors, close } = await open(`${FIXTURES}/five.html`);
   await waitForStats(page, 'a');
   await waitForStats(page, 'b');
+  // Below the fold, each figure is drawn once while the page is idle, for its picture in print, and
+  // lets go of its renderer again.
+  await page.evaluate(() => Promise.all(['c', 'd', 'e'].map((id) => document.getElementById(id).printable())));
   await page.waitForTimeout(2000);
   for (const id of ['a', 'b']) {
     const { surface } = await surfaceOf(page, `#${id}`);
@@ -84,6 +87,7 @@ test('removing a figure frees its buffers; putting it back draws again', async (
   const { page, errors, close } = await open(`${FIXTURES}/five.html`);
   await waitForStats(page, 'a');
   await waitForStats(page, 'b');
+  await page.evaluate(() => Promise.all(['c', 'd', 'e'].map((id) => document.getElementById(id).printable())));
   const counts = () => page.evaluate(() => {
     const V = customElements.get('metaballs-view');
     return { renderers: V.liveRenderers, bytes: V.gpuBytes };

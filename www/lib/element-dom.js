@@ -1,19 +1,24 @@
 // The element's shadow DOM: its markup, and its own styles adopted by every shadow root (one stylesheet
-// per page). Shadow DOM keeps the host page's rules out and these in.
+// per page, made when the first figure is; nothing here runs at import, so a server-side build can
+// import the module). Shadow DOM keeps the host page's rules out and these in; pages restyle the figure
+// through the custom properties and ::part() names below (README, custom-elements.json).
 
-export const elementStyle = new CSSStyleSheet();
-elementStyle.replaceSync(`
+const STYLE = `
 :host {
-  --panel: rgba(14, 17, 24, 0.84);
-  --text: #e6e9ef;
-  --muted: #9aa3b5;
-  --accent: #e77661;
+  --panel: var(--metaballs-panel-background, rgba(14, 17, 24, 0.88));
+  --text: var(--metaballs-text, #e6e9ef);
+  --muted: var(--metaballs-muted, #a9b1c2);
+  --accent: var(--metaballs-accent, #e77661);
+  --button: #232838;
+  --button-hover: #2c3245;
+  --border: #3d4559;
+  --on-accent: #1a0d0a;
   display: block;
   position: relative;
   width: 100%;
   aspect-ratio: 16 / 9;
   overflow: hidden;
-  background: #0b0d12;
+  background: var(--metaballs-poster-color, #0b0d12);
   color: var(--text);
   font: 13px/1.4 system-ui, -apple-system, "Segoe UI", Roboto, sans-serif;
   color-scheme: dark;
@@ -21,7 +26,60 @@ elementStyle.replaceSync(`
   container-type: inline-size;
   border-radius: 6px;
 }
+:host([theme="light"]) {
+  --panel: var(--metaballs-panel-background, rgba(250, 251, 253, 0.92));
+  --text: var(--metaballs-text, #1b1f27);
+  --muted: var(--metaballs-muted, #4a5263);
+  --accent: var(--metaballs-accent, #b2412c);
+  --button: #e8ebf1;
+  --button-hover: #dde1e9;
+  --border: #a9b1c2;
+  --on-accent: #ffffff;
+  background: var(--metaballs-poster-color, #e4e8ef);
+  color-scheme: light;
+}
+@media (prefers-color-scheme: light) {
+  :host([theme="auto"]) {
+    --panel: var(--metaballs-panel-background, rgba(250, 251, 253, 0.92));
+    --text: var(--metaballs-text, #1b1f27);
+    --muted: var(--metaballs-muted, #4a5263);
+    --accent: var(--metaballs-accent, #b2412c);
+    --button: #e8ebf1;
+    --button-hover: #dde1e9;
+    --border: #a9b1c2;
+    --on-accent: #ffffff;
+    background: var(--metaballs-poster-color, #e4e8ef);
+    color-scheme: light;
+  }
+}
 :host([hidden]) { display: none; }
+
+/* Before the first frame: the poster (or the poster colour). In print: the latest frame as a picture,
+   else the poster; the controls are left out. */
+#poster, #print-frame {
+  position: absolute;
+  inset: 0;
+  width: 100%;
+  height: 100%;
+  object-fit: cover;
+  pointer-events: none;
+}
+#poster[hidden], #print-frame { display: none; }
+.visually-hidden {
+  position: absolute;
+  width: 1px;
+  height: 1px;
+  overflow: hidden;
+  clip-path: inset(50%);
+  white-space: nowrap;
+}
+@media print {
+  :host { box-shadow: none !important; break-inside: avoid; }
+  canvas, #panel, #hud, #play, #notice, #wheel-hint, #confirm, #inspector, #sphere-box, #edit-overlay,
+  #message { display: none !important; }
+  #poster[src] { display: block; }
+  #print-frame[src] { display: block; }
+}
 * { box-sizing: border-box; }
 
 canvas {
@@ -74,8 +132,8 @@ input[type="checkbox"] { accent-color: var(--accent); justify-self: start; }
 .buttons { display: flex; gap: 6px; margin: 8px 0 4px; flex-wrap: wrap; }
 button, select {
   color: var(--text);
-  background: #232838;
-  border: 1px solid #343b50;
+  background: var(--button);
+  border: 1px solid var(--border);
   font: inherit;
 }
 button {
@@ -84,8 +142,8 @@ button {
   border-radius: 6px;
   cursor: pointer;
 }
-button:hover { background: #2c3245; }
-button[aria-pressed="true"] { background: var(--accent); color: #1a0d0a; border-color: var(--accent); }
+button:hover { background: var(--button-hover); }
+button[aria-pressed="true"] { background: var(--accent); color: var(--on-accent); border-color: var(--accent); }
 button:focus-visible, input:focus-visible { outline: 2px solid var(--accent); outline-offset: 2px; }
 .seed, .hint { margin: 4px 0; color: var(--muted); font-size: 12px; }
 ::slotted(*) { color: var(--muted); font-size: 12px; }
@@ -237,21 +295,34 @@ canvas.editing { cursor: crosshair; }
   justify-content: center;
   padding: 16px;
   text-align: center;
-  background: rgba(11, 13, 18, 0.94);
+  background: var(--panel);
   overflow: auto;
 }
 #message[hidden] { display: none; }
 #message h2 { margin: 0 0 6px; font-size: 16px; }
 #message p { margin: 0 0 8px; max-width: 620px; color: var(--muted); white-space: pre-line; }
 #message button { flex: none; }
-`);
+`;
+
+let sheet = null;
+/** The stylesheet every figure's shadow root adopts (made once, by the first figure). */
+export function elementStyle() {
+  if (!sheet) {
+    sheet = new CSSStyleSheet();
+    sheet.replaceSync(STYLE);
+  }
+  return sheet;
+}
 
 /** The markup of every figure's shadow root. */
 export const TEMPLATE = `
-  <canvas id="view" tabindex="0" part="canvas"
-    aria-label="Merging spheres drawn with marching cubes; drag to orbit, click then wheel to zoom"></canvas>
-  <aside id="panel" aria-label="Controls" hidden></aside>
-  <section id="hud" aria-label="Statistics" aria-live="off" hidden>
+  <img id="poster" part="poster" alt="" hidden>
+  <img id="print-frame" alt="">
+  <canvas id="view" tabindex="0" part="canvas" role="img" aria-describedby="how"></canvas>
+  <span id="how" class="visually-hidden">Drag to orbit, click then wheel to zoom; P pauses.</span>
+  <div id="announce" class="visually-hidden" role="status" aria-live="polite"></div>
+  <aside id="panel" part="panel" aria-label="Controls" hidden></aside>
+  <section id="hud" part="hud" aria-label="Statistics" aria-live="off" hidden>
     <details open><summary>Statistics</summary>
     <div><span class="key">FPS</span> <span id="fps">–</span></div>
     <div class="wide"><span class="key">Frame</span> <span id="frame-time">–</span></div>
@@ -266,7 +337,7 @@ export const TEMPLATE = `
   <section id="sphere-box" aria-label="Selected sphere" hidden></section>
   <input type="file" id="scene-file" accept=".json,application/json" hidden>
   <div id="wheel-hint" hidden></div>
-  <div id="notice" role="status" hidden></div>
+  <div id="notice" part="notice" role="status" hidden></div>
   <div id="confirm" role="alertdialog" aria-labelledby="confirm-text" hidden>
     <p id="confirm-text"></p>
     <div class="buttons"><button type="button" id="confirm-apply">Apply anyway</button><button type="button" id="confirm-keep">Keep</button></div>

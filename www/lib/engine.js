@@ -42,6 +42,9 @@ async function detectBackend() {
 
 let wasmReady = null;
 
+/** True once the wasm has loaded (attributes can be read from then on). */
+export const wasmLoaded = () => wasm !== null;
+
 /** Picks the backend and loads and starts its wasm (once, however many elements ask). */
 export function loadWasm() {
   wasmReady ??= (async () => {
@@ -53,13 +56,6 @@ export function loadWasm() {
     wasm = module;
   })();
   return wasmReady;
-}
-
-let table = null;
-/** The parameter table from Rust (name, url, label, kind, min, max, slider, default). */
-export function parameterTable() {
-  table ??= wasm.parameters();
-  return table;
 }
 
 /** The property name of an attribute (`max-pixel-ratio` → `maxPixelRatio`). */
@@ -139,8 +135,10 @@ class Hub {
    * could not start and whose message says why and what a browser needs.
    */
   async deviceFor(element, canvas) {
-    const webgl = backend === 'webgl2';
+    let webgl = false;
     try {
+      await loadWasm();
+      webgl = backend === 'webgl2';
       return webgl ? await this.#acquireWebgl(element, canvas) : await this.acquire();
     } catch (error) {
       const none = backend === 'none';

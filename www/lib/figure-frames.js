@@ -7,6 +7,7 @@ import { hub, wasmModule, within, WEBGL_WAIT } from './engine.js';
 import { applySetting, isRendererSetting } from './view-settings.js';
 import { canvasPixels, pixelRatio } from './canvas-size.js';
 import { CREATION, NAMES, defaultOf, defaults } from './figure-state.js';
+import { picturesTaken } from './figure-look.js';
 
 export class FigureFrames {
   #f;
@@ -24,10 +25,14 @@ export class FigureFrames {
   #last = 0;
   #framesDrawn = 0;
   #held = false;
+  // One frame is drawn off screen, for print, when the page is idle.
+  #printOnce = false;
+  #picturesSeen = 0;
 
   /**
-   * `figure`: { element, root, canvas, settings (a FigureState), guard, hud, editor(), io(),
-   * inspector(), notice(text, ms), showPanel(), buildPanel(), emit(type, detail) }.
+   * `figure`: { element, root, canvas, settings (a FigureState), guard, hud, look (a FigureLook),
+   * editor(), io(), inspector(), notice(text, ms), showPanel(), buildPanel(), emit(type, detail),
+   * loaded() (resolves once the element has read its attributes) }.
    */
   constructor(figure) {
     this.#f = figure;
@@ -63,6 +68,17 @@ export class FigureFrames {
     this.start();
   }
 
+  /**
+   * Draws one frame of a figure not yet near the viewport, for its picture in print, then lets go of
+   * its renderer again (it starts for good when the figure comes near).
+   */
+  drawForPrint() {
+    if (this.#failed || this.#onScreen) return;
+    this.#printOnce = true;
+    this.start(true);
+    hub.requestFrame();
+  }
+
   /** The figure entered or left the screen. */
   setOnScreen(onScreen) {
     this.#onScreen = onScreen;
@@ -77,8 +93,9 @@ export class FigureFrames {
     this.#onScreen = false;
   }
 
-  start() {
-    if (this.#view || this.#starting || this.#failed || !this.#near || !this.#f.element.isConnected) return;
+  start(forPrint = false) {
+    if (this.#view || this.#starting || this.#failed || !(this.#near || forPrint)) return;
+    if (!this.#f.element.isConnected) return;
     this.#starting = this.#create().finally(() => { this.#starting = null; });
   }
 
@@ -86,6 +103,7 @@ export class FigureFrames {
     const f = this.#f;
     let gpu;
     try {
+      await f.loaded();
       gpu = await hub.deviceFor(f.element, f.canvas);
     } catch (error) {
       this.fail(error.title, error.message, { retry: Boolean(hub.stopped) });
@@ -126,6 +144,7 @@ export class FigureFrames {
         return;
       }
     }
+    f.look.forgetBackground();
     settings.applied = { ...s };
     settings.changed = new Set(NAMES.filter((name) => (isRendererSetting(name) && !CREATION.has(name))
       || (name === 'balls' && s.balls)));
@@ -233,12 +252,28 @@ export class FigureFrames {
   tick(now) {
     const view = this.#view;
     const f = this.#f;
-    if (!view || this.#failed || this.#held || !this.#onScreen || document.visibilityState === 'hidden') {
+    const drawing = this.#onScreen || this.#printOnce;
+    if (!view || this.#failed || this.#held || !drawing || document.visibilityState === 'hidden') {
       return false;
+    }
+    // On screen but not shown (a slide of a deck that is not the current one, `visibility: hidden`):
+    // nothing is drawn, and the figure keeps watching for its turn.
+    if (!this.#printOnce && !f.element.checkVisibility({ visibilityProperty: true, opacityProperty: true })) {
+      return true;
     }
     const state = f.settings.state;
     try {
       this.apply();
+      const background = f.look.backgroundChange(now);
+      if (background) {
+        view.set_background(...background);
+        this.#dirty = Math.max(this.#dirty, 2);
+      }
+      const forPrint = this.#printOnce;
+      if (forPrint) {
+        this.#printOnce = false;
+        this.#dirty = Math.max(this.#dirty, 1);
+      }
       const elapsed = this.#last ? Math.min(Math.max(now - this.#last, 0) / 1000, 0.1) : 0;
       this.#last = now;
       // A sphere being dragged holds the animation still.
@@ -249,19 +284,35 @@ export class FigureFrames {
         const started = performance.now();
         within(f.element, () => view.frame(dt));
         const blocked = performance.now() - started;
+        this.#dirty = Math.max(0, this.#dirty - 1);
+        // The picture for print, taken in this task while the canvas holds the frame.
+        f.look.drawn(now, animating, this.#dirty === 0 || forPrint);
+        if (forPrint && !this.#onScreen) {
+          // Not a frame anyone saw: only the picture counts. A figure not near the viewport lets go
+          // of its renderer again.
+          if (!this.#near) this.release();
+          return false;
+        }
         if (blocked > 100) this.#observeCost(blocked);
         this.#framesDrawn += 1;
         f.hud.countFrame();
-        this.#dirty = Math.max(0, this.#dirty - 1);
       } else {
         view.poll();
+        // The picture for print is older than the frame on screen: draw once more and take it.
+        if (f.look.printStale) this.#dirty = 1;
       }
     } catch (error) {
       this.fail('The renderer stopped', error?.message ?? String(error));
       return false;
     }
     const frameMs = f.hud.update(now, view);
-    if (frameMs && !state.paused) this.#observeCost(frameMs);
+    if (frameMs) {
+      // Frame times measured while a picture for print was taken (on any figure: it waits for the
+      // GPU) say nothing about the settings.
+      const pictures = picturesTaken();
+      if (!state.paused && pictures === this.#picturesSeen) this.#observeCost(frameMs);
+      this.#picturesSeen = pictures;
+    }
     f.inspector().follow(now);
     if (state.edit) f.editor().draw();
     const error = view.gpu_error();

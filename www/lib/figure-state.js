@@ -1,25 +1,27 @@
 // A figure's settings as the parameter table defines them: the values in effect, the ones the renderer
 // holds, the ones changed since the last frame, and which the author gave. Attributes are read through
-// the table's parser and written back without being taken in again.
+// the table's parser (in the wasm) and written back without being taken in again. The table itself is
+// a plain module, so the element knows its attributes and defaults before the wasm arrives.
 
-import { caseGallery, loadWasm, parameterTable, parseParameter } from './engine.js';
+import { parseParameter } from './engine.js';
+import { TABLE } from './attributes.js';
 
-export const wasmError = await loadWasm().then(() => null, (error) => error);
-export const TABLE = wasmError ? [] : parameterTable();
+export { TABLE };
 export const NAMES = TABLE.map((p) => p.name);
 export const CONTROL_NAMES = TABLE.find((p) => p.name === 'controls')?.words ?? [];
-export const GALLERY = wasmError ? { classes: [], cube: { corners: [], edges: [] } } : caseGallery();
+/** Attributes of plain text (a description, a URL): taken as written, even before the wasm arrives. */
+export const TEXT_NAMES = new Set(TABLE.filter((p) => p.kind === 'text').map((p) => p.name));
 // Settings a renderer takes at creation; every other renderer setting is applied after.
 export const CREATION = new Set(['spheres', 'iso', 'resolution', 'seed', 'antialiasing']);
 
 /** The default values of every parameter, typed. */
 export function defaults() {
-  return Object.fromEntries(TABLE.map((p) => [p.name, parseParameter(p.name, p.default)]));
+  return Object.fromEntries(TABLE.map((p) => [p.name, p.value]));
 }
 
 /** The default value of one parameter, typed. */
 export function defaultOf(name) {
-  return parseParameter(name, TABLE.find((p) => p.name === name).default);
+  return TABLE.find((p) => p.name === name).value;
 }
 
 export class FigureState {
@@ -43,6 +45,7 @@ export class FigureState {
 
   /** Reads an attribute's text: `{ value }`, or `{ message }` saying what is wrong and what is kept. */
   parse(name, text) {
+    if (TEXT_NAMES.has(name)) return { value: text };
     try {
       return { value: parseParameter(name, text) };
     } catch (error) {

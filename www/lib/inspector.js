@@ -153,7 +153,7 @@ export class Inspector {
       return `<tr><td>${c}</td><td>${format(v)}</td><td>${sign}</td></tr>`;
     }).join('');
     const edges = report.edges.map((e) => {
-      const [a, b] = this.#cube.edges[e.edge];
+      const [a, b] = this.#cube().edges[e.edge];
       const p = e.vertex.map((v) => v.toFixed(3)).join(', ');
       return `<tr><td>${e.edge} (${a}–${b})</td><td>${e.t.toFixed(3)}</td><td>(${p})</td></tr>`;
     }).join('');
@@ -171,7 +171,7 @@ export class Inspector {
       <p>Triangles (edges): ${triangles}</p>
       <table class="crossings"><thead><tr><th>edge</th><th>t</th><th>vertex</th></tr></thead>
         <tbody>${edges}</tbody></table>`;
-    this.#box.querySelector('.drawing').append(cellDrawing(this.#cube, inside, report.triangles,
+    this.#box.querySelector('.drawing').append(cellDrawing(this.#cube(), inside, report.triangles,
       (e) => t.get(e) ?? 0.5, { size: 96, color: classColor(report.class), label: `case ${report.case}` }));
     this.#box.hidden = false;
     this.#host.onClass(report.class);

@@ -8,7 +8,7 @@ import { buildGallery } from './inspector.js';
 
 const GROUPS = [
   ['Surface', ['spheres', 'iso', 'resolution', 'mesher', 'speed', 'seed', 'paused', 'step', 'view']],
-  ['Display', ['display', 'grid', 'color_by', 'ambiguous', 'color', 'antialiasing']],
+  ['Display', ['display', 'grid', 'color_by', 'ambiguous', 'color', 'theme', 'antialiasing']],
   ['Teaching', ['slice', 'interpolation', 'blend', 'inspector']],
   ['Light', ['light', 'spot_angle', 'spot_softness', 'ambient', 'diffuse', 'specular', 'shininess']],
   ['Camera', ['projection', 'fov']],

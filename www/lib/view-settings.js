@@ -1,5 +1,7 @@
 // How each parameter reaches the wasm view: one setter call per renderer setting. The others (speed,
-// paused, controls, hud, autoplay, max-pixel-ratio) live in the element alone.
+// paused, controls, hud, autoplay, max-pixel-ratio, alt, poster) live in the element alone.
+
+import { resolvedTheme } from './figure-look.js';
 
 function hexToLinear(hex) {
   const channel = (i) => {
@@ -26,6 +28,8 @@ const SETTERS = {
   shininess: (view, s) => view.set_shininess(s.shininess),
   color: (view, s) => view.set_color(...hexToLinear(s.color)),
   antialiasing: (view, s) => view.set_antialiasing(s.antialiasing),
+  // `auto` is the reader's colour scheme here.
+  theme: (view, s) => view.set_parameter('theme', resolvedTheme(s.theme)),
   ...Object.fromEntries(BY_NAME.map((name) => [name, (view, s) => view.set_parameter(name, String(s[name]))])),
 };
 

@@ -4,7 +4,7 @@
 
 use super::view::{
     Blend, ColorBy, Display, GridView, Interpolation, LIGHT_KINDS, Mesher, Projection, SPOT_ANGLE_RANGE,
-    Slice,
+    Slice, Theme,
 };
 use super::{
     DISTANCE_RANGE, ISO_RANGE, MAX_RESOLUTION, MAX_SPHERES, MIN_RESOLUTION, PITCH_RANGE, ParamError,
@@ -30,6 +30,8 @@ pub enum Kind {
     Slice,
     /// Empty (the seeded layout), or spheres written `x,y,z,radius[,vx,vy,vz]` joined by `;`.
     Spheres,
+    /// Any text, kept as written (a description, a URL).
+    Text,
 }
 
 /// One parameter a person can set: from a link, an element attribute or a control. This table is the
@@ -84,6 +86,7 @@ pub const CONTROLS: &[&str] = &[
     "specular",
     "projection",
     "fov",
+    "theme",
     "edit",
     "scene",
     "export",
@@ -229,6 +232,7 @@ pub const PARAMETERS: &[Parameter] = &[
         (20.0, 100.0, 1.0),
         "45",
     ),
+    other("theme", "theme", "Theme", Kind::Choice(Theme::WORDS), "dark"),
     other("edit", "edit", "Edit spheres", Kind::Boolean, "false"),
     other("balls", "balls", "Spheres", Kind::Spheres, ""),
     other("controls", "controls", "Controls", Kind::List(CONTROLS), "none"),
@@ -244,6 +248,8 @@ pub const PARAMETERS: &[Parameter] = &[
         (0.25, 4.0, 0.25),
         "2",
     ),
+    other("alt", "alt", "Description", Kind::Text, ""),
+    other("poster", "poster", "Poster", Kind::Text, ""),
 ];
 
 /// A parameter by its name or its short name in links.
@@ -315,6 +321,7 @@ impl Parameter {
                 Ok(Value::Text(items.join(",")))
             }
             Kind::Slice => Slice::parse(trimmed).map(|slice| Value::Text(Slice::text(slice))),
+            Kind::Text => Ok(Value::Text(text.to_string())),
             Kind::Spheres if trimmed.is_empty() => Ok(Value::Text(String::new())),
             Kind::Spheres => crate::scene::sphere::parse_spheres_text(trimmed)
                 .map(|spheres| Value::Text(crate::scene::sphere::spheres_text(&spheres)))

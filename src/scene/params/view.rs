@@ -194,6 +194,27 @@ impl Lights {
     }
 }
 
+choice!(
+    /// The figure's colours around the surface: the background the shading pass draws (and, on a page,
+    /// the panel's colours).
+    Theme {
+        Dark = "dark",
+        Light = "light",
+        /// Follows the reader's colour scheme on a page; dark elsewhere.
+        Auto = "auto",
+    }
+);
+
+impl Theme {
+    /// The background's gradient in linear RGB: top, then bottom.
+    pub fn background(self) -> [[f32; 3]; 2] {
+        match self {
+            Theme::Dark | Theme::Auto => [[0.060, 0.075, 0.110], [0.010, 0.012, 0.018]],
+            Theme::Light => [[0.930, 0.945, 0.965], [0.700, 0.740, 0.800]],
+        }
+    }
+}
+
 /// Everything about how the surface is shown and built beyond the basic settings.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ViewOptions {
@@ -212,6 +233,9 @@ pub struct ViewOptions {
     pub spot_softness: f32,
     pub projection: Projection,
     pub mesher: Mesher,
+    pub theme: Theme,
+    /// A background gradient given by the page (top, bottom; linear RGB) in place of the theme's.
+    pub background: Option<[[f32; 3]; 2]>,
 }
 
 impl Default for ViewOptions {
@@ -229,6 +253,8 @@ impl Default for ViewOptions {
             spot_softness: 0.3,
             projection: Projection::Perspective,
             mesher: Mesher::Auto,
+            theme: Theme::Dark,
+            background: None,
         }
     }
 }
@@ -245,6 +271,11 @@ impl ViewOptions {
             check_f32("slice position", slice.position, -1.0, 1.0)?;
         }
         Ok(self)
+    }
+
+    /// The background's gradient (top, bottom; linear RGB): the page's, else the theme's.
+    pub fn background(&self) -> [[f32; 3]; 2] {
+        self.background.unwrap_or_else(|| self.theme.background())
     }
 
     /// Sets the option `name` (a parameter table name) from its parsed value; `Ok(false)` when `name`
@@ -276,6 +307,7 @@ impl ViewOptions {
             "blend" => pick!(blend, Blend),
             "projection" => pick!(projection, Projection),
             "mesher" => pick!(mesher, Mesher),
+            "theme" => pick!(theme, Theme),
             "slice" => self.slice = Slice::parse(text())?,
             "light" => self.lights = Lights::from_list(text()),
             "ambiguous" => self.ambiguous = matches!(value, Value::Boolean(true)),

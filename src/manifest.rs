@@ -1,0 +1,308 @@
+//! The element's description, written from the parameter table so attributes, their types and their
+//! defaults never drift: the table the element's module reads before its wasm arrives
+//! (`www/lib/attributes.js`), the Custom Elements Manifest editors read (`www/custom-elements.json`),
+//! and the TypeScript declarations (`www/metaballs-view.d.ts`). `metaballs manifest --out www` writes
+//! them; a test checks that the files in the repository are what it writes.
+
+use crate::scene::params::{Kind, PARAMETERS, Parameter, Value};
+use serde_json::{Value as Json, json};
+
+/// The element's methods: name, TypeScript signature after the name, what it does.
+pub const METHODS: &[(&str, &str, &str)] = &[
+    ("play", "(): void", "Starts the animation."),
+    ("pause", "(): void", "Stops the animation."),
+    ("step", "(): void", "Draws one frame of animation (1/60 s) and stays paused."),
+    ("resetView", "(): void", "Back to the default camera."),
+    (
+        "ready",
+        "(): Promise<void>",
+        "Resolves once the renderer has started (or rejects with why it could not).",
+    ),
+    (
+        "inspectCell",
+        "(x: number, y: number, z: number): MetaballsCellReport | null",
+        "Selects a cell for the inspector and returns its report (null outside the grid).",
+    ),
+    ("deselect", "(): void", "Lets go of the inspected cell or the selected sphere."),
+    ("saveScene", "(): string", "The scene (spheres and every setting of the picture) as a JSON document."),
+    (
+        "loadScene",
+        "(text: string): void",
+        "Loads a scene document; throws with what is wrong, keeping the scene.",
+    ),
+    ("downloadScene", "(): void", "Saves the scene document as a file."),
+    ("exportMesh", "(format?: 'stl' | 'obj' | 'ply'): Uint8Array", "The current frame's mesh as file bytes."),
+    ("downloadMesh", "(format?: 'stl' | 'obj' | 'ply'): void", "Saves the current frame's mesh as a file."),
+    ("picture", "(scale?: number): Promise<Blob>", "A PNG of the view at the canvas size times `scale`."),
+    ("downloadPicture", "(scale?: number): Promise<void>", "Saves a PNG of the view."),
+    ("showNotice", "(text: string, ms?: number): void", "Shows a short message inside the figure."),
+    (
+        "withView",
+        "<T>(f: (view: unknown) => T): Promise<T>",
+        "Runs `f` with the wasm view while the element's own frames are held.",
+    ),
+];
+
+/// Read-only properties beyond the attributes: name, TypeScript type, meaning.
+pub const READ_ONLY: &[(&str, &str, &str)] = &[
+    ("stats", "MetaballsStats", "Figures of the newest frames."),
+    ("framesDrawn", "number", "Frames this element has drawn (none while off screen)."),
+    ("inspected", "MetaballsCellReport | null", "What marching cubes decided in the inspected cell."),
+    ("sphereList", "MetaballsSphere[]", "The spheres in play."),
+    ("selectedSphere", "number", "The selected sphere's index in edit mode, or -1."),
+    ("pendingChange", "Record<string, unknown> | null", "A costly change waiting for confirmation."),
+];
+
+/// Events (they bubble and cross the shadow boundary): name, TypeScript type of `detail`, when.
+pub const EVENTS: &[(&str, &str, &str)] = &[
+    (
+        "metaballs-change",
+        "{ property: string; value: number | boolean | string }",
+        "A setting changed (from an attribute, a property, a control or a gesture).",
+    ),
+    ("metaballs-inspect", "{ cell: MetaballsCellReport | null }", "A cell was selected or let go."),
+    (
+        "metaballs-edit",
+        "{ spheres: MetaballsSphere[] }",
+        "A sphere was added, moved, resized or removed by hand.",
+    ),
+    ("metaballs-scene", "{ spheres: MetaballsSphere[] }", "A scene document was loaded."),
+    ("metaballs-export", "{ format: string; bytes: number; ms: number }", "A mesh was exported."),
+    ("metaballs-error", "{ message: string }", "The figure could not draw (it shows why)."),
+];
+
+/// `::part()` names: name, what it is.
+pub const PARTS: &[(&str, &str)] = &[
+    ("canvas", "The drawing."),
+    ("poster", "The picture shown before the first frame, and in print."),
+    ("panel", "The controls."),
+    ("hud", "The statistics."),
+    ("notice", "Short messages."),
+];
+
+/// CSS custom properties: name, default, meaning.
+pub const CSS_PROPERTIES: &[(&str, &str, &str)] = &[
+    ("--metaballs-background-top", "theme", "Top colour of the drawn background (#rrggbb)."),
+    ("--metaballs-background-bottom", "theme", "Bottom colour of the drawn background (#rrggbb)."),
+    ("--metaballs-accent", "#e77661", "Focus rings, pressed buttons, sliders."),
+    ("--metaballs-panel-background", "theme", "Background of the panel, statistics and inspector."),
+    ("--metaballs-text", "theme", "Text colour of the panel."),
+    ("--metaballs-muted", "theme", "Secondary text colour of the panel."),
+    ("--metaballs-poster-color", "theme", "Background of the box before the first frame."),
+];
+
+/// The element's module inside the package.
+const MODULE: &str = "www/metaballs-view.js";
+
+/// A parameter's property name: dashes become camel case (`max-pixel-ratio` → `maxPixelRatio`).
+pub fn property_name(name: &str) -> String {
+    let mut out = String::new();
+    let mut upper = false;
+    for c in name.chars() {
+        if c == '-' {
+            upper = true;
+        } else if upper {
+            out.extend(c.to_uppercase());
+            upper = false;
+        } else {
+            out.push(c);
+        }
+    }
+    out
+}
+
+fn kind_word(kind: Kind) -> (&'static str, &'static [&'static str]) {
+    match kind {
+        Kind::Integer => ("integer", &[]),
+        Kind::Number => ("number", &[]),
+        Kind::Boolean => ("boolean", &[]),
+        Kind::Color => ("color", &[]),
+        Kind::Choice(words) => ("choice", words),
+        Kind::List(words) => ("list", words),
+        Kind::Slice => ("slice", &[]),
+        Kind::Spheres => ("spheres", &[]),
+        Kind::Text => ("text", &[]),
+    }
+}
+
+/// The TypeScript type of a parameter's property.
+fn ts_type(p: &Parameter) -> String {
+    match p.kind {
+        Kind::Integer | Kind::Number => "number".into(),
+        Kind::Boolean => "boolean".into(),
+        Kind::Choice(words) => words.iter().map(|w| format!("'{w}'")).collect::<Vec<_>>().join(" | "),
+        _ => "string".into(),
+    }
+}
+
+/// A number as the table means it: whole numbers without a fraction, the others at f32 precision
+/// (`0.05`, not `0.05000000074505806`).
+fn number(x: f64) -> Json {
+    if x.fract() == 0.0 && x.abs() < 1e15 {
+        json!(x as i64)
+    } else {
+        json!((x as f32).to_string().parse::<f64>().unwrap_or(x))
+    }
+}
+
+/// A parameter's default, typed as its property holds it.
+fn typed_default(p: &Parameter) -> Json {
+    match p.parse(p.default).expect("every default parses") {
+        Value::Number(n) => number(n),
+        Value::Boolean(b) => json!(b),
+        Value::Text(t) => json!(t),
+    }
+}
+
+/// What a parameter is, in one sentence for editors.
+fn description(p: &Parameter) -> String {
+    let noun = p.noun[..1].to_uppercase() + &p.noun[1..];
+    match p.kind {
+        Kind::Integer | Kind::Number => format!("{noun}: {} to {}.", number(p.min), number(p.max)),
+        Kind::Choice(words) => format!("{noun}: {}.", words.join(", ")),
+        Kind::List(words) => format!("{noun}: all, none, or a comma list of {}.", words.join(", ")),
+        Kind::Boolean => format!("{noun}: a boolean attribute."),
+        Kind::Color => format!("{noun}: #rrggbb."),
+        Kind::Slice => format!("{noun}: off, or an axis and a position in the box (z:0.25)."),
+        Kind::Spheres => format!("{noun}: x,y,z,radius[,vx,vy,vz] per sphere joined by ;."),
+        Kind::Text => match p.name {
+            "alt" => "The figure's accessible name (without it, one is made from what it shows).".into(),
+            "poster" => {
+                "An image URL shown before the first frame and in print until a frame is drawn.".into()
+            }
+            _ => format!("{noun}."),
+        },
+    }
+}
+
+/// `www/lib/attributes.js`: the parameter table as the element reads it before its wasm arrives.
+pub fn attributes_js() -> String {
+    let rows: Vec<Json> = PARAMETERS
+        .iter()
+        .map(|p| {
+            let (kind, words) = kind_word(p.kind);
+            json!({
+                "name": p.name, "url": p.url, "label": p.label, "kind": kind, "words": words,
+                "min": number(p.min), "max": number(p.max), "sliderMin": number(p.slider.0),
+                "sliderMax": number(p.slider.1), "step": number(p.slider.2), "default": p.default,
+                "value": typed_default(p),
+            })
+        })
+        .collect();
+    let body = rows.iter().map(|row| format!("  {row},")).collect::<Vec<_>>().join("\n");
+    format!(
+        "// The parameter table (src/scene/params/table.rs), written by `metaballs manifest --out www`.\n\
+         // Each row: name, short name in links, label, kind, accepted words, range, slider, default as\n\
+         // text and as a value. Do not edit: change the table and run the command.\n\n\
+         export const TABLE = Object.freeze([\n{body}\n]);\n"
+    )
+}
+
+/// `www/custom-elements.json`: the Custom Elements Manifest.
+pub fn custom_elements_json() -> String {
+    let declaration = json!({ "name": "MetaballsView", "module": MODULE });
+    let attributes: Vec<Json> = PARAMETERS
+        .iter()
+        .map(|p| {
+            json!({
+                "name": p.name, "fieldName": property_name(p.name), "type": { "text": ts_type(p) },
+                "default": json!(p.default).to_string(), "description": description(p),
+            })
+        })
+        .collect();
+    let mut members: Vec<Json> = PARAMETERS
+        .iter()
+        .map(|p| {
+            json!({
+                "kind": "field", "name": property_name(p.name), "type": { "text": ts_type(p) },
+                "default": typed_default(p).to_string(), "attribute": p.name, "description": description(p),
+            })
+        })
+        .collect();
+    members.extend(READ_ONLY.iter().map(|(name, ty, text)| {
+        json!({ "kind": "field", "name": name, "type": { "text": ty }, "readonly": true, "description": text })
+    }));
+    members.extend(METHODS.iter().map(|(name, signature, text)| {
+        json!({ "kind": "method", "name": name, "description": text, "signature": signature })
+    }));
+    let manifest = json!({
+        "schemaVersion": "2.1.0",
+        "readme": "README.md",
+        "modules": [{
+            "kind": "javascript-module",
+            "path": MODULE,
+            "declarations": [{
+                "kind": "class",
+                "name": "MetaballsView",
+                "tagName": "metaballs-view",
+                "customElement": true,
+                "description": "Merging spheres drawn with marching cubes in WebGPU compute shaders (WebGL2 \
+                                and a CPU mesher where WebGPU is missing), with teaching views.",
+                "superclass": { "name": "HTMLElement" },
+                "attributes": attributes,
+                "members": members,
+                "events": EVENTS.iter().map(|(name, detail, text)| json!({
+                    "name": name, "type": { "text": format!("CustomEvent<{detail}>") }, "description": text,
+                })).collect::<Vec<_>>(),
+                "cssParts": PARTS.iter().map(|(name, text)| json!({ "name": name, "description": text }))
+                    .collect::<Vec<_>>(),
+                "cssProperties": CSS_PROPERTIES.iter().map(|(name, default, text)| json!({
+                    "name": name, "default": default, "description": text,
+                })).collect::<Vec<_>>(),
+            }],
+            "exports": [
+                { "kind": "js", "name": "MetaballsView", "declaration": declaration },
+                { "kind": "custom-element-definition", "name": "metaballs-view", "declaration": declaration },
+            ],
+        }],
+    });
+    serde_json::to_string_pretty(&manifest).expect("the manifest is JSON") + "\n"
+}
+
+/// `www/metaballs-view.d.ts`: the element's TypeScript declarations.
+pub fn declarations() -> String {
+    let mut out = String::from(
+        "// TypeScript declarations of <metaballs-view>, written by `metaballs manifest --out www` from the\n\
+         // parameter table. Do not edit: change the table (or src/manifest.rs) and run the command.\n\n\
+         export interface MetaballsStats {\n  triangles: number;\n  fps: number;\n  frameTime: number;\n  \
+         adapter: string;\n  mesher: string;\n  overflowed: boolean;\n  [name: string]: unknown;\n}\n\n\
+         export interface MetaballsSphere {\n  center: [number, number, number];\n  radius: number;\n  \
+         velocity: [number, number, number];\n}\n\n\
+         /** The cell inspector's report (see docs/teaching.md). */\n\
+         export type MetaballsCellReport = Record<string, unknown>;\n\n",
+    );
+    out += "export declare class MetaballsView extends HTMLElement {\n";
+    for p in PARAMETERS {
+        let default = typed_default(p);
+        out += &format!(
+            "  /** {} Attribute `{}`; default {}. */\n  {}: {};\n",
+            description(p),
+            p.name,
+            default,
+            property_name(p.name),
+            ts_type(p)
+        );
+    }
+    for (name, ty, text) in READ_ONLY {
+        out += &format!("  /** {text} */\n  readonly {name}: {ty};\n");
+    }
+    for (name, signature, text) in METHODS {
+        out += &format!("  /** {text} */\n  {name}{signature};\n");
+    }
+    out += "}\n\nexport interface MetaballsViewEventMap {\n";
+    for (name, detail, text) in EVENTS {
+        out += &format!("  /** {text} */\n  '{name}': CustomEvent<{detail}>;\n");
+    }
+    out += "}\n\ndeclare global {\n  interface HTMLElementTagNameMap {\n    'metaballs-view': MetaballsView;\n  }\n  \
+            interface HTMLElementEventMap extends MetaballsViewEventMap {}\n}\n";
+    out
+}
+
+/// Every file the command writes, by path under `www/`.
+pub fn files() -> Vec<(&'static str, String)> {
+    vec![
+        ("lib/attributes.js", attributes_js()),
+        ("custom-elements.json", custom_elements_json()),
+        ("metaballs-view.d.ts", declarations()),
+    ]
+}

@@ -1,0 +1,138 @@
+// What a figure shows besides its frames: the poster before the first frame, a picture of its latest
+// frame for print (a WebGPU canvas prints blank), its accessible name, a polite announcement of what a
+// control did, and the background colours a page gives through CSS custom properties.
+
+import { TABLE } from './attributes.js';
+
+// A figure refreshes its print picture at most this often while it animates (taking one waits for the
+// GPU to finish the frame); a still figure takes one once it has settled.
+const PRINT_EVERY_MS = 5000;
+// The page's custom properties are read again at most this often.
+const STYLE_EVERY_MS = 500;
+
+// Pictures taken on this page so far (frame times that include one are not a figure's cost).
+let pictures = 0;
+/** How many pictures for print the figures on this page have taken. */
+export const picturesTaken = () => pictures;
+
+/** The colour scheme a `theme` value stands for here: `auto` follows the reader's preference. */
+export const resolvedTheme = (theme) => (theme === 'auto'
+  ? (matchMedia('(prefers-color-scheme: light)').matches ? 'light' : 'dark') : theme);
+
+export class FigureLook {
+  #element;
+  #root;
+  #canvas;
+  #poster;
+  #print;
+  #printUrl = null;
+  #printedAt = -Infinity;
+  #printStale = true;
+  #encoding = false;
+  #styleAt = -Infinity;
+  #background = '|';
+  #printable = null;
+  #resolvePrintable = () => {};
+
+  constructor(element, root, canvas) {
+    this.#element = element;
+    this.#root = root;
+    this.#canvas = canvas;
+    this.#poster = root.getElementById('poster');
+    this.#print = root.getElementById('print-frame');
+    this.#printable = new Promise((resolve) => { this.#resolvePrintable = resolve; });
+    this.#poster.addEventListener('load', () => this.#resolvePrintable());
+  }
+
+  /** Resolves once the figure has a picture for print: its poster, or a picture of a drawn frame. */
+  printable() { return this.#printable; }
+
+  /** Shows `url` (an image) until the first frame, and in print until a frame is drawn; '' for none. */
+  setPoster(url, drawn) {
+    if (url) {
+      this.#poster.src = new URL(url, document.baseURI).href;
+    } else {
+      this.#poster.removeAttribute('src');
+    }
+    this.#poster.hidden = !url || drawn;
+  }
+
+  /** The accessible name: the author's `alt`, else what the figure shows. */
+  name(state) {
+    const cells = `${state.resolution}³ cells`;
+    const spheres = state.balls ? state.balls.split(';').length : state.spheres;
+    const derived = `${spheres} sphere${spheres === 1 ? '' : 's'}, iso ${Number(state.iso.toFixed(2))}, `
+      + `${cells}${state.display !== 'shaded' ? `, ${state.display}` : ''}`
+      + `${state.paused ? ', paused' : ''}`;
+    this.#canvas.setAttribute('aria-label', state.alt || `Merging spheres: ${derived}`);
+  }
+
+  /** Announces a change made from inside the figure: "iso level 0.8", "paused". */
+  announceChange(name, value) {
+    if (name === 'paused') {
+      this.announce(value ? 'paused' : 'playing');
+      return;
+    }
+    const label = (TABLE.find((p) => p.name === name)?.label ?? name).toLowerCase();
+    this.announce(typeof value === 'boolean' ? `${label} ${value ? 'on' : 'off'}` : `${label} ${value}`);
+  }
+
+  /** Says `text` to screen readers, politely (what a control just did). */
+  announce(text) {
+    const region = this.#root.getElementById('announce');
+    // A new node each time, so the same words twice are announced twice.
+    region.replaceChildren(document.createElement('span'));
+    region.firstChild.textContent = text;
+  }
+
+  /**
+   * The page's background colours for the drawn picture (`--metaballs-background-top` and `-bottom`,
+   * `#rrggbb`), read at most every half second: `[top, bottom]` when they changed since last asked.
+   */
+  backgroundChange(now, force = false) {
+    if (!force && now - this.#styleAt < STYLE_EVERY_MS) return null;
+    this.#styleAt = now;
+    const style = getComputedStyle(this.#element);
+    const read = (name) => style.getPropertyValue(name).trim();
+    const pair = [read('--metaballs-background-top'), read('--metaballs-background-bottom')];
+    const key = pair.join('|');
+    if (key === this.#background) return null;
+    this.#background = key;
+    return pair;
+  }
+
+  /**
+   * A frame was just drawn (this task): hides the poster, and takes a picture of it for print when due:
+   * every few seconds while animating, else once no more frames are due (`settled`).
+   */
+  drawn(now, animating, settled) {
+    this.#poster.hidden = true;
+    const due = animating ? now - this.#printedAt >= PRINT_EVERY_MS : settled;
+    if (!due || this.#encoding) {
+      this.#printStale = true;
+      return;
+    }
+    this.#printedAt = now;
+    this.#printStale = false;
+    this.#encoding = true;
+    pictures += 1;
+    // The canvas holds the frame only until this task ends: the copy is taken now, encoded later.
+    this.#canvas.toBlob((blob) => {
+      this.#encoding = false;
+      if (!blob) return;
+      if (this.#printUrl) URL.revokeObjectURL(this.#printUrl);
+      this.#printUrl = URL.createObjectURL(blob);
+      this.#print.src = this.#printUrl;
+      this.#resolvePrintable();
+    });
+  }
+
+  /** True when the print picture is older than the last frame (the figure then draws once more). */
+  get printStale() { return this.#printStale && !this.#encoding; }
+
+  /** A new renderer starts from the theme's background: the page's colours are sent again. */
+  forgetBackground() {
+    this.#background = null;
+    this.#styleAt = -Infinity;
+  }
+}

@@ -1,0 +1,164 @@
+// TypeScript declarations of <metaballs-view>, written by `metaballs manifest --out www` from the
+// parameter table. Do not edit: change the table (or src/manifest.rs) and run the command.
+
+export interface MetaballsStats {
+  triangles: number;
+  fps: number;
+  frameTime: number;
+  adapter: string;
+  mesher: string;
+  overflowed: boolean;
+  [name: string]: unknown;
+}
+
+export interface MetaballsSphere {
+  center: [number, number, number];
+  radius: number;
+  velocity: [number, number, number];
+}
+
+/** The cell inspector's report (see docs/teaching.md). */
+export type MetaballsCellReport = Record<string, unknown>;
+
+export declare class MetaballsView extends HTMLElement {
+  /** Sphere count: 1 to 64. Attribute `spheres`; default 5. */
+  spheres: number;
+  /** Iso level: 0.05 to 20. Attribute `iso`; default 1. */
+  iso: number;
+  /** Resolution (cells per axis): 8 to 512. Attribute `resolution`; default 64. */
+  resolution: number;
+  /** Layout seed: 0 to 4294967295. Attribute `seed`; default 1. */
+  seed: number;
+  /** Animation speed: 0 to 3. Attribute `speed`; default 1. */
+  speed: number;
+  /** Paused: a boolean attribute. Attribute `paused`; default false. */
+  paused: boolean;
+  /** Camera yaw (degrees): -360 to 360. Attribute `yaw`; default 30. */
+  yaw: number;
+  /** Camera pitch (degrees): -89 to 89. Attribute `pitch`; default 20. */
+  pitch: number;
+  /** Camera distance: 1.5 to 20. Attribute `distance`; default 4.3. */
+  distance: number;
+  /** Shininess: 1 to 1024. Attribute `shininess`; default 64. */
+  shininess: number;
+  /** Color: #rrggbb. Attribute `color`; default "#e77661". */
+  color: string;
+  /** Antialiasing: a boolean attribute. Attribute `antialiasing`; default true. */
+  antialiasing: boolean;
+  /** Display: shaded, flat, wireframe, points, normals. Attribute `display`; default "shaded". */
+  display: 'shaded' | 'flat' | 'wireframe' | 'points' | 'normals';
+  /** Grid: none, lattice, cells, blocks. Attribute `grid`; default "none". */
+  grid: 'none' | 'lattice' | 'cells' | 'blocks';
+  /** Color_by: none, area, quality, case. Attribute `color_by`; default "none". */
+  color_by: 'none' | 'area' | 'quality' | 'case';
+  /** Slice: off, or an axis and a position in the box (z:0.25). Attribute `slice`; default "off". */
+  slice: string;
+  /** Ambiguous: a boolean attribute. Attribute `ambiguous`; default false. */
+  ambiguous: boolean;
+  /** Interpolation: linear, midpoint. Attribute `interpolation`; default "linear". */
+  interpolation: 'linear' | 'midpoint';
+  /** Blend: sum, max. Attribute `blend`; default "sum". */
+  blend: 'sum' | 'max';
+  /** Mesher: auto, gpu, cpu. Attribute `mesher`; default "auto". */
+  mesher: 'auto' | 'gpu' | 'cpu';
+  /** Light: all, none, or a comma list of point, directional, spot. Attribute `light`; default "point". */
+  light: string;
+  /** Spot cone angle (degrees): 2 to 80. Attribute `spot_angle`; default 15. */
+  spot_angle: number;
+  /** Spot softness: 0 to 1. Attribute `spot_softness`; default 0.3. */
+  spot_softness: number;
+  /** Ambient strength: 0 to 1. Attribute `ambient`; default 0.15. */
+  ambient: number;
+  /** Diffuse strength: 0 to 2. Attribute `diffuse`; default 0.85. */
+  diffuse: number;
+  /** Specular strength: 0 to 2. Attribute `specular`; default 0.6. */
+  specular: number;
+  /** Projection: perspective, orthographic. Attribute `projection`; default "perspective". */
+  projection: 'perspective' | 'orthographic';
+  /** Field of view (degrees): 10 to 120. Attribute `fov`; default 45. */
+  fov: number;
+  /** Theme: dark, light, auto. Attribute `theme`; default "dark". */
+  theme: 'dark' | 'light' | 'auto';
+  /** Edit: a boolean attribute. Attribute `edit`; default false. */
+  edit: boolean;
+  /** Balls: x,y,z,radius[,vx,vy,vz] per sphere joined by ;. Attribute `balls`; default "". */
+  balls: string;
+  /** Controls: all, none, or a comma list of spheres, iso, resolution, speed, shininess, color, antialiasing, mesher, paused, seed, view, step, display, grid, color_by, slice, ambiguous, interpolation, blend, inspector, light, spot_angle, spot_softness, ambient, diffuse, specular, projection, fov, theme, edit, scene, export. Attribute `controls`; default "none". */
+  controls: string;
+  /** Hud: on, off. Attribute `hud`; default "off". */
+  hud: 'on' | 'off';
+  /** Autoplay: visible, off. Attribute `autoplay`; default "visible". */
+  autoplay: 'visible' | 'off';
+  /** Max-pixel-ratio: 0.25 to 4. Attribute `max-pixel-ratio`; default 2. */
+  maxPixelRatio: number;
+  /** The figure's accessible name (without it, one is made from what it shows). Attribute `alt`; default "". */
+  alt: string;
+  /** An image URL shown before the first frame and in print until a frame is drawn. Attribute `poster`; default "". */
+  poster: string;
+  /** Figures of the newest frames. */
+  readonly stats: MetaballsStats;
+  /** Frames this element has drawn (none while off screen). */
+  readonly framesDrawn: number;
+  /** What marching cubes decided in the inspected cell. */
+  readonly inspected: MetaballsCellReport | null;
+  /** The spheres in play. */
+  readonly sphereList: MetaballsSphere[];
+  /** The selected sphere's index in edit mode, or -1. */
+  readonly selectedSphere: number;
+  /** A costly change waiting for confirmation. */
+  readonly pendingChange: Record<string, unknown> | null;
+  /** Starts the animation. */
+  play(): void;
+  /** Stops the animation. */
+  pause(): void;
+  /** Draws one frame of animation (1/60 s) and stays paused. */
+  step(): void;
+  /** Back to the default camera. */
+  resetView(): void;
+  /** Resolves once the renderer has started (or rejects with why it could not). */
+  ready(): Promise<void>;
+  /** Selects a cell for the inspector and returns its report (null outside the grid). */
+  inspectCell(x: number, y: number, z: number): MetaballsCellReport | null;
+  /** Lets go of the inspected cell or the selected sphere. */
+  deselect(): void;
+  /** The scene (spheres and every setting of the picture) as a JSON document. */
+  saveScene(): string;
+  /** Loads a scene document; throws with what is wrong, keeping the scene. */
+  loadScene(text: string): void;
+  /** Saves the scene document as a file. */
+  downloadScene(): void;
+  /** The current frame's mesh as file bytes. */
+  exportMesh(format?: 'stl' | 'obj' | 'ply'): Uint8Array;
+  /** Saves the current frame's mesh as a file. */
+  downloadMesh(format?: 'stl' | 'obj' | 'ply'): void;
+  /** A PNG of the view at the canvas size times `scale`. */
+  picture(scale?: number): Promise<Blob>;
+  /** Saves a PNG of the view. */
+  downloadPicture(scale?: number): Promise<void>;
+  /** Shows a short message inside the figure. */
+  showNotice(text: string, ms?: number): void;
+  /** Runs `f` with the wasm view while the element's own frames are held. */
+  withView<T>(f: (view: unknown) => T): Promise<T>;
+}
+
+export interface MetaballsViewEventMap {
+  /** A setting changed (from an attribute, a property, a control or a gesture). */
+  'metaballs-change': CustomEvent<{ property: string; value: number | boolean | string }>;
+  /** A cell was selected or let go. */
+  'metaballs-inspect': CustomEvent<{ cell: MetaballsCellReport | null }>;
+  /** A sphere was added, moved, resized or removed by hand. */
+  'metaballs-edit': CustomEvent<{ spheres: MetaballsSphere[] }>;
+  /** A scene document was loaded. */
+  'metaballs-scene': CustomEvent<{ spheres: MetaballsSphere[] }>;
+  /** A mesh was exported. */
+  'metaballs-export': CustomEvent<{ format: string; bytes: number; ms: number }>;
+  /** The figure could not draw (it shows why). */
+  'metaballs-error': CustomEvent<{ message: string }>;
+}
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'metaballs-view': MetaballsView;
+  }
+  interface HTMLElementEventMap extends MetaballsViewEventMap {}
+}
