@@ -37,6 +37,8 @@ echo "== lints (native)"
 cargo clippy --all-targets -- -D warnings
 echo "== lints (wasm32)"
 cargo clippy --lib --test browser --target wasm32-unknown-unknown -- -D warnings
+echo "== crate package (metadata and file list)"
+cargo package --allow-dirty --no-verify --quiet
 echo "== page build (release wasm, wasm-bindgen)"
 bash www/build.sh
 

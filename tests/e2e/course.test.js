@@ -8,21 +8,14 @@ import { execFileSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { browser, baseUrl, root, useServerAndBrowser } from './helpers.js';
+import { browser, baseUrl, open as openPage, root, useServerAndBrowser } from './helpers.js';
 
 useServerAndBrowser();
 
 const FIXTURES = 'tests/e2e/fixtures';
 
-async function openPage(url, { viewport = { width: 960, height: 640 }, initScript, reducedMotion } = {}) {
-  const page = await browser.newPage({ viewport, reducedMotion });
-  const errors = [];
-  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
-  page.on('pageerror', (e) => errors.push(String(e)));
-  if (initScript) await page.addInitScript(initScript);
-  await page.goto(`${baseUrl}${url}`);
-  return { page, errors };
-}
+const everyFigureDrawn = (page) => page.waitForFunction(
+  () => [...document.querySelectorAll('metaballs-view')].every((e) => e.framesDrawn > 0), null, { timeout: 60_000 });
 
 // Decodes a PNG in the page and returns RGBA statistics of the rectangle `box` (pixels): the share of
 // dark pixels (a figure's background), of reddish ones (its surface) and of near-white ones (paper).
@@ -156,8 +149,7 @@ test('axe-core finds no serious or critical violations on the three pages, drawn
 
 test('alt names the figure, the name follows the state without one, and control changes are announced', async () => {
   const { page, errors } = await openPage(`${FIXTURES}/themes.html`);
-  await page.waitForFunction(() => [...document.querySelectorAll('metaballs-view')].every((e) => e.framesDrawn > 0),
-    null, { timeout: 60_000 });
+  await everyFigureDrawn(page);
   assert.equal(await page.getByRole('img', { name: 'Five spheres for the styling test' }).count(), 1);
   const derived = await page.$eval('#dark', (e) => e.shadowRoot.getElementById('view').getAttribute('aria-label'));
   assert.match(derived, /5 spheres, iso 1, 16³ cells, paused/);
@@ -178,8 +170,7 @@ test('alt names the figure, the name follows the state without one, and control 
 
 test('theme="light" and the background custom properties change the drawn picture; every part can be styled', async () => {
   const { page, errors } = await openPage(`${FIXTURES}/themes.html`);
-  await page.waitForFunction(() => [...document.querySelectorAll('metaballs-view')].every((e) => e.framesDrawn > 0),
-    null, { timeout: 60_000 });
+  await everyFigureDrawn(page);
   await page.waitForTimeout(800);
   const corner = async (id) => {
     const png = await page.locator(`#${id}`).screenshot();

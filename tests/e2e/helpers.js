@@ -73,8 +73,8 @@ after(async () => {
 }
 
 // Opens the page and collects console errors and uncaught exceptions.
-export async function open(query = '', { initScript } = {}) {
-  const page = await browser.newPage({ viewport: { width: 960, height: 640 } });
+export async function open(query = '', { initScript, viewport = { width: 960, height: 640 } } = {}) {
+  const page = await browser.newPage({ viewport });
   const errors = [];
   page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
   page.on('pageerror', (e) => errors.push(String(e)));

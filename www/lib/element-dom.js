@@ -3,6 +3,19 @@
 // import the module). Shadow DOM keeps the host page's rules out and these in; pages restyle the figure
 // through the custom properties and ::part() names below (README, custom-elements.json).
 
+// The light theme's colours (theme="light", and theme="auto" where the reader prefers light).
+const LIGHT = `
+  --panel: var(--metaballs-panel-background, rgba(250, 251, 253, 0.92));
+  --text: var(--metaballs-text, #1b1f27);
+  --muted: var(--metaballs-muted, #4a5263);
+  --accent: var(--metaballs-accent, #b2412c);
+  --button: #e8ebf1;
+  --button-hover: #dde1e9;
+  --border: #a9b1c2;
+  --on-accent: #ffffff;
+  background: var(--metaballs-poster-color, #e4e8ef);
+  color-scheme: light;`;
+
 const STYLE = `
 :host {
   --panel: var(--metaballs-panel-background, rgba(14, 17, 24, 0.88));
@@ -26,31 +39,9 @@ const STYLE = `
   container-type: inline-size;
   border-radius: 6px;
 }
-:host([theme="light"]) {
-  --panel: var(--metaballs-panel-background, rgba(250, 251, 253, 0.92));
-  --text: var(--metaballs-text, #1b1f27);
-  --muted: var(--metaballs-muted, #4a5263);
-  --accent: var(--metaballs-accent, #b2412c);
-  --button: #e8ebf1;
-  --button-hover: #dde1e9;
-  --border: #a9b1c2;
-  --on-accent: #ffffff;
-  background: var(--metaballs-poster-color, #e4e8ef);
-  color-scheme: light;
-}
+:host([theme="light"]) { ${LIGHT} }
 @media (prefers-color-scheme: light) {
-  :host([theme="auto"]) {
-    --panel: var(--metaballs-panel-background, rgba(250, 251, 253, 0.92));
-    --text: var(--metaballs-text, #1b1f27);
-    --muted: var(--metaballs-muted, #4a5263);
-    --accent: var(--metaballs-accent, #b2412c);
-    --button: #e8ebf1;
-    --button-hover: #dde1e9;
-    --border: #a9b1c2;
-    --on-accent: #ffffff;
-    background: var(--metaballs-poster-color, #e4e8ef);
-    color-scheme: light;
-  }
+  :host([theme="auto"]) { ${LIGHT} }
 }
 :host([hidden]) { display: none; }
 
