@@ -54,10 +54,11 @@ echo "== page end to end (Playwright, headless Chromium)"
 (
     cd tests/e2e
     # Installs the locked test tools when any is missing (Playwright, TypeScript, publint, VitePress,
-    # reveal.js, axe-core).
+    # reveal.js, axe-core). `npm install` rather than `npm ci`: the lock holds only this platform's
+    # builds of the bundlers' optional native packages, which `npm ci` refuses.
     node -e 'const d = require("./package.json").devDependencies;
       for (const n of Object.keys(d)) require("fs").statSync(`node_modules/${n}/package.json`)' 2>/dev/null \
-        || PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 npm ci --no-audit --no-fund
+        || PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 npm install --no-audit --no-fund
     npm test
 ) 2>&1 | tee -a "$log"
 
