@@ -4,7 +4,7 @@
 //! and the TypeScript declarations (`www/metaballs-view.d.ts`). `metaballs manifest --out www` writes
 //! them; a test checks that the files in the repository are what it writes.
 
-use crate::scene::params::{Kind, PARAMETERS, Parameter, Value};
+use crate::scene::params::{Kind, PARAMETERS, ParamError, Parameter, Value};
 use serde_json::{Value as Json, json};
 
 /// The element's methods: name, TypeScript signature after the name, what it does.
@@ -175,9 +175,10 @@ fn description(p: &Parameter) -> String {
     }
 }
 
-/// `www/lib/attributes.js`: the parameter table as the element reads it before its wasm arrives.
-pub fn attributes_js() -> String {
-    let rows: Vec<Json> = PARAMETERS
+/// The parameter table's rows: name, short name in links, label, kind, accepted words, range, slider,
+/// default as text and as a value, and a sentence saying what it accepts.
+fn rows() -> Vec<Json> {
+    PARAMETERS
         .iter()
         .map(|p| {
             let (kind, words) = kind_word(p.kind);
@@ -188,7 +189,40 @@ pub fn attributes_js() -> String {
                 "value": typed_default(p),
             })
         })
+        .collect()
+}
+
+/// What a parameter's errors call it and what they say it accepts (`None` where the accepted text has no
+/// one description: free text, slices and sphere lists, checked by the figure itself).
+fn expected(p: &Parameter) -> Option<String> {
+    match p.kind {
+        Kind::Text | Kind::Slice | Kind::Spheres => None,
+        _ => match p.parse("?") {
+            Err(ParamError::Invalid { expected, .. }) => Some(expected),
+            _ => None,
+        },
+    }
+}
+
+/// `parameters.json`: the table's rows, with each one's description and the words its errors use (the
+/// noun and what is accepted), for tools outside a page (the notebook widget's traits).
+pub fn parameters_json() -> String {
+    let rows: Vec<Json> = rows()
+        .into_iter()
+        .zip(PARAMETERS)
+        .map(|(mut row, p)| {
+            row["description"] = json!(description(p));
+            row["noun"] = json!(p.noun);
+            row["expected"] = json!(expected(p));
+            row
+        })
         .collect();
+    serde_json::to_string_pretty(&rows).expect("the table is JSON") + "\n"
+}
+
+/// `www/lib/attributes.js`: the parameter table as the element reads it before its wasm arrives.
+pub fn attributes_js() -> String {
+    let rows = rows();
     let body = rows.iter().map(|row| format!("  {row},")).collect::<Vec<_>>().join("\n");
     format!(
         "// The parameter table (src/scene/params/table.rs), written by `metaballs manifest --out www`.\n\
@@ -302,6 +336,7 @@ pub fn declarations() -> String {
 pub fn files() -> Vec<(&'static str, String)> {
     vec![
         ("lib/attributes.js", attributes_js()),
+        ("parameters.json", parameters_json()),
         ("custom-elements.json", custom_elements_json()),
         ("metaballs-view.d.ts", declarations()),
     ]

@@ -5,19 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
-
-apt_updated=0
-need_deb() {
-    local missing=()
-    for package in "$@"; do
-        dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
-    done
-    [ ${#missing[@]} -eq 0 ] && return
-    echo "installing ${missing[*]}"
-    if [ $apt_updated -eq 0 ]; then as_root apt-get update -q; apt_updated=1; fi
-    as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q "${missing[@]}"
-}
+source www/need-deb.sh
 
 need_deb mesa-vulkan-drivers chromium chromium-driver poppler-utils python3 g++
 command -v node >/dev/null && command -v npm >/dev/null || need_deb nodejs npm
@@ -50,6 +38,17 @@ cargo test 2>&1 | tee -a "$log"
 echo "== engine in headless Chromium (WebGPU)"
 CHROMEDRIVER=/usr/bin/chromedriver cargo test --target wasm32-unknown-unknown --test browser 2>&1 | tee -a "$log"
 
+echo "== notebook widget (wheel, Python tests)"
+bash python/build.sh
+venv=target/python/test-venv
+if [ ! -x "$venv/bin/pip" ]; then
+    python3 -c 'import venv, ensurepip' 2>/dev/null || need_deb python3-venv
+    python3 -m venv "$venv"
+fi
+"$venv/bin/pip" install --quiet --force-reinstall --no-deps target/python/dist/*.whl
+"$venv/bin/pip" install --quiet target/python/dist/*.whl pytest jupyterlab
+METABALLS_CLI="$PWD/target/debug/metaballs" "$venv/bin/pytest" -q -p no:cacheprovider python/tests 2>&1 | tee -a "$log"
+
 echo "== page end to end (Playwright, headless Chromium)"
 (
     cd tests/e2e
@@ -66,4 +65,10 @@ echo "== page end to end (Playwright, headless Chromium)"
 awk '/^test result:/ { passed += $4; failed += $6 }
      /^# pass /       { passed += $3 }
      /^# fail /       { failed += $3 }
+     / in [0-9.]+s/ && /(passed|failed)/ {
+         for (i = 2; i <= NF; i++) {
+             if ($i ~ /^passed,?$/) passed += $(i - 1)
+             if ($i ~ /^failed,?$/) failed += $(i - 1)
+         }
+     }
      END { printf "all tests: %d passed, %d failed\n", passed, failed }' "$log"

@@ -29,7 +29,7 @@ fn draw(context: &GpuContext, renderer: &mut Renderer) -> Vec<u8> {
 fn views_on_one_device_share_pipelines_and_keep_their_own_scenes() {
     let context = context();
     let scope = context.device().push_error_scope(wgpu::ErrorFilter::Validation);
-    assert_eq!(context.pipeline_sets_built(), 1, "the compute pipelines are built with the context");
+    assert_eq!(context.pipeline_sets_built(), 0, "pipelines were compiled before a view needed them");
     let settings =
         |seed, resolution| Settings { seed, resolution, antialiasing: false, ..Settings::default() };
     let mut views: Vec<Renderer> = [(1, 32), (2, 48), (3, 16), (4, 24)]
@@ -39,10 +39,11 @@ fn views_on_one_device_share_pipelines_and_keep_their_own_scenes() {
         })
         .collect();
     assert_eq!(context.live_renderers(), 4);
-    assert_eq!(context.pipeline_sets_built(), 2, "four views add one shading pipeline set, not four");
+    assert_eq!(context.pipeline_sets_built(), 1, "four views add one shading pipeline set, not four");
 
     // Each view draws its own scene, the same picture as a renderer alone on its own device would.
     let images: Vec<Vec<u8>> = views.iter_mut().map(|v| draw(&context, v)).collect();
+    assert_eq!(context.pipeline_sets_built(), 2, "the compute passes are compiled once for four views");
     assert_ne!(images[0], images[1], "two views with different seeds drew the same picture");
     let (_, device, queue) = common::device();
     let mut alone =
@@ -58,6 +59,23 @@ fn views_on_one_device_share_pipelines_and_keep_their_own_scenes() {
     assert!(pollster::block_on(scope.pop()).is_none(), "validation error");
     assert_eq!(context.gpu_error(), None);
     assert_eq!(context.lost(), None);
+}
+
+#[test]
+fn frames_meshed_on_the_cpu_compile_no_compute_passes() {
+    let context = context();
+    context.set_software(true);
+    let settings = Settings { resolution: 32, antialiasing: false, ..Settings::default() };
+    let mut view = Renderer::on_context(&context, OFFSCREEN_FORMAT, 64, 48, settings).unwrap();
+    draw(&context, &mut view);
+    assert_eq!(view.mesh_source(), "cpu", "a software adapter meshed on the device");
+    assert_eq!(context.pipeline_sets_built(), 1, "the compute passes were compiled for a CPU mesh");
+    // A teaching view reads the compute passes' cell lists: they compile when it is first shown.
+    view.set_settings(settings.with_parameter("grid", "cells").unwrap()).unwrap();
+    draw(&context, &mut view);
+    assert_eq!(view.mesh_source(), "gpu");
+    assert_eq!(context.pipeline_sets_built(), 2);
+    assert_eq!(context.gpu_error(), None);
 }
 
 #[test]

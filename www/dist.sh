@@ -1,17 +1,31 @@
 #!/usr/bin/env bash
-# Builds the page and copies what an author puts on a static host into dist/: index.html, embed.html,
-# www/ (the element, its modules and the lecture example), pkg/ (the WebAssembly) and pkg-webgl/ (the
-# WebGL2 build, fetched only by browsers without WebGPU). Every path inside
-# is relative, so the folder works under any sub-path of any host.
+# Builds the page and lays out what an author puts on a static host in dist/: index.html, embed.html,
+# www/ (the element and the page's script, bundled; the stylesheets; the lecture example), pkg/ (the
+# WebAssembly) and pkg-webgl/ (the WebGL2 build, fetched only by browsers without WebGPU). Every path
+# inside is relative, so the folder works under any sub-path of any host.
+#
+# The element's two dozen modules are bundled (esbuild, pinned in www/tools/) into two entry files and
+# one shared file, so a visitor's browser fetches three scripts at once instead of discovering the
+# modules import by import. The shared file sits in www/lib/, where the modules were, so the relative
+# paths to the WebAssembly stay as they are in the sources.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source www/need-deb.sh
 
 bash www/build.sh
+need_esbuild
+
 rm -rf dist
 mkdir -p dist/www dist/pkg dist/pkg-webgl
 cp index.html embed.html dist/
-cp -r www/lib www/examples www/metaballs-view.js www/metaballs-view.css www/page.js www/bench.js www/style.css \
-    dist/www/
+"$esbuild" www/metaballs-view.js www/page.js --bundle --splitting --format=esm --minify --sourcemap \
+    --target=es2022 --outbase=www --outdir=dist/www --chunk-names='lib/[name]-[hash]' \
+    --external:'../../pkg/*' --external:'../../pkg-webgl/*' --log-level=warning
+if grep -l 'pkg/metaballs' dist/www/*.js; then
+    echo "dist.sh: the code that loads the WebAssembly was bundled outside www/lib/, where its paths hold" >&2
+    exit 1
+fi
+cp -r www/examples www/metaballs-view.css www/style.css dist/www/
 cp pkg/metaballs.js pkg/metaballs_bg.wasm dist/pkg/
 cp pkg-webgl/metaballs.js pkg-webgl/metaballs_bg.wasm dist/pkg-webgl/
 echo "dist/ is ready ($(du -sh dist | cut -f1)): copy it to a static host"

@@ -5,7 +5,7 @@
 // Importing it does nothing but define the element, and only where `customElements` exists (a
 // server-side build imports it safely); the wasm loads when the first figure is connected.
 
-import { caseGallery, hub, loadWasm, propertyName, wasmLoaded } from './lib/engine.js';
+import { caseGallery, hub, loadWasm, propertyName, setWasmSources, wasmLoaded } from './lib/engine.js';
 import { Inspector } from './lib/inspector.js';
 import { wireCameraInput } from './lib/camera-input.js';
 import { buildPanel, listedControls } from './lib/panel.js';
@@ -44,6 +44,11 @@ export class MetaballsView extends Base {
     for (const element of hub.elements) bytes += element.#frames.view?.gpu_bytes() ?? 0;
     return bytes;
   }
+  /**
+   * Where the WebAssembly comes from when not from beside this module (set before the first figure
+   * connects): `{ webgpu, webgl2 }`, functions returning the wasm's bytes or Response, or promises of them.
+   */
+  static set wasmSources(sources) { setWasmSources(sources); }
   /** Destroys the shared device, as a driver reset would (for testing recovery). */
   static destroyDevice() { hub.gpu?.destroy(); hub.requestFrame(); }
 
@@ -199,7 +204,8 @@ export class MetaballsView extends Base {
           later(() => this.isConnected && this.#frames.drawForPrint(), { timeout: 4000 });
         }
       }
-      this.#buildPanel();
+      // A figure about to start builds its panel once it knows its device (after its first frame).
+      if (!this.#frames.starting) this.#buildPanel();
       this.#root.getElementById('hud').hidden = this.#state.hud !== 'on';
     }, (error) => this.fail('The figure could not load', `${error?.message ?? error}`));
     hub.register(this);
@@ -264,7 +270,8 @@ export class MetaballsView extends Base {
     }
     this.#state[name] = value;
     this.#settings.changed.add(name);
-    if (name === 'controls') this.#buildPanel();
+    // The panel is first built when the figure starts (after the attributes are read).
+    if (name === 'controls' && this.#started) this.#buildPanel();
     if (name === 'hud') this.#root.getElementById('hud').hidden = value !== 'on';
     if (name === 'max-pixel-ratio') this.#frames.resize();
     if (name === 'paused') this.#root.getElementById('play').hidden = !this.#showsPlayButton();

@@ -6,9 +6,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 bash www/dist.sh
-if ! command -v python3 >/dev/null; then
-    if [ "$(id -u)" -eq 0 ]; then apt-get update -q && apt-get install -y -q python3; else sudo apt-get update -q && sudo apt-get install -y -q python3; fi
-fi
+source www/need-deb.sh
+command -v python3 >/dev/null || need_deb python3
 port=$(python3 - "${PORT:-8000}" <<'PY'
 import socket, sys
 start = int(sys.argv[1])

@@ -31,10 +31,13 @@ pub struct Job<'a> {
     pub construction: Construction,
 }
 
-/// Where a frame's mesh goes: the shared buffers (already bound with [`Extractor::bind`]) and the
-/// frame's command encoder.
+/// Where a frame's mesh goes: the shared buffers, the scene as the device reads it and the frame's
+/// command encoder.
 pub struct Output<'a> {
+    pub device: &'a wgpu::Device,
     pub queue: &'a wgpu::Queue,
+    /// The grid and spheres as the compute passes read them.
+    pub scene: &'a SceneBuffers,
     pub encoder: &'a mut wgpu::CommandEncoder,
     pub buffers: &'a MeshBuffers,
     /// Timestamp queries for the stages, when a timed frame asks for them.
@@ -68,9 +71,15 @@ pub trait Extractor {
     /// A new instance for one renderer, sharing what was compiled for the device.
     fn fresh(&self) -> Box<dyn Extractor>;
 
-    /// Follows new buffers (made at start, grown, or for a new resolution). `scene` holds the grid
-    /// and spheres as the compute passes read them.
-    fn bind(&mut self, _device: &wgpu::Device, _scene: &SceneBuffers, _buffers: &MeshBuffers) {}
+    /// The buffers were made anew (grown, or for a new resolution): whatever was bound to the old ones
+    /// is bound again on the next [`Extractor::write`].
+    fn buffers_changed(&mut self) {}
+
+    /// Pipeline sets compiled for the device so far (shared by every renderer's instance): an extractor
+    /// compiles its pipelines on the first frame that needs them.
+    fn pipeline_sets(&self) -> usize {
+        0
+    }
 
     /// Does whatever work happens on the CPU and returns the room it needs in the buffers, so they
     /// can grow before [`Extractor::write`]; `None` when only the device will know.

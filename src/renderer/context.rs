@@ -24,7 +24,7 @@ pub struct GpuContext {
     device: wgpu::Device,
     queue: wgpu::Queue,
     pipelines: Arc<Pipelines>,
-    /// How many pipeline sets (compute, or shading for one format) were built on this context.
+    /// How many shading pipeline sets (one per format and sample count) were built on this context.
     pipelines_built: Arc<AtomicUsize>,
     live_renderers: Arc<AtomicUsize>,
     /// True on a software adapter (SwiftShader, llvmpipe, any fallback adapter), where the CPU mesher
@@ -35,8 +35,8 @@ pub struct GpuContext {
 }
 
 impl GpuContext {
-    /// Compiles every extractor the device runs (`extract::EXTRACTORS`) and starts listening for the
-    /// device's errors and loss.
+    /// Makes every extractor the device runs (`extract::EXTRACTORS`; each compiles its pipelines on
+    /// the first frame that needs them) and starts listening for the device's errors and loss.
     pub fn new(device: wgpu::Device, queue: wgpu::Queue) -> Self {
         let error: Arc<Mutex<Option<String>>> = Arc::default();
         let sink = error.clone();
@@ -59,12 +59,11 @@ impl GpuContext {
         #[allow(clippy::arc_with_non_send_sync)]
         let pipelines =
             Arc::new(Pipelines { extractors: extract::compile_all(&device), shading: Mutex::default() });
-        let compute_sets = pipelines.extractors.iter().filter(|e| e.capabilities().needs_compute).count();
         Self {
             device,
             queue,
             pipelines,
-            pipelines_built: Arc::new(AtomicUsize::new(compute_sets)),
+            pipelines_built: Arc::default(),
             live_renderers: Arc::default(),
             software: Arc::default(),
             error,
@@ -113,10 +112,12 @@ impl GpuContext {
         pipelines
     }
 
-    /// Pipeline sets built on this context so far: one for the compute passes plus one per output
-    /// format and sample count in use. Views sharing a context do not add to it.
+    /// Pipeline sets built on this context so far: one for the compute passes once a frame has used
+    /// them, plus one per output format and sample count in use. Views sharing a context do not add
+    /// to it.
     pub fn pipeline_sets_built(&self) -> usize {
-        self.pipelines_built.load(Ordering::Relaxed)
+        let extractors: usize = self.pipelines.extractors.iter().map(|e| e.pipeline_sets()).sum();
+        extractors + self.pipelines_built.load(Ordering::Relaxed)
     }
 
     /// Renderers alive on this context.

@@ -30,7 +30,9 @@ impl Renderer {
             }
         }
         let output = Output {
+            device: &self.device,
             queue: &self.queue,
+            scene: &self.scene_buffers,
             encoder,
             buffers: &self.mesh,
             timing: self.timing.as_ref().filter(|_| timed),

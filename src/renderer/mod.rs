@@ -105,7 +105,7 @@ impl Renderer {
         let scene_buffers = SceneBuffers::new(&device);
         let grid = Grid { cells_per_axis: settings.resolution };
         let mesh = MeshBuffers::new(&device, grid, automatic_capacity(&device, grid, context.has_compute()));
-        let mut renderer = Self {
+        Ok(Self {
             extractors: context.extractors().iter().map(|e| e.fresh()).collect(),
             active: 0,
             pinned: None,
@@ -134,9 +134,7 @@ impl Renderer {
             timing: None,
             views: None,
             selected: None,
-        };
-        renderer.bind_passes();
-        Ok(renderer)
+        })
     }
 
     /// The queue frames are submitted on.
@@ -265,13 +263,15 @@ impl Renderer {
         self.mesh.destroy();
         self.mesh = MeshBuffers::new(&self.device, self.grid(), capacity);
         self.pending_capacity = None;
-        self.bind_passes();
+        self.follow_new_buffers();
     }
 
-    fn bind_passes(&mut self) {
+    /// What was bound to the old buffers (the teaching views, the extractors' passes) is bound again
+    /// when next used.
+    fn follow_new_buffers(&mut self) {
         self.drop_views();
         for extractor in &mut self.extractors {
-            extractor.bind(&self.device, &self.scene_buffers, &self.mesh);
+            extractor.buffers_changed();
         }
     }
 

@@ -279,7 +279,7 @@ test('embed.html shows no panel unless asked', async () => {
   await asked.close();
 });
 
-test('dist/ served under a sub-path loads and draws the lecture page', async () => {
+test('dist/ (the bundled element) served under a sub-path draws the demo page and the lecture', async () => {
   execFileSync('bash', [path.join(root, 'www/dist.sh')], { stdio: 'ignore' });
   const site = mkdtempSync(path.join(os.tmpdir(), 'metaballs-site-'));
   cpSync(path.join(root, 'dist'), path.join(site, 'course/figures'), { recursive: true });
@@ -297,6 +297,18 @@ test('dist/ served under a sub-path loads and draws the lecture page', async () 
     assert.equal(await page.$eval('#below metaballs-view', (e) => e.framesDrawn), 0);
     assert.deepEqual(errors, []);
     await close();
+    // The demo page: the element and the page's script share one bundle (one wasm, one device).
+    const demo = await open(`http://127.0.0.1:${port}/course/figures/index.html?spheres=7`);
+    await demo.page.waitForFunction(() => document.querySelector('metaballs-view')?.stats?.triangles > 0,
+      null, { timeout: 60_000 });
+    assert.equal(await demo.page.$eval('metaballs-view', (e) => e.spheres), 7, 'the page did not apply its link');
+    await demo.page.waitForFunction(() => /spheres=7/.test(document.getElementById('share').getAttribute('href')));
+    assert.equal(await demo.page.evaluate(() => customElements.get('metaballs-view').devicesCreated), 1);
+    const scripts = await demo.page.evaluate(() => performance.getEntriesByType('resource')
+      .filter((r) => r.name.endsWith('.js')).map((r) => r.name.split('/').pop()));
+    assert.ok(scripts.length <= 4, `the page fetched ${scripts.length} scripts: ${scripts.join(', ')}`);
+    assert.deepEqual(demo.errors, []);
+    await demo.close();
   } finally {
     server.kill();
     rmSync(site, { recursive: true, force: true });

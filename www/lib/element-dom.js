@@ -101,7 +101,6 @@ canvas:focus-visible { outline: 2px solid var(--accent); outline-offset: -2px; }
   top: 8px;
   left: 8px;
   width: min(280px, 33%);
-  backdrop-filter: blur(6px);
 }
 #panel[hidden] { display: none; }
 summary { padding: 6px 10px; cursor: pointer; color: var(--muted); user-select: none; }

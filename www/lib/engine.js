@@ -45,15 +45,64 @@ let wasmReady = null;
 /** True once the wasm has loaded (attributes can be read from then on). */
 export const wasmLoaded = () => wasm !== null;
 
-/** Picks the backend and loads and starts its wasm (once, however many elements ask). */
+// The two builds: their JavaScript and their WebAssembly, fetched together. Each path is written out
+// in full where it is used, so that bundlers (Vite, webpack) find the files and copy them.
+const WEBGPU_BUILD = {
+  name: 'webgpu',
+  glue: () => import('../../pkg/metaballs.js'),
+  wasm: () => new URL('../../pkg/metaballs_bg.wasm', import.meta.url),
+};
+const WEBGL_BUILD = {
+  name: 'webgl2',
+  glue: () => import('../../pkg-webgl/metaballs.js'),
+  wasm: () => new URL('../../pkg-webgl/metaballs_bg.wasm', import.meta.url),
+};
+
+// Where each build's WebAssembly comes from when not from next to the modules (see `setWasmSources`).
+let wasmSources = {};
+
+/**
+ * Tells the page where the WebAssembly comes from, before the first figure connects: `{ webgpu, webgl2 }`,
+ * each a function returning (a promise of) the wasm's bytes or its Response. For hosts that import the
+ * element from where no file sits beside it (a notebook widget's module is imported from a blob: URL).
+ */
+export function setWasmSources(sources) {
+  wasmSources = { ...sources };
+}
+
+// Imports a build's module while its wasm is fetched, and starts the wasm.
+async function start(build) {
+  const bytes = wasmSources[build.name]?.() ?? fetch(build.wasm());
+  const module = await build.glue();
+  await module.default({ module_or_path: bytes });
+  return module;
+}
+
+// A WebGPU device asked for as soon as its build has started, while the page still looks for an adapter
+// (taken by the first figure that needs a device).
+let earlyGpu = null;
+
+/**
+ * Picks the backend and loads and starts its wasm (once, however many elements ask). Where the browser
+ * has WebGPU, its build is fetched and compiled, and the device requested, while the page looks for an
+ * adapter: the first frame waits for the slowest of them, not their sum.
+ */
 export function loadWasm() {
   wasmReady ??= (async () => {
+    const webgpu = navigator.gpu ? start(WEBGPU_BUILD) : null;
+    earlyGpu = webgpu?.then((module) => module.Gpu.create()) ?? null;
+    earlyGpu?.catch(() => { /* reported when a figure takes it */ });
     backend = await detectBackend();
-    const module = backend === 'webgl2'
-      ? await import('../../pkg-webgl/metaballs.js')
-      : await import('../../pkg/metaballs.js');
-    await module.default();
-    wasm = module;
+    if (backend === 'webgl2') {
+      webgpu?.catch(() => { /* not used */ });
+      earlyGpu?.then((gpu) => gpu.free(), () => {});
+      earlyGpu = null;
+      wasm = await start(WEBGL_BUILD);
+      return;
+    }
+    wasm = await (webgpu ?? start(WEBGPU_BUILD));
+    if (backend === 'webgpu') hub.acquire().catch(() => { /* reported when a figure asks */ });
+    else earlyGpu = null;
   })();
   return wasmReady;
 }
@@ -117,9 +166,11 @@ class Hub {
     await loadWasm();
     if (backend !== 'webgpu') throw new Error(WEBGPU_HELP);
     this.adapter = describeAdapter(detectedAdapter);
+    const early = earlyGpu;
+    earlyGpu = null;
     let gpu;
     try {
-      gpu = await wasm.Gpu.create();
+      gpu = await (early ?? wasm.Gpu.create());
     } catch (error) {
       throw new Error(`${error?.message ?? error}`);
     }

@@ -96,8 +96,15 @@ export class FigureFrames {
   start(forPrint = false) {
     if (this.#view || this.#starting || this.#failed || !(this.#near || forPrint)) return;
     if (!this.#f.element.isConnected) return;
-    this.#starting = this.#create().finally(() => { this.#starting = null; });
+    // The panel follows what the device allows (its largest grid, compute shaders): a figure that
+    // starts builds it just after its first frame, one that cannot start as soon as it knows.
+    this.#starting = this.#create().then((started) => {
+      if (!started && this.#f.element.isConnected && wasmModule()) this.#f.buildPanel();
+    }).finally(() => { this.#starting = null; });
   }
+
+  /** True while a renderer is being made (the panel is built when it is done). */
+  get starting() { return this.#starting !== null; }
 
   async #create() {
     const f = this.#f;
@@ -107,16 +114,16 @@ export class FigureFrames {
       gpu = await hub.deviceFor(f.element, f.canvas);
     } catch (error) {
       this.fail(error.title, error.message, { retry: Boolean(hub.stopped) });
-      return;
+      return false;
     }
     if (gpu === null) {
       this.#failed = true;
       this.#showMessage('Paused', WEBGL_WAIT);
-      return;
+      return false;
     }
     if (!f.element.isConnected || this.#view) {
       hub.giveBack(f.element, gpu);
-      return;
+      return false;
     }
     this.#gpu = gpu;
     const webgl = !gpu.has_compute();
@@ -141,7 +148,7 @@ export class FigureFrames {
         this.#view = create(fallback);
       } catch (again) {
         this.fail('The figure could not start', again.message);
-        return;
+        return false;
       }
     }
     f.look.forgetBackground();
@@ -158,11 +165,12 @@ export class FigureFrames {
       this.#savedSpheres = null;
     }
     f.editor().reset();
-    f.buildPanel();
     this.#hideMessage();
     this.#dirty = 3;
     this.#last = 0;
     hub.requestFrame();
+    requestAnimationFrame(() => setTimeout(() => f.element.isConnected && f.buildPanel()));
+    return true;
   }
 
   // Frees the renderer's GPU memory and leaves the canvas unconfigured (a WebGL2 figure gives its
@@ -286,7 +294,7 @@ export class FigureFrames {
         const blocked = performance.now() - started;
         this.#dirty = Math.max(0, this.#dirty - 1);
         // The picture for print, taken in this task while the canvas holds the frame.
-        f.look.drawn(now, animating, this.#dirty === 0 || forPrint);
+        f.look.drawn(now, animating, this.#dirty === 0, forPrint);
         if (forPrint && !this.#onScreen) {
           // Not a frame anyone saw: only the picture counts. A figure not near the viewport lets go
           // of its renderer again.

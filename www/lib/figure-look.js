@@ -7,6 +7,9 @@ import { TABLE } from './attributes.js';
 // A figure refreshes its print picture at most this often while it animates (taking one waits for the
 // GPU to finish the frame); a still figure takes one once it has settled.
 const PRINT_EVERY_MS = 5000;
+// The first picture waits this long after the first frame: while the device still compiles and draws
+// the first frames, taking one would hold the page until they are done.
+const FIRST_PICTURE_MS = 1000;
 // The page's custom properties are read again at most this often.
 const STYLE_EVERY_MS = 500;
 
@@ -27,6 +30,7 @@ export class FigureLook {
   #print;
   #printUrl = null;
   #printedAt = -Infinity;
+  #firstPictureAt = Infinity;
   #printStale = true;
   #encoding = false;
   #styleAt = -Infinity;
@@ -103,11 +107,14 @@ export class FigureLook {
 
   /**
    * A frame was just drawn (this task): hides the poster, and takes a picture of it for print when due:
-   * every few seconds while animating, else once no more frames are due (`settled`).
+   * every few seconds while animating, else once no more frames are due (`settled`); at once for a
+   * frame drawn only for print (`forPrint`), else not in the first second after the first frame.
    */
-  drawn(now, animating, settled) {
+  drawn(now, animating, settled, forPrint = false) {
     this.#poster.hidden = true;
-    const due = animating ? now - this.#printedAt >= PRINT_EVERY_MS : settled;
+    if (this.#firstPictureAt === Infinity) this.#firstPictureAt = forPrint ? now : now + FIRST_PICTURE_MS;
+    const due = forPrint || (now >= this.#firstPictureAt
+      && (animating ? now - this.#printedAt >= PRINT_EVERY_MS : settled));
     if (!due || this.#encoding) {
       this.#printStale = true;
       return;
@@ -128,7 +135,9 @@ export class FigureLook {
   }
 
   /** True when the print picture is older than the last frame (the figure then draws once more). */
-  get printStale() { return this.#printStale && !this.#encoding; }
+  get printStale() {
+    return this.#printStale && !this.#encoding && performance.now() >= this.#firstPictureAt;
+  }
 
   /** A new renderer starts from the theme's background: the page's colours are sent again. */
   forgetBackground() {

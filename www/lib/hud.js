@@ -2,7 +2,9 @@
 // meshing), and a warning when the
 // triangle budget stays full. Figures update twice a second from the GPU's asynchronous reports.
 
-const numberFormat = new Intl.NumberFormat('en');
+// Made on first use: a number format costs tens of milliseconds to set up, not to be paid at import.
+let numberFormat = null;
+const formatNumber = (n) => (numberFormat ??= new Intl.NumberFormat('en')).format(n);
 
 export class Hud {
   /** Writes into the readouts of `root` (the element's shadow root). */
@@ -56,8 +58,8 @@ export class Hud {
     const stats = view.stats();
     if (!stats) return frameTime;
     this.stats.triangles = stats.triangles;
-    $('triangles').textContent = numberFormat.format(stats.triangles);
-    $('triangles').title = `budget ${numberFormat.format(stats.max_triangles)} triangles`;
+    $('triangles').textContent = formatNumber(stats.triangles);
+    $('triangles').title = `budget ${formatNumber(stats.max_triangles)} triangles`;
     // The buffers grow a frame after an overflow; warn only when it lasts (they hit the device's limit).
     this.overflows = stats.overflowed ? this.overflows + 1 : 0;
     this.stats.overflowed = this.overflows >= 2;

@@ -200,6 +200,13 @@ export function buildPanel(container, names, table, state, onChange, actions, op
       makeButton('picture-2x', 'PNG 2×', 'Download a picture at twice the size', () => actions.picture(2))),
   };
   let galleryList = null;
+  // The class of the inspected cell, marked in the gallery.
+  let shownClass = null;
+  const markCurrent = () => {
+    for (const figure of galleryList?.children ?? []) {
+      figure.classList.toggle('current', figure.dataset.class === String(shownClass));
+    }
+  };
 
   for (const [title, members] of GROUPS) {
     const present = members.filter((name) => wanted.has(name));
@@ -219,9 +226,17 @@ export function buildPanel(container, names, table, state, onChange, actions, op
         }));
       } else if (name === 'inspector') {
         section.append(element('p', { className: 'hint', textContent: 'Click the surface to inspect a cell (Esc to let go).' }));
-        galleryList = buildGallery(gallery);
-        section.append(element('details', { className: 'cases' },
-          element('summary', { textContent: 'The 15 cases' }), galleryList));
+        const cases = element('details', { className: 'cases' }, element('summary', { textContent: 'The 15 cases' }));
+        // Drawn while the page is idle (or when opened first), not before the figure's first frame.
+        const fill = () => {
+          if (galleryList || !cases.isConnected) return;
+          galleryList = buildGallery(gallery);
+          cases.append(galleryList);
+          markCurrent();
+        };
+        cases.addEventListener('toggle', fill, { once: true });
+        (globalThis.requestIdleCallback ?? setTimeout)(fill);
+        section.append(cases);
       } else {
         const spec = byName[name];
         const control = controls[spec.kind](name, spec);
@@ -252,15 +267,10 @@ export function buildPanel(container, names, table, state, onChange, actions, op
     textContent: 'Drag to orbit · click, then wheel to zoom · arrows to turn · double-click to reset',
   }));
 
-  let shownClass = null;
   const show = (s, inspectedClass = shownClass) => {
     shownClass = inspectedClass;
     for (const update of updates) update(s);
-    if (galleryList) {
-      for (const figure of galleryList.children) {
-        figure.classList.toggle('current', figure.dataset.class === String(inspectedClass));
-      }
-    }
+    markCurrent();
   };
   show(state);
   return show;

@@ -8,34 +8,43 @@ pub mod field;
 pub mod marching_cubes;
 pub mod scene_buffers;
 
-use super::buffers::MeshBuffers;
 use super::extractor::{Capabilities, Extractor, Job, MeshCount, Output};
 use super::uniforms::Counters;
 use crate::device::has_compute;
 use blocks::BlockPass;
 use field::FieldPass;
 use marching_cubes::MarchingCubesPass;
-use scene_buffers::SceneBuffers;
+use std::sync::{Arc, OnceLock};
 
-/// The three compute passes; clones share the compiled pipelines and bind their own buffers.
+/// The three compute passes.
 #[derive(Clone)]
-pub struct GpuExtractor {
+struct Passes {
     blocks: BlockPass,
     field: FieldPass,
     marching: MarchingCubesPass,
 }
 
+/// The compute passes, compiled once per device on the first frame that uses them (so a page whose
+/// frames are meshed on the CPU, as on a software adapter, never waits for them); clones share the
+/// compiled pipelines and bind their own buffers.
+#[derive(Clone)]
+pub struct GpuExtractor {
+    compiled: Arc<OnceLock<Passes>>,
+    /// This renderer's passes, bound to its current buffers; `None` until a frame uses them after the
+    /// buffers were made.
+    bound: Option<Passes>,
+}
+
 impl GpuExtractor {
-    /// Compiles the passes, on a device with compute shaders.
+    /// The passes, on a device with compute shaders (compiled when a frame first needs them).
     pub fn compile(device: &wgpu::Device) -> Option<Box<dyn Extractor>> {
         if !has_compute(device) {
             return None;
         }
-        Some(Box::new(Self {
-            blocks: BlockPass::new(device),
-            field: FieldPass::new(device),
-            marching: MarchingCubesPass::new(device),
-        }))
+        // On wasm32 wgpu's objects are not Send: a page runs them on one thread.
+        #[allow(clippy::arc_with_non_send_sync)]
+        let compiled = Arc::new(OnceLock::new());
+        Some(Box::new(Self { compiled, bound: None }))
     }
 }
 
@@ -52,10 +61,12 @@ impl Extractor for GpuExtractor {
         Box::new(self.clone())
     }
 
-    fn bind(&mut self, device: &wgpu::Device, scene: &SceneBuffers, buffers: &MeshBuffers) {
-        self.blocks.bind(device, scene, buffers);
-        self.field.bind(device, scene, buffers);
-        self.marching.bind(device, scene, buffers);
+    fn buffers_changed(&mut self) {
+        self.bound = None;
+    }
+
+    fn pipeline_sets(&self) -> usize {
+        usize::from(self.compiled.get().is_some())
     }
 
     /// The passes read the scene from the uniforms the renderer uploaded: nothing to do before them.
@@ -64,10 +75,24 @@ impl Extractor for GpuExtractor {
     }
 
     fn write(&mut self, output: Output) -> MeshCount {
-        let Output { encoder, buffers, timing, .. } = output;
-        self.blocks.encode(encoder, buffers, timing.map(|t| t.compute_writes(0)));
-        self.field.encode(encoder, buffers, timing.map(|t| t.compute_writes(1)));
-        self.marching.encode(encoder, buffers, timing.map(|t| t.compute_writes(2)));
+        let Output { device, scene, encoder, buffers, timing, .. } = output;
+        let passes = self.bound.get_or_insert_with(|| {
+            let mut passes = self
+                .compiled
+                .get_or_init(|| Passes {
+                    blocks: BlockPass::new(device),
+                    field: FieldPass::new(device),
+                    marching: MarchingCubesPass::new(device),
+                })
+                .clone();
+            passes.blocks.bind(device, scene, buffers);
+            passes.field.bind(device, scene, buffers);
+            passes.marching.bind(device, scene, buffers);
+            passes
+        });
+        passes.blocks.encode(encoder, buffers, timing.map(|t| t.compute_writes(0)));
+        passes.field.encode(encoder, buffers, timing.map(|t| t.compute_writes(1)));
+        passes.marching.encode(encoder, buffers, timing.map(|t| t.compute_writes(2)));
         MeshCount::OnDevice
     }
 }

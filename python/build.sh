@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Builds the notebook widget's wheel, target/python/dist/metaballs_widget-VERSION-py3-none-any.whl: the
+# WebAssembly (www/build.sh), the widget's module bundled with the element and both builds' JavaScript
+# (esbuild, from www/tools/), both wasm builds and the parameter table, packed by hatchling. Needs
+# python3 with venv, node and npm (installed when missing).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+source www/need-deb.sh
+
+bash www/build.sh
+need_esbuild
+
+static=python/src/metaballs_widget/static
+rm -rf "$static"
+mkdir -p "$static"
+"$esbuild" python/js/widget.js --bundle --format=esm --minify --target=es2022 --outfile="$static/widget.js" \
+    --log-level=warning
+cp pkg/metaballs_bg.wasm "$static/metaballs_bg.wasm"
+cp pkg-webgl/metaballs_bg.wasm "$static/metaballs_webgl_bg.wasm"
+cp www/parameters.json "$static/parameters.json"
+
+venv=target/python/build-venv
+if [ ! -x "$venv/bin/pip" ]; then
+    python3 -c 'import venv, ensurepip' 2>/dev/null || need_deb python3-venv
+    python3 -m venv "$venv"
+fi
+rm -rf target/python/dist
+"$venv/bin/pip" wheel --quiet --no-deps --wheel-dir target/python/dist ./python
+wheel=$(ls target/python/dist/*.whl)
+echo "built $wheel ($(wc -c < "$wheel") bytes)"

@@ -1,0 +1,146 @@
+// The notebook widget's front end (an anywidget module): a <metaballs-view> in the output, its settings
+// kept equal to the model's traits both ways, and its statistics sent back. It follows the anywidget
+// front-end contract only (a model with get, set, on, off and save_changes; send where the host has a
+// kernel), so it runs in JupyterLab, Notebook 7, VS Code, Colab, marimo and MyST's static pages.
+//
+// The module is bundled with the element (python/build.sh). Hosts import it from a blob: URL, where no
+// file sits beside it, so the WebAssembly comes from the kernel when the host has one (asked for once per
+// page), else from beside the module's URL.
+
+import '../../www/metaballs-view.js';
+import { TABLE } from '../../www/lib/attributes.js';
+
+const propertyName = (name) => name.replace(/-([a-z])/g, (_, c) => c.toUpperCase());
+// The trait of an attribute in Python (`max-pixel-ratio` → `max_pixel_ratio`).
+const traitName = (name) => name.replace(/-/g, '_');
+const WASM_FILES = { webgpu: 'metaballs_bg.wasm', webgl2: 'metaballs_webgl_bg.wasm' };
+// How often the statistics (triangles, frame rate) are sent back, in ms.
+const STATS_EVERY_MS = 500;
+
+// Asks the kernel for a build's WebAssembly; the answer carries it as a binary buffer.
+function fromKernel(model, build) {
+  return new Promise((resolve) => {
+    const answer = (message, buffers) => {
+      if (message?.type !== 'wasm' || message.build !== build) return;
+      model.off('msg:custom', answer);
+      // A view into the message's buffer: copied into a buffer of its own, which WebAssembly accepts.
+      const view = buffers[0];
+      resolve(new Uint8Array(view.buffer, view.byteOffset, view.byteLength).slice());
+    };
+    model.on('msg:custom', answer);
+    model.send({ type: 'wasm', build });
+  });
+}
+
+// Where the page's WebAssembly comes from, said once per page before the first figure connects.
+function tellWasmSources(model) {
+  const View = customElements.get('metaballs-view');
+  if (!View || globalThis.metaballsWidgetWasm) return;
+  globalThis.metaballsWidgetWasm = true;
+  const source = (build) => () => (typeof model.send === 'function' && !import.meta.url.startsWith('http')
+    ? fromKernel(model, build)
+    : fetch(new URL(WASM_FILES[build], import.meta.url)));
+  View.wasmSources = { webgpu: source('webgpu'), webgl2: source('webgl2') };
+}
+
+/** The spheres (as `sphereList` gives them: center, radius, velocity) as the `balls` attribute writes them. */
+export function ballsText(list) {
+  return list.map((s) => [...s.center, s.radius, ...(s.velocity ?? [])].join(',')).join(';');
+}
+
+// What Python may ask the figure (`Metaballs.save_scene()` and the rest), by the element's method names.
+const CALLS = new Set(['saveScene', 'loadScene', 'exportMesh', 'picture']);
+
+// Runs a method Python asked for and sends the answer: a value, bytes as a binary buffer, or the error.
+async function answer(model, figure, { id, method, args = [] }) {
+  try {
+    if (!CALLS.has(method)) throw new Error(`the figure has no method ${method}`);
+    let value = await figure[method](...args);
+    if (value instanceof Blob) value = new Uint8Array(await value.arrayBuffer());
+    if (value instanceof Uint8Array) {
+      const whole = value.byteOffset === 0 && value.byteLength === value.buffer.byteLength;
+      model.send({ type: 'answer', id, bytes: true }, undefined, [whole ? value.buffer : value.slice().buffer]);
+    } else {
+      model.send({ type: 'answer', id, value: value ?? null });
+    }
+  } catch (error) {
+    model.send({ type: 'answer', id, error: error?.message ?? String(error) });
+  }
+}
+
+function render({ model, el }) {
+  tellWasmSources(model);
+  const figure = document.createElement('metaballs-view');
+  figure.style.display = 'block';
+  figure.style.aspectRatio = '16 / 9';
+  for (const { name } of TABLE) {
+    const value = model.get(traitName(name));
+    if (value !== undefined && value !== null && value !== '') write(figure, name, value);
+  }
+  el.replaceChildren(figure);
+
+  // Python → figure: a changed trait becomes the attribute (the element reports what it refuses).
+  const listeners = TABLE.map(({ name }) => {
+    const event = `change:${traitName(name)}`;
+    const listener = () => write(figure, name, model.get(traitName(name)));
+    model.on(event, listener);
+    return [event, listener];
+  });
+  // Set by Python (not sent back from the figure): the spheres are placed by hand.
+  let reporting = false;
+  const spheresChanged = () => {
+    const list = model.get('sphere_list');
+    if (!reporting && Array.isArray(list) && list.length) figure.setAttribute('balls', ballsText(list));
+  };
+  const reportSpheres = () => {
+    reporting = true;
+    try {
+      model.set('sphere_list', figure.sphereList);
+    } finally {
+      reporting = false;
+    }
+  };
+  model.on('change:sphere_list', spheresChanged);
+  listeners.push(['change:sphere_list', spheresChanged]);
+
+  // Figure → Python: every setting changed inside it (controls, gestures), and the spheres.
+  const changed = (event) => {
+    const name = TABLE.find((p) => propertyName(p.name) === event.detail.property)?.name;
+    if (!name || model.get(traitName(name)) === event.detail.value) return;
+    model.set(traitName(name), event.detail.value);
+    if (['spheres', 'seed', 'balls'].includes(name)) reportSpheres();
+    model.save_changes();
+  };
+  figure.addEventListener('metaballs-change', changed);
+
+  const asked = (message) => {
+    if (message?.type === 'call') answer(model, figure, message);
+  };
+  model.on('msg:custom', asked);
+  listeners.push(['msg:custom', asked]);
+
+  const timer = setInterval(() => {
+    const stats = figure.stats;
+    if (!stats) return;
+    const sent = { triangles: stats.triangles ?? 0, fps: Math.round((stats.fps ?? 0) * 10) / 10, adapter: stats.adapter ?? '' };
+    if (Object.entries(sent).every(([k, v]) => model.get(k) === v)) return;
+    for (const [k, v] of Object.entries(sent)) model.set(k, v);
+    if (!(model.get('sphere_list')?.length)) reportSpheres();
+    model.save_changes();
+  }, STATS_EVERY_MS);
+
+  // Removed with its output (a cell run again, the widget closed): the figure lets go of its renderer.
+  return () => {
+    clearInterval(timer);
+    for (const [event, listener] of listeners) model.off(event, listener);
+    figure.removeEventListener('metaballs-change', changed);
+    figure.remove();
+  };
+}
+
+// Writes a trait's value as its attribute (`true`/`false` for switches, which the table accepts).
+function write(figure, name, value) {
+  figure.setAttribute(name, String(value));
+}
+
+export default { render };

@@ -1,0 +1,119 @@
+"""The ``Metaballs`` widget: one trait per setting of the figure's parameter table, synced both ways with a
+``<metaballs-view>`` in the notebook's output, and the figure's statistics read back."""
+
+from __future__ import annotations
+
+import asyncio
+import itertools
+
+import anywidget
+import traitlets
+
+from ._parameters import STATIC, TABLE, Refused, check, shown, trait_name
+
+_ROWS = {trait_name(row["name"]): row for row in TABLE}
+_WASM = {"webgpu": "metaballs_bg.wasm", "webgl2": "metaballs_webgl_bg.wasm"}
+MESH_FORMATS = ("stl", "obj", "ply")
+
+
+def _settings() -> dict:
+    """One synced trait per parameter, its default and help from the table."""
+    return {name: traitlets.Any(row["value"], help=row["description"]).tag(sync=True) for name, row in _ROWS.items()}
+
+
+class _Figure(anywidget.AnyWidget):
+    _esm = STATIC / "widget.js"
+
+    # What the figure reports (set by the figure; setting them from Python changes nothing).
+    triangles = traitlets.Int(0, help="Triangles in the newest frame.").tag(sync=True)
+    fps = traitlets.Float(0.0, help="Frames drawn per second.").tag(sync=True)
+    adapter = traitlets.Unicode("", help="What the figure draws with (WebGPU's adapter, or WebGL2).").tag(sync=True)
+    sphere_list = traitlets.List(
+        traitlets.Dict(),
+        help="The spheres as dicts (center, radius, velocity); set it to place them by hand.",
+    ).tag(sync=True)
+
+    def __init__(self, **kwargs):
+        super().__init__(**kwargs)
+        self._calls = itertools.count(1)
+        self._waiting: dict = {}
+        self.on_msg(self._answer)
+
+    # What the figure in the notebook's output is asked: awaited (``await w.save_scene()``), so that the
+    # kernel takes in the figure's answer while the cell waits for it.
+
+    async def save_scene(self) -> str:
+        """The scene (spheres and every setting of the picture) as the figure's JSON document."""
+        return await self._ask("saveScene")
+
+    async def load_scene(self, text: str) -> None:
+        """Loads a scene document; raises ``ValueError`` with what is wrong, keeping the scene."""
+        await self._ask("loadScene", str(text))
+
+    async def export_mesh(self, format: str = "stl") -> bytes:
+        """The current frame's mesh as the bytes of a ``stl``, ``obj`` or ``ply`` file."""
+        if format not in MESH_FORMATS:
+            raise ValueError(f"format must be one of {', '.join(MESH_FORMATS)}, got {format!r}")
+        return await self._ask("exportMesh", format)
+
+    async def picture(self, scale: float = 1.0) -> bytes:
+        """A PNG of the view at the figure's size times ``scale`` (show it with ``IPython.display.Image``)."""
+        return await self._ask("picture", float(scale))
+
+    async def _ask(self, method: str, *args, timeout: float = 60.0):
+        """Asks the figure and waits for its answer: a value, bytes, or why it refused."""
+        call = next(self._calls)
+        answer = asyncio.get_running_loop().create_future()
+        self._waiting[call] = answer
+        try:
+            self.send({"type": "call", "id": call, "method": method, "args": list(args)})
+            content, buffers = await asyncio.wait_for(answer, timeout)
+        except asyncio.TimeoutError:
+            raise TimeoutError(
+                f"the figure did not answer {method} in {timeout:g} s: it answers only while a notebook "
+                "shows it (with ipykernel 7 or later, which takes in messages while a cell awaits)"
+            ) from None
+        finally:
+            self._waiting.pop(call, None)
+        if "error" in content:
+            raise ValueError(content["error"])
+        return bytes(buffers[0]) if content.get("bytes") else content.get("value")
+
+    @traitlets.validate(*_ROWS)
+    def _check(self, proposal):
+        name = proposal["trait"].name
+        row = _ROWS[name]
+        try:
+            return check(row, proposal["value"])
+        except Refused as refused:
+            # As the figure says it: name="text": why; keeping the value in effect.
+            text = proposal["value"]
+            text = ("true" if text else "false") if isinstance(text, bool) else text
+            raise traitlets.TraitError(
+                f'{row["name"]}="{text}": {refused}; keeping {shown(getattr(self, name))}'
+            ) from None
+
+    def _answer(self, _widget, content, buffers):
+        """The figure asks for a build's WebAssembly (once per page: it is sent as a binary buffer), or
+        answers what Python asked."""
+        if not isinstance(content, dict):
+            return
+        if content.get("type") == "wasm" and content.get("build") in _WASM:
+            data = (STATIC / _WASM[content["build"]]).read_bytes()
+            self.send({"type": "wasm", "build": content["build"]}, [data])
+        elif content.get("type") == "answer":
+            answer = self._waiting.get(content.get("id"))
+            if answer is not None and not answer.done():
+                answer.set_result((content, list(buffers or [])))
+
+
+Metaballs = type(
+    "Metaballs",
+    (_Figure,),
+    {
+        **_settings(),
+        "__doc__": "Merging spheres drawn with marching cubes, as a widget: "
+        "``Metaballs(spheres=2, iso=1)``. Every setting of the figure is a trait, synced both ways.",
+        "__module__": __name__,
+    },
+)

@@ -1,0 +1,122 @@
+"""The widget's traits against the figure's parameter table: one trait per parameter with the table's
+default, good values taken as the figure takes them, and bad ones refused with the figure's own words
+(compared with the native command line, which reads parameters with the same Rust parser)."""
+
+import asyncio
+import json
+import os
+import pathlib
+import subprocess
+
+import pytest
+import traitlets
+
+from metaballs_widget import Metaballs
+from metaballs_widget._parameters import STATIC, TABLE, Refused, attribute_text, check, trait_name
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+CLI = os.environ.get("METABALLS_CLI", str(ROOT / "target" / "debug" / "metaballs"))
+
+# Bad values of every kind Python checks itself.
+BAD = [
+    ("spheres", 0), ("spheres", 65), ("spheres", 2.5), ("spheres", -3), ("spheres", "many"), ("resolution", 4),
+    ("iso", 30), ("iso", 0.01), ("iso", "high"), ("iso", float("nan")), ("speed", 1e39), ("yaw", 400),
+    ("paused", "maybe"), ("color", "red"), ("color", "#12345"), ("display", "sketch"), ("theme", "sepia"),
+    ("controls", "iso,volume"), ("hud", 3), ("max-pixel-ratio", 9), ("spot_angle", 0),
+]
+
+
+def cli_message(name, value):
+    """What the Rust parser says about `name=value` (the command line prints it as `error: …`)."""
+    result = subprocess.run(
+        [CLI, "render", "--view", f"{name}={attribute_text(value)}", "--out", os.devnull],
+        capture_output=True, text=True, timeout=60, env={**os.environ, "XDG_RUNTIME_DIR": "/tmp"},
+    )
+    assert result.returncode != 0, f"{name}={value!r} was accepted by the figure's parser"
+    return result.stderr.strip().splitlines()[-1].removeprefix("error: ")
+
+
+def test_the_table_is_the_one_the_build_wrote():
+    written = json.loads((ROOT / "www" / "parameters.json").read_text(encoding="utf-8"))
+    assert [row["name"] for row in TABLE] == [row["name"] for row in written]
+    assert (STATIC / "widget.js").stat().st_size > 10_000, "the widget's module was not bundled"
+
+
+def test_every_parameter_is_a_synced_trait_with_the_tables_default():
+    widget = Metaballs()
+    for row in TABLE:
+        name = trait_name(row["name"])
+        trait = widget.traits()[name]
+        assert trait.metadata.get("sync"), f"{name} is not synced"
+        assert getattr(widget, name) == row["value"], f"{name}: {getattr(widget, name)!r} is not the table's default"
+        assert trait.help == row["description"]
+    widget.close()
+
+
+def test_good_values_are_taken_as_the_figure_takes_them():
+    widget = Metaballs(spheres=2, iso=0.7, display="WireFrame", color="#FFAA00", controls="iso, spheres")
+    assert (widget.spheres, widget.iso, widget.display, widget.color) == (2, 0.7, "wireframe", "#ffaa00")
+    assert widget.controls == "iso,spheres"
+    widget.paused = "on"
+    assert widget.paused is True
+    widget.max_pixel_ratio = 1
+    assert widget.max_pixel_ratio == 1
+    widget.close()
+
+
+@pytest.mark.parametrize("name,value", BAD)
+def test_a_bad_value_is_refused_with_the_figures_message_and_the_old_value_kept(name, value):
+    row = next(row for row in TABLE if row["name"] == name)
+    with pytest.raises(Refused) as refused:
+        check(row, value)
+    assert str(refused.value) == cli_message(name, value)
+
+    widget = Metaballs()
+    before = getattr(widget, trait_name(name))
+    with pytest.raises(traitlets.TraitError) as error:
+        setattr(widget, trait_name(name), value)
+    assert str(error.value).startswith(f'{name}="')
+    assert str(refused.value) in str(error.value)
+    assert getattr(widget, trait_name(name)) == before, "the bad value was kept"
+    widget.close()
+
+
+def test_the_wasm_is_sent_when_the_figure_asks():
+    widget = Metaballs()
+    sent = []
+    widget.send = lambda content, buffers=None: sent.append((content, buffers))
+    widget._answer(widget, {"type": "wasm", "build": "webgpu"}, [])
+    widget._answer(widget, {"type": "wasm", "build": "elsewhere"}, [])
+    assert len(sent) == 1 and sent[0][0] == {"type": "wasm", "build": "webgpu"}
+    assert bytes(sent[0][1][0][:4]) == b"\0asm"
+    widget.close()
+
+
+def test_what_is_asked_of_the_figure_comes_back_as_it_answers():
+    async def scenario():
+        widget = Metaballs()
+        asked = []
+        widget.send = lambda content, buffers=None: asked.append(content)
+        with pytest.raises(ValueError, match="format must be one of stl, obj, ply"):
+            await widget.export_mesh("gltf")
+        # The figure answers with bytes, a value and a refusal, as the front end sends them.
+        mesh = asyncio.ensure_future(widget.export_mesh("stl"))
+        scene = asyncio.ensure_future(widget.save_scene())
+        refused = asyncio.ensure_future(widget.load_scene("{"))
+        await asyncio.sleep(0)
+        assert [(c["method"], c["args"]) for c in asked] == [("exportMesh", ["stl"]), ("saveScene", []), ("loadScene", ["{"])]
+        ids = [c["id"] for c in asked]
+        widget._answer(widget, {"type": "answer", "id": ids[1], "value": '{"format": "metaballs-scene"}'}, [])
+        widget._answer(widget, {"type": "answer", "id": ids[0], "bytes": True}, [memoryview(b"solid")])
+        widget._answer(widget, {"type": "answer", "id": ids[2], "error": "not a scene document"}, [])
+        assert await mesh == b"solid"
+        assert await scene == '{"format": "metaballs-scene"}'
+        with pytest.raises(ValueError, match="not a scene document"):
+            await refused
+        # Nobody to answer: it says so instead of waiting for ever.
+        with pytest.raises(TimeoutError, match="answers only while a notebook shows it"):
+            await widget._ask("saveScene", timeout=0.05)
+        assert widget._waiting == {}
+        widget.close()
+
+    asyncio.run(scenario())

@@ -1,0 +1,70 @@
+// The notebook widget's front end under a host of its own that follows the anywidget contract (no kernel,
+// the wasm beside the module, as on MyST's static pages): Python's side is played by the page, which
+// sets traits through the model and reads back what the figure reports. Expects python/build.sh to have
+// bundled the module into python/src/metaballs_widget/static/.
+
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { browser, baseUrl, differingFraction, useServerAndBrowser } from './helpers.js';
+
+useServerAndBrowser();
+
+const ESM = '/python/src/metaballs_widget/static/widget.js';
+
+async function host(props) {
+  const page = await browser.newPage({ viewport: { width: 960, height: 640 } });
+  const errors = [];
+  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+  page.on('pageerror', (e) => errors.push(String(e)));
+  const query = new URLSearchParams({ esm: ESM, props: JSON.stringify(props) });
+  await page.goto(`${baseUrl}tests/e2e/fixtures/widget-host.html?${query}`);
+  return { page, errors };
+}
+
+const triangles = (page, other = -1) => page.waitForFunction(
+  (o) => window.host?.get('triangles') > 0 && window.host.get('triangles') !== o && window.host.get('triangles'),
+  other, { timeout: 60_000 }).then((h) => h.jsonValue());
+
+test('under a plain anywidget host the figure draws, follows its traits and reports back', async () => {
+  const { page, errors } = await host({ spheres: 2, iso: 1, resolution: 32, paused: true, hud: 'on' });
+  const figure = page.locator('metaballs-view');
+  assert.equal(await figure.evaluate((e) => [e.spheres, e.resolution, e.paused].join()), '2,32,true');
+  const before = await triangles(page);
+  assert.match(await page.evaluate(() => window.host.get('adapter')), /WebGPU|WebGL2/);
+  assert.equal(await page.evaluate(() => window.host.get('sphere_list').length), 2);
+  assert.ok(!(await figure.getAttribute('balls')), 'reporting the spheres placed them by hand');
+  const shot = await figure.screenshot();
+
+  // Python sets iso: the figure takes it, draws a different surface and reports a new count.
+  await page.evaluate(() => window.host.set('iso', 0.5));
+  assert.equal(await figure.evaluate((e) => e.iso), 0.5);
+  const after = await triangles(page, before);
+  assert.notEqual(after, before);
+  await page.waitForTimeout(500);
+  const changed = await differingFraction(page, shot, await figure.screenshot());
+  assert.ok(changed > 0.01, `iso 1 → 0.5 changed ${(changed * 100).toFixed(2)}% of the pixels`);
+
+  // A control moved in the figure reaches the model.
+  const saves = await page.evaluate(() => window.host.saves());
+  await figure.evaluate((e) => { e.iso = 0.8; });
+  await page.waitForFunction(() => window.host.get('iso') === 0.8);
+  assert.ok(await page.evaluate(() => window.host.saves()) > saves, 'the change was not saved to the model');
+
+  // Spheres placed from Python.
+  await page.evaluate(() => window.host.set('sphere_list', [
+    { center: [-0.3, 0, 0], radius: 0.35 }, { center: [0.3, 0, 0], radius: 0.35 }, { center: [0, 0.5, 0], radius: 0.2 }]));
+  await page.waitForFunction(() => document.querySelector('metaballs-view').sphereList.length === 3);
+  assert.deepEqual(await figure.evaluate((e) => e.sphereList[2].center), [0, 0.5, 0]);
+
+  // A bad value from the model: the figure keeps its value and says why.
+  await page.evaluate(() => window.host.set('display', 'sketch'));
+  assert.equal(await figure.evaluate((e) => e.display), 'shaded');
+
+  // The cleanup lets go of the figure, its renderer and the model's listeners.
+  await page.evaluate(() => window.host.cleanup());
+  assert.equal(await page.evaluate(() => document.querySelectorAll('metaballs-view').length), 0);
+  assert.equal(await page.evaluate(() => window.host.listeners()), 0);
+  await page.waitForFunction(() => customElements.get('metaballs-view').liveRenderers === 0);
+  assert.deepEqual(errors.filter((e) => !/display/.test(e)), []);
+  await page.close();
+});

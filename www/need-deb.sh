@@ -1,0 +1,26 @@
+# Sourced by the build, serve and test scripts: `need_deb PACKAGE...` installs the Debian packages that
+# are missing (as root, or through sudo), running `apt-get update` once first.
+
+as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
+
+apt_updated=0
+need_deb() {
+    local missing=()
+    for package in "$@"; do
+        dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
+    done
+    [ ${#missing[@]} -eq 0 ] && return
+    echo "installing ${missing[*]}"
+    if [ $apt_updated -eq 0 ]; then as_root apt-get update -q; apt_updated=1; fi
+    as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q "${missing[@]}"
+}
+
+# `need_esbuild`: installs the esbuild pinned in www/tools/ when missing (and Node.js with it), and sets
+# `esbuild` to its path. Run from the repository's root.
+need_esbuild() {
+    esbuild=www/tools/node_modules/.bin/esbuild
+    if [ ! -x "$esbuild" ]; then
+        command -v npm >/dev/null || need_deb nodejs npm
+        (cd www/tools && npm install --no-audit --no-fund --silent)
+    fi
+}
