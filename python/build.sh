@@ -1,22 +1,20 @@
 #!/usr/bin/env bash
 # Builds the notebook widget's wheel, target/python/dist/metaballs_widget-VERSION-py3-none-any.whl: the
 # WebAssembly (www/build.sh), the widget's module bundled with the element and both builds' JavaScript
-# (esbuild, from www/tools/), both wasm builds and the parameter table, packed by hatchling. Needs
+# (esbuild, from www/tools/), both wasm builds (laid out as in dist/) and the parameter table, packed by hatchling. Needs
 # python3 with venv, node and npm (installed when missing).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source www/need-deb.sh
 
 bash www/build.sh
-need_esbuild
 
 static=python/src/metaballs_widget/static
 rm -rf "$static"
-mkdir -p "$static"
-"$esbuild" python/js/widget.js --bundle --format=esm --minify --target=es2022 --outfile="$static/widget.js" \
-    --log-level=warning
-cp pkg/metaballs_bg.wasm "$static/metaballs_bg.wasm"
-cp pkg-webgl/metaballs_bg.wasm "$static/metaballs_webgl_bg.wasm"
+mkdir -p "$static/pkg" "$static/pkg-webgl"
+bundle_widget "$static/widget.js"
+cp pkg/metaballs_bg.wasm "$static/pkg/"
+cp pkg-webgl/metaballs_bg.wasm "$static/pkg-webgl/"
 cp www/parameters.json "$static/parameters.json"
 
 venv=target/python/build-venv

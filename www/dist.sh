@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Builds the page and lays out what an author puts on a static host in dist/: index.html, embed.html,
 # www/ (the element and the page's script, bundled; the stylesheets; the lecture example), pkg/ (the
-# WebAssembly) and pkg-webgl/ (the WebGL2 build, fetched only by browsers without WebGPU). Every path
-# inside is relative, so the folder works under any sub-path of any host.
+# WebAssembly), pkg-webgl/ (the WebGL2 build, fetched only by browsers without WebGPU) and widget.js (the
+# notebook widget's module, for anywidget hosts such as MyST's {anywidget} directive). Every path inside
+# is relative, so the folder works under any sub-path of any host.
 #
 # The element's two dozen modules are bundled (esbuild, pinned in www/tools/) into two entry files and
 # one shared file, so a visitor's browser fetches three scripts at once instead of discovering the
@@ -28,4 +29,5 @@ fi
 cp -r www/examples www/metaballs-view.css www/style.css dist/www/
 cp pkg/metaballs.js pkg/metaballs_bg.wasm dist/pkg/
 cp pkg-webgl/metaballs.js pkg-webgl/metaballs_bg.wasm dist/pkg-webgl/
+bundle_widget dist/widget.js
 echo "dist/ is ready ($(du -sh dist | cut -f1)): copy it to a static host"

@@ -24,3 +24,12 @@ need_esbuild() {
         (cd www/tools && npm install --no-audit --no-fund --silent)
     fi
 }
+
+# `bundle_widget FILE`: bundles the notebook widget's module (python/js/widget.js, an anywidget front-end
+# module) with the element and both builds' JavaScript into one file. Its WebAssembly is looked up in
+# pkg/ and pkg-webgl/ beside it (or under the model's `wasm_url`), as dist/ and the wheel lay them out.
+bundle_widget() {
+    need_esbuild
+    "$esbuild" python/js/widget.js --bundle --format=esm --minify --target=es2022 --outfile="$1" \
+        --log-level=warning
+}

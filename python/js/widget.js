@@ -3,9 +3,13 @@
 // front-end contract only (a model with get, set, on, off and save_changes; send where the host has a
 // kernel), so it runs in JupyterLab, Notebook 7, VS Code, Colab, marimo and MyST's static pages.
 //
-// The module is bundled with the element (python/build.sh). Hosts import it from a blob: URL, where no
-// file sits beside it, so the WebAssembly comes from the kernel when the host has one (asked for once per
-// page), else from beside the module's URL.
+// The module is bundled with the element (python/build.sh, www/dist.sh). Hosts import it from a blob: URL,
+// where no file sits beside it, or copy it under a name of their own (MyST), so the WebAssembly comes from
+// the model's `wasm_url` when given (a folder laid out as dist/: pkg/ and pkg-webgl/), else from the kernel
+// when the host has one (asked for once per page), else from beside the module's URL.
+//
+// Hosts differ in what their model does: MyST's static pages throw from `off`, `save_changes` and `send`.
+// Those calls are made through `quietly`, so a host without them still gets a working figure.
 
 import '../../www/metaballs-view.js';
 import { TABLE } from '../../www/lib/attributes.js';
@@ -13,23 +17,34 @@ import { TABLE } from '../../www/lib/attributes.js';
 const propertyName = (name) => name.replace(/-([a-z])/g, (_, c) => c.toUpperCase());
 // The trait of an attribute in Python (`max-pixel-ratio` → `max_pixel_ratio`).
 const traitName = (name) => name.replace(/-/g, '_');
-const WASM_FILES = { webgpu: 'metaballs_bg.wasm', webgl2: 'metaballs_webgl_bg.wasm' };
+// Where each build's WebAssembly sits in a folder laid out as dist/ (and in the wheel's static/ folder).
+const WASM_FILES = { webgpu: 'pkg/metaballs_bg.wasm', webgl2: 'pkg-webgl/metaballs_bg.wasm' };
 // How often the statistics (triangles, frame rate) are sent back, in ms.
 const STATS_EVERY_MS = 500;
 
 // Asks the kernel for a build's WebAssembly; the answer carries it as a binary buffer.
 function fromKernel(model, build) {
-  return new Promise((resolve) => {
+  return new Promise((resolve, reject) => {
     const answer = (message, buffers) => {
       if (message?.type !== 'wasm' || message.build !== build) return;
-      model.off('msg:custom', answer);
+      quietly(() => model.off('msg:custom', answer));
       // A view into the message's buffer: copied into a buffer of its own, which WebAssembly accepts.
       const view = buffers[0];
       resolve(new Uint8Array(view.buffer, view.byteOffset, view.byteLength).slice());
     };
     model.on('msg:custom', answer);
-    model.send({ type: 'wasm', build });
+    if (!quietly(() => model.send({ type: 'wasm', build }))) reject(new Error('the host has no kernel'));
   });
+}
+
+// Runs a model call the host may not offer (see above); says whether it ran.
+function quietly(call) {
+  try {
+    call();
+    return true;
+  } catch {
+    return false;
+  }
 }
 
 // Where the page's WebAssembly comes from, said once per page before the first figure connects.
@@ -37,9 +52,12 @@ function tellWasmSources(model) {
   const View = customElements.get('metaballs-view');
   if (!View || globalThis.metaballsWidgetWasm) return;
   globalThis.metaballsWidgetWasm = true;
-  const source = (build) => () => (typeof model.send === 'function' && !import.meta.url.startsWith('http')
-    ? fromKernel(model, build)
-    : fetch(new URL(WASM_FILES[build], import.meta.url)));
+  const folder = model.get('wasm_url');
+  const beside = (build) => fetch(new URL(WASM_FILES[build], folder ? new URL(folder, document.baseURI) : import.meta.url));
+  const source = (build) => () => {
+    if (folder || typeof model.send !== 'function' || import.meta.url.startsWith('http')) return beside(build);
+    return fromKernel(model, build).catch(() => beside(build));
+  };
   View.wasmSources = { webgpu: source('webgpu'), webgl2: source('webgl2') };
 }
 
@@ -109,7 +127,7 @@ function render({ model, el }) {
     if (!name || model.get(traitName(name)) === event.detail.value) return;
     model.set(traitName(name), event.detail.value);
     if (['spheres', 'seed', 'balls'].includes(name)) reportSpheres();
-    model.save_changes();
+    quietly(() => model.save_changes());
   };
   figure.addEventListener('metaballs-change', changed);
 
@@ -126,13 +144,13 @@ function render({ model, el }) {
     if (Object.entries(sent).every(([k, v]) => model.get(k) === v)) return;
     for (const [k, v] of Object.entries(sent)) model.set(k, v);
     if (!(model.get('sphere_list')?.length)) reportSpheres();
-    model.save_changes();
+    quietly(() => model.save_changes());
   }, STATS_EVERY_MS);
 
   // Removed with its output (a cell run again, the widget closed): the figure lets go of its renderer.
   return () => {
     clearInterval(timer);
-    for (const [event, listener] of listeners) model.off(event, listener);
+    for (const [event, listener] of listeners) quietly(() => model.off(event, listener));
     figure.removeEventListener('metaballs-change', changed);
     figure.remove();
   };

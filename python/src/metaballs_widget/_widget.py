@@ -12,7 +12,7 @@ import traitlets
 from ._parameters import STATIC, TABLE, Refused, check, shown, trait_name
 
 _ROWS = {trait_name(row["name"]): row for row in TABLE}
-_WASM = {"webgpu": "metaballs_bg.wasm", "webgl2": "metaballs_webgl_bg.wasm"}
+_WASM = {"webgpu": "pkg/metaballs_bg.wasm", "webgl2": "pkg-webgl/metaballs_bg.wasm"}
 MESH_FORMATS = ("stl", "obj", "ply")
 
 
