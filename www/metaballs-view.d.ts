@@ -117,6 +117,8 @@ export declare class MetaballsView extends HTMLElement {
   resetView(): void;
   /** Resolves once the renderer has started (or rejects with why it could not). */
   ready(): Promise<void>;
+  /** Resolves with the statistics of a frame drawn after the call, drawing one even off screen or paused. */
+  nextFrame(): Promise<MetaballsStats>;
   /** Selects a cell for the inspector and returns its report (null outside the grid). */
   inspectCell(x: number, y: number, z: number): MetaballsCellReport | null;
   /** Lets go of the inspected cell or the selected sphere. */
@@ -127,10 +129,10 @@ export declare class MetaballsView extends HTMLElement {
   loadScene(text: string): void;
   /** Saves the scene document as a file. */
   downloadScene(): void;
-  /** The current frame's mesh as file bytes. */
-  exportMesh(format?: 'stl' | 'obj' | 'ply'): Uint8Array;
-  /** Saves the current frame's mesh as a file. */
-  downloadMesh(format?: 'stl' | 'obj' | 'ply'): void;
+  /** The mesh of the current settings as file bytes (a frame is drawn first, even off screen). */
+  exportMesh(format?: 'stl' | 'obj' | 'ply'): Promise<Uint8Array>;
+  /** Saves the mesh of the current settings as a file. */
+  downloadMesh(format?: 'stl' | 'obj' | 'ply'): Promise<void>;
   /** A PNG of the view at the canvas size times `scale`. */
   picture(scale?: number): Promise<Blob>;
   /** Saves a PNG of the view. */

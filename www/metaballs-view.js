@@ -141,7 +141,7 @@ export class MetaballsView extends Base {
       changed: () => this.#frames.redraw(2),
       editor: this.#editor,
       canvas: this.#canvas,
-      ready: () => this.ready(),
+      ready: () => this.#frames.nextFrame(),
       notice: (text, ms) => this.#notice(text, ms),
       emit: (type, detail) => this.#emit(type, detail),
     });
@@ -391,7 +391,7 @@ export class MetaballsView extends Base {
 
   downloadScene() { this.#io.downloadScene(); }
 
-  /** The mesh of the current frame as `stl`, `obj` or `ply` bytes (one readback from the GPU). */
+  /** The mesh of the current settings as `stl`, `obj` or `ply` bytes (one readback from the GPU). */
   exportMesh(format = 'stl') { return this.#io.exportMesh(format); }
 
   downloadMesh(format = 'stl') { return this.#io.downloadMesh(format); }
@@ -438,6 +438,15 @@ export class MetaballsView extends Base {
 
   /** Resolves once the renderer has started (or rejects with why it could not). */
   ready() { return this.#frames.ready(); }
+
+  /**
+   * Resolves with the statistics of a frame drawn after the call (of the settings in effect then),
+   * drawing one even when the figure is off screen or paused.
+   */
+  async nextFrame() {
+    await this.#frames.nextFrame();
+    return this.stats;
+  }
 
   /** Resolves once the figure has a picture for print (its poster, or one of a drawn frame). */
   printable() { return this.#look.printable(); }

@@ -67,7 +67,7 @@ export function ballsText(list) {
 }
 
 // What Python may ask the figure (`Metaballs.save_scene()` and the rest), by the element's method names.
-const CALLS = new Set(['saveScene', 'loadScene', 'exportMesh', 'picture']);
+const CALLS = new Set(['saveScene', 'loadScene', 'exportMesh', 'picture', 'nextFrame']);
 
 // Runs a method Python asked for and sends the answer: a value, bytes as a binary buffer, or the error.
 async function answer(model, figure, { id, method, args = [] }) {
@@ -84,6 +84,30 @@ async function answer(model, figure, { id, method, args = [] }) {
   } catch (error) {
     model.send({ type: 'answer', id, error: error?.message ?? String(error) });
   }
+}
+
+// What Python asks of a model goes to the newest figure showing it. A notebook run from the top sends
+// the first questions before the model's figure is drawn: they wait for it.
+const CALLS_OF = new WeakMap();
+function callsOf(model) {
+  let calls = CALLS_OF.get(model);
+  if (!calls) {
+    calls = { figures: [], waiting: [] };
+    CALLS_OF.set(model, calls);
+    const asked = (message) => {
+      if (message?.type !== 'call') return;
+      const figure = calls.figures.at(-1);
+      if (figure) answer(model, figure, message);
+      else calls.waiting.push(message);
+    };
+    model.on('msg:custom', asked);
+  }
+  return calls;
+}
+
+// Once per model, before any of its figures: from then on, questions from Python are kept.
+function initialize({ model }) {
+  callsOf(model);
 }
 
 function render({ model, el }) {
@@ -131,11 +155,9 @@ function render({ model, el }) {
   };
   figure.addEventListener('metaballs-change', changed);
 
-  const asked = (message) => {
-    if (message?.type === 'call') answer(model, figure, message);
-  };
-  model.on('msg:custom', asked);
-  listeners.push(['msg:custom', asked]);
+  const calls = callsOf(model);
+  calls.figures.push(figure);
+  for (const message of calls.waiting.splice(0)) answer(model, figure, message);
 
   const timer = setInterval(() => {
     const stats = figure.stats;
@@ -149,6 +171,7 @@ function render({ model, el }) {
 
   // Removed with its output (a cell run again, the widget closed): the figure lets go of its renderer.
   return () => {
+    calls.figures.splice(calls.figures.indexOf(figure), 1);
     clearInterval(timer);
     for (const [event, listener] of listeners) quietly(() => model.off(event, listener));
     figure.removeEventListener('metaballs-change', changed);
@@ -161,4 +184,4 @@ function write(figure, name, value) {
   figure.setAttribute(name, String(value));
 }
 
-export default { render };
+export default { initialize, render };

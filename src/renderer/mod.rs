@@ -198,6 +198,11 @@ impl Renderer {
         self.latest_stats
     }
 
+    /// Frames rendered so far: the newest frame's statistics carry this number once read back.
+    pub fn frames_rendered(&self) -> u64 {
+        self.frame
+    }
+
     /// The first GPU error raised outside an error scope, if any (they are also logged).
     pub fn gpu_error(&self) -> Option<String> {
         self.context.gpu_error()

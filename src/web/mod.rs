@@ -339,6 +339,11 @@ impl View {
         self.renderer.stats().map(Stats::from)
     }
 
+    /// Frames drawn so far: `stats().frame` equals it once the newest frame's figures are read back.
+    pub fn frames_rendered(&self) -> f64 {
+        self.renderer.frames_rendered() as f64
+    }
+
     /// The first GPU error this view's frames raised, if any.
     pub fn gpu_error(&self) -> Option<String> {
         self.error.borrow().clone()

@@ -10,7 +10,7 @@ import { execFileSync } from 'node:child_process';
 import { cpSync, existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { browser, baseUrl, differingFraction, root, useServerAndBrowser } from './helpers.js';
+import { browser, baseUrl, differingFraction, outputDir, root, useServerAndBrowser } from './helpers.js';
 
 const BOOK = path.join(root, 'examples/book');
 const BUILD = path.join(BOOK, '_build');
@@ -84,7 +84,7 @@ test("the built page's figures draw as MyST shows them: the widget under a model
   await tab.waitForFunction(() => window.host?.figure()?.stats?.triangles > 0, null, { timeout: 60_000 });
   const figure = tab.locator('metaballs-view').first();
   assert.equal(await figure.evaluate((e) => [e.spheres, e.iso, e.resolution, e.controls].join()), '2,1,48,iso');
-  assert.ok(wasm.every((p) => p.startsWith('/metaballs/pkg')), `wasm fetched from ${wasm}`);
+  assert.ok(wasm.length > 0 && wasm.every((p) => p.startsWith('/metaballs/pkg')), `wasm fetched from ${wasm}`);
   const before = await tab.evaluate(() => window.host.figure().stats.triangles);
   await tab.waitForTimeout(300);
   const shot = await figure.screenshot();
@@ -105,6 +105,7 @@ test("the built page's figures draw as MyST shows them: the widget under a model
   await frame.locator('metaballs-view').waitFor();
   await tab.waitForFunction(() => document.querySelector('iframe').contentDocument
     ?.querySelector('metaballs-view')?.stats?.triangles > 0, null, { timeout: 60_000 });
+  await tab.screenshot({ path: path.join(outputDir, 'book-page.png'), fullPage: true });
   assert.deepEqual(errors, []);
   await tab.close();
 });

@@ -6,7 +6,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { spawn } from 'node:child_process';
-import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
+import { copyFileSync, mkdtempSync, openSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { chromium } from 'playwright-core';
@@ -37,7 +37,7 @@ const CELLS = [
 let server;
 let directory;
 let browser;
-let url;
+let port;
 
 before(async () => {
   directory = mkdtempSync(path.join(os.tmpdir(), 'metaballs-notebook-'));
@@ -48,12 +48,17 @@ before(async () => {
     nbformat_minor: 5,
   };
   writeFileSync(path.join(directory, 'figure.ipynb'), JSON.stringify(notebook));
-  const port = await freePort();
+  copyFileSync(path.join(root, 'examples/metaballs.ipynb'), path.join(directory, 'metaballs.ipynb'));
+  port = await freePort();
+  // `expose_app_in_browser` gives the test JupyterLab's command registry (window.jupyterapp): cells are
+  // run by the commands the menus and keys run, once the kernel is ready.
   const args = ['lab', '--no-browser', '--ip', '127.0.0.1', '--port', String(port), `--IdentityProvider.token=${TOKEN}`,
-    `--ServerApp.root_dir=${directory}`, ...(process.getuid?.() === 0 ? ['--allow-root'] : [])];
-  server = spawn(path.join(VENV, 'bin/jupyter'), args, { stdio: 'ignore', detached: true, cwd: directory,
-    env: { ...process.env, JUPYTER_CONFIG_DIR: path.join(directory, '.jupyter'), JUPYTER_RUNTIME_DIR: path.join(directory, '.runtime') } });
-  url = `http://127.0.0.1:${port}/lab/tree/figure.ipynb?token=${TOKEN}`;
+    `--ServerApp.root_dir=${directory}`, '--LabApp.expose_app_in_browser=True',
+    ...(process.getuid?.() === 0 ? ['--allow-root'] : [])];
+  const log = openSync(path.join(directory, 'server.log'), 'w');
+  server = spawn(path.join(VENV, 'bin/jupyter'), args, { stdio: ['ignore', log, log], detached: true, cwd: directory,
+    env: { ...process.env, JUPYTER_CONFIG_DIR: path.join(directory, '.jupyter'), JUPYTER_DATA_DIR: path.join(directory, '.data'),
+      JUPYTER_RUNTIME_DIR: path.join(directory, '.runtime'), IPYTHONDIR: path.join(directory, '.ipython') } });
   await waitForServer(`http://127.0.0.1:${port}/api/status?token=${TOKEN}`);
   browser = await chromium.launch({ executablePath: CHROMIUM, args: FLAGS, headless: true });
 });
@@ -68,35 +73,72 @@ after(async () => {
   rmSync(directory, { recursive: true, force: true });
 });
 
-const V = (page, f) => page.evaluate(f);
-const outputText = (page) => V(page, () => [...document.querySelectorAll('.jp-OutputArea-output')].map((e) => e.textContent).join('\n'));
-// Waits until the cells' outputs (not their sources) match `pattern`.
-const waitForOutput = (page, pattern, timeout = 60_000) => page.waitForFunction(
-  (source) => new RegExp(source).test([...document.querySelectorAll('.jp-OutputArea-output')].map((e) => e.textContent).join('\n')),
-  pattern.source, { timeout }).catch(async () => assert.fail(`no output matching ${pattern}; the cells printed: ${await outputText(page)}`));
+const V = (page, f, arg) => page.evaluate(f, arg);
+// The open notebook's panel, its outputs' text, and what a failed wait reports.
+const outputText = (page) => V(page, () => [...window.jupyterapp.shell.currentWidget.node.querySelectorAll('.jp-OutputArea-output')]
+  .map((e) => e.textContent).join('\n'));
+async function state(page) {
+  const seen = await V(page, () => {
+    const panel = window.jupyterapp?.shell.currentWidget;
+    const figures = [...(panel?.node.querySelectorAll('metaballs-view') ?? [])];
+    return {
+      kernel: panel?.sessionContext?.session?.kernel?.status ?? 'none',
+      outputs: [...(panel?.node.querySelectorAll('.jp-OutputArea-output') ?? [])].map((e) => e.textContent.slice(0, 300)),
+      figures: figures.map((f) => ({ frames: f.framesDrawn, stats: f.stats, notice: f.shadowRoot?.querySelector('[part~=notice]')?.textContent })),
+    };
+  }).catch((e) => ({ page: String(e) }));
+  const log = readFileSync(path.join(directory, 'server.log'), 'utf8').split('\n').slice(-15).join('\n');
+  return `${JSON.stringify(seen)}\nthe server's log ends:\n${log}`;
+}
+const waitFor = (page, what, f, arg, timeout = 60_000) => page.waitForFunction(f, arg, { timeout })
+  .catch(async () => assert.fail(`${what}: ${await state(page)}`));
+// Waits until the open notebook's outputs (not its sources) match `pattern`.
+const waitForOutput = (page, pattern, timeout = 60_000) => waitFor(page, `no output matching ${pattern}`,
+  (source) => new RegExp(source).test([...window.jupyterapp.shell.currentWidget.node.querySelectorAll('.jp-OutputArea-output')]
+    .map((e) => e.textContent).join('\n')), pattern.source, timeout);
 
-test('in JupyterLab the widget draws, follows Python, reports back, exports, shares one device and does not leak', async () => {
+// Opens a notebook of the server's folder in a page of its own and waits for its kernel.
+async function openNotebook(name) {
   const page = await browser.newPage({ viewport: { width: 1280, height: 900 } });
   const errors = [];
   page.on('pageerror', (e) => errors.push(String(e)));
-  await page.goto(url);
-  await page.waitForSelector('.jp-Notebook .jp-Cell', { timeout: 90_000 });
-  await page.locator('.jp-Cell').first().click();
+  await page.goto(`http://127.0.0.1:${port}/lab/tree/${name}?reset&token=${TOKEN}`);
+  await waitFor(page, `${name} did not open with a ready kernel`, (file) => {
+    const panel = window.jupyterapp?.shell.currentWidget;
+    return panel?.context?.path === file && panel.content.widgets.length > 0
+      && panel.sessionContext.session?.kernel?.status === 'idle';
+  }, name, 120_000);
+  return { page, errors };
+}
+
+// Runs the open notebook's cell `index` (or every cell) with JupyterLab's own commands, without waiting
+// for it to finish.
+const run = (page, index) => V(page, (i) => {
+  const app = window.jupyterapp;
+  if (i === 'all') {
+    app.commands.execute('notebook:run-all-cells');
+    return;
+  }
+  app.shell.currentWidget.content.activeCellIndex = i;
+  app.commands.execute('notebook:run-cell');
+}, index);
+test('in JupyterLab the widget draws, follows Python, reports back, exports, shares one device and does not leak', async () => {
+  const { page, errors } = await openNotebook('figure.ipynb');
 
   // Cell 1: the figure draws.
   const started = Date.now();
-  await page.keyboard.press('Shift+Enter');
-  const figure = page.locator('metaballs-view').first();
-  await page.waitForFunction(() => document.querySelector('metaballs-view')?.stats?.triangles > 0, null, { timeout: 120_000 });
+  await run(page, 0);
+  await waitFor(page, 'the figure did not draw', () => document.querySelector('metaballs-view')?.stats?.triangles > 0, null, 120_000);
   console.log(`first frame ${Date.now() - started} ms after the cell was run`);
+  const figure = page.locator('metaballs-view').first();
   await page.waitForTimeout(500);
   const before = await V(page, () => document.querySelector('metaballs-view').stats.triangles);
   const shot = await figure.screenshot();
 
   // Cell 2: Python sets the iso level; the picture and the triangle count change.
-  await page.keyboard.press('Shift+Enter');
-  await page.waitForFunction(() => document.querySelector('metaballs-view').iso === 0.7, null, { timeout: 60_000 });
-  await page.waitForFunction((b) => document.querySelector('metaballs-view').stats.triangles !== b, before, { timeout: 60_000 });
+  await run(page, 1);
+  await waitFor(page, 'w.iso = 0.7 did not reach the figure', () => document.querySelector('metaballs-view').iso === 0.7);
+  await waitFor(page, 'the count did not change', (b) => document.querySelector('metaballs-view').stats.triangles !== b, before);
   await page.waitForTimeout(500);
   const changed = await differingFraction(page, shot, await figure.screenshot());
   assert.ok(changed > 0.01, `w.iso = 0.7 changed ${(changed * 100).toFixed(2)}% of the figure`);
@@ -109,11 +151,11 @@ test('in JupyterLab the widget draws, follows Python, reports back, exports, sha
     slider.dispatchEvent(new Event('change', { bubbles: true }));
   });
   await page.waitForTimeout(1500);
-  await page.keyboard.press('Shift+Enter');
+  await run(page, 2);
   await waitForOutput(page, /ISO 0\.8 TRIANGLES [1-9]/);
 
   // Cell 4: the mesh, a picture and the scene, asked of the figure from Python.
-  await page.keyboard.press('Shift+Enter');
+  await run(page, 3);
   await waitForOutput(page, /REFUSED/, 120_000);
   const printed = await outputText(page);
   const stl = printed.match(/STL (\d+) (\d+) (\d+)/);
@@ -127,10 +169,12 @@ test('in JupyterLab the widget draws, follows Python, reports back, exports, sha
   assert.match(printed, /PNG True \d{4,}/);
   assert.match(printed, /REFUSED .+/);
 
-  // Cell 5: a second widget shares the page's one device.
-  await page.keyboard.press('Shift+Enter');
-  await page.waitForFunction(() => [...document.querySelectorAll('metaballs-view')].length === 2
-    && [...document.querySelectorAll('metaballs-view')].every((e) => e.framesDrawn > 0), null, { timeout: 90_000 });
+  // Cell 5: a second widget shares the page's one device (scrolled to, as a person reading on would).
+  await run(page, 4);
+  await waitFor(page, 'no second figure', () => document.querySelectorAll('metaballs-view').length === 2);
+  await page.locator('metaballs-view').nth(1).scrollIntoViewIfNeeded();
+  await waitFor(page, 'the second figure did not draw',
+    () => { const all = [...document.querySelectorAll('metaballs-view')]; return all.length === 2 && all.every((e) => e.framesDrawn > 0); }, null, 90_000);
   const shared = await V(page, () => {
     const View = customElements.get('metaballs-view');
     return { devices: View.devices, created: View.devicesCreated, renderers: View.liveRenderers };
@@ -138,13 +182,39 @@ test('in JupyterLab the widget draws, follows Python, reports back, exports, sha
   assert.deepEqual(shared, { devices: 1, created: 1, renderers: 2 });
 
   // Running that cell again replaces its figure: the live renderers stay two.
-  await page.locator('.jp-Cell').nth(4).click();
-  await page.keyboard.press('Control+Enter');
-  await page.waitForTimeout(3000);
-  await page.waitForFunction(() => [...document.querySelectorAll('metaballs-view')].every((e) => e.framesDrawn > 0), null, { timeout: 90_000 });
-  await page.waitForFunction(() => customElements.get('metaballs-view').liveRenderers === 2, null, { timeout: 30_000 })
-    .catch(async () => assert.fail(`live renderers after running the cell again: ${await V(page, () => customElements.get('metaballs-view').liveRenderers)}`));
-  assert.equal(await V(page, () => document.querySelectorAll('metaballs-view').length), 2);
+  const first = await page.evaluateHandle(() => document.querySelectorAll('metaballs-view')[1]);
+  await run(page, 4);
+  await waitFor(page, 'the cell run again showed no new figure',
+    (old) => { const all = document.querySelectorAll('metaballs-view'); return all.length === 2 && all[1] !== old; }, first);
+  await page.locator('metaballs-view').nth(1).scrollIntoViewIfNeeded();
+  await waitFor(page, 'the new figure did not draw', () => document.querySelectorAll('metaballs-view')[1].framesDrawn > 0, null, 90_000);
+  await waitFor(page, 'the live renderers did not go back to two', () => customElements.get('metaballs-view').liveRenderers === 2, null, 30_000);
+  assert.deepEqual(errors, []);
+  await page.close();
+});
+
+test('the example notebook runs from top to bottom: the figure, its iso slider, the triangle count, an STL file and a picture', async () => {
+  const { page, errors } = await openNotebook('metaballs.ipynb');
+  await run(page, 'all');
+  await waitForOutput(page, /two-spheres\.stl: \d+ bytes, \d+ triangles/, 120_000);
+  await waitFor(page, 'the picture was not shown',
+    () => window.jupyterapp.shell.currentWidget.node.querySelector('.jp-OutputArea-output img[src^="data:image/png"]'), null, 60_000);
+  const printed = await outputText(page);
+  assert.doesNotMatch(printed, /Traceback|Error/, printed);
+  const [, counted] = printed.match(/iso 1(?:\.0)?: (\d+) triangles at 48³ cells, drawn with .+/).map(Number);
+  const [, bytes, count] = printed.match(/two-spheres\.stl: (\d+) bytes, (\d+) triangles/).map(Number);
+  assert.equal(bytes, 84 + 50 * count);
+  assert.ok(count > 0);
+  assert.equal(count, counted, 'the STL and w.stats() disagree');
+  assert.equal(readFileSync(path.join(directory, 'two-spheres.stl')).length, bytes);
+
+  // The notebook's slider (ipywidgets, linked to w.iso through the kernel) moves the figure's iso level.
+  const readout = page.locator('.widget-slider .widget-readout').first();
+  await readout.click();
+  await page.keyboard.press('Control+A');
+  await page.keyboard.type('0.6');
+  await page.keyboard.press('Enter');
+  await waitFor(page, "the notebook's slider did not reach the figure", () => document.querySelector('metaballs-view')?.iso === 0.6);
   assert.deepEqual(errors, []);
   await page.close();
 });

@@ -27,6 +27,8 @@ export class FigureFrames {
   #held = false;
   // One frame is drawn off screen, for print, when the page is idle.
   #printOnce = false;
+  // Callers waiting for the next frame (`nextFrame()`): it is drawn even off screen or when still.
+  #frameWaiters = [];
   #picturesSeen = 0;
 
   /**
@@ -260,13 +262,14 @@ export class FigureFrames {
   tick(now) {
     const view = this.#view;
     const f = this.#f;
-    const drawing = this.#onScreen || this.#printOnce;
+    const asked = this.#frameWaiters.length > 0;
+    const drawing = this.#onScreen || this.#printOnce || asked;
     if (!view || this.#failed || this.#held || !drawing || document.visibilityState === 'hidden') {
       return false;
     }
     // On screen but not shown (a slide of a deck that is not the current one, `visibility: hidden`):
     // nothing is drawn, and the figure keeps watching for its turn.
-    if (!this.#printOnce && !f.element.checkVisibility({ visibilityProperty: true, opacityProperty: true })) {
+    if (!this.#printOnce && !asked && !f.element.checkVisibility({ visibilityProperty: true, opacityProperty: true })) {
       return true;
     }
     const state = f.settings.state;
@@ -295,6 +298,7 @@ export class FigureFrames {
         this.#dirty = Math.max(0, this.#dirty - 1);
         // The picture for print, taken in this task while the canvas holds the frame.
         f.look.drawn(now, animating, this.#dirty === 0, forPrint);
+        for (const resolve of this.#frameWaiters.splice(0)) resolve();
         if (forPrint && !this.#onScreen) {
           // Not a frame anyone saw: only the picture counts. A figure not near the viewport lets go
           // of its renderer again.
@@ -357,6 +361,30 @@ export class FigureFrames {
       this.#f.notice(error.message);
     }
     this.redraw(2);
+  }
+
+  /**
+   * Resolves after a frame of the current settings has been drawn: the renderer is started and a frame
+   * drawn even for a figure off screen (a notebook run from the top leaves its figures above the view)
+   * or still. What is asked of the figure's mesh and pictures waits for it.
+   */
+  async nextFrame() {
+    this.start(true);
+    await this.ready();
+    await new Promise((resolve) => {
+      this.#frameWaiters.push(resolve);
+      this.#dirty = Math.max(this.#dirty, 1);
+      hub.requestFrame();
+    });
+    // Its figures (the triangle count) come back from the GPU once it has finished the frame.
+    const view = this.#view;
+    const frame = view?.frames_rendered() ?? 0;
+    for (let tries = 0; view && view === this.#view && tries < 50; tries += 1) {
+      view.poll();
+      if (this.#f.hud.readStats(view) >= frame) return;
+      await view.work_done();
+      await new Promise((r) => setTimeout(r, 10));
+    }
   }
 
   /** Resolves once the renderer has started (or rejects with why it could not). */

@@ -50,21 +50,33 @@ export class Hud {
     const frameTime = this.frames ? this.stats.frameTime : null;
     this.frames = 0;
     this.since = now;
+    this.readStats(view);
+    return frameTime;
+  }
+
+  /**
+   * Takes in the view's newest figures (mesher, triangles, overflow); returns the frame they are for,
+   * or 0 while the GPU has reported none.
+   */
+  readStats(view) {
+    const $ = (id) => this.root.getElementById(id);
     const mesher = view.mesh_source();
     if (mesher !== this.stats.mesher) {
       this.stats.mesher = mesher;
       this.#showAdapter();
     }
     const stats = view.stats();
-    if (!stats) return frameTime;
+    if (!stats) return 0;
     this.stats.triangles = stats.triangles;
     $('triangles').textContent = formatNumber(stats.triangles);
     $('triangles').title = `budget ${formatNumber(stats.max_triangles)} triangles`;
     // The buffers grow a frame after an overflow; warn only when it lasts (they hit the device's limit).
-    this.overflows = stats.overflowed ? this.overflows + 1 : 0;
+    if (stats.frame !== this.frameRead) this.overflows = stats.overflowed ? this.overflows + 1 : 0;
+    this.frameRead = stats.frame;
     this.stats.overflowed = this.overflows >= 2;
     $('overflow').hidden = !this.stats.overflowed;
+    const { frame } = stats;
     stats.free();
-    return frameTime;
+    return frame;
   }
 }

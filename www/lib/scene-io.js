@@ -12,7 +12,7 @@ export class SceneIO {
    * `hooks`: view() → the wasm view or null; state() → the element's values; set(name, value) (a
    * change, applied on the next frame); adopt(name, value) (a value the renderer already holds);
    * apply() (push pending changes into the renderer now); restoreLater(packed) (spheres for a view not
-   * started yet); changed() (redraw); editor (the SphereEditor); canvas; ready() (a promise);
+   * started yet); changed() (redraw); editor (the SphereEditor); canvas; ready() (resolves after a frame of the current state is drawn);
    * notice(text, ms); emit(type, detail).
    */
   constructor(hooks) {

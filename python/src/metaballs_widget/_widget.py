@@ -25,7 +25,9 @@ class _Figure(anywidget.AnyWidget):
     _esm = STATIC / "widget.js"
 
     # What the figure reports (set by the figure; setting them from Python changes nothing).
-    triangles = traitlets.Int(0, help="Triangles in the newest frame.").tag(sync=True)
+    triangles = traitlets.Int(0, help="Triangles in the newest frame (``await w.stats()`` draws one).").tag(
+        sync=True
+    )
     fps = traitlets.Float(0.0, help="Frames drawn per second.").tag(sync=True)
     adapter = traitlets.Unicode("", help="What the figure draws with (WebGPU's adapter, or WebGL2).").tag(sync=True)
     sphere_list = traitlets.List(
@@ -41,6 +43,16 @@ class _Figure(anywidget.AnyWidget):
 
     # What the figure in the notebook's output is asked: awaited (``await w.save_scene()``), so that the
     # kernel takes in the figure's answer while the cell waits for it.
+
+    async def stats(self) -> dict:
+        """The statistics of a frame drawn for the call (with the settings set before it): ``triangles``,
+        ``fps``, ``frame_time`` (ms), ``adapter``, ``mesher`` and ``overflowed``. The figure draws that frame
+        even while it is scrolled out of view or paused, so a notebook run from the top reads real counts."""
+        reported = await self._ask("nextFrame")
+        names = {"frameTime": "frame_time"}
+        stats = {names.get(key, key): value for key, value in reported.items()}
+        self.triangles, self.adapter = int(stats.get("triangles", 0)), str(stats.get("adapter", ""))
+        return stats
 
     async def save_scene(self) -> str:
         """The scene (spheres and every setting of the picture) as the figure's JSON document."""
@@ -70,8 +82,10 @@ class _Figure(anywidget.AnyWidget):
             content, buffers = await asyncio.wait_for(answer, timeout)
         except asyncio.TimeoutError:
             raise TimeoutError(
-                f"the figure did not answer {method} in {timeout:g} s: it answers only while a notebook "
-                "shows it (with ipykernel 7 or later, which takes in messages while a cell awaits)"
+                f"the figure did not answer {method} in {timeout:g} s. It answers while a notebook shows it, "
+                "and the kernel (ipykernel 7 or later) takes the answer in while this cell awaits it, unless "
+                "cells queued after this one (Run All) are ahead of it: run this cell on its own, or ask in "
+                "the notebook's last cell"
             ) from None
         finally:
             self._waiting.pop(call, None)
