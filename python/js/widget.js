@@ -92,22 +92,27 @@ const CALLS_OF = new WeakMap();
 function callsOf(model) {
   let calls = CALLS_OF.get(model);
   if (!calls) {
-    calls = { figures: [], waiting: [] };
-    CALLS_OF.set(model, calls);
     const asked = (message) => {
       if (message?.type !== 'call') return;
       const figure = calls.figures.at(-1);
       if (figure) answer(model, figure, message);
       else calls.waiting.push(message);
     };
+    calls = { figures: [], waiting: [], asked };
+    CALLS_OF.set(model, calls);
     model.on('msg:custom', asked);
   }
   return calls;
 }
 
-// Once per model, before any of its figures: from then on, questions from Python are kept.
+// Once per model, before any of its figures: from then on, questions from Python are kept. The returned
+// cleanup (the model is closed) stops listening.
 function initialize({ model }) {
-  callsOf(model);
+  const { asked } = callsOf(model);
+  return () => {
+    quietly(() => model.off('msg:custom', asked));
+    CALLS_OF.delete(model);
+  };
 }
 
 function render({ model, el }) {
@@ -121,10 +126,19 @@ function render({ model, el }) {
   }
   el.replaceChildren(figure);
 
-  // Python → figure: a changed trait becomes the attribute (the element reports what it refuses).
+  // Python → figure: a changed trait becomes the attribute. A value the figure refuses (it says why in
+  // the figure) goes back to the one it keeps, so that Python reads what is drawn.
   const listeners = TABLE.map(({ name }) => {
     const event = `change:${traitName(name)}`;
-    const listener = () => write(figure, name, model.get(traitName(name)));
+    const listener = () => {
+      const value = model.get(traitName(name));
+      write(figure, name, value);
+      const kept = figure[propertyName(name)];
+      if (kept !== undefined && String(kept) !== String(value)) {
+        model.set(traitName(name), kept);
+        quietly(() => model.save_changes());
+      }
+    };
     model.on(event, listener);
     return [event, listener];
   });

@@ -114,9 +114,18 @@ def test_what_is_asked_of_the_figure_comes_back_as_it_answers():
         with pytest.raises(ValueError, match="not a scene document"):
             await refused
         # Nobody to answer: it says so instead of waiting for ever.
-        with pytest.raises(TimeoutError, match="answers only while a notebook shows it"):
+        with pytest.raises(TimeoutError, match="It answers while a notebook shows it.+Run All"):
             await widget._ask("saveScene", timeout=0.05)
         assert widget._waiting == {}
+
+        # The statistics of a frame drawn for the call, with Python's names; the traits follow them.
+        stats = asyncio.ensure_future(widget.stats())
+        await asyncio.sleep(0)
+        assert asked[-1]["method"] == "nextFrame"
+        figures = {"triangles": 5900, "fps": 0, "frameTime": 12.5, "adapter": "WebGL2", "mesher": "cpu", "overflowed": False}
+        widget._answer(widget, {"type": "answer", "id": asked[-1]["id"], "value": figures}, [])
+        assert await stats == {**{k: v for k, v in figures.items() if k != "frameTime"}, "frame_time": 12.5}
+        assert (widget.triangles, widget.adapter) == (5900, "WebGL2")
         widget.close()
 
     asyncio.run(scenario())

@@ -11,8 +11,9 @@ useServerAndBrowser();
 
 const ESM = '/python/src/metaballs_widget/static/widget.js';
 
-async function host(props) {
+async function host(props, { initScript } = {}) {
   const page = await browser.newPage({ viewport: { width: 960, height: 640 } });
+  if (initScript) await page.addInitScript(initScript);
   const errors = [];
   page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
   page.on('pageerror', (e) => errors.push(String(e)));
@@ -59,12 +60,48 @@ test('under a plain anywidget host the figure draws, follows its traits and repo
   // A bad value from the model: the figure keeps its value and says why.
   await page.evaluate(() => window.host.set('display', 'sketch'));
   assert.equal(await figure.evaluate((e) => e.display), 'shaded');
+  assert.equal(await page.evaluate(() => window.host.get('display')), 'shaded', 'the model kept the refused value');
+  // Slices are checked by the figure alone: a refused one goes back to the slice it keeps.
+  await page.evaluate(() => window.host.set('slice', 'z:0.25'));
+  assert.equal(await figure.evaluate((e) => e.slice), 'z:0.25');
+  await page.evaluate(() => window.host.set('slice', 'y:1.5'));
+  assert.equal(await figure.evaluate((e) => e.slice), 'z:0.25');
+  assert.equal(await page.evaluate(() => window.host.get('slice')), 'z:0.25');
 
   // The cleanup lets go of the figure, its renderer and the model's listeners.
   await page.evaluate(() => window.host.cleanup());
   assert.equal(await page.evaluate(() => document.querySelectorAll('metaballs-view').length), 0);
+  assert.equal(await page.evaluate(() => window.host.listeners()), 1, "only the model's own listener for questions stays");
+  await page.evaluate(() => window.host.close());
   assert.equal(await page.evaluate(() => window.host.listeners()), 0);
   await page.waitForFunction(() => customElements.get('metaballs-view').liveRenderers === 0);
   assert.deepEqual(errors.filter((e) => !/display/.test(e)), []);
+  await page.close();
+});
+
+test('in the widget as on a page: WebGL2 without WebGPU (its wasm beside the module), and a lost device draws again', async () => {
+  // No WebGPU: the WebGL2 build, fetched from beside the module, meshing on the CPU.
+  const noWebGpu = await host({ spheres: 2, resolution: 32, paused: true }, { initScript: () => { delete Navigator.prototype.gpu; } });
+  assert.ok(await triangles(noWebGpu.page) > 0);
+  const wasm = await noWebGpu.page.evaluate(() => performance.getEntriesByType('resource')
+    .map((e) => new URL(e.name).pathname).filter((p) => p.endsWith('.wasm')));
+  assert.deepEqual(wasm, ['/python/src/metaballs_widget/static/pkg-webgl/metaballs_bg.wasm']);
+  assert.match(await noWebGpu.page.evaluate(() => window.host.get('adapter')), /^WebGL2/);
+  assert.deepEqual(noWebGpu.errors, []);
+  await noWebGpu.page.close();
+
+  // WebGPU, then the device is lost: the figure draws again on a new one with the model's settings.
+  const { page, errors } = await host({ spheres: 2, iso: 0.8, resolution: 32, paused: true });
+  await triangles(page);
+  const drawn = await page.evaluate(() => document.querySelector('metaballs-view').framesDrawn);
+  await page.evaluate(() => customElements.get('metaballs-view').destroyDevice());
+  await page.waitForFunction(() => customElements.get('metaballs-view').devicesCreated >= 2, null, { timeout: 30_000 });
+  await page.evaluate(() => window.host.set('spheres', 3));
+  await page.waitForFunction((n) => {
+    const figure = document.querySelector('metaballs-view');
+    return figure.framesDrawn > n && figure.stats.triangles > 0 && figure.sphereList.length === 3;
+  }, drawn, { timeout: 30_000 });
+  assert.equal(await page.evaluate(() => document.querySelector('metaballs-view').iso), 0.8);
+  assert.deepEqual(errors.filter((e) => !/lost|destroyed/i.test(e)), []);
   await page.close();
 });
