@@ -19,6 +19,11 @@ pub const METHODS: &[(&str, &str, &str)] = &[
         "Resolves once the renderer has started (or rejects with why it could not).",
     ),
     (
+        "nextFrame",
+        "(): Promise<MetaballsStats>",
+        "Resolves with the statistics of a frame drawn after the call, drawing one even off screen or paused.",
+    ),
+    (
         "inspectCell",
         "(x: number, y: number, z: number): MetaballsCellReport | null",
         "Selects a cell for the inspector and returns its report (null outside the grid).",
@@ -31,8 +36,16 @@ pub const METHODS: &[(&str, &str, &str)] = &[
         "Loads a scene document; throws with what is wrong, keeping the scene.",
     ),
     ("downloadScene", "(): void", "Saves the scene document as a file."),
-    ("exportMesh", "(format?: 'stl' | 'obj' | 'ply'): Uint8Array", "The current frame's mesh as file bytes."),
-    ("downloadMesh", "(format?: 'stl' | 'obj' | 'ply'): void", "Saves the current frame's mesh as a file."),
+    (
+        "exportMesh",
+        "(format?: 'stl' | 'obj' | 'ply'): Promise<Uint8Array>",
+        "The mesh of the current settings as file bytes (a frame is drawn first, even off screen).",
+    ),
+    (
+        "downloadMesh",
+        "(format?: 'stl' | 'obj' | 'ply'): Promise<void>",
+        "Saves the mesh of the current settings as a file.",
+    ),
     ("picture", "(scale?: number): Promise<Blob>", "A PNG of the view at the canvas size times `scale`."),
     ("downloadPicture", "(scale?: number): Promise<void>", "Saves a PNG of the view."),
     ("showNotice", "(text: string, ms?: number): void", "Shows a short message inside the figure."),
