@@ -117,6 +117,8 @@ made.addEventListener('metaballs-change', (event) => {
 });
 made.addEventListener('metaballs-export', (event) => console.log(event.detail.bytes));
 figure.ready().then(() => figure.picture(2)).then((blob: Blob) => console.log(blob.size));
+figure.nextFrame().then((stats) => console.log(stats.triangles));
+figure.exportMesh('stl').then((bytes: Uint8Array) => console.log(bytes.length));
 // @ts-expect-error: not a theme
 figure.theme = 'blue';
 // @ts-expect-error: not a method
