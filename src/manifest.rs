@@ -81,7 +81,11 @@ pub const EVENTS: &[(&str, &str, &str)] = &[
     ),
     ("metaballs-scene", "{ spheres: MetaballsSphere[] }", "A scene document was loaded."),
     ("metaballs-export", "{ format: string; bytes: number; ms: number }", "A mesh was exported."),
-    ("metaballs-error", "{ message: string }", "The figure could not draw (it shows why)."),
+    (
+        "metaballs-error",
+        "{ message: string; attribute?: string }",
+        "The figure could not draw, or refused an attribute's value (it shows why).",
+    ),
 ];
 
 /// `::part()` names: name, what it is.

@@ -154,8 +154,8 @@ export interface MetaballsViewEventMap {
   'metaballs-scene': CustomEvent<{ spheres: MetaballsSphere[] }>;
   /** A mesh was exported. */
   'metaballs-export': CustomEvent<{ format: string; bytes: number; ms: number }>;
-  /** The figure could not draw (it shows why). */
-  'metaballs-error': CustomEvent<{ message: string }>;
+  /** The figure could not draw, or refused an attribute's value (it shows why). */
+  'metaballs-error': CustomEvent<{ message: string; attribute?: string }>;
 }
 
 declare global {

@@ -253,6 +253,7 @@ export class MetaballsView extends Base {
     if (message) {
       console.warn(`<metaballs-view> ${message}`);
       this.#notice(message);
+      this.#emit('metaballs-error', { message, attribute: name });
       return;
     }
     this.#settings.given.add(name);

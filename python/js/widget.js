@@ -127,18 +127,11 @@ function render({ model, el }) {
   el.replaceChildren(figure);
 
   // Python → figure: a changed trait becomes the attribute. A value the figure refuses (it says why in
-  // the figure) goes back to the one it keeps, so that Python reads what is drawn.
+  // the figure; it reads attributes once its WebAssembly is there) goes back to the one it keeps, so that
+  // Python reads what is drawn.
   const listeners = TABLE.map(({ name }) => {
     const event = `change:${traitName(name)}`;
-    const listener = () => {
-      const value = model.get(traitName(name));
-      write(figure, name, value);
-      const kept = figure[propertyName(name)];
-      if (kept !== undefined && String(kept) !== String(value)) {
-        model.set(traitName(name), kept);
-        quietly(() => model.save_changes());
-      }
-    };
+    const listener = () => write(figure, name, model.get(traitName(name)));
     model.on(event, listener);
     return [event, listener];
   });
@@ -168,6 +161,14 @@ function render({ model, el }) {
     quietly(() => model.save_changes());
   };
   figure.addEventListener('metaballs-change', changed);
+  const refused = (event) => {
+    const name = event.detail?.attribute;
+    const kept = name && TABLE.some((p) => p.name === name) ? figure[propertyName(name)] : undefined;
+    if (kept === undefined || String(model.get(traitName(name))) === String(kept)) return;
+    model.set(traitName(name), kept);
+    quietly(() => model.save_changes());
+  };
+  figure.addEventListener('metaballs-error', refused);
 
   const calls = callsOf(model);
   calls.figures.push(figure);
@@ -189,6 +190,7 @@ function render({ model, el }) {
     clearInterval(timer);
     for (const [event, listener] of listeners) quietly(() => model.off(event, listener));
     figure.removeEventListener('metaballs-change', changed);
+    figure.removeEventListener('metaballs-error', refused);
     figure.remove();
   };
 }
