@@ -5,7 +5,8 @@
 // Importing it does nothing but define the element, and only where `customElements` exists (a
 // server-side build imports it safely); the wasm loads when the first figure is connected.
 
-import { caseGallery, hub, loadWasm, propertyName, setWasmSources, wasmLoaded } from './lib/engine.js';
+import { caseGallery, hub, loadWasm, propertyName, wasmLoaded } from './lib/engine.js';
+import { FigureBase } from './lib/figure-base.js';
 import { Inspector } from './lib/inspector.js';
 import { wireCameraInput } from './lib/camera-input.js';
 import { buildPanel, listedControls } from './lib/panel.js';
@@ -22,35 +23,13 @@ import { FigureFrames } from './lib/figure-frames.js';
 import { FigureLook } from './lib/figure-look.js';
 import { pageWatch, unwatch } from './lib/page-watch.js';
 
-// Where the DOM is missing (a server-side build), the class still loads and is never defined.
-const Base = globalThis.HTMLElement ?? class {};
-
-export class MetaballsView extends Base {
-  static get observedAttributes() {
-    return NAMES;
-  }
-
-  /** GPU devices alive on this page (all elements share one). */
-  static get devices() { return hub.devices; }
-  /** GPU devices created on this page so far (more than one only after a device was lost). */
-  static get devicesCreated() { return hub.devicesCreated; }
-  /** Renderers alive on the shared device. */
-  static get liveRenderers() { return hub.gpu?.live_renderers() ?? 0; }
-  /** Pipeline sets compiled on the shared device (not one per element). */
-  static get pipelineSets() { return hub.gpu?.pipeline_sets_built() ?? 0; }
+export class MetaballsView extends FigureBase {
   /** GPU memory held by every element's buffers and targets, in bytes. */
   static get gpuBytes() {
     let bytes = 0;
     for (const element of hub.elements) bytes += element.#frames.view?.gpu_bytes() ?? 0;
     return bytes;
   }
-  /**
-   * Where the WebAssembly comes from when not from beside this module (set before the first figure
-   * connects): `{ webgpu, webgl2 }`, functions returning the wasm's bytes or Response, or promises of them.
-   */
-  static set wasmSources(sources) { setWasmSources(sources); }
-  /** Destroys the shared device, as a driver reset would (for testing recovery). */
-  static destroyDevice() { hub.gpu?.destroy(); hub.requestFrame(); }
 
   // Values in effect, held by the renderer, changed, and given (attribute reflection).
   #settings = new FigureState(this);

@@ -1,0 +1,30 @@
+// What every <metaballs-view> on a page shares, as static members of the element's base class: the one
+// GPU device and what it holds, where the WebAssembly comes from, and the attributes the element
+// watches. Where the DOM is missing (a server-side build), the class still loads and is never defined.
+
+import { hub, setWasmSources } from './engine.js';
+import { NAMES } from './figure-state.js';
+
+const Base = globalThis.HTMLElement ?? class {};
+
+export class FigureBase extends Base {
+  static get observedAttributes() {
+    return NAMES;
+  }
+
+  /** GPU devices alive on this page (all elements share one). */
+  static get devices() { return hub.devices; }
+  /** GPU devices created on this page so far (more than one only after a device was lost). */
+  static get devicesCreated() { return hub.devicesCreated; }
+  /** Renderers alive on the shared device. */
+  static get liveRenderers() { return hub.gpu?.live_renderers() ?? 0; }
+  /** Pipeline sets compiled on the shared device (not one per element). */
+  static get pipelineSets() { return hub.gpu?.pipeline_sets_built() ?? 0; }
+  /**
+   * Where the WebAssembly comes from when not from beside this module (set before the first figure
+   * connects): `{ webgpu, webgl2 }`, functions returning the wasm's bytes or Response, or promises of them.
+   */
+  static set wasmSources(sources) { setWasmSources(sources); }
+  /** Destroys the shared device, as a driver reset would (for testing recovery). */
+  static destroyDevice() { hub.gpu?.destroy(); hub.requestFrame(); }
+}
