@@ -13,8 +13,8 @@
 
 import '../../www/metaballs-view.js';
 import { TABLE } from '../../www/lib/attributes.js';
+import { propertyName } from '../../www/lib/engine.js';
 
-const propertyName = (name) => name.replace(/-([a-z])/g, (_, c) => c.toUpperCase());
 // The trait of an attribute in Python (`max-pixel-ratio` → `max_pixel_ratio`).
 const traitName = (name) => name.replace(/-/g, '_');
 // Where each build's WebAssembly sits in a folder laid out as dist/ (and in the wheel's static/ folder).
