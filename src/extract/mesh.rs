@@ -32,6 +32,8 @@ pub struct Topology {
     pub misoriented_edges: usize,
     /// Euler characteristic V − E + F of each connected component, sorted.
     pub component_euler: Vec<i64>,
+    /// Each component's Euler characteristic and vertex count, sorted.
+    pub components: Vec<(i64, i64)>,
 }
 
 impl Mesh {
@@ -184,8 +186,10 @@ impl IndexedMesh {
             let root = find(&mut parent, t[0]);
             per_component.entry(root).or_default().2 += 1;
         }
-        let mut component_euler: Vec<i64> = per_component.values().map(|(v, e, f)| v - e + f).collect();
-        component_euler.sort();
-        Topology { open_or_nonmanifold_edges, misoriented_edges, component_euler }
+        let mut components: Vec<(i64, i64)> =
+            per_component.values().map(|(v, e, f)| (v - e + f, *v)).collect();
+        components.sort();
+        let component_euler = components.iter().map(|c| c.0).collect();
+        Topology { open_or_nonmanifold_edges, misoriented_edges, component_euler, components }
     }
 }

@@ -14,6 +14,7 @@ pub mod buffers;
 pub mod cpu;
 pub mod extractor;
 pub mod gpu;
+pub mod lod;
 pub mod mesh;
 pub mod reference;
 pub mod tables;

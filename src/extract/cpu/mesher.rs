@@ -52,11 +52,64 @@ pub struct CpuMeshStats {
 
 /// The spheres as separate arrays of coordinates, read in the innermost loops.
 #[derive(Default)]
-struct Spheres {
+pub(crate) struct Spheres {
     x: Vec<f32>,
     y: Vec<f32>,
     z: Vec<f32>,
     r2: Vec<f32>,
+}
+
+impl Spheres {
+    /// Holds `spheres` from now on.
+    pub(crate) fn set(&mut self, spheres: &[Sphere]) {
+        self.x.clear();
+        self.y.clear();
+        self.z.clear();
+        self.r2.clear();
+        for sphere in spheres {
+            self.x.push(sphere.center.x);
+            self.y.push(sphere.center.y);
+            self.z.push(sphere.center.z);
+            self.r2.push(sphere.radius * sphere.radius);
+        }
+    }
+
+    /// False only when the field's bounds over the box from `low` to `high` keep every point on one
+    /// side of `iso` (as `classify_blocks` in `shaders/extract/blocks.wgsl` decides): no cell there can
+    /// emit a triangle. A box touching the walls is never all inside, as the walls read outside.
+    pub(crate) fn straddles(
+        &self,
+        low: Vec3,
+        high: Vec3,
+        touches_walls: bool,
+        iso: f32,
+        by_max: bool,
+    ) -> bool {
+        let centre = 0.5 * (low + high);
+        let h = 0.5 * (high - low).length();
+        let (mut lower, mut upper, mut unbounded) = (0.0f32, 0.0f32, false);
+        for i in 0..self.r2.len() {
+            let d = (centre - Vec3::new(self.x[i], self.y[i], self.z[i])).length();
+            let low_term = self.r2[i] / ((d + h) * (d + h));
+            let gap = d - h;
+            let high_term = if gap <= 0.0 {
+                unbounded = true;
+                0.0
+            } else {
+                self.r2[i] / (gap * gap)
+            };
+            if by_max {
+                lower = lower.max(low_term);
+                upper = upper.max(high_term);
+            } else {
+                lower += low_term;
+                upper += high_term;
+            }
+        }
+        let all_outside = !unbounded && upper * (1.0 + BOUND_MARGIN) <= iso;
+        let all_inside = !touches_walls && lower * (1.0 - BOUND_MARGIN) > iso;
+        !all_outside && !all_inside
+    }
 }
 
 /// A reusable CPU mesher. `mesh` fills `vertices` (position then outward normal, 6 `f32` each) and
@@ -138,17 +191,7 @@ impl CpuMesher {
     }
 
     fn prepare(&mut self, spheres: &[Sphere], grid: Grid) {
-        let s = &mut self.spheres;
-        s.x.clear();
-        s.y.clear();
-        s.z.clear();
-        s.r2.clear();
-        for sphere in spheres {
-            s.x.push(sphere.center.x);
-            s.y.push(sphere.center.y);
-            s.z.push(sphere.center.z);
-            s.r2.push(sphere.radius * sphere.radius);
-        }
+        self.spheres.set(spheres);
         let cell = grid.cell_size();
         self.coords.clear();
         self.coords.extend((0..=grid.cells_per_axis).map(|i| -BOX_HALF_EXTENT + i as f32 * cell));
@@ -172,32 +215,8 @@ impl CpuMesher {
                     let last = first.map(|f| (f + BLOCK_CELLS).min(n));
                     let low = Vec3::from_array(first.map(|i| self.coords[i as usize]));
                     let high = Vec3::from_array(last.map(|i| self.coords[i as usize]));
-                    let centre = 0.5 * (low + high);
-                    let h = 0.5 * (high - low).length();
-                    let (mut lower, mut upper, mut unbounded) = (0.0f32, 0.0f32, false);
-                    let s = &self.spheres;
-                    for i in 0..s.r2.len() {
-                        let d = (centre - Vec3::new(s.x[i], s.y[i], s.z[i])).length();
-                        let low_term = s.r2[i] / ((d + h) * (d + h));
-                        let gap = d - h;
-                        let high_term = if gap <= 0.0 {
-                            unbounded = true;
-                            0.0
-                        } else {
-                            s.r2[i] / (gap * gap)
-                        };
-                        if by_max {
-                            lower = lower.max(low_term);
-                            upper = upper.max(high_term);
-                        } else {
-                            lower += low_term;
-                            upper += high_term;
-                        }
-                    }
                     let touches_walls = first.contains(&0) || last.contains(&n);
-                    let all_outside = !unbounded && upper * (1.0 + BOUND_MARGIN) <= iso;
-                    let all_inside = !touches_walls && lower * (1.0 - BOUND_MARGIN) > iso;
-                    if !all_outside && !all_inside {
+                    if self.spheres.straddles(low, high, touches_walls, iso, by_max) {
                         layer.push((bx, by));
                         active += 1;
                     }
@@ -359,7 +378,7 @@ impl CpuMesher {
 /// Field values along a run of points sharing y and z: the sphere loop outside, the points inside, so
 /// the inner loop has no dependence between iterations and vectorises; each point still sums its
 /// spheres in order.
-fn sample_run(run: &mut [f32], xs: &[f32], py: f32, pz: f32, s: &Spheres, blend: Blend) {
+pub(crate) fn sample_run(run: &mut [f32], xs: &[f32], py: f32, pz: f32, s: &Spheres, blend: Blend) {
     run.fill(0.0);
     for i in 0..s.r2.len() {
         let (dy, dz, r2) = (py - s.y[i], pz - s.z[i], s.r2[i]);

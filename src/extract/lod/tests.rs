@@ -1,0 +1,252 @@
+//! Level selection and the LOD mesh on the CPU: balance, tiling, closedness, the oracle's triangles in
+//! the finest blocks.
+
+use super::mesher::{LodMesher, TRANSITION};
+use super::select::{BLOCK_CELLS, Eye, Selection, select};
+use crate::extract::mesh::Mesh;
+use crate::extract::reference::{self, Construction, Grid};
+use crate::scene::{BOX_HALF_EXTENT, Scene};
+use glam::{UVec3, Vec3};
+
+/// An eye at `position` looking at the box's centre, 480 pixels high, 45° field of view.
+pub(crate) fn eye_at(position: Vec3, lod_pixels: f32) -> Eye {
+    let fov = 45f32.to_radians();
+    let projection = glam::camera::rh::proj::directx::perspective(fov, 4.0 / 3.0, 0.05, 100.0);
+    let view = glam::camera::rh::view::look_at_mat4(position, Vec3::ZERO, Vec3::Y);
+    Eye {
+        position,
+        view_projection: projection * view,
+        pixels_per_unit: 480.0 / (2.0 * (fov / 2.0).tan()),
+        orthographic: false,
+        lod_pixels,
+    }
+}
+
+/// The eight cameras of the closedness tests: inside a corner of the box, near, far, grazing a face.
+pub(crate) fn cameras() -> [Vec3; 8] {
+    [
+        Vec3::new(0.9, 0.85, 0.8),
+        Vec3::new(-0.7, -0.9, 0.95),
+        Vec3::new(1.3, 0.6, 2.2),
+        Vec3::new(0.0, 0.3, 1.6),
+        Vec3::new(-3.5, 1.2, 2.4),
+        Vec3::new(12.0, 8.0, -14.0),
+        Vec3::new(2.5, 1.02, 0.0),
+        Vec3::new(0.2, -1.05, -2.0),
+    ]
+}
+
+fn world(selection: &Selection, p: UVec3) -> Vec3 {
+    Vec3::splat(-BOX_HALF_EXTENT) + p.as_vec3() * (2.0 * BOX_HALF_EXTENT / selection.resolution as f32)
+}
+
+/// Each finest cell's block, or a failure where blocks overlap or leave a gap.
+fn owners(selection: &Selection) -> Vec<u32> {
+    let n = selection.resolution as usize;
+    let mut owner = vec![u32::MAX; n * n * n];
+    for (i, b) in selection.blocks.iter().enumerate() {
+        let o = b.origin.as_usizevec3();
+        let w = b.width() as usize;
+        for z in o.z..o.z + w {
+            for y in o.y..o.y + w {
+                for x in o.x..o.x + w {
+                    let cell = &mut owner[x + n * (y + n * z)];
+                    assert_eq!(*cell, u32::MAX, "blocks overlap at {x},{y},{z}");
+                    *cell = i as u32;
+                }
+            }
+        }
+    }
+    assert!(!owner.contains(&u32::MAX), "blocks leave a gap");
+    owner
+}
+
+#[test]
+fn blocks_tile_the_box_and_neighbours_differ_by_at_most_one_level() {
+    let mut all_levels = std::collections::BTreeSet::new();
+    for position in cameras() {
+        let selection = select(128, &eye_at(position, 8.0));
+        assert!(selection.levels >= 4, "{} levels", selection.levels);
+        let owner = owners(&selection);
+        let n = 128i32;
+        let level = |p: [i32; 3]| {
+            (p.iter().all(|&c| (0..n).contains(&c)))
+                .then(|| selection.blocks[owner[(p[0] + n * (p[1] + n * p[2])) as usize] as usize].level)
+        };
+        let mut seen_levels = std::collections::BTreeSet::new();
+        for b in &selection.blocks {
+            seen_levels.insert(b.level);
+            let o = b.origin.as_ivec3();
+            let w = b.width() as i32;
+            // Every cell just outside the block, across faces, edges and corners.
+            for z in o.z - 1..=o.z + w {
+                for y in o.y - 1..=o.y + w {
+                    for x in o.x - 1..=o.x + w {
+                        let outside = [x, y, z].iter().zip(o.to_array()).any(|(&c, o)| c < o || c >= o + w);
+                        if let Some(l) = level([x, y, z]).filter(|_| outside) {
+                            assert!(l.abs_diff(b.level) <= 1, "{position}: level {} beside {l}", b.level);
+                        }
+                    }
+                }
+            }
+            // Transition faces are exactly those with a finer block beyond.
+            for face in 0..6 {
+                let (axis, side) = (face / 2, face % 2);
+                let mut p = o.to_array();
+                p[axis] = if side == 0 { p[axis] - 1 } else { p[axis] + w };
+                let finer = level(p).is_some_and(|l| l < b.level);
+                assert_eq!(b.transitions & (1 << face) != 0, finer, "{position}: face {face} of {b:?}");
+            }
+        }
+        all_levels.extend(seen_levels);
+    }
+    assert!(all_levels.len() >= 4, "levels in use: {all_levels:?}");
+}
+
+#[test]
+fn the_finest_blocks_surround_a_camera_inside_the_box_and_levels_grow_with_distance() {
+    let position = Vec3::new(0.6, 0.5, 0.55);
+    let selection = select(256, &eye_at(position, 8.0));
+    let n = selection.resolution;
+    let finest = 2.0 * BOX_HALF_EXTENT / n as f32;
+    let here = ((position + BOX_HALF_EXTENT) / finest).as_uvec3();
+    let holding = |p: UVec3| {
+        selection.blocks.iter().find(|b| (p.cmpge(b.origin) & p.cmplt(b.origin + b.width())).all()).unwrap()
+    };
+    assert_eq!(holding(here).level, 0);
+    // Along the line of sight, blocks only get coarser.
+    let mut last = 0;
+    for k in 0..200 {
+        let p = position + (Vec3::ZERO - position).normalize() * (k as f32 * 0.01);
+        let id = ((p + BOX_HALF_EXTENT) / finest).as_uvec3().min(UVec3::splat(n - 1));
+        let level = holding(id).level;
+        assert!(level >= last, "level {level} after {last} at {p}");
+        last = level;
+    }
+    assert!(last >= 1, "the far side is at level {last}");
+    let _ = world(&selection, here);
+}
+
+#[test]
+fn cells_outside_the_frustum_stay_coarse_and_visible_ones_project_within_lod_pixels() {
+    let eye = eye_at(Vec3::new(0.0, 0.2, 2.4), 2.0);
+    let selection = select(512, &eye);
+    let finest = 2.0 * BOX_HALF_EXTENT / 512.0;
+    let mut finest_count = 0;
+    for b in &selection.blocks {
+        let (low, high) = (world(&selection, b.origin), world(&selection, b.origin + b.width()));
+        let distance = (eye.position.clamp(low, high) - eye.position).length();
+        let cell = finest * b.step() as f32;
+        if eye.sees(low, high) {
+            assert!(
+                b.level == 0 || eye.projected(cell, distance) <= eye.lod_pixels,
+                "{b:?} looks too coarse"
+            );
+        }
+        finest_count += (b.level == 0) as usize;
+    }
+    let uniform_blocks = (512 / BLOCK_CELLS as usize).pow(3);
+    assert!(
+        selection.blocks.len() * 2 < uniform_blocks,
+        "{} blocks of {uniform_blocks}",
+        selection.blocks.len()
+    );
+    assert!(finest_count > 0);
+}
+
+/// The LOD mesh of `scene` seen from `position` at `resolution`.
+fn lod_mesh(scene: &Scene, resolution: u32, position: Vec3, lod_pixels: f32) -> (LodMesher, Selection) {
+    let selection = select(resolution, &eye_at(position, lod_pixels));
+    let mut mesher = LodMesher::new();
+    mesher.mesh(scene.spheres(), 1.0, Construction::default(), &selection);
+    (mesher, selection)
+}
+
+#[test]
+fn lod_meshes_are_closed_oriented_manifolds_wherever_levels_meet() {
+    for seed in 1..=12u64 {
+        let scene = Scene::new(seed, [3, 8, 16][seed as usize % 3]).unwrap();
+        let resolution = 128;
+        let mut used_levels = 0;
+        for (c, position) in cameras().into_iter().enumerate() {
+            // Large cells on screen, so that many levels meet (up to 12 pixels a cell).
+            let (mesher, selection) = lod_mesh(&scene, resolution, position, 12.0);
+            let levels = selection.blocks_per_level();
+            used_levels = used_levels.max(levels.iter().filter(|&&n| n > 0).count());
+            let topology = mesher.to_indexed().topology();
+            let what = format!("seed {seed}, camera {c} {position}, blocks per level {levels:?}");
+            assert_eq!(topology.open_or_nonmanifold_edges, 0, "{what}: open or non-manifold edges");
+            assert_eq!(topology.misoriented_edges, 0, "{what}: inconsistent orientation");
+            // So coarse a mesh may join or drop small blobs, but each component is a closed
+            // orientable surface: χ = 2 − 2g is even.
+            assert!(
+                topology.component_euler.iter().all(|x| x % 2 == 0),
+                "{what}: {:?}",
+                topology.component_euler
+            );
+        }
+        assert!(used_levels >= 3, "seed {seed}: at most {used_levels} levels in use");
+    }
+}
+
+#[test]
+fn lod_meshes_have_the_uniform_meshs_topology_and_volume() {
+    for seed in 1..=12u64 {
+        let scene = Scene::new(seed, [3, 8, 16][seed as usize % 3]).unwrap();
+        let resolution = 128;
+        let oracle =
+            reference::extract(scene.spheres(), 1.0, Grid { cells_per_axis: resolution }).weld_by_edge();
+        let volume = crate::export::enclosed_volume(&oracle);
+        let expected: Vec<i64> =
+            oracle.topology().components.iter().filter(|c| c.1 > 16).map(|c| c.0).collect();
+        for (c, position) in cameras().into_iter().enumerate() {
+            let (mesher, selection) = lod_mesh(&scene, resolution, position, 1.0);
+            let mesh = mesher.to_indexed();
+            let what = format!(
+                "seed {seed}, camera {c} {position}, blocks per level {:?}",
+                selection.blocks_per_level()
+            );
+            let topology = mesh.topology();
+            assert_eq!(topology.open_or_nonmanifold_edges, 0, "{what}: open or non-manifold edges");
+            assert_eq!(topology.misoriented_edges, 0, "{what}: inconsistent orientation");
+            // Where a surface barely crosses into a finer block, the fine side holds a sliver the
+            // coarse side cannot see, closed by its transition cells in the seam's plane: a component
+            // of a few vertices. Apart from those, the components are the oracle's.
+            let euler: Vec<i64> = topology.components.iter().filter(|c| c.1 > 16).map(|c| c.0).collect();
+            assert_eq!(euler, expected, "{what}: Euler characteristic per component");
+            let ours = crate::export::enclosed_volume(&mesh);
+            assert!((ours - volume).abs() < 0.01 * volume, "{what}: volume {ours} against {volume}");
+        }
+    }
+}
+
+#[test]
+fn the_finest_blocks_hold_the_oracles_triangles() {
+    let scene = Scene::new(5, 16).unwrap();
+    let resolution = 128;
+    let (mesher, selection) = lod_mesh(&scene, resolution, Vec3::new(0.3, 0.2, 1.4), 4.0);
+    let finest_blocks: Vec<_> = selection.blocks.iter().filter(|b| b.level == 0).collect();
+    assert!(finest_blocks.len() > 100 && finest_blocks.len() < selection.blocks.len());
+    let cell_size = 2.0 * BOX_HALF_EXTENT / resolution as f32;
+    let in_finest = |t: [Vec3; 3]| {
+        let cell = (((t[0] + t[1] + t[2]) / 3.0 + BOX_HALF_EXTENT) / cell_size).as_uvec3();
+        finest_blocks.iter().any(|b| (cell.cmpge(b.origin) & cell.cmplt(b.origin + b.width())).all())
+    };
+    let oracle = reference::extract(scene.spheres(), 1.0, Grid { cells_per_axis: resolution });
+    let mut expected = Mesh::default();
+    for k in (0..oracle.triangle_count()).filter(|&k| in_finest(oracle.triangle(k))) {
+        expected.positions.extend_from_slice(&oracle.positions[3 * k..3 * k + 3]);
+        expected.normals.extend_from_slice(&oracle.normals[3 * k..3 * k + 3]);
+    }
+    let soup = mesher.to_indexed().to_soup();
+    let mut ours = Mesh::default();
+    for (k, &level) in mesher.triangle_levels.iter().enumerate() {
+        if level == 0 {
+            ours.positions.extend_from_slice(&soup.positions[3 * k..3 * k + 3]);
+            ours.normals.extend_from_slice(&soup.normals[3 * k..3 * k + 3]);
+        }
+    }
+    assert!(mesher.triangle_levels.iter().any(|&l| l & TRANSITION != 0));
+    assert!(ours.triangle_count() > 1000, "{} triangles", ours.triangle_count());
+    ours.matches(&expected, 0.0, 1e-6).unwrap();
+}
