@@ -5,6 +5,8 @@
 use crate::device::timing::{STAGES, StageTimes};
 use crate::extract::reference::{self, Grid};
 use crate::offscreen::Offscreen;
+use crate::scene::params::MAX_UNIFORM_RESOLUTION;
+use crate::scene::params::ViewOptions;
 use crate::scene::params::view::Mesher;
 use crate::{ParamError, Settings};
 use serde::Serialize;
@@ -35,6 +37,11 @@ pub struct Record {
     pub active_block_fraction: f64,
     /// GPU memory held by the mesh buffers.
     pub mesh_bytes: u64,
+    /// Cells meshed: every cell of the blocks the bounds kept, and with level of detail their
+    /// transition cells.
+    pub cells_processed: u64,
+    /// With level of detail, the selected blocks per level, finest first.
+    pub lod_blocks: Option<Vec<u32>>,
     /// Wall time of the CPU oracle on the same scene, in milliseconds.
     pub oracle_ms: Option<f64>,
 }
@@ -103,11 +110,20 @@ pub fn run(
                     let mut settings =
                         with_view(Settings { resolution, sphere_count: spheres, ..base }, view)?;
                     settings.view.mesher = mesher;
-                    offscreen.renderer.set_settings(settings)?;
-                    let mut record = measure(&mut offscreen, plan, timed)?;
-                    record.view = view.clone();
-                    report(&record);
-                    records.push(record);
+                    // Level of detail is measured next to the uniform grid as fine, where it fits.
+                    let mut runs = vec![(settings, view.clone())];
+                    if settings.view.lod && resolution <= offscreen.renderer.max_resolution() {
+                        let uniform =
+                            Settings { view: ViewOptions { lod: false, ..settings.view }, ..settings };
+                        runs.push((uniform, format!("{view} (uniform)")));
+                    }
+                    for (settings, name) in runs {
+                        offscreen.renderer.set_settings(settings)?;
+                        let mut record = measure(&mut offscreen, plan, timed)?;
+                        record.view = name;
+                        report(&record);
+                        records.push(record);
+                    }
                 }
             }
         }
@@ -162,7 +178,9 @@ fn measure(offscreen: &mut Offscreen, plan: &Plan, timed: bool) -> Result<Record
             .collect();
         median(&mut times)
     };
-    let oracle_ms = plan.oracle.then(|| {
+    let lod = offscreen.renderer.lod_summary();
+    let cells_processed = lod.as_ref().map_or(stats.active_blocks as u64 * 64, |l| l.cells_processed);
+    let oracle_ms = (plan.oracle && settings.resolution <= MAX_UNIFORM_RESOLUTION).then(|| {
         let started = Instant::now();
         let mesh = reference::extract(
             offscreen.renderer.scene().spheres(),
@@ -185,6 +203,8 @@ fn measure(offscreen: &mut Offscreen, plan: &Plan, timed: bool) -> Result<Record
         active_cell_fraction: stats.active_cells as f64 / stats.total_cells.max(1) as f64,
         active_block_fraction: stats.active_blocks as f64 / stats.total_blocks.max(1) as f64,
         mesh_bytes: stats.mesh_bytes,
+        cells_processed,
+        lod_blocks: lod.map(|l| l.blocks),
         oracle_ms,
     })
 }
@@ -197,7 +217,7 @@ pub fn header(timed: bool) -> String {
         String::new()
     };
     format!(
-        "{:<36} {:>6} {:>5} {:>7} {:>9} {} {:>9} {:>10} {:>9} {:>8} {:>8} {:>9} {:>10}",
+        "{:<36} {:>7} {:>5} {:>7} {:>9} {} {:>9} {:>10} {:>9} {:>11} {:>8} {:>9} {:>10}  {}",
         "view",
         "mesher",
         "cells",
@@ -207,10 +227,11 @@ pub fn header(timed: bool) -> String {
         "mesh ms",
         "triangles",
         "vertices",
-        "cells %",
+        "cells done",
         "blocks %",
         "mesh MiB",
-        "oracle ms"
+        "oracle ms",
+        "LOD blocks per level"
     )
 }
 
@@ -222,7 +243,7 @@ fn truncate(s: &str) -> &str {
 pub fn row(r: &Record) -> String {
     let stages = r.stage_ms.map(|s| s.iter().map(|v| format!("{v:>9.2}")).collect::<Vec<_>>().join(" "));
     format!(
-        "{:<36} {:>6} {:>5} {:>7} {:>9.2} {} {:>9.2} {:>10} {:>9} {:>8.3} {:>8.2} {:>9.1} {:>10}",
+        "{:<36} {:>7} {:>5} {:>7} {:>9.2} {} {:>9.2} {:>10} {:>9} {:>11} {:>8.2} {:>9.1} {:>10}  {}",
         if r.view.is_empty() { "shaded" } else { &r.view },
         r.mesher,
         r.resolution,
@@ -232,9 +253,10 @@ pub fn row(r: &Record) -> String {
         r.mesh_ms,
         r.triangles,
         r.vertices,
-        100.0 * r.active_cell_fraction,
+        r.cells_processed,
         100.0 * r.active_block_fraction,
         r.mesh_bytes as f64 / 1048576.0,
         r.oracle_ms.map(|v| format!("{v:.1}")).unwrap_or_else(|| "-".into()),
+        r.lod_blocks.as_ref().map(|b| format!("{b:?}")).unwrap_or_default(),
     )
 }

@@ -25,7 +25,7 @@ export declare class MetaballsView extends HTMLElement {
   spheres: number;
   /** Iso level: 0.05 to 20. Attribute `iso`; default 1. */
   iso: number;
-  /** Resolution (cells per axis): 8 to 512. Attribute `resolution`; default 64. */
+  /** Resolution (cells per axis): 8 to 2048. Attribute `resolution`; default 64. */
   resolution: number;
   /** Layout seed: 0 to 4294967295. Attribute `seed`; default 1. */
   seed: number;
@@ -49,8 +49,8 @@ export declare class MetaballsView extends HTMLElement {
   display: 'shaded' | 'flat' | 'wireframe' | 'points' | 'normals';
   /** Grid: none, lattice, cells, blocks. Attribute `grid`; default "none". */
   grid: 'none' | 'lattice' | 'cells' | 'blocks';
-  /** Color_by: none, area, quality, case. Attribute `color_by`; default "none". */
-  color_by: 'none' | 'area' | 'quality' | 'case';
+  /** Color_by: none, area, quality, case, level. Attribute `color_by`; default "none". */
+  color_by: 'none' | 'area' | 'quality' | 'case' | 'level';
   /** Slice: off, or an axis and a position in the box (z:0.25). Attribute `slice`; default "off". */
   slice: string;
   /** Ambiguous: a boolean attribute. Attribute `ambiguous`; default false. */
@@ -61,6 +61,12 @@ export declare class MetaballsView extends HTMLElement {
   blend: 'sum' | 'max';
   /** Mesher: auto, gpu, cpu. Attribute `mesher`; default "auto". */
   mesher: 'auto' | 'gpu' | 'cpu';
+  /** Lod: a boolean attribute. Attribute `lod`; default false. */
+  lod: boolean;
+  /** LOD cell size (pixels): 0.25 to 32. Attribute `lod_pixels`; default 2. */
+  lod_pixels: number;
+  /** Lod_freeze: a boolean attribute. Attribute `lod_freeze`; default false. */
+  lod_freeze: boolean;
   /** Light: all, none, or a comma list of point, directional, spot. Attribute `light`; default "point". */
   light: string;
   /** Spot cone angle (degrees): 2 to 80. Attribute `spot_angle`; default 15. */
@@ -83,7 +89,7 @@ export declare class MetaballsView extends HTMLElement {
   edit: boolean;
   /** Balls: x,y,z,radius[,vx,vy,vz] per sphere joined by ;. Attribute `balls`; default "". */
   balls: string;
-  /** Controls: all, none, or a comma list of spheres, iso, resolution, speed, shininess, color, antialiasing, mesher, paused, seed, view, step, display, grid, color_by, slice, ambiguous, interpolation, blend, inspector, light, spot_angle, spot_softness, ambient, diffuse, specular, projection, fov, theme, edit, scene, export. Attribute `controls`; default "none". */
+  /** Controls: all, none, or a comma list of spheres, iso, resolution, speed, shininess, color, antialiasing, mesher, lod, lod_pixels, lod_freeze, paused, seed, view, step, display, grid, color_by, slice, ambiguous, interpolation, blend, inspector, light, spot_angle, spot_softness, ambient, diffuse, specular, projection, fov, theme, edit, scene, export. Attribute `controls`; default "none". */
   controls: string;
   /** Hud: on, off. Attribute `hud`; default "off". */
   hud: 'on' | 'off';

@@ -3,6 +3,8 @@
 
 use super::buffers::MeshBuffers;
 use super::gpu::scene_buffers::SceneBuffers;
+use super::lod::LodSummary;
+use super::lod::select::Eye;
 use super::mesh::IndexedMesh;
 use super::reference::{Construction, Grid};
 use super::uniforms::Counters;
@@ -20,6 +22,8 @@ pub struct Capabilities {
     pub cell_lists: bool,
     /// Keeps its latest mesh on the CPU, so exports and tests need no readback.
     pub cpu_copy: bool,
+    /// Meshes a level-of-detail selection (`lod=on`) rather than the uniform grid.
+    pub lod: bool,
 }
 
 /// One frame's extraction problem: the surface f = `iso` of `spheres` on `grid`.
@@ -29,6 +33,16 @@ pub struct Job<'a> {
     pub iso: f32,
     pub grid: Grid,
     pub construction: Construction,
+    /// With `lod=on`: the camera the levels follow.
+    pub lod: Option<LodJob>,
+}
+
+/// What level-of-detail extraction needs beyond the uniform grid's problem.
+#[derive(Clone, Copy, Debug)]
+pub struct LodJob {
+    pub eye: Eye,
+    /// Keep the selection of the last frame whatever the camera does (`lod_freeze`).
+    pub freeze: bool,
 }
 
 /// Where a frame's mesh goes: the shared buffers, the scene as the device reads it and the frame's
@@ -91,6 +105,11 @@ pub trait Extractor {
 
     /// The latest mesh as written (clamped as the buffers held it), where it is kept on the CPU.
     fn cpu_mesh(&self) -> Option<IndexedMesh> {
+        None
+    }
+
+    /// The latest level-of-detail selection and what each level holds, for a LOD extractor.
+    fn lod_summary(&self) -> Option<LodSummary> {
         None
     }
 }

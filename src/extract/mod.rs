@@ -7,6 +7,8 @@
 //! - [`gpu`]: the compute passes (blocks → field → marching cubes), all on the device, no readback.
 //! - [`cpu`]: the CPU mesher, uploaded into the same buffers (faster on software adapters, the only
 //!   one on WebGL2).
+//! - [`lod`]: level of detail: fine blocks near the camera, coarse far away, closed by transition
+//!   cells.
 //!
 //! Imports `scene` and `device`; knows nothing of drawing.
 
@@ -20,14 +22,15 @@ pub mod reference;
 pub mod tables;
 pub mod uniforms;
 
-pub use extractor::{Capabilities, Extractor, Job, MeshCount, Output};
+pub use extractor::{Capabilities, Extractor, Job, LodJob, MeshCount, Output};
 
 /// Builds an extractor on a device, compiling what every renderer on that device shares (its
 /// pipelines); `None` where it cannot run there.
 pub type Compile = fn(&wgpu::Device) -> Option<Box<dyn Extractor>>;
 
 /// Every extractor, in order of preference. Adding one is a module and a line here.
-pub const EXTRACTORS: &[Compile] = &[gpu::GpuExtractor::compile, cpu::CpuExtractor::compile];
+pub const EXTRACTORS: &[Compile] =
+    &[gpu::GpuExtractor::compile, cpu::CpuExtractor::compile, lod::cpu::LodCpuExtractor::compile];
 
 /// The extractors `device` can run, in the order of [`EXTRACTORS`].
 pub fn compile_all(device: &wgpu::Device) -> Vec<Box<dyn Extractor>> {

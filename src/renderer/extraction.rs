@@ -4,10 +4,13 @@
 use super::{FrameStats, Renderer, Sizing};
 use crate::draw::shade::DrawCount;
 use crate::draw::views;
+use crate::extract::lod::LodSummary;
+use crate::extract::lod::select::Eye;
 use crate::extract::reference::Construction;
-use crate::extract::{Capabilities, Extractor, Job, MeshCount, Output};
+use crate::extract::{Capabilities, Extractor, Job, LodJob, MeshCount, Output};
 use crate::scene::params::ParamError;
 use crate::scene::params::view::Mesher;
+use crate::scene::params::view::Projection;
 
 impl Renderer {
     /// Makes this frame's mesh with the chosen extractor: the room it reports is made first (a fixed
@@ -20,6 +23,7 @@ impl Renderer {
             iso: self.settings.iso,
             grid: self.grid(),
             construction: Construction { interpolation: view.interpolation, blend: view.blend },
+            lod: view.lod.then(|| LodJob { eye: self.lod_eye(), freeze: view.lod_freeze }),
         };
         if let Some(mut room) = self.extractors[self.active].prepare(&job) {
             if let Sizing::FixedTriangles(n) = self.sizing {
@@ -54,19 +58,26 @@ impl Renderer {
     }
 
     /// True when the teaching views draw this frame. They read the lists the compute passes fill, so
-    /// without an extractor that fills them (WebGL2) the surface shows alone.
+    /// without an extractor that fills them (WebGL2, level of detail) the surface shows alone.
     pub(super) fn views_shown(&self) -> bool {
-        self.extractors.iter().any(|e| e.capabilities().cell_lists)
+        self.extractors.iter().any(|e| self.in_mode(e.capabilities()) && e.capabilities().cell_lists)
             && views::needed(&self.settings.view, self.selected.is_some())
     }
 
-    /// The extractor for the next frame: one with the active-cell lists while a teaching view reads
-    /// them; else as `mesher` names it, `auto` choosing one on the CPU on a software adapter (where
-    /// compute passes are emulated on the CPU) and one in compute shaders on hardware; the first the
-    /// device runs when the named one cannot.
+    /// True for the extractors of the current mode: level of detail or the uniform grid.
+    fn in_mode(&self, c: Capabilities) -> bool {
+        c.lod == self.settings.view.lod
+    }
+
+    /// The extractor for the next frame, among those of the current mode (`lod`): one with the
+    /// active-cell lists while a teaching view reads them; else as `mesher` names it, `auto` choosing
+    /// one on the CPU on a software adapter (where compute passes are emulated on the CPU) and one in
+    /// compute shaders on hardware; the first the device runs when the named one cannot.
     fn next_extractor(&self) -> usize {
         let find = |wanted: &dyn Fn(Capabilities, &'static str) -> bool| {
-            self.extractors.iter().position(|e| wanted(e.capabilities(), e.name()))
+            self.extractors
+                .iter()
+                .position(|e| self.in_mode(e.capabilities()) && wanted(e.capabilities(), e.name()))
         };
         let chosen = if self.views_shown() {
             find(&|c, _| c.cell_lists)
@@ -74,15 +85,39 @@ impl Renderer {
             self.pinned
         } else {
             match self.settings.view.mesher {
-                Mesher::Gpu => find(&|_, name| name == "gpu"),
-                Mesher::Cpu => find(&|_, name| name == "cpu"),
+                Mesher::Gpu => find(&|c, _| c.needs_compute),
+                Mesher::Cpu => find(&|c, _| !c.needs_compute),
                 Mesher::Auto => {
                     let software = self.context.is_software();
                     find(&|c, _| c.needs_compute != software)
                 }
             }
         };
-        chosen.unwrap_or(0)
+        chosen.or_else(|| find(&|_, _| true)).unwrap_or(0)
+    }
+
+    /// The camera as level selection sees it.
+    fn lod_eye(&self) -> Eye {
+        let camera = &self.settings.camera;
+        let half_fov = (camera.fov_y_degrees.to_radians() / 2.0).tan();
+        let orthographic = self.settings.view.projection == Projection::Orthographic;
+        let height = self.size.1 as f32;
+        Eye {
+            position: camera.eye(),
+            view_projection: self.view_projection(),
+            pixels_per_unit: if orthographic {
+                height / (2.0 * camera.distance * half_fov)
+            } else {
+                height / (2.0 * half_fov)
+            },
+            orthographic,
+            lod_pixels: self.settings.view.lod_pixels,
+        }
+    }
+
+    /// The latest frame's level-of-detail selection and counts, when a LOD extractor made it.
+    pub fn lod_summary(&self) -> Option<LodSummary> {
+        self.extractors[self.active].lod_summary()
     }
 
     /// What the extractor the next frame will use can do.

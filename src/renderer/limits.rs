@@ -5,7 +5,7 @@ use super::{Renderer, Sizing};
 use crate::device::has_compute;
 use crate::extract::buffers::{BLOCK_CELLS, Capacity};
 use crate::extract::reference::Grid;
-use crate::scene::params::{self, MAX_RESOLUTION, MIN_RESOLUTION, ParamError};
+use crate::scene::params::{self, MAX_UNIFORM_RESOLUTION, MIN_RESOLUTION, ParamError};
 
 /// The largest buffer the mesh passes bind: a storage binding, or without compute shaders (where the
 /// CPU mesher fills plain vertex and index buffers) any buffer.
@@ -18,16 +18,26 @@ pub(super) fn storage_limit(device: &wgpu::Device) -> u64 {
     }
 }
 
-/// Starting capacity; without compute shaders only vertices and indices are stored on the device.
-pub(super) fn automatic_capacity(device: &wgpu::Device, grid: Grid, compute: bool) -> Capacity {
-    let capacity = Capacity::for_grid(grid).min(Capacity::largest(grid, storage_limit(device)));
+/// Starting capacity for `grid` (uniform, or with `lod` the finest level's); without compute shaders
+/// only vertices and indices are stored on the device. Level of detail keeps its blocks and cells in
+/// lists that start small and grow.
+pub(super) fn automatic_capacity(device: &wgpu::Device, grid: Grid, lod: bool, compute: bool) -> Capacity {
+    let sized_by = Grid { cells_per_axis: grid.cells_per_axis.min(MAX_UNIFORM_RESOLUTION) };
+    let mut capacity = Capacity::for_grid(sized_by).min(Capacity::largest(sized_by, storage_limit(device)));
+    if lod {
+        capacity.blocks = capacity.blocks.min(LOD_STARTING_BLOCKS);
+        capacity.cells = capacity.cells.min(16 * LOD_STARTING_BLOCKS);
+    }
     if compute { capacity } else { Capacity { blocks: 0, cells: 0, ..capacity } }
 }
+
+/// Active blocks the level-of-detail lists start with room for.
+const LOD_STARTING_BLOCKS: u32 = 4096;
 
 /// The largest resolution this device can run: its block table must fit one storage binding and its
 /// block pass one dispatch.
 pub fn max_resolution(device: &wgpu::Device) -> u32 {
-    (MIN_RESOLUTION..=MAX_RESOLUTION)
+    (MIN_RESOLUTION..=MAX_UNIFORM_RESOLUTION)
         .rev()
         .find(|&n| resolution_fits(device, n).is_ok())
         .unwrap_or(MIN_RESOLUTION)
@@ -89,7 +99,8 @@ impl Renderer {
     }
 
     pub(super) fn starting_capacity(&self) -> Capacity {
-        let automatic = automatic_capacity(&self.device, self.grid(), self.context.has_compute());
+        let lod = self.settings.view.lod;
+        let automatic = automatic_capacity(&self.device, self.grid(), lod, self.context.has_compute());
         match self.sizing {
             Sizing::Automatic => automatic,
             // Everything but the index buffer holds the whole grid, so only triangles overflow.

@@ -19,7 +19,7 @@ use crate::device::timing::{StageTimes, Timing};
 use crate::draw::shade::{MULTISAMPLES, MeshDraw, ShadePass, ViewFrame};
 use crate::draw::views::ViewState;
 use crate::extract::Extractor;
-use crate::extract::buffers::{Capacity, MeshBuffers};
+use crate::extract::buffers::{BLOCK_CELLS, Capacity, MeshBuffers};
 use crate::extract::gpu::scene_buffers::SceneBuffers;
 use crate::extract::reference::Grid;
 use crate::scene::Scene;
@@ -99,12 +99,17 @@ impl Renderer {
         let settings = settings.validated()?;
         let (device, queue) = (context.device().clone(), context.queue().clone());
         check_size(&device, width, height)?;
-        check_resolution_fits(&device, settings.resolution)?;
+        let lod = settings.view.lod;
+        if !lod {
+            check_resolution_fits(&device, settings.resolution)?;
+        }
         let scene = Scene::new(settings.seed, settings.sphere_count)?;
 
         let scene_buffers = SceneBuffers::new(&device);
         let grid = Grid { cells_per_axis: settings.resolution };
-        let mesh = MeshBuffers::new(&device, grid, automatic_capacity(&device, grid, context.has_compute()));
+        let capacity = automatic_capacity(&device, grid, lod, context.has_compute());
+        let buffer_grid = if lod { Grid { cells_per_axis: BLOCK_CELLS } } else { grid };
+        let mesh = MeshBuffers::new(&device, buffer_grid, capacity);
         Ok(Self {
             extractors: context.extractors().iter().map(|e| e.fresh()).collect(),
             active: 0,
@@ -221,13 +226,16 @@ impl Renderer {
     /// Applies all settings at once, or none if any is refused.
     pub fn set_settings(&mut self, settings: Settings) -> Result<(), ParamError> {
         let settings = settings.validated()?;
-        check_resolution_fits(&self.device, settings.resolution)?;
+        if !settings.view.lod {
+            check_resolution_fits(&self.device, settings.resolution)?;
+        }
         if settings.seed != self.settings.seed {
             self.scene = Scene::new(settings.seed, settings.sphere_count)?;
         } else if settings.sphere_count != self.settings.sphere_count {
             self.scene.set_count(settings.sphere_count)?;
         }
-        let resolution_changed = settings.resolution != self.settings.resolution;
+        let resolution_changed =
+            settings.resolution != self.settings.resolution || settings.view.lod != self.settings.view.lod;
         if settings.antialiasing != self.settings.antialiasing {
             let (width, height) = self.size;
             let pipelines = self.context.shade_pipelines(self.format, sample_count(settings.antialiasing));
@@ -264,9 +272,15 @@ impl Renderer {
         Grid { cells_per_axis: self.settings.resolution }
     }
 
+    /// The grid the uniform extractors' tables are made for: none to speak of with level of detail,
+    /// whose extractors keep their own.
+    fn buffer_grid(&self) -> Grid {
+        if self.settings.view.lod { Grid { cells_per_axis: BLOCK_CELLS } } else { self.grid() }
+    }
+
     fn reallocate(&mut self, capacity: Capacity) {
         self.mesh.destroy();
-        self.mesh = MeshBuffers::new(&self.device, self.grid(), capacity);
+        self.mesh = MeshBuffers::new(&self.device, self.buffer_grid(), capacity);
         self.pending_capacity = None;
         self.follow_new_buffers();
     }

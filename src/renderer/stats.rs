@@ -29,7 +29,7 @@ pub struct FrameStats {
     /// Cells that emitted triangles.
     pub active_cells: u32,
     /// Cells in the grid.
-    pub total_cells: u32,
+    pub total_cells: u64,
     /// True when some buffer was too small for this frame, so part of the surface was not drawn (the
     /// buffers grow for the next frames).
     pub overflowed: bool,
@@ -57,7 +57,7 @@ impl FrameStats {
             active_blocks: needed.active_blocks,
             total_blocks: grid.cells_per_axis.div_ceil(BLOCK_CELLS).pow(3),
             active_cells: needed.active_cells,
-            total_cells: grid.cells_per_axis.pow(3),
+            total_cells: (grid.cells_per_axis as u64).pow(3),
             overflowed,
             mesh_bytes,
         }

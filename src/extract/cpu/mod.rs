@@ -32,7 +32,7 @@ impl Extractor for CpuExtractor {
     }
 
     fn capabilities(&self) -> Capabilities {
-        Capabilities { needs_compute: false, cell_lists: false, cpu_copy: true }
+        Capabilities { needs_compute: false, cell_lists: false, cpu_copy: true, lod: false }
     }
 
     fn fresh(&self) -> Box<dyn Extractor> {
@@ -47,20 +47,9 @@ impl Extractor for CpuExtractor {
     }
 
     fn write(&mut self, output: Output) -> MeshCount {
-        let Output { queue, buffers, .. } = output;
         let mesher = &self.mesher;
+        let indices = upload(&output, &mesher.vertices, &mesher.indices);
         let (vertices, requested) = (mesher.vertex_count(), mesher.indices.len() as u32);
-        let indices = requested.min(buffers.capacity.indices);
-        if vertices > 0 && vertices <= buffers.capacity.vertices {
-            queue.write_buffer(&buffers.vertices, 0, bytemuck::cast_slice(&mesher.vertices));
-        }
-        if indices > 0 {
-            queue.write_buffer(
-                &buffers.indices,
-                0,
-                bytemuck::cast_slice(&mesher.indices[..indices as usize]),
-            );
-        }
         self.written = indices;
         let stats = mesher.stats();
         let needed = Counters {
@@ -77,4 +66,18 @@ impl Extractor for CpuExtractor {
         mesh.triangles.truncate(self.written as usize / 3);
         Some(mesh)
     }
+}
+
+/// Writes a mesh made on the CPU (6 `f32` per vertex, 3 indices per triangle) into the buffers, as
+/// much of it as they hold, and returns the indices written.
+pub(crate) fn upload(output: &Output, vertices: &[f32], indices: &[u32]) -> u32 {
+    let Output { queue, buffers, .. } = output;
+    let written = (indices.len() as u32).min(buffers.capacity.indices);
+    if !vertices.is_empty() && vertices.len() as u64 <= 6 * buffers.capacity.vertices as u64 {
+        queue.write_buffer(&buffers.vertices, 0, bytemuck::cast_slice(vertices));
+    }
+    if written > 0 {
+        queue.write_buffer(&buffers.indices, 0, bytemuck::cast_slice(&indices[..written as usize]));
+    }
+    written
 }

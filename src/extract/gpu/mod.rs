@@ -54,7 +54,7 @@ impl Extractor for GpuExtractor {
     }
 
     fn capabilities(&self) -> Capabilities {
-        Capabilities { needs_compute: true, cell_lists: true, cpu_copy: false }
+        Capabilities { needs_compute: true, cell_lists: true, cpu_copy: false, lod: false }
     }
 
     fn fresh(&self) -> Box<dyn Extractor> {

@@ -12,7 +12,7 @@ use crate::scene::BOX_HALF_EXTENT;
 use glam::{Mat4, UVec3, Vec3, Vec4};
 
 /// Cells along each axis of a block, at the block's level.
-pub const BLOCK_CELLS: u32 = 8;
+pub const BLOCK_CELLS: u32 = crate::scene::params::LOD_BLOCK_CELLS;
 /// The most levels a selection has (the finest is level 0).
 pub const MAX_LEVELS: u32 = 10;
 

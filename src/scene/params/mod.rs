@@ -12,7 +12,11 @@ pub use super::sphere::{MAX_SPHERES, check_sphere_count};
 /// Fewest cells along each axis of the grid.
 pub const MIN_RESOLUTION: u32 = 8;
 /// Most cells along each axis of the grid (devices may hold fewer; see `Renderer::max_resolution`).
-pub const MAX_RESOLUTION: u32 = 512;
+pub const MAX_RESOLUTION: u32 = 2048;
+/// Cells along each axis of a level-of-detail block, at the block's level.
+pub const LOD_BLOCK_CELLS: u32 = 8;
+/// The finest uniform grid: past it, only level of detail (`lod=on`) holds the grid.
+pub const MAX_UNIFORM_RESOLUTION: u32 = 512;
 /// Iso levels accepted: below the lower end the surface fills the box, above the upper end it vanishes.
 pub const ISO_RANGE: (f32, f32) = (0.05, 20.0);
 /// Camera yaw accepted, degrees.
@@ -144,6 +148,7 @@ impl Settings {
         check_sphere_count(self.sphere_count)?;
         check_iso(self.iso)?;
         check_resolution(self.resolution)?;
+        check_resolution_for_lod(self.resolution, self.view.lod)?;
         self.material.validated()?;
         check_light_position(self.light_position)?;
         self.camera.validated()?;
@@ -219,6 +224,29 @@ pub fn check_iso(iso: f32) -> Result<f32, ParamError> {
 /// Checks a resolution against the crate's bounds (not yet the device's).
 pub fn check_resolution(cells_per_axis: u32) -> Result<u32, ParamError> {
     check_u32("resolution (cells per axis)", cells_per_axis, MIN_RESOLUTION, MAX_RESOLUTION)
+}
+
+/// Checks that a resolution suits the grid it is for: up to [`MAX_UNIFORM_RESOLUTION`] uniform, and
+/// a multiple of the LOD block's cells with `lod`.
+pub fn check_resolution_for_lod(cells_per_axis: u32, lod: bool) -> Result<u32, ParamError> {
+    let block = LOD_BLOCK_CELLS;
+    if !lod && cells_per_axis > MAX_UNIFORM_RESOLUTION {
+        return Err(ParamError::Invalid {
+            name: "resolution",
+            value: cells_per_axis.to_string(),
+            expected: format!(
+                "at most {MAX_UNIFORM_RESOLUTION} for a uniform grid (lod=on goes up to {MAX_RESOLUTION})"
+            ),
+        });
+    }
+    if lod && !cells_per_axis.is_multiple_of(block) {
+        return Err(ParamError::Invalid {
+            name: "resolution",
+            value: cells_per_axis.to_string(),
+            expected: format!("a multiple of {block} with lod=on"),
+        });
+    }
+    Ok(cells_per_axis)
 }
 
 /// Checks a light position.

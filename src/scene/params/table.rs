@@ -3,8 +3,8 @@
 //! live here once.
 
 use super::view::{
-    Blend, ColorBy, Display, GridView, Interpolation, LIGHT_KINDS, Mesher, Projection, SPOT_ANGLE_RANGE,
-    Slice, Theme,
+    Blend, ColorBy, Display, GridView, Interpolation, LIGHT_KINDS, LOD_PIXELS_RANGE, Mesher, Projection,
+    SPOT_ANGLE_RANGE, Slice, Theme,
 };
 use super::{
     DISTANCE_RANGE, ISO_RANGE, MAX_RESOLUTION, MAX_SPHERES, MIN_RESOLUTION, PITCH_RANGE, ParamError,
@@ -66,6 +66,9 @@ pub const CONTROLS: &[&str] = &[
     "color",
     "antialiasing",
     "mesher",
+    "lod",
+    "lod_pixels",
+    "lod_freeze",
     "paused",
     "seed",
     "view",
@@ -188,6 +191,18 @@ pub const PARAMETERS: &[Parameter] = &[
     other("interpolation", "interp", "Vertices", Kind::Choice(Interpolation::WORDS), "linear"),
     other("blend", "blend", "Blend", Kind::Choice(Blend::WORDS), "sum"),
     other("mesher", "mesher", "Meshing", Kind::Choice(Mesher::WORDS), "auto"),
+    other("lod", "lod", "Level of detail", Kind::Boolean, "false"),
+    number(
+        "lod_pixels",
+        "lod_px",
+        "LOD cell size",
+        "LOD cell size (pixels)",
+        false,
+        wide(LOD_PIXELS_RANGE),
+        (0.5, 8.0, 0.25),
+        "2",
+    ),
+    other("lod_freeze", "lod_freeze", "Freeze LOD", Kind::Boolean, "false"),
     other("light", "light", "Lights", Kind::List(LIGHT_KINDS), "point"),
     number(
         "spot_angle",
@@ -394,8 +409,17 @@ mod tests {
         );
         assert_eq!(
             message("resolution", ""),
-            "resolution (cells per axis) must be a whole number from 8 to 512, got \"\""
+            "resolution (cells per axis) must be a whole number from 8 to 2048, got \"\""
         );
+        let settings = crate::scene::params::Settings::default();
+        let refused = settings.with_parameter("resolution", "1024").unwrap_err().to_string();
+        assert!(refused.contains("at most 512 for a uniform grid (lod=on goes up to 2048)"), "{refused}");
+        let lod = settings.with_parameter("lod", "on").unwrap();
+        assert_eq!(lod.with_parameter("resolution", "2048").unwrap().resolution, 2048);
+        let refused = lod.with_parameter("resolution", "100").unwrap_err().to_string();
+        assert!(refused.contains("a multiple of 8 with lod=on"), "{refused}");
+        assert!(lod.with_parameter("lod_px", "0.1").is_err());
+        assert_eq!(lod.with_parameter("lod_px", "3.5").unwrap().view.lod_pixels, 3.5);
         assert_eq!(message("color", "red"), "color must be a colour written #rrggbb, got \"red\"");
         assert!(message("controls", "iso,zoom").contains("comma list of spheres, iso"));
         assert!(message("autoplay", "always").contains("one of visible, off"));

@@ -75,6 +75,8 @@ choice!(
         Quality = "quality",
         /// The emitting cell's case class among the 15.
         Case = "case",
+        /// The level of detail of the emitting block (with `lod=on`), finest first.
+        Level = "level",
     }
 );
 
@@ -233,6 +235,12 @@ pub struct ViewOptions {
     pub spot_softness: f32,
     pub projection: Projection,
     pub mesher: Mesher,
+    /// Level of detail: fine cells near the camera, coarse far away (`resolution` is the finest).
+    pub lod: bool,
+    /// With `lod`, the largest a cell may look on screen, in pixels.
+    pub lod_pixels: f32,
+    /// With `lod`, keep the current selection of levels whatever the camera does.
+    pub lod_freeze: bool,
     pub theme: Theme,
     /// A background gradient given by the page (top, bottom; linear RGB) in place of the theme's.
     pub background: Option<[[f32; 3]; 2]>,
@@ -253,11 +261,17 @@ impl Default for ViewOptions {
             spot_softness: 0.3,
             projection: Projection::Perspective,
             mesher: Mesher::Auto,
+            lod: false,
+            lod_pixels: 2.0,
+            lod_freeze: false,
             theme: Theme::Dark,
             background: None,
         }
     }
 }
+
+/// LOD cell sizes on screen accepted, pixels.
+pub const LOD_PIXELS_RANGE: (f32, f32) = (0.25, 32.0);
 
 /// Spot cone half-angles accepted, degrees.
 pub const SPOT_ANGLE_RANGE: (f32, f32) = (2.0, 80.0);
@@ -267,6 +281,7 @@ impl ViewOptions {
     pub fn validated(self) -> Result<Self, ParamError> {
         check_f32("spot cone angle (degrees)", self.spot_angle, SPOT_ANGLE_RANGE.0, SPOT_ANGLE_RANGE.1)?;
         check_f32("spot softness", self.spot_softness, 0.0, 1.0)?;
+        check_f32("LOD cell size (pixels)", self.lod_pixels, LOD_PIXELS_RANGE.0, LOD_PIXELS_RANGE.1)?;
         if let Some(slice) = self.slice {
             check_f32("slice position", slice.position, -1.0, 1.0)?;
         }
@@ -311,6 +326,12 @@ impl ViewOptions {
             "slice" => self.slice = Slice::parse(text())?,
             "light" => self.lights = Lights::from_list(text()),
             "ambiguous" => self.ambiguous = matches!(value, Value::Boolean(true)),
+            "lod" => self.lod = matches!(value, Value::Boolean(true)),
+            "lod_freeze" => self.lod_freeze = matches!(value, Value::Boolean(true)),
+            "lod_pixels" => {
+                self.lod_pixels =
+                    check_f32("LOD cell size (pixels)", number(), LOD_PIXELS_RANGE.0, LOD_PIXELS_RANGE.1)?
+            }
             "spot_angle" => {
                 self.spot_angle =
                     check_f32("spot cone angle (degrees)", number(), SPOT_ANGLE_RANGE.0, SPOT_ANGLE_RANGE.1)?

@@ -1,0 +1,82 @@
+//! Level of detail on the CPU: the frame's selection meshed by the [`LodMesher`] and uploaded into the
+//! shared buffers, as the uniform CPU mesher's mesh is. Software adapters and WebGL2 get LOD this way.
+
+use super::mesher::LodMesher;
+use super::select::{Selection, select};
+use super::{LodSummary, next_selection};
+use crate::extract::cpu::upload;
+use crate::extract::extractor::{Capabilities, Extractor, Job, MeshCount, Output};
+use crate::extract::mesh::IndexedMesh;
+use crate::extract::uniforms::Counters;
+
+/// The LOD mesher and the selection it last meshed.
+#[derive(Default)]
+pub struct LodCpuExtractor {
+    mesher: LodMesher,
+    selection: Selection,
+    written: u32,
+}
+
+impl LodCpuExtractor {
+    /// Runs anywhere: there is nothing to compile.
+    pub fn compile(_device: &wgpu::Device) -> Option<Box<dyn Extractor>> {
+        Some(Box::<Self>::default())
+    }
+}
+
+impl Extractor for LodCpuExtractor {
+    fn name(&self) -> &'static str {
+        "lod-cpu"
+    }
+
+    fn capabilities(&self) -> Capabilities {
+        Capabilities { needs_compute: false, cell_lists: false, cpu_copy: true, lod: true }
+    }
+
+    fn fresh(&self) -> Box<dyn Extractor> {
+        Box::<Self>::default()
+    }
+
+    fn prepare(&mut self, job: &Job) -> Option<Counters> {
+        if let Some(next) = next_selection(&self.selection, job, select) {
+            self.selection = next;
+        }
+        self.mesher.mesh(job.spheres, job.iso, job.construction, &self.selection);
+        let stats = self.mesher.stats();
+        Some(Counters {
+            active_blocks: stats.active_blocks,
+            vertices: self.mesher.vertex_count(),
+            indices: self.mesher.indices.len() as u32,
+            active_cells: stats.active_cells + stats.transition_cells,
+        })
+    }
+
+    fn write(&mut self, output: Output) -> MeshCount {
+        let mesher = &self.mesher;
+        self.written = upload(&output, &mesher.vertices, &mesher.indices);
+        let stats = mesher.stats();
+        let needed = Counters {
+            active_blocks: stats.active_blocks,
+            vertices: mesher.vertex_count(),
+            indices: mesher.indices.len() as u32,
+            active_cells: stats.active_cells + stats.transition_cells,
+        };
+        MeshCount::Known { needed, indices: self.written }
+    }
+
+    fn cpu_mesh(&self) -> Option<IndexedMesh> {
+        let mut mesh = self.mesher.to_indexed();
+        mesh.triangles.truncate(self.written as usize / 3);
+        Some(mesh)
+    }
+
+    fn lod_summary(&self) -> Option<LodSummary> {
+        let stats = self.mesher.stats();
+        Some(LodSummary {
+            resolution: self.selection.resolution,
+            blocks: stats.blocks.clone(),
+            triangles: Some(stats.triangles.clone()),
+            cells_processed: stats.cells_processed,
+        })
+    }
+}
