@@ -137,3 +137,43 @@ fn outward_gradient(p: vec3<f32>) -> vec3<f32> {
     }
     return g;
 }
+
+// Bounds are skipped on only with this relative margin, far above f32 rounding of the sums.
+const BOUND_MARGIN: f32 = 1e-4;
+
+// False only when the field's bounds over the box from `low` to `high` keep it on one side of iso: no
+// cell there can emit a triangle. Over a box with centre c and half-diagonal h, a sphere's term
+// r²/|p − cᵢ|² lies between r²/(d + h)² and r²/(d − h)² (d = |c − cᵢ|), so the sums of those bound f.
+// A box touching the walls is never all inside, as the walls read outside.
+fn straddles(low: vec3<f32>, high: vec3<f32>, touches_walls: bool) -> bool {
+    let centre = 0.5 * (low + high);
+    let h = 0.5 * length(high - low);
+    var lower = 0.0;
+    var upper = 0.0;
+    var unbounded = false;
+    let by_max = blend_max();
+    for (var i = 0u; i < grid.sphere_count; i++) {
+        let s = spheres[i];
+        let d = length(centre - s.xyz);
+        let r2 = s.w * s.w;
+        let low_term = r2 / ((d + h) * (d + h));
+        let gap = d - h;
+        var high_term = 0.0;
+        if (gap <= 0.0) {
+            unbounded = true;
+        } else {
+            high_term = r2 / (gap * gap);
+        }
+        // With blend by max the bounds of the largest term are the largest bounds.
+        if (by_max) {
+            lower = max(lower, low_term);
+            upper = max(upper, high_term);
+        } else {
+            lower += low_term;
+            upper += high_term;
+        }
+    }
+    let all_outside = !unbounded && upper * (1.0 + BOUND_MARGIN) <= grid.iso;
+    let all_inside = !touches_walls && lower * (1.0 - BOUND_MARGIN) > grid.iso;
+    return !all_outside && !all_inside;
+}

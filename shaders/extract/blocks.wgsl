@@ -11,9 +11,6 @@
 // Block index → slot, or INVALID for a skipped block.
 @group(0) @binding(4) var<storage, read_write> block_slots: array<u32>;
 
-// Bounds are skipped on only with this relative margin, far above f32 rounding of the sums.
-const BOUND_MARGIN: f32 = 1e-4;
-
 @compute @workgroup_size(64)
 fn classify_blocks(@builtin(global_invocation_id) id: vec3<u32>) {
     let n = blocks_per_axis();
@@ -23,40 +20,9 @@ fn classify_blocks(@builtin(global_invocation_id) id: vec3<u32>) {
     }
     let first = block_coords(block) * BLOCK_CELLS;
     let last = min(first + vec3<u32>(BLOCK_CELLS), vec3<u32>(grid.cells_per_axis));
-    let low = grid_point(first);
-    let high = grid_point(last);
-    let centre = 0.5 * (low + high);
-    let h = 0.5 * length(high - low);
-    var lower = 0.0;
-    var upper = 0.0;
-    var unbounded = false;
-    let by_max = blend_max();
-    for (var i = 0u; i < grid.sphere_count; i++) {
-        let s = spheres[i];
-        let d = length(centre - s.xyz);
-        let r2 = s.w * s.w;
-        let low_term = r2 / ((d + h) * (d + h));
-        let gap = d - h;
-        var high_term = 0.0;
-        if (gap <= 0.0) {
-            unbounded = true;
-        } else {
-            high_term = r2 / (gap * gap);
-        }
-        // With blend by max the bounds of the largest term are the largest bounds.
-        if (by_max) {
-            lower = max(lower, low_term);
-            upper = max(upper, high_term);
-        } else {
-            lower += low_term;
-            upper += high_term;
-        }
-    }
     let touches_walls = any(first == vec3<u32>(0u)) || any(last >= vec3<u32>(grid.cells_per_axis));
-    let all_outside = !unbounded && upper * (1.0 + BOUND_MARGIN) <= grid.iso;
-    let all_inside = !touches_walls && lower * (1.0 - BOUND_MARGIN) > grid.iso;
     var slot = INVALID;
-    if (!all_outside && !all_inside) {
+    if (straddles(grid_point(first), grid_point(last), touches_walls)) {
         let s = atomicAdd(&counters.active_blocks, 1u);
         if (s < grid.max_blocks) {
             active_blocks[s] = block;

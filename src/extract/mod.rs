@@ -29,8 +29,12 @@ pub use extractor::{Capabilities, Extractor, Job, LodJob, MeshCount, Output};
 pub type Compile = fn(&wgpu::Device) -> Option<Box<dyn Extractor>>;
 
 /// Every extractor, in order of preference. Adding one is a module and a line here.
-pub const EXTRACTORS: &[Compile] =
-    &[gpu::GpuExtractor::compile, cpu::CpuExtractor::compile, lod::cpu::LodCpuExtractor::compile];
+pub const EXTRACTORS: &[Compile] = &[
+    gpu::GpuExtractor::compile,
+    cpu::CpuExtractor::compile,
+    lod::gpu::LodGpuExtractor::compile,
+    lod::cpu::LodCpuExtractor::compile,
+];
 
 /// The extractors `device` can run, in the order of [`EXTRACTORS`].
 pub fn compile_all(device: &wgpu::Device) -> Vec<Box<dyn Extractor>> {

@@ -3,8 +3,10 @@
 //! - [`select`]: the camera-driven, 2:1-balanced octree of blocks, one function for every path.
 //! - [`transition`]: Transvoxel transition cells over the published tables.
 //! - [`mesher`]: the LOD mesh on the CPU; [`cpu`] puts it behind the extraction interface.
+//! - [`gpu`]: the same mesh in compute shaders.
 
 pub mod cpu;
+pub mod gpu;
 pub mod mesher;
 pub mod select;
 pub mod transition;

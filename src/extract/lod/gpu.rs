@@ -1,0 +1,318 @@
+//! Level of detail in compute shaders (`shaders/extract/lod.wgsl`): the selection is made on the CPU
+//! (one function for every path) and uploaded when it changes; the passes bound, sample and mesh it
+//! on the device, with indirect dispatches and draw and no readback.
+
+use super::select::{Block, Selection, select};
+use super::transition;
+use super::{LodSummary, next_selection};
+use crate::device::{bind_buffers, compute_module, compute_pipeline, has_compute};
+use crate::extract::buffers::MeshBuffers;
+use crate::extract::extractor::{Capabilities, Extractor, Job, MeshCount, Output};
+use crate::extract::gpu::marching_cubes::{flat_triangle_table, packed_case_table};
+use crate::extract::gpu::scene_buffers::SceneBuffers;
+use crate::extract::uniforms::Counters;
+use std::sync::{Arc, OnceLock};
+use wgpu::util::DeviceExt;
+
+/// Partitions of the vertex hash table (`PARTITIONS` in the shader).
+const PARTITIONS: u64 = 1024;
+
+/// The transition table as the shader reads it: per case the triangle count, then each triangle's
+/// edges, a byte each (the two samples as nibbles).
+pub fn packed_transition_table() -> Vec<u32> {
+    let mut table = Vec::with_capacity(512 * 13);
+    for case in 0..512 {
+        let triangles: Vec<u32> = transition::triangles(case)
+            .map(|t| {
+                t.iter().enumerate().fold(0, |m, (j, &(a, b))| m | ((a as u32) | (b as u32) << 4) << (8 * j))
+            })
+            .collect();
+        table.push(triangles.len() as u32);
+        table.extend(&triangles);
+        table.resize(table.len() + 12 - triangles.len(), 0);
+    }
+    table
+}
+
+/// A selected block as the shader reads it.
+fn packed(block: &Block) -> [u32; 4] {
+    let o = block.origin;
+    [o.x, o.y, o.z, block.level | (block.transitions as u32) << 8]
+}
+
+/// The pipelines and tables, compiled once per device.
+struct Pipelines {
+    classify: wgpu::ComputePipeline,
+    plan_blocks: wgpu::ComputePipeline,
+    find_cells: wgpu::ComputePipeline,
+    plan_cells: wgpu::ComputePipeline,
+    triangles: wgpu::ComputePipeline,
+    finalize: wgpu::ComputePipeline,
+    case_table: wgpu::Buffer,
+    triangle_table: wgpu::Buffer,
+    transition_table: wgpu::Buffer,
+}
+
+impl Pipelines {
+    fn new(device: &wgpu::Device) -> Self {
+        let module = compute_module(device, "lod: shader", include_str!("../../../shaders/extract/lod.wgsl"));
+        let pipeline = |name: &str| compute_pipeline(device, &format!("lod: {name} pipeline"), &module, name);
+        let table = |label: &str, contents: &[u8]| {
+            device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some(label),
+                contents,
+                usage: wgpu::BufferUsages::STORAGE,
+            })
+        };
+        Self {
+            classify: pipeline("classify"),
+            plan_blocks: pipeline("plan_blocks"),
+            find_cells: pipeline("find_cells"),
+            plan_cells: pipeline("plan_cells"),
+            triangles: pipeline("make_triangles"),
+            finalize: pipeline("finalize_draw"),
+            case_table: table("lod: case table", bytemuck::cast_slice(&packed_case_table())),
+            triangle_table: table("lod: triangle table", bytemuck::cast_slice(&flat_triangle_table())),
+            transition_table: table(
+                "lod: transition table",
+                bytemuck::cast_slice(&packed_transition_table()),
+            ),
+        }
+    }
+}
+
+/// This renderer's buffers and bind groups, for one capacity and selection size.
+struct Bound {
+    uniform: wgpu::Buffer,
+    selection: wgpu::Buffer,
+    selection_capacity: usize,
+    keys: wgpu::Buffer,
+    slot_vertices: wgpu::Buffer,
+    dispatch: wgpu::Buffer,
+    groups: [wgpu::BindGroup; 6],
+}
+
+impl Bound {
+    fn new(
+        device: &wgpu::Device,
+        p: &Pipelines,
+        scene: &SceneBuffers,
+        mesh: &MeshBuffers,
+        blocks: usize,
+    ) -> Self {
+        use wgpu::BufferUsages as U;
+        let buffer = |label: &str, size: u64, usage: U| {
+            device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some(label),
+                size: size.max(16),
+                usage: usage | U::STORAGE,
+                mapped_at_creation: false,
+            })
+        };
+        let capacity = mesh.capacity;
+        // Room for four slots per vertex, in partitions of a power of two.
+        let partition_slots = (4 * capacity.vertices as u64).div_ceil(PARTITIONS).next_power_of_two().max(4);
+        let table_slots = partition_slots * PARTITIONS;
+        let selection_capacity = blocks.next_power_of_two().max(64);
+        let uniform = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("lod: uniforms"),
+            contents: bytemuck::cast_slice(&[0u32, partition_slots as u32, 0, 0]),
+            usage: U::UNIFORM | U::COPY_DST,
+        });
+        let selection = buffer("lod: selection", selection_capacity as u64 * 16, U::COPY_DST);
+        let active = buffer("lod: kept blocks", capacity.blocks as u64 * 4, U::empty());
+        let cells = buffer("lod: listed cells", capacity.cells as u64 * 8, U::empty());
+        let keys = buffer("lod: edge keys", table_slots * 4, U::COPY_DST);
+        let slot_vertices = buffer("lod: edge vertices", table_slots * 4, U::empty());
+        let dispatch = buffer("lod: dispatch", 24, U::INDIRECT);
+        let levels = buffer("lod: triangle levels", capacity.indices as u64 / 3 * 4, U::COPY_SRC);
+        let group = |label: &str, pipeline: &wgpu::ComputePipeline, entries: &[(u32, &wgpu::Buffer)]| {
+            bind_buffers(device, label, pipeline, entries)
+        };
+        let groups = [
+            group(
+                "lod: classify",
+                &p.classify,
+                &[
+                    (0, &scene.grid),
+                    (1, &scene.spheres),
+                    (2, &mesh.counters),
+                    (3, &active),
+                    (14, &uniform),
+                    (15, &selection),
+                ],
+            ),
+            group(
+                "lod: plan blocks",
+                &p.plan_blocks,
+                &[(0, &scene.grid), (2, &mesh.counters), (5, &dispatch)],
+            ),
+            group(
+                "lod: find cells",
+                &p.find_cells,
+                &[
+                    (0, &scene.grid),
+                    (1, &scene.spheres),
+                    (2, &mesh.counters),
+                    (3, &active),
+                    (6, &p.case_table),
+                    (10, &mesh.vertices),
+                    (14, &uniform),
+                    (15, &selection),
+                    (16, &cells),
+                    (17, &keys),
+                    (18, &slot_vertices),
+                    (19, &p.transition_table),
+                ],
+            ),
+            group("lod: plan cells", &p.plan_cells, &[(0, &scene.grid), (2, &mesh.counters), (5, &dispatch)]),
+            group(
+                "lod: triangles",
+                &p.triangles,
+                &[
+                    (0, &scene.grid),
+                    (2, &mesh.counters),
+                    (3, &active),
+                    (6, &p.case_table),
+                    (7, &p.triangle_table),
+                    (11, &mesh.indices),
+                    (14, &uniform),
+                    (15, &selection),
+                    (16, &cells),
+                    (17, &keys),
+                    (18, &slot_vertices),
+                    (19, &p.transition_table),
+                    (20, &levels),
+                ],
+            ),
+            group(
+                "lod: finalize",
+                &p.finalize,
+                &[(0, &scene.grid), (2, &mesh.counters), (12, &mesh.draw_args)],
+            ),
+        ];
+        Self { uniform, selection, selection_capacity, keys, slot_vertices, dispatch, groups }
+    }
+}
+
+/// Level of detail in compute shaders: compiled on the first frame that needs it.
+pub struct LodGpuExtractor {
+    compiled: Arc<OnceLock<Pipelines>>,
+    bound: Option<Bound>,
+    selection: Selection,
+    /// The selection changed since it was last uploaded.
+    stale: bool,
+}
+
+impl LodGpuExtractor {
+    /// The passes, on a device with compute shaders.
+    pub fn compile(device: &wgpu::Device) -> Option<Box<dyn Extractor>> {
+        if !has_compute(device) {
+            return None;
+        }
+        // On wasm32 wgpu's objects are not Send: a page runs them on one thread.
+        #[allow(clippy::arc_with_non_send_sync)]
+        let compiled = Arc::new(OnceLock::new());
+        Some(Box::new(Self { compiled, bound: None, selection: Selection::default(), stale: true }))
+    }
+}
+
+impl Extractor for LodGpuExtractor {
+    fn name(&self) -> &'static str {
+        "lod-gpu"
+    }
+
+    fn capabilities(&self) -> Capabilities {
+        Capabilities { needs_compute: true, cell_lists: false, cpu_copy: false, lod: true }
+    }
+
+    fn fresh(&self) -> Box<dyn Extractor> {
+        Box::new(Self {
+            compiled: self.compiled.clone(),
+            bound: None,
+            selection: Selection::default(),
+            stale: true,
+        })
+    }
+
+    fn buffers_changed(&mut self) {
+        self.bound = None;
+    }
+
+    fn pipeline_sets(&self) -> usize {
+        usize::from(self.compiled.get().is_some())
+    }
+
+    /// Selects the blocks; the device alone knows what they hold.
+    fn prepare(&mut self, job: &Job) -> Option<Counters> {
+        if let Some(next) = next_selection(&self.selection, job, select)
+            && next != self.selection
+        {
+            self.selection = next;
+            self.stale = true;
+        }
+        None
+    }
+
+    fn write(&mut self, output: Output) -> MeshCount {
+        let Output { device, queue, scene, encoder, buffers, timing } = output;
+        let p = self.compiled.get_or_init(|| Pipelines::new(device));
+        let blocks = self.selection.blocks.len();
+        if self.bound.as_ref().is_none_or(|b| b.selection_capacity < blocks) {
+            self.bound = Some(Bound::new(device, p, scene, buffers, blocks));
+            self.stale = true;
+        }
+        let bound = self.bound.as_ref().expect("bound above");
+        if self.stale {
+            let data: Vec<[u32; 4]> = self.selection.blocks.iter().map(packed).collect();
+            queue.write_buffer(&bound.selection, 0, bytemuck::cast_slice(&data));
+            queue.write_buffer(&bound.uniform, 0, bytemuck::bytes_of(&(blocks as u32)));
+            self.stale = false;
+        }
+        encoder.clear_buffer(&buffers.counters, 0, None);
+        encoder.clear_buffer(&bound.keys, 0, None);
+        let [classify, plan_blocks, find_cells, plan_cells, triangles, finalize] = &bound.groups;
+        let describe = |label: &'static str, stage: u32| wgpu::ComputePassDescriptor {
+            label: Some(label),
+            timestamp_writes: timing.map(|t| t.compute_writes(stage)),
+        };
+        {
+            let mut pass = encoder.begin_compute_pass(&describe("lod: blocks", 0));
+            pass.set_pipeline(&p.classify);
+            pass.set_bind_group(0, classify, &[]);
+            pass.dispatch_workgroups((blocks as u32).div_ceil(64), 1, 1);
+            pass.set_pipeline(&p.plan_blocks);
+            pass.set_bind_group(0, plan_blocks, &[]);
+            pass.dispatch_workgroups(1, 1, 1);
+        }
+        {
+            let mut pass = encoder.begin_compute_pass(&describe("lod: cells", 1));
+            pass.set_pipeline(&p.find_cells);
+            pass.set_bind_group(0, find_cells, &[]);
+            pass.dispatch_workgroups_indirect(&bound.dispatch, 0);
+            pass.set_pipeline(&p.plan_cells);
+            pass.set_bind_group(0, plan_cells, &[]);
+            pass.dispatch_workgroups(1, 1, 1);
+        }
+        {
+            let mut pass = encoder.begin_compute_pass(&describe("lod: triangles", 2));
+            pass.set_pipeline(&p.triangles);
+            pass.set_bind_group(0, triangles, &[]);
+            pass.dispatch_workgroups_indirect(&bound.dispatch, 12);
+            pass.set_pipeline(&p.finalize);
+            pass.set_bind_group(0, finalize, &[]);
+            pass.dispatch_workgroups(1, 1, 1);
+        }
+        let _ = &bound.slot_vertices;
+        MeshCount::OnDevice
+    }
+
+    fn lod_summary(&self) -> Option<LodSummary> {
+        Some(LodSummary {
+            resolution: self.selection.resolution,
+            blocks: self.selection.blocks_per_level(),
+            triangles: None,
+            cells_processed: 0,
+        })
+    }
+}

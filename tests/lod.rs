@@ -1,0 +1,58 @@
+//! Level of detail through the renderer: the GPU and CPU LOD meshes are equal, closed and follow the
+//! camera; exports write them; a frozen selection stays put.
+#![cfg(not(target_arch = "wasm32"))]
+
+mod common;
+
+use common::*;
+use metaballs::extract::mesh::IndexedMesh;
+use metaballs::{Scene, Settings};
+
+/// The settings of a LOD frame: `resolution` finest cells, a camera `distance` away, cells up to
+/// `lod_pixels` on screen.
+fn lod_settings(seed: u64, spheres: u32, resolution: u32, lod_pixels: f32, distance: f32) -> Settings {
+    let mut s = settings(seed, spheres, 64, 1.0).with_parameter("lod", "on").unwrap();
+    s.resolution = resolution;
+    s.view.lod_pixels = lod_pixels;
+    s.camera.distance = distance;
+    s.validated().unwrap()
+}
+
+/// The mesh the extractor called `name` makes for `settings` at 320×240.
+fn mesh_by(name: &str, settings: Settings, scene: Option<&Scene>) -> (IndexedMesh, Vec<u32>) {
+    with_renderer(settings, 320, 240, |o| {
+        if let Some(scene) = scene {
+            o.renderer.set_scene(scene.clone());
+        }
+        o.renderer.pin_extractor(Some(name)).unwrap();
+        let mesh = pollster::block_on(o.renderer.extract_mesh());
+        assert_eq!(o.renderer.mesh_source(), name);
+        let summary = o.renderer.lod_summary().expect("a LOD summary");
+        (mesh, summary.blocks)
+    })
+}
+
+#[test]
+fn gpu_and_cpu_lod_meshes_are_equal_and_closed() {
+    for (seed, spheres, resolution, lod_pixels, distance) in
+        [(1, 5, 64, 6.0, 2.0), (2, 16, 128, 8.0, 1.8), (3, 16, 256, 4.0, 3.0), (4, 64, 128, 3.0, 2.5)]
+    {
+        let settings = lod_settings(seed, spheres, resolution, lod_pixels, distance);
+        let (gpu, gpu_levels) = mesh_by("lod-gpu", settings, None);
+        let (cpu, cpu_levels) = mesh_by("lod-cpu", settings, None);
+        let what =
+            format!("seed {seed}, {spheres} spheres, {resolution} cells, blocks per level {cpu_levels:?}");
+        assert_eq!(gpu_levels, cpu_levels, "{what}: the two paths selected differently");
+        assert!(cpu_levels.iter().filter(|&&n| n > 0).count() >= 2, "{what}: one level only");
+        assert!(cpu.triangles.len() > 500, "{what}: {} triangles", cpu.triangles.len());
+        let cell = 2.0 / resolution as f32;
+        gpu.to_soup()
+            .matches(&cpu.to_soup(), 1e-5 * cell, 1e-3)
+            .unwrap_or_else(|e| panic!("{what}: GPU and CPU LOD meshes differ: {e}"));
+        for (name, mesh) in [("GPU", &gpu), ("CPU", &cpu)] {
+            let topology = mesh.topology();
+            assert_eq!(topology.open_or_nonmanifold_edges, 0, "{what}, {name}: open or non-manifold edges");
+            assert_eq!(topology.misoriented_edges, 0, "{what}, {name}: inconsistent orientation");
+        }
+    }
+}
