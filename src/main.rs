@@ -251,7 +251,8 @@ mod cli {
         if let Some(n) = args.simplify {
             check_u32("triangle target", n, 4, u32::MAX)?;
         }
-        let mut offscreen = scene_renderer(&args.scene, (64, 64))?;
+        // A figure's size: with lod=on the levels follow the camera at this size.
+        let mut offscreen = scene_renderer(&args.scene, (960, 640))?;
         let started = Instant::now();
         let mesh = pollster::block_on(offscreen.renderer.extract_mesh());
         let mesh_ms = started.elapsed().as_secs_f64() * 1e3;

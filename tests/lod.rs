@@ -19,16 +19,25 @@ fn lod_settings(seed: u64, spheres: u32, resolution: u32, lod_pixels: f32, dista
 }
 
 /// The mesh the extractor called `name` makes for `settings` at 320×240.
-fn mesh_by(name: &str, settings: Settings, scene: Option<&Scene>) -> (IndexedMesh, Vec<u32>) {
+fn mesh_by(name: &str, settings: Settings, scene: Option<&Scene>) -> (IndexedMesh, Vec<u32>, Vec<u32>) {
     with_renderer(settings, 320, 240, |o| {
         if let Some(scene) = scene {
             o.renderer.set_scene(scene.clone());
         }
         o.renderer.pin_extractor(Some(name)).unwrap();
         let mesh = pollster::block_on(o.renderer.extract_mesh());
+        o.render();
+        pollster::block_on(o.renderer.flush_stats());
         assert_eq!(o.renderer.mesh_source(), name);
         let summary = o.renderer.lod_summary().expect("a LOD summary");
-        (mesh, summary.blocks)
+        let stats = o.renderer.stats().expect("statistics");
+        let per_level = stats.level_triangles.to_vec();
+        assert_eq!(
+            per_level.iter().sum::<u32>(),
+            stats.triangles,
+            "{name}: triangles per level {per_level:?}"
+        );
+        (mesh, summary.blocks, per_level)
     })
 }
 
@@ -38,11 +47,12 @@ fn gpu_and_cpu_lod_meshes_are_equal_and_closed() {
         [(1, 5, 64, 6.0, 2.0), (2, 16, 128, 8.0, 1.8), (3, 16, 256, 4.0, 3.0), (4, 64, 128, 3.0, 2.5)]
     {
         let settings = lod_settings(seed, spheres, resolution, lod_pixels, distance);
-        let (gpu, gpu_levels) = mesh_by("lod-gpu", settings, None);
-        let (cpu, cpu_levels) = mesh_by("lod-cpu", settings, None);
+        let (gpu, gpu_levels, gpu_triangles) = mesh_by("lod-gpu", settings, None);
+        let (cpu, cpu_levels, cpu_triangles) = mesh_by("lod-cpu", settings, None);
         let what =
             format!("seed {seed}, {spheres} spheres, {resolution} cells, blocks per level {cpu_levels:?}");
         assert_eq!(gpu_levels, cpu_levels, "{what}: the two paths selected differently");
+        assert_eq!(gpu_triangles, cpu_triangles, "{what}: triangles per level");
         assert!(cpu_levels.iter().filter(|&&n| n > 0).count() >= 2, "{what}: one level only");
         assert!(cpu.triangles.len() > 500, "{what}: {} triangles", cpu.triangles.len());
         let cell = 2.0 / resolution as f32;
@@ -55,4 +65,53 @@ fn gpu_and_cpu_lod_meshes_are_equal_and_closed() {
             assert_eq!(topology.misoriented_edges, 0, "{what}, {name}: inconsistent orientation");
         }
     }
+}
+
+#[test]
+fn the_cli_exports_a_closed_lod_mesh_at_2048() {
+    let dir = scratch_dir("lod-export");
+    let out = dir.join("lod.stl");
+    let (code, stdout, stderr) = cli(&[
+        "export",
+        "--out",
+        out.to_str().unwrap(),
+        "--resolution",
+        "2048",
+        "--spheres",
+        "8",
+        "--view",
+        "lod=on&lod_px=4",
+    ]);
+    assert_eq!(code, 0, "{stdout}{stderr}");
+    assert!(stdout.contains("closed"), "{stdout}");
+    let (code, _, stderr) = cli(&["export", "--out", out.to_str().unwrap(), "--resolution", "2048"]);
+    assert_ne!(code, 0);
+    assert!(stderr.contains("at most 512 for a uniform grid (lod=on goes up to 2048)"), "{stderr}");
+}
+
+#[test]
+fn a_frozen_selection_stays_while_the_camera_moves() {
+    let mut settings = lod_settings(5, 8, 256, 3.0, 2.0);
+    settings.view.lod_freeze = true;
+    with_renderer(settings, 320, 240, |o| {
+        o.renderer.pin_extractor(Some("lod-cpu")).unwrap();
+        o.render();
+        let before = o.renderer.lod_summary().unwrap();
+        let mut moved = *o.renderer.settings();
+        moved.camera.distance = 9.0;
+        moved.camera.yaw_degrees = -120.0;
+        o.renderer.set_settings(moved).unwrap();
+        o.render();
+        assert_eq!(o.renderer.lod_summary().unwrap(), before, "a frozen selection changed");
+        moved.view.lod_freeze = false;
+        o.renderer.set_settings(moved).unwrap();
+        o.render();
+        let after = o.renderer.lod_summary().unwrap();
+        assert_ne!(after.blocks, before.blocks, "the selection does not follow the camera");
+        // Farther away, the blocks are coarser: fewer in all.
+        assert!(
+            after.blocks.iter().sum::<u32>() < before.blocks.iter().sum::<u32>(),
+            "{after:?} against {before:?}"
+        );
+    });
 }

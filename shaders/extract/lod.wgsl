@@ -40,6 +40,8 @@ struct Lod {
 @group(0) @binding(19) var<storage, read> transition_table: array<u32, 6656>;
 // Per triangle, its level (with TRANSITION added for a transition cell's).
 @group(0) @binding(20) var<storage, read_write> triangle_levels: array<u32>;
+// Triangles per level: the counters buffer from byte 256 (LEVEL_COUNTS_OFFSET).
+@group(0) @binding(21) var<storage, read_write> level_triangles: array<atomic<u32>, 12>;
 
 const LOD_CELLS: u32 = 8u;
 const LOD_POINTS: u32 = 9u;
@@ -393,6 +395,7 @@ fn make_triangles(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_in
     if (cell < REGULAR_CELLS) {
         let count = case_table[case_index] >> 16u;
         let first = atomicAdd(&counters.indices, count * 3u);
+        atomicAdd(&level_triangles[b.level], count);
         let at = vec3<u32>(cell % LOD_CELLS, (cell / LOD_CELLS) % LOD_CELLS, cell / (LOD_CELLS * LOD_CELLS));
         let row = case_index * 16u;
         for (var k = 0u; k < count; k++) {
@@ -417,6 +420,7 @@ fn make_triangles(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_in
     let row = case_index * 13u;
     let count = transition_table[row];
     let first = atomicAdd(&counters.indices, count * 3u);
+    atomicAdd(&level_triangles[b.level], count);
     for (var k = 0u; k < count; k++) {
         let packed = transition_table[row + 1u + k];
         var triangle = vec3<u32>(0u);

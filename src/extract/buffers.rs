@@ -4,7 +4,7 @@
 //! when a frame reports it needed more.
 
 use crate::extract::reference::Grid;
-use crate::extract::uniforms::Counters;
+use crate::extract::uniforms::{CounterBlock, Counters};
 
 /// Cells along each edge of a block (`BLOCK_CELLS` in `shaders/common.wgsl`).
 pub const BLOCK_CELLS: u32 = 4;
@@ -126,7 +126,7 @@ impl MeshBuffers {
             capacity,
             counters: buffer(
                 "mesh: counters",
-                std::mem::size_of::<Counters>() as u64,
+                std::mem::size_of::<CounterBlock>() as u64,
                 U::COPY_SRC | U::COPY_DST,
             ),
             dispatch: buffer("mesh: per-block dispatch", 12, U::INDIRECT),

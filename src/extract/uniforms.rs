@@ -32,3 +32,25 @@ pub struct Counters {
     pub active_cells: u32,
 }
 const _: () = assert!(std::mem::size_of::<Counters>() == 16);
+
+/// Levels whose triangles the counters block counts (`LEVEL_SLOTS` in `shaders/extract/lod.wgsl`).
+pub const LEVEL_SLOTS: usize = 12;
+/// Where the per-level triangle counts start in the counters buffer: a storage binding's offset must
+/// be a multiple of 256.
+pub const LEVEL_COUNTS_OFFSET: u64 = 256;
+
+/// The whole counters buffer: the counters, then (with level of detail) triangles per level.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable, PartialEq, Eq)]
+pub struct CounterBlock {
+    pub counters: Counters,
+    pub _pad: [u32; 60],
+    pub level_triangles: [u32; LEVEL_SLOTS],
+}
+const _: () = assert!(std::mem::offset_of!(CounterBlock, level_triangles) == LEVEL_COUNTS_OFFSET as usize);
+
+impl Default for CounterBlock {
+    fn default() -> Self {
+        Self::zeroed()
+    }
+}

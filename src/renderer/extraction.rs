@@ -7,6 +7,7 @@ use crate::draw::views;
 use crate::extract::lod::LodSummary;
 use crate::extract::lod::select::Eye;
 use crate::extract::reference::Construction;
+use crate::extract::uniforms::LEVEL_SLOTS;
 use crate::extract::{Capabilities, Extractor, Job, LodJob, MeshCount, Output};
 use crate::scene::params::ParamError;
 use crate::scene::params::view::Mesher;
@@ -50,8 +51,15 @@ impl Renderer {
             MeshCount::Known { needed, indices } => {
                 let (grid, capacity, bytes) = (self.grid(), self.mesh.capacity, self.mesh.bytes());
                 let overflowed = indices < needed.indices;
-                self.latest_stats =
-                    Some(FrameStats::from_counts(self.frame, grid, capacity, needed, overflowed, bytes));
+                let mut levels = [0; LEVEL_SLOTS];
+                if let Some(triangles) = self.lod_summary().and_then(|s| s.triangles) {
+                    for (slot, n) in levels.iter_mut().zip(triangles) {
+                        *slot = n;
+                    }
+                }
+                self.latest_stats = Some(FrameStats::from_counts(
+                    self.frame, grid, capacity, needed, overflowed, bytes, levels,
+                ));
                 DrawCount::Direct(indices)
             }
         }

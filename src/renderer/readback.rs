@@ -126,7 +126,8 @@ impl MeshReadback {
                 (device, counters, vertices, indices)
             }
         };
-        let counters: Counters = bytemuck::pod_read_unaligned(&map_and_read(&device, &counters).await);
+        let block = map_and_read(&device, &counters).await;
+        let counters: Counters = bytemuck::pod_read_unaligned(&block[..std::mem::size_of::<Counters>()]);
         let vertex_count = (counters.vertices as u64).min(vertices.size() / VERTEX_BYTES);
         let index_count = (counters.indices as u64).min(indices.size() / INDEX_BYTES / 3 * 3);
         let vertex_bytes = map_and_read(&device, &vertices).await;

@@ -5,7 +5,7 @@ use super::limits::storage_limit;
 use super::{Renderer, Sizing};
 use crate::extract::buffers::{BLOCK_CELLS, Capacity};
 use crate::extract::reference::Grid;
-use crate::extract::uniforms::Counters;
+use crate::extract::uniforms::{CounterBlock, Counters, LEVEL_SLOTS};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU8, Ordering};
 
@@ -35,6 +35,8 @@ pub struct FrameStats {
     pub overflowed: bool,
     /// GPU memory held by the mesh buffers, in bytes.
     pub mesh_bytes: u64,
+    /// With level of detail, triangles per level (finest first).
+    pub level_triangles: [u32; LEVEL_SLOTS],
 }
 
 impl FrameStats {
@@ -47,6 +49,7 @@ impl FrameStats {
         needed: Counters,
         overflowed: bool,
         mesh_bytes: u64,
+        level_triangles: [u32; LEVEL_SLOTS],
     ) -> Self {
         Self {
             frame,
@@ -60,6 +63,7 @@ impl FrameStats {
             total_cells: (grid.cells_per_axis as u64).pow(3),
             overflowed,
             mesh_bytes,
+            level_triangles,
         }
     }
 
@@ -87,6 +91,7 @@ pub(super) struct Reading {
     pub frame: u64,
     pub capacity: Capacity,
     pub counters: Counters,
+    pub level_triangles: [u32; LEVEL_SLOTS],
 }
 
 /// A few mappable buffers the counters are copied into, frame after frame.
@@ -100,7 +105,7 @@ impl StatsRing {
             .map(|_| StatsSlot {
                 buffer: device.create_buffer(&wgpu::BufferDescriptor {
                     label: Some("stats: staging"),
-                    size: std::mem::size_of::<Counters>() as u64,
+                    size: std::mem::size_of::<CounterBlock>() as u64,
                     usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
                     mapped_at_creation: false,
                 }),
@@ -144,13 +149,14 @@ impl StatsRing {
             if slot.state.load(Ordering::Acquire) != SLOT_READY {
                 continue;
             }
-            let counters: Counters = match slot.buffer.get_mapped_range(..) {
+            let block: CounterBlock = match slot.buffer.get_mapped_range(..) {
                 Ok(bytes) => bytemuck::pod_read_unaligned(&bytes),
-                Err(_) => Counters::default(),
+                Err(_) => CounterBlock::default(),
             };
             slot.buffer.unmap();
             slot.state.store(SLOT_FREE, Ordering::Release);
-            readings.push(Reading { frame: slot.frame, capacity: slot.capacity, counters });
+            let (counters, level_triangles) = (block.counters, block.level_triangles);
+            readings.push(Reading { frame: slot.frame, capacity: slot.capacity, counters, level_triangles });
         }
         readings
     }
@@ -169,10 +175,11 @@ impl Renderer {
         #[cfg(not(target_arch = "wasm32"))]
         let _ = self.device.poll(wgpu::PollType::Poll);
         let grid = self.grid();
-        for Reading { frame, capacity, counters } in self.stats.take_ready() {
+        for Reading { frame, capacity, counters, level_triangles } in self.stats.take_ready() {
             let overflowed = !capacity.holds(&counters);
+            let bytes = self.mesh.bytes();
             let stats =
-                FrameStats::from_counts(frame, grid, capacity, counters, overflowed, self.mesh.bytes());
+                FrameStats::from_counts(frame, grid, capacity, counters, overflowed, bytes, level_triangles);
             if self.latest_stats.is_none_or(|s| s.frame < stats.frame) {
                 self.latest_stats = Some(stats);
             }

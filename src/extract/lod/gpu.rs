@@ -10,7 +10,7 @@ use crate::extract::buffers::MeshBuffers;
 use crate::extract::extractor::{Capabilities, Extractor, Job, MeshCount, Output};
 use crate::extract::gpu::marching_cubes::{flat_triangle_table, packed_case_table};
 use crate::extract::gpu::scene_buffers::SceneBuffers;
-use crate::extract::uniforms::Counters;
+use crate::extract::uniforms::{Counters, LEVEL_COUNTS_OFFSET, LEVEL_SLOTS};
 use std::sync::{Arc, OnceLock};
 use wgpu::util::DeviceExt;
 
@@ -166,10 +166,8 @@ impl Bound {
                 ],
             ),
             group("lod: plan cells", &p.plan_cells, &[(0, &scene.grid), (2, &mesh.counters), (5, &dispatch)]),
-            group(
-                "lod: triangles",
-                &p.triangles,
-                &[
+            {
+                let mut entries: Vec<wgpu::BindGroupEntry> = [
                     (0, &scene.grid),
                     (2, &mesh.counters),
                     (3, &active),
@@ -183,8 +181,28 @@ impl Bound {
                     (18, &slot_vertices),
                     (19, &p.transition_table),
                     (20, &levels),
-                ],
-            ),
+                ]
+                .into_iter()
+                .map(|(binding, buffer): (u32, &wgpu::Buffer)| wgpu::BindGroupEntry {
+                    binding,
+                    resource: buffer.as_entire_binding(),
+                })
+                .collect();
+                // The per-level counts, apart from the counters they follow.
+                entries.push(wgpu::BindGroupEntry {
+                    binding: 21,
+                    resource: wgpu::BindingResource::Buffer(wgpu::BufferBinding {
+                        buffer: &mesh.counters,
+                        offset: LEVEL_COUNTS_OFFSET,
+                        size: wgpu::BufferSize::new(4 * LEVEL_SLOTS as u64),
+                    }),
+                });
+                device.create_bind_group(&wgpu::BindGroupDescriptor {
+                    label: Some("lod: triangles"),
+                    layout: &p.triangles.get_bind_group_layout(0),
+                    entries: &entries,
+                })
+            },
             group(
                 "lod: finalize",
                 &p.finalize,
