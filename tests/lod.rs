@@ -115,3 +115,65 @@ fn a_frozen_selection_stays_while_the_camera_moves() {
         );
     });
 }
+
+/// The colour of `level` (0 the finest) as the views draw it: the hue of case class 4 × level mod 15,
+/// in sRGB bytes before lighting.
+fn level_rgb(level: u32) -> [f32; 3] {
+    let h = ((4 * level) % 15) as f32 / 15.0 * 6.0;
+    let x = 1.0 - (h % 2.0 - 1.0).abs();
+    let c = match h as u32 {
+        0 => [1.0, x, 0.0],
+        1 => [x, 1.0, 0.0],
+        2 => [0.0, 1.0, x],
+        3 => [0.0, x, 1.0],
+        4 => [x, 0.0, 1.0],
+        _ => [1.0, 0.0, x],
+    };
+    c.map(|v| 255.0 * 0.95 * (1.0 - 0.65 + 0.65 * v))
+}
+
+#[test]
+fn colour_by_level_shows_fine_triangles_near_and_coarse_far_on_both_paths() {
+    let (width, height) = (320, 240);
+    let mut settings = lod_settings(3, 16, 512, 2.0, 1.6)
+        .with_parameter("color_by", "level")
+        .unwrap()
+        .with_parameter("aa", "off")
+        .unwrap();
+    settings.camera.fov_y_degrees = 60.0;
+    let mut pictures = Vec::new();
+    for name in ["lod-gpu", "lod-cpu"] {
+        let pixels = with_renderer(settings, width, height, |o| {
+            o.renderer.pin_extractor(Some(name)).unwrap();
+            // The device's buffers grow to the surface over the first frames.
+            for _ in 0..3 {
+                o.render();
+                pollster::block_on(o.renderer.flush_stats());
+            }
+            assert!(!o.renderer.stats().unwrap().overflowed(), "{name}: the buffers overflowed");
+            o.render_rgba()
+        });
+        // The hues of at least three levels each cover a visible part of the picture.
+        let levels_seen = (0..9)
+            .filter(|&level| {
+                let want = level_rgb(level);
+                let near = pixels
+                    .chunks(4)
+                    .filter(|p| {
+                        let lum = |c: [f32; 3]| c.iter().sum::<f32>();
+                        let got = [p[0] as f32, p[1] as f32, p[2] as f32];
+                        // Lit or shaded, the hue's direction stays: compare normalised colours.
+                        let (a, b) = (lum(want).max(1.0), lum(got).max(1.0));
+                        lum(got) > 60.0 && (0..3).all(|c| (want[c] / a - got[c] / b).abs() < 0.04)
+                    })
+                    .count();
+                near * 200 > pixels.len() / 4
+            })
+            .count();
+        assert_matches_reference(&format!("lod_levels_{name}"), width, height, &pixels);
+        assert!(levels_seen >= 3, "{name}: {levels_seen} level colours in view");
+        pictures.push(pixels);
+    }
+    let (mean, _) = flip(width, height, &pictures[0], &pictures[1]);
+    assert!(mean < 0.01, "the GPU and CPU LOD pictures differ: mean FLIP {mean}");
+}

@@ -101,6 +101,8 @@ pub struct MeshBuffers {
     pub edge_vertices: wgpu::Buffer,
     pub vertices: wgpu::Buffer,
     pub indices: wgpu::Buffer,
+    /// Each triangle's level of detail (with `lod=on`), for `color_by=level`.
+    pub triangle_levels: wgpu::Buffer,
     pub draw_args: wgpu::Buffer,
 }
 
@@ -147,11 +149,16 @@ impl MeshBuffers {
                 capacity.indices as u64 * INDEX_BYTES,
                 U::INDEX | U::COPY_SRC | U::COPY_DST,
             ),
+            triangle_levels: buffer(
+                "mesh: triangle levels",
+                if storage { capacity.indices as u64 / 3 * 4 } else { 0 },
+                U::COPY_DST,
+            ),
             draw_args: buffer("mesh: draw arguments", 20, U::INDIRECT),
         }
     }
 
-    fn all(&self) -> [&wgpu::Buffer; 12] {
+    fn all(&self) -> [&wgpu::Buffer; 13] {
         [
             &self.counters,
             &self.dispatch,
@@ -164,6 +171,7 @@ impl MeshBuffers {
             &self.edge_vertices,
             &self.vertices,
             &self.indices,
+            &self.triangle_levels,
             &self.draw_args,
         ]
     }

@@ -68,8 +68,15 @@ impl Renderer {
     /// True when the teaching views draw this frame. They read the lists the compute passes fill, so
     /// without an extractor that fills them (WebGL2, level of detail) the surface shows alone.
     pub(super) fn views_shown(&self) -> bool {
-        self.extractors.iter().any(|e| self.in_mode(e.capabilities()) && e.capabilities().cell_lists)
-            && views::needed(&self.settings.view, self.selected.is_some())
+        let lod = self.settings.view.lod;
+        // With level of detail the views draw the mesh alone (display modes, colours), which needs
+        // storage buffers but no cell lists.
+        let drawable = if lod {
+            self.context.has_compute()
+        } else {
+            self.extractors.iter().any(|e| self.in_mode(e.capabilities()) && e.capabilities().cell_lists)
+        };
+        drawable && views::needed(&self.settings.view, self.selected.is_some() && !lod)
     }
 
     /// True for the extractors of the current mode: level of detail or the uniform grid.
@@ -87,7 +94,7 @@ impl Renderer {
                 .iter()
                 .position(|e| self.in_mode(e.capabilities()) && wanted(e.capabilities(), e.name()))
         };
-        let chosen = if self.views_shown() {
+        let chosen = if self.views_shown() && !self.settings.view.lod {
             find(&|c, _| c.cell_lists)
         } else if self.pinned.is_some() {
             self.pinned

@@ -17,7 +17,7 @@ pub use stats::FrameStats;
 
 use crate::device::timing::{StageTimes, Timing};
 use crate::draw::shade::{MULTISAMPLES, MeshDraw, ShadePass, ViewFrame};
-use crate::draw::views::ViewState;
+use crate::draw::views::{self, ViewState};
 use crate::extract::Extractor;
 use crate::extract::buffers::{BLOCK_CELLS, Capacity, MeshBuffers};
 use crate::extract::gpu::scene_buffers::SceneBuffers;
@@ -322,16 +322,12 @@ impl Renderer {
                 self.shade.uniform(),
             ));
         }
+        let shown = views::shown(&self.settings.view);
         let frame_views = match (&self.views, show_views) {
             (Some(state), true) => {
                 let pipelines = self.shade.pipelines().views(&self.device);
-                state.encode(&mut encoder, pipelines, &self.settings.view);
-                Some(ViewFrame {
-                    state,
-                    pipelines,
-                    options: &self.settings.view,
-                    selected: self.selected.is_some(),
-                })
+                state.encode(&mut encoder, pipelines, &shown);
+                Some(ViewFrame { state, pipelines, options: &shown, selected: self.selected.is_some() })
             }
             _ => None,
         };

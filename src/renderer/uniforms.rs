@@ -56,7 +56,7 @@ impl Renderer {
             background_bottom: s.view.background()[1],
             ..Default::default()
         };
-        views::view_fields(&mut shading, &s.view, grid, (-eye).normalize());
+        views::view_fields(&mut shading, &views::shown(&s.view), grid, (-eye).normalize());
         self.queue.write_buffer(self.shade.uniform(), 0, bytemuck::bytes_of(&shading));
     }
 

@@ -9,6 +9,8 @@
 @group(0) @binding(10) var<storage, read> vertices: array<f32>;
 @group(0) @binding(11) var<storage, read> indices: array<u32>;
 @group(0) @binding(13) var<storage, read> active_cells: array<u32>;
+// Each triangle's level of detail, TRANSITION (128) added for a transition cell's (with lod=on).
+@group(0) @binding(26) var<storage, read> triangle_levels: array<u32>;
 // The slice's samples, (n + 1)² values, first in-plane axis fastest (shaders/draw/overlays.wgsl).
 @group(0) @binding(21) var<storage, read> slice_values: array<f32>;
 // The slice's contour: two points per segment.
@@ -25,6 +27,13 @@ const DISPLAY_WIREFRAME: u32 = 2u;
 const COLOR_AREA: u32 = 1u;
 const COLOR_QUALITY: u32 = 2u;
 const COLOR_CASE: u32 = 3u;
+const COLOR_LEVEL: u32 = 4u;
+
+// Colour of level of detail k (0 the finest): the case classes' hues, 96° apart from level to level
+// so that neighbouring levels differ most (www/lib/legends.js draws the same key).
+fn level_color(k: u32) -> vec3<f32> {
+    return class_color((4u * k) % 15u);
+}
 // Lines and points hidden by this vertex: outside the clip volume.
 const HIDDEN: vec4<f32> = vec4<f32>(2.0, 2.0, 2.0, 1.0);
 

@@ -1,4 +1,4 @@
-// The mesh one triangle at a time (display=flat, wireframe; color_by=area, quality, case).
+// The mesh one triangle at a time (display=flat, wireframe; color_by=area, quality, case, level).
 
 struct TriangleOut {
     @builtin(position) clip: vec4<f32>,
@@ -9,7 +9,7 @@ struct TriangleOut {
     @location(4) @interpolate(flat) albedo: vec3<f32>,
 }
 
-fn triangle_color(a: vec3<f32>, b: vec3<f32>, c: vec3<f32>) -> vec3<f32> {
+fn triangle_color(a: vec3<f32>, b: vec3<f32>, c: vec3<f32>, triangle: u32) -> vec3<f32> {
     let doubled = length(cross(b - a, c - a));
     let face = grid.cell_size * grid.cell_size;
     if (shading.color_by == COLOR_AREA) {
@@ -21,6 +21,11 @@ fn triangle_color(a: vec3<f32>, b: vec3<f32>, c: vec3<f32>) -> vec3<f32> {
         return ramp(select(0.0, 2.0 * sqrt(3.0) * doubled / sum, sum > 0.0));
     } else if (shading.color_by == COLOR_CASE) {
         return class_color(class_of(case_at((a + b + c) / 3.0)));
+    } else if (shading.color_by == COLOR_LEVEL) {
+        let level = triangle_levels[triangle];
+        let color = level_color(level & 127u);
+        // Transition cells' triangles, which stitch two levels, show paler.
+        return select(color, mix(color, vec3<f32>(1.0), 0.55), level >= 128u);
     }
     return shading.base_color;
 }
@@ -39,7 +44,7 @@ fn triangle_vertex(@builtin(vertex_index) v: u32) -> TriangleOut {
     let n = cross(b - a, c - a);
     out.face_normal = select(out.normal, normalize(n), dot(n, n) > 0.0);
     out.barycentric = vec3<f32>(f32(v % 3u == 0u), f32(v % 3u == 1u), f32(v % 3u == 2u));
-    out.albedo = triangle_color(a, b, c);
+    out.albedo = triangle_color(a, b, c, v / 3u);
     return out;
 }
 

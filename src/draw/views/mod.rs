@@ -51,6 +51,15 @@ pub fn needed(options: &ViewOptions, selected: bool) -> bool {
         || options.projection == Projection::Orthographic
 }
 
+/// The views `options` ask for that the frame's mesh can show: with level of detail there is no
+/// uniform grid, so its lattice, cells, blocks, ambiguous faces and slice are left out.
+pub fn shown(options: &ViewOptions) -> ViewOptions {
+    if !options.lod {
+        return *options;
+    }
+    ViewOptions { grid: GridView::None, ambiguous: false, slice: None, ..*options }
+}
+
 /// One renderer's view resources for one grid: the slice's samples and contour, the overlay counts
 /// and draws, and the bind groups over its mesh buffers.
 pub struct ViewState {
@@ -103,6 +112,7 @@ impl ViewState {
                     (11, &mesh.indices),
                     (13, &mesh.active_cells),
                     (20, shading),
+                    (26, &mesh.triangle_levels),
                     (21, &slice_values),
                     (22, &segments),
                     (23, &p.case_classes),

@@ -80,7 +80,7 @@ impl ViewPipelines {
             entry(23, both, uniform),
             entry(21, S::FRAGMENT, storage),
         ];
-        entries.extend([3, 4, 8, 10, 11, 13, 22].map(|b| entry(b, S::VERTEX, storage)));
+        entries.extend([3, 4, 8, 10, 11, 13, 22, 26].map(|b| entry(b, S::VERTEX, storage)));
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("views: bind group layout"),
             entries: &entries,

@@ -61,6 +61,17 @@ impl Extractor for LodCpuExtractor {
             indices: mesher.indices.len() as u32,
             active_cells: stats.active_cells + stats.transition_cells,
         };
+        let buffers = output.buffers;
+        // The views colour by level and count what to draw from the device's copies.
+        if buffers.triangle_levels.size() >= 4 * (self.written as u64 / 3) && self.written > 0 {
+            let levels: Vec<u32> =
+                mesher.triangle_levels[..self.written as usize / 3].iter().map(|&l| l as u32).collect();
+            output.queue.write_buffer(&buffers.triangle_levels, 0, bytemuck::cast_slice(&levels));
+        }
+        if buffers.counters.usage().contains(wgpu::BufferUsages::STORAGE) {
+            let drawn = Counters { indices: self.written, ..needed };
+            output.queue.write_buffer(&buffers.counters, 0, bytemuck::bytes_of(&drawn));
+        }
         MeshCount::Known { needed, indices: self.written }
     }
 

@@ -125,7 +125,6 @@ impl Bound {
         let keys = buffer("lod: edge keys", table_slots * 4, U::COPY_DST);
         let slot_vertices = buffer("lod: edge vertices", table_slots * 4, U::empty());
         let dispatch = buffer("lod: dispatch", 24, U::INDIRECT);
-        let levels = buffer("lod: triangle levels", capacity.indices as u64 / 3 * 4, U::COPY_SRC);
         let group = |label: &str, pipeline: &wgpu::ComputePipeline, entries: &[(u32, &wgpu::Buffer)]| {
             bind_buffers(device, label, pipeline, entries)
         };
@@ -180,7 +179,7 @@ impl Bound {
                     (17, &keys),
                     (18, &slot_vertices),
                     (19, &p.transition_table),
-                    (20, &levels),
+                    (20, &mesh.triangle_levels),
                 ]
                 .into_iter()
                 .map(|(binding, buffer): (u32, &wgpu::Buffer)| wgpu::BindGroupEntry {
