@@ -71,19 +71,27 @@ fn gpu_and_cpu_lod_meshes_are_equal_and_closed() {
 fn the_cli_exports_a_closed_lod_mesh_at_2048() {
     let dir = scratch_dir("lod-export");
     let out = dir.join("lod.stl");
-    let (code, stdout, stderr) = cli(&[
-        "export",
-        "--out",
-        out.to_str().unwrap(),
-        "--resolution",
-        "2048",
-        "--spheres",
-        "8",
-        "--view",
-        "lod=on&lod_px=4",
-    ]);
-    assert_eq!(code, 0, "{stdout}{stderr}");
-    assert!(stdout.contains("closed"), "{stdout}");
+    // Both paths, from the CLI: the same closed mesh.
+    let mut counts = Vec::new();
+    for mesher in ["gpu", "cpu"] {
+        let view = format!("lod=on&lod_px=4&mesher={mesher}");
+        let (code, stdout, stderr) = cli(&[
+            "export",
+            "--out",
+            out.to_str().unwrap(),
+            "--resolution",
+            "2048",
+            "--spheres",
+            "8",
+            "--view",
+            &view,
+        ]);
+        assert_eq!(code, 0, "{stdout}{stderr}");
+        assert!(stdout.contains("closed"), "{stdout}");
+        let triangles = stdout.split("): ").nth(1).and_then(|s| s.split(' ').next()).unwrap().to_string();
+        counts.push(triangles);
+    }
+    assert_eq!(counts[0], counts[1], "GPU and CPU LOD exports differ");
     let (code, _, stderr) = cli(&["export", "--out", out.to_str().unwrap(), "--resolution", "2048"]);
     assert_ne!(code, 0);
     assert!(stderr.contains("at most 512 for a uniform grid (lod=on goes up to 2048)"), "{stderr}");

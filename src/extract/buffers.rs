@@ -39,7 +39,7 @@ impl Capacity {
         let blocks = blocks_per_axis.pow(3).min((6 * blocks_per_axis * blocks_per_axis).max(512));
         Self {
             blocks,
-            cells: (16 * blocks).min(grid.cells_per_axis.pow(3)),
+            cells: (16 * blocks).min(cube(grid.cells_per_axis)),
             vertices: (4 * face_cells).max(4096),
             indices: (24 * face_cells).max(24576),
         }
@@ -49,8 +49,8 @@ impl Capacity {
     pub fn largest(grid: Grid, limit: u64) -> Self {
         let fit = |bytes_each: u64| (limit / bytes_each).min(u32::MAX as u64) as u32;
         Self {
-            blocks: grid.cells_per_axis.div_ceil(BLOCK_CELLS).pow(3).min(fit(BLOCK_EDGE_BYTES)),
-            cells: grid.cells_per_axis.pow(3).min(fit(4)),
+            blocks: cube(grid.cells_per_axis.div_ceil(BLOCK_CELLS)).min(fit(BLOCK_EDGE_BYTES)),
+            cells: cube(grid.cells_per_axis).min(fit(4)),
             vertices: fit(VERTEX_BYTES),
             indices: fit(INDEX_BYTES) / 3 * 3,
         }
@@ -84,6 +84,11 @@ impl Capacity {
             indices: grow(self.indices, counters.indices) / 3 * 3 + 3,
         }
     }
+}
+
+/// n³, or `u32::MAX` past it (a 2048³ grid has more cells than a `u32` counts).
+fn cube(n: u32) -> u32 {
+    (n as u64).pow(3).min(u32::MAX as u64) as u32
 }
 
 /// The buffers for one grid and capacity.
