@@ -185,3 +185,50 @@ fn colour_by_level_shows_fine_triangles_near_and_coarse_far_on_both_paths() {
     let (mean, _) = flip(width, height, &pictures[0], &pictures[1]);
     assert!(mean < 0.01, "the GPU and CPU LOD pictures differ: mean FLIP {mean}");
 }
+
+/// Orbit cameras (yaw, pitch, distance): inside two corners of the box, near a face, the default,
+/// far away, and grazing the top and bottom faces.
+const CAMERAS: [(f32, f32, f32); 8] = [
+    (45.0, 35.26, 1.5),
+    (-135.0, -35.0, 1.6),
+    (0.0, 0.0, 1.5),
+    (30.0, 20.0, 4.3),
+    (100.0, 10.0, 3.0),
+    (200.0, 60.0, 20.0),
+    (60.0, 19.47, 3.0),
+    (0.0, -19.47, 3.0),
+];
+
+#[test]
+fn gpu_lod_meshes_are_closed_for_twelve_scenes_and_eight_cameras() {
+    let (adapter, device, queue) = device();
+    let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
+    let base = lod_settings(1, 5, 128, 4.0, 4.3);
+    let mut o = metaballs::offscreen::Offscreen::with_device(adapter, device.clone(), queue, base, 320, 240)
+        .expect("renderer");
+    for seed in 1..=12u64 {
+        let spheres = [3, 8, 16][seed as usize % 3];
+        for (yaw, pitch, distance) in CAMERAS {
+            let mut settings = Settings { seed, sphere_count: spheres, ..base };
+            settings.camera.yaw_degrees = yaw;
+            settings.camera.pitch_degrees = pitch;
+            settings.camera.distance = distance;
+            o.renderer.set_settings(settings).unwrap();
+            let what = format!("seed {seed}, camera ({yaw}, {pitch}, {distance})");
+            o.renderer.pin_extractor(Some("lod-gpu")).unwrap();
+            let gpu = pollster::block_on(o.renderer.extract_mesh());
+            let levels = o.renderer.lod_summary().unwrap().blocks;
+            o.renderer.pin_extractor(Some("lod-cpu")).unwrap();
+            let cpu = pollster::block_on(o.renderer.extract_mesh());
+            let topology = gpu.topology();
+            assert_eq!(
+                topology.open_or_nonmanifold_edges, 0,
+                "{what}, levels {levels:?}: open or non-manifold edges"
+            );
+            assert_eq!(topology.misoriented_edges, 0, "{what}: inconsistent orientation");
+            assert_eq!(gpu.triangles.len(), cpu.triangles.len(), "{what}: GPU and CPU triangle counts");
+        }
+    }
+    let _ = device.poll(wgpu::PollType::wait_indefinitely());
+    assert!(pollster::block_on(scope.pop()).is_none(), "validation error");
+}
