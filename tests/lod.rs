@@ -124,10 +124,10 @@ fn a_frozen_selection_stays_while_the_camera_moves() {
     });
 }
 
-/// The colour of `level` (0 the finest) as the views draw it: the hue of case class 4 × level mod 15,
+/// The colour of `level` (0 the finest) as the views draw it: the hue of case class 9 + 4 × level mod 15,
 /// in sRGB bytes before lighting.
 fn level_rgb(level: u32) -> [f32; 3] {
-    let h = ((4 * level) % 15) as f32 / 15.0 * 6.0;
+    let h = ((9 + 4 * level) % 15) as f32 / 15.0 * 6.0;
     let x = 1.0 - (h % 2.0 - 1.0).abs();
     let c = match h as u32 {
         0 => [1.0, x, 0.0],

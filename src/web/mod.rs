@@ -246,6 +246,15 @@ impl View {
         self.renderer.set_resolution(cells_per_axis).map_err(js_error)
     }
 
+    /// The resolution and level of detail together, as the resolutions each allows differ (a uniform
+    /// grid up to 512, LOD up to 2048 in multiples of 8): all or nothing.
+    pub fn set_grid(&mut self, cells_per_axis: u32, lod: bool) -> Result<(), JsError> {
+        let mut next = *self.renderer.settings();
+        next.resolution = cells_per_axis;
+        next.view.lod = lod;
+        self.renderer.set_settings(next).map_err(js_error)
+    }
+
     pub fn set_seed(&mut self, seed: u32) -> Result<(), JsError> {
         self.renderer.set_seed(seed as u64).map_err(js_error)
     }
@@ -322,6 +331,21 @@ impl View {
                 s.active_cells as f64 / s.total_cells.max(1) as f64,
             ]
         })
+    }
+
+    /// With level of detail, the finest resolution, then blocks and triangles of each level in use
+    /// (finest first, triangles from the newest figures): `[resolution, blocks₀, triangles₀, …]`;
+    /// empty for a uniform grid.
+    pub fn lod_levels(&self) -> Vec<u32> {
+        let Some(summary) = self.renderer.lod_summary() else { return Vec::new() };
+        let triangles = self.renderer.stats().map(|s| s.level_triangles).unwrap_or_default();
+        let used = summary.blocks.iter().rposition(|&b| b > 0).map_or(0, |last| last + 1);
+        let mut out = vec![summary.resolution];
+        for level in 0..used {
+            out.push(summary.blocks[level]);
+            out.push(triangles.get(level).copied().unwrap_or(0));
+        }
+        out
     }
 
     /// GPU memory held by the mesh buffers, in bytes.

@@ -140,7 +140,9 @@ export class FigureFrames {
     const create = (resolution) => within(f.element, () => wasmModule().View.create(
       gpu, f.canvas, s.spheres, s.iso, resolution, s.seed, s.antialiasing));
     try {
-      this.#view = create(s.resolution);
+      // With level of detail the resolution may be beyond a uniform grid's: the view starts uniform and
+      // takes both from the `lod` setting below.
+      this.#view = create(s.lod ? defaultOf('resolution') : s.resolution);
     } catch (error) {
       // Most likely a resolution beyond this device: start at the default and say why.
       const fallback = defaultOf('resolution');

@@ -14,9 +14,14 @@ export const CONFIRM_ABOVE_MS = 1000;
 const GUESS_MS = { software: 100, hardware: 4 };
 const REFERENCE = { resolution: 128, spheres: 16 };
 
+/** Cells per axis a frame's work follows: the resolution, or with level of detail (whose cells follow
+ * the screen) at most that of a 512³ grid, a cautious bound. */
+const LOD_WORK_RESOLUTION = 512;
+
 /** Relative work of one frame at `resolution` cells per axis with `spheres` spheres. */
-export function frameWork({ resolution, spheres }) {
-  return spheres * (resolution ** 3 / 64 + 4 * resolution ** 2);
+export function frameWork({ resolution, spheres, lod = false }) {
+  const n = lod ? Math.min(resolution, LOD_WORK_RESOLUTION) : resolution;
+  return spheres * (n ** 3 / 64 + 4 * n ** 2);
 }
 
 export class FrameCost {
@@ -45,7 +50,7 @@ export function describeMs(ms) {
   return ms >= 10_000 ? `about ${Math.round(ms / 1000)} s` : `about ${(ms / 1000).toFixed(1)} s`;
 }
 
-const describeSettings = (s) => `${s.resolution}³ × ${s.spheres} sphere${s.spheres === 1 ? '' : 's'}`;
+const describeSettings = (s) => `${s.resolution}³${s.lod ? ' with LOD' : ''} × ${s.spheres} sphere${s.spheres === 1 ? '' : 's'}`;
 
 /**
  * A figure's guard against slow frames: holds its `FrameCost`, and the changes that wait for the
@@ -68,9 +73,10 @@ export class CostGuard {
     this.cost ??= new FrameCost(software);
   }
 
-  /** Takes in a measured frame time for the settings in effect. */
-  observe({ resolution, spheres }, ms) {
-    this.cost?.observe({ resolution, spheres }, ms);
+  /** Takes in a measured frame time for the settings in effect (level of detail's frames follow the
+   * screen, not the grid, so they do not teach the uniform grid's rate). */
+  observe({ resolution, spheres, lod }, ms) {
+    if (!lod) this.cost?.observe({ resolution, spheres }, ms);
   }
 
   /** True when `next` would make frames slower than a second here, and slower than `current`. */

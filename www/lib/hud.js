@@ -1,6 +1,9 @@
 // The figure's statistics: frames per second, frame time, triangles, adapter and mesher (GPU or CPU
-// meshing), and a warning when the
-// triangle budget stays full. Figures update twice a second from the GPU's asynchronous reports.
+// meshing), with level of detail the effective resolution and each level's blocks and triangles, and a
+// warning when the triangle budget stays full. Figures update twice a second from the GPU's
+// asynchronous reports.
+
+import { levelColor } from './legends.js';
 
 // Made on first use: a number format costs tens of milliseconds to set up, not to be paid at import.
 let numberFormat = null;
@@ -13,7 +16,7 @@ export class Hud {
     this.frames = 0;
     this.since = 0;
     this.overflows = 0;
-    this.stats = { triangles: 0, fps: 0, frameTime: 0, adapter: '', mesher: '', overflowed: false };
+    this.stats = { triangles: 0, fps: 0, frameTime: 0, adapter: '', mesher: '', overflowed: false, lod: null };
     this.adapterLabel = '';
   }
 
@@ -65,6 +68,7 @@ export class Hud {
       this.stats.mesher = mesher;
       this.#showAdapter();
     }
+    this.#showLevels(view.lod_levels());
     const stats = view.stats();
     if (!stats) return 0;
     this.stats.triangles = stats.triangles;
@@ -78,5 +82,28 @@ export class Hud {
     const { frame } = stats;
     stats.free();
     return frame;
+  }
+
+  /** Level of detail: `[resolution, blocks₀, triangles₀, …]` from the view, or empty without it. */
+  #showLevels(flat) {
+    const $ = (id) => this.root.getElementById(id);
+    if (!flat.length) {
+      this.stats.lod = null;
+      $('hud-lod').hidden = true;
+      return;
+    }
+    const levels = [];
+    for (let i = 1; i + 1 < flat.length; i += 2) levels.push({ blocks: flat[i], triangles: flat[i + 1] });
+    const used = levels.filter((l) => l.blocks > 0).length;
+    this.stats.lod = { resolution: flat[0], levels };
+    $('hud-lod').hidden = false;
+    $('hud-lod-summary').textContent = `${flat[0]}³ effective · ${used} level${used === 1 ? '' : 's'}`;
+    $('hud-lod-levels').replaceChildren(...levels.map(({ blocks, triangles }, k) => {
+      const item = document.createElement('li');
+      item.innerHTML = `<i style="background: ${levelColor(k)}"></i>`;
+      item.append(`${k}: ${formatNumber(blocks)} blocks · ${formatNumber(triangles)} △`);
+      item.hidden = blocks === 0;
+      return item;
+    }));
   }
 }

@@ -1,5 +1,5 @@
 // Colour keys for the teaching views, drawn with the colours shaders/draw/views/ uses: the ramp (area,
-// shape, field slice) and the 15 case classes.
+// shape, field slice), the 15 case classes and the levels of detail.
 
 /** The ramp's stops (sRGB), dark violet to yellow. */
 const RAMP = ['#440154', '#3b528b', '#21918c', '#5ec962', '#fde725'];
@@ -11,6 +11,26 @@ export function classColor(k) {
   const c = [[1, x, 0], [x, 1, 0], [0, 1, x], [0, x, 1], [x, 0, 1], [1, 0, x]][Math.min(5, Math.floor(h))];
   const [r, g, b] = c.map((v) => Math.round(255 * 0.95 * (0.35 + 0.65 * v)));
   return `rgb(${r}, ${g}, ${b})`;
+}
+
+/** The colour of level of detail `k` (0 the finest, blue): class hues 96° apart, as the views draw them. */
+export function levelColor(k) {
+  return classColor((9 + 4 * k) % 15);
+}
+
+function levels() {
+  const list = document.createElement('div');
+  list.className = 'legend classes';
+  for (let k = 0; k < 9; k += 1) {
+    const item = document.createElement('span');
+    item.title = k ? `level ${k}: cells ${2 ** k}× the finest` : 'level 0: the finest cells';
+    item.innerHTML = `<i style="background: ${levelColor(k)}"></i>${k}`;
+    list.append(item);
+  }
+  const note = document.createElement('span');
+  note.textContent = 'finest first · paler: transition cells';
+  list.append(note);
+  return list;
 }
 
 function ramp(low, high) {
@@ -42,6 +62,7 @@ export function colorKey(state, classNames) {
     case 'area': return ramp('0', '½ cell face');
     case 'quality': return ramp('sliver', 'equilateral');
     case 'case': return classes(classNames);
+    case 'level': return levels();
     default: return state.grid === 'cells' ? classes(classNames) : null;
   }
 }

@@ -7,7 +7,7 @@ import { colorKey, sliceKey } from './legends.js';
 import { buildGallery } from './inspector.js';
 
 const GROUPS = [
-  ['Surface', ['spheres', 'iso', 'resolution', 'mesher', 'speed', 'seed', 'paused', 'step', 'view']],
+  ['Surface', ['spheres', 'iso', 'resolution', 'lod', 'lod_pixels', 'lod_freeze', 'mesher', 'speed', 'seed', 'paused', 'step', 'view']],
   ['Display', ['display', 'grid', 'color_by', 'ambiguous', 'color', 'theme', 'antialiasing']],
   ['Teaching', ['slice', 'interpolation', 'blend', 'inspector']],
   ['Light', ['light', 'spot_angle', 'spot_softness', 'ambient', 'diffuse', 'specular', 'shininess']],
@@ -93,6 +93,13 @@ export function buildPanel(container, names, table, state, onChange, actions, op
         onChange(name, Number(input.value));
       });
       updates.push((s) => {
+        // With level of detail the grid is finest near the camera only, so it goes up to the table's
+        // limit; a uniform grid stops at what the device holds.
+        if (name === 'resolution') {
+          input.max = String(s.lod ? spec.max : Math.min(spec.sliderMax, maxResolution));
+          // LOD blocks hold 8 cells a side.
+          input.step = s.lod ? '8' : String(spec.step);
+        }
         input.value = String(s[name]);
         output.textContent = formatNumber(name, s[name]);
       });

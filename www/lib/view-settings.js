@@ -14,13 +14,15 @@ function hexToLinear(hex) {
 // The view options, light strengths and field of view go through one setter by name, as text.
 const BY_NAME = [
   'display', 'grid', 'color_by', 'slice', 'ambiguous', 'interpolation', 'blend', 'light', 'spot_angle',
-  'spot_softness', 'ambient', 'diffuse', 'specular', 'projection', 'fov', 'mesher',
+  'spot_softness', 'ambient', 'diffuse', 'specular', 'projection', 'fov', 'mesher', 'lod_pixels', 'lod_freeze',
 ];
 
 const SETTERS = {
   spheres: (view, s) => view.set_sphere_count(s.spheres),
   iso: (view, s) => view.set_iso(s.iso),
-  resolution: (view, s) => view.set_resolution(s.resolution),
+  // Each allows resolutions the other does not: both at once.
+  resolution: (view, s) => view.set_grid(s.resolution, s.lod),
+  lod: (view, s) => view.set_grid(s.resolution, s.lod),
   seed: (view, s) => view.set_seed(s.seed),
   yaw: (view, s) => view.set_camera(s.yaw, s.pitch, s.distance),
   pitch: (view, s) => view.set_camera(s.yaw, s.pitch, s.distance),

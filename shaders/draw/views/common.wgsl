@@ -32,7 +32,7 @@ const COLOR_LEVEL: u32 = 4u;
 // Colour of level of detail k (0 the finest): the case classes' hues, 96° apart from level to level
 // so that neighbouring levels differ most (www/lib/legends.js draws the same key).
 fn level_color(k: u32) -> vec3<f32> {
-    return class_color((4u * k) % 15u);
+    return class_color((9u + 4u * k) % 15u);
 }
 // Lines and points hidden by this vertex: outside the clip volume.
 const HIDDEN: vec4<f32> = vec4<f32>(2.0, 2.0, 2.0, 1.0);

@@ -2,7 +2,7 @@
 //! shared buffers, as the uniform CPU mesher's mesh is. Software adapters and WebGL2 get LOD this way.
 
 use super::mesher::LodMesher;
-use super::select::{Selection, select};
+use super::select::Selection;
 use super::{LodSummary, next_selection};
 use crate::extract::cpu::upload;
 use crate::extract::extractor::{Capabilities, Extractor, Job, MeshCount, Output};
@@ -38,7 +38,7 @@ impl Extractor for LodCpuExtractor {
     }
 
     fn prepare(&mut self, job: &Job) -> Option<Counters> {
-        if let Some(next) = next_selection(&self.selection, job, select) {
+        if let Some(next) = next_selection(&self.selection, job) {
             self.selection = next;
         }
         self.mesher.mesh(job.spheres, job.iso, job.construction, &self.selection);

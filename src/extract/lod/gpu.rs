@@ -2,7 +2,7 @@
 //! (one function for every path) and uploaded when it changes; the passes bound, sample and mesh it
 //! on the device, with indirect dispatches and draw and no readback.
 
-use super::select::{Block, Selection, select};
+use super::select::{Block, Selection};
 use super::transition;
 use super::{LodSummary, next_selection};
 use crate::device::{bind_buffers, compute_module, compute_pipeline, has_compute};
@@ -262,7 +262,7 @@ impl Extractor for LodGpuExtractor {
 
     /// Selects the blocks; the device alone knows what they hold.
     fn prepare(&mut self, job: &Job) -> Option<Counters> {
-        if let Some(next) = next_selection(&self.selection, job, select)
+        if let Some(next) = next_selection(&self.selection, job)
             && next != self.selection
         {
             self.selection = next;

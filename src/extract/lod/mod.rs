@@ -14,7 +14,10 @@ pub mod transition;
 #[cfg(test)]
 mod tests;
 
+use super::cpu::mesher::Spheres;
 use super::extractor::Job;
+use crate::scene::Sphere;
+use crate::scene::params::view::Blend;
 use select::{Eye, Selection};
 
 /// What a LOD frame held, level by level (finest first), for the HUD and the statistics.
@@ -30,17 +33,28 @@ pub struct LodSummary {
     pub cells_processed: u64,
 }
 
-/// The selection for `job`: a new one from `choose`, or `None` to keep `current` (frozen, and
-/// made for the same resolution).
-pub fn next_selection(
-    current: &Selection,
-    job: &Job,
-    choose: impl Fn(u32, &Eye) -> Selection,
-) -> Option<Selection> {
+/// The selection for `job`, or `None` to keep `current` (frozen, and made for the same resolution).
+/// Blocks are refined only where the field's exact bounds let the surface cross, as the meshers
+/// skip blocks.
+pub fn next_selection(current: &Selection, job: &Job) -> Option<Selection> {
     let lod = job.lod?;
     let resolution = job.grid.cells_per_axis;
     if lod.freeze && current.resolution == resolution && !current.blocks.is_empty() {
         return None;
     }
-    Some(choose(resolution, &lod.eye))
+    Some(select_for_surface(job.spheres, job.iso, job.construction.blend, resolution, &lod.eye))
+}
+
+/// [`select::select`] refining only where the surface f = `iso` of `spheres` may cross.
+pub fn select_for_surface(
+    spheres: &[Sphere],
+    iso: f32,
+    blend: Blend,
+    resolution: u32,
+    eye: &Eye,
+) -> Selection {
+    let mut bounds = Spheres::default();
+    bounds.set(spheres);
+    let by_max = blend == Blend::Max;
+    select::select(resolution, eye, &|low, high, walls| bounds.straddles(low, high, walls, iso, by_max))
 }

@@ -4,9 +4,11 @@
 //! A block holds [`BLOCK_CELLS`]³ cells of its level; a cell of level `k` is `2^k` finest cells wide.
 //! The finest cells are those of a uniform grid of `resolution` cells per axis. A block is split while
 //! its cells would cover more than `lod_pixels` pixels at the block's nearest point to the camera, and
-//! blocks outside the view frustum stay as coarse as the balance allows. Balance: blocks that share a
-//! face, an edge or a corner differ by at most one level, so every seam is between two neighbouring
-//! levels, where a transition cell closes it.
+//! blocks outside the view frustum stay as coarse as the balance allows, as do blocks the surface
+//! cannot cross (by the field's exact bounds). Balance: blocks the surface may cross that share a face,
+//! an edge or a corner differ by at most one level, so every seam is between two neighbouring levels,
+//! where a transition cell closes it. A block the surface cannot cross needs no balance: its closed box,
+//! faces and edges included, holds no crossing, so nothing meets it to be stitched.
 
 use crate::scene::BOX_HALF_EXTENT;
 use glam::{Mat4, UVec3, Vec3, Vec4};
@@ -122,6 +124,8 @@ struct Node {
 
 struct Tree {
     nodes: Vec<Node>,
+    /// Per node: the surface may cross its closed box.
+    holds: Vec<bool>,
     roots_per_axis: u32,
     root_width: u32,
     resolution: u32,
@@ -140,13 +144,24 @@ impl Tree {
         i
     }
 
-    fn split(&mut self, i: usize) -> std::ops::Range<usize> {
+    fn push(&mut self, node: Node, surface: &Surface<'_>) {
+        let far = node.origin + UVec3::splat(BLOCK_CELLS << node.level);
+        let walls = node.origin.min_element() == 0 || far.max_element() == self.resolution;
+        self.holds.push(surface(self.world(node.origin), self.world(far), walls));
+        self.nodes.push(node);
+    }
+
+    fn world(&self, p: UVec3) -> Vec3 {
+        Vec3::splat(-BOX_HALF_EXTENT) + p.as_vec3() * (2.0 * BOX_HALF_EXTENT / self.resolution as f32)
+    }
+
+    fn split(&mut self, i: usize, surface: &Surface<'_>) -> std::ops::Range<usize> {
         let n = self.nodes[i];
         let first = self.nodes.len();
         let half = (BLOCK_CELLS << n.level) / 2;
         for c in 0..8u32 {
             let offset = UVec3::new(c & 1, (c >> 1) & 1, (c >> 2) & 1) * half;
-            self.nodes.push(Node { origin: n.origin + offset, level: n.level - 1, children: 0 });
+            self.push(Node { origin: n.origin + offset, level: n.level - 1, children: 0 }, surface);
         }
         self.nodes[i].children = first as u32;
         first..first + 8
@@ -175,7 +190,11 @@ impl Tree {
         if n.level == 0 {
             return false;
         }
-        let level = |d: [i32; 3]| self.beyond(n, d).map(|p| self.nodes[self.leaf_at(p)].level);
+        // Only blocks the surface may cross count: an edge of one that it cannot holds no crossing.
+        let level = |d: [i32; 3]| {
+            let j = self.leaf_at(self.beyond(n, d)?);
+            Some(if self.holds[j] { self.nodes[j].level } else { u32::MAX })
+        };
         (0..3).any(|axis| {
             let (b, c) = ((axis + 1) % 3, (axis + 2) % 3);
             [(-1, -1), (-1, 1), (1, -1), (1, 1)].into_iter().any(|(sb, sc)| {
@@ -199,21 +218,25 @@ fn directions() -> impl Iterator<Item = [i32; 3]> {
     (0..27).map(|i| [i % 3 - 1, i / 3 % 3 - 1, i / 9 - 1]).filter(|d| *d != [0, 0, 0])
 }
 
+/// Whether the surface may cross the box from `low` to `high` (touching the box's walls or not).
+pub type Surface<'a> = dyn Fn(Vec3, Vec3, bool) -> bool + 'a;
+
 /// Selects the blocks for `eye` on a grid of `resolution` finest cells per axis (a multiple of
-/// [`BLOCK_CELLS`]). Deterministic: the same inputs give the same blocks in the same order.
-pub fn select(resolution: u32, eye: &Eye) -> Selection {
+/// [`BLOCK_CELLS`]), refining only where `surface` says it may cross. Deterministic: the same inputs
+/// give the same blocks in the same order.
+pub fn select(resolution: u32, eye: &Eye, surface: &Surface<'_>) -> Selection {
     assert!(supports(resolution), "resolution {resolution} is not a multiple of {BLOCK_CELLS}");
     let top = coarsest_level(resolution);
     let root_width = BLOCK_CELLS << top;
     let roots_per_axis = resolution / root_width;
     let finest = 2.0 * BOX_HALF_EXTENT / resolution as f32;
     let world = |p: UVec3| Vec3::splat(-BOX_HALF_EXTENT) + p.as_vec3() * finest;
-    let mut tree = Tree { nodes: Vec::new(), roots_per_axis, root_width, resolution };
+    let mut tree = Tree { nodes: Vec::new(), holds: Vec::new(), roots_per_axis, root_width, resolution };
     for z in 0..roots_per_axis {
         for y in 0..roots_per_axis {
             for x in 0..roots_per_axis {
                 let origin = UVec3::new(x, y, z) * root_width;
-                tree.nodes.push(Node { origin, level: top, children: 0 });
+                tree.push(Node { origin, level: top, children: 0 }, surface);
             }
         }
     }
@@ -225,30 +248,31 @@ pub fn select(resolution: u32, eye: &Eye) -> Selection {
             let (low, high) = (world(n.origin), world(n.origin + UVec3::splat(BLOCK_CELLS << n.level)));
             let distance = (eye.position.clamp(low, high) - eye.position).length().max(1e-6);
             let cell = finest * (1u32 << n.level) as f32;
-            if eye.sees(low, high) && eye.projected(cell, distance) > eye.lod_pixels {
-                tree.split(i);
+            if tree.holds[i] && eye.sees(low, high) && eye.projected(cell, distance) > eye.lod_pixels {
+                tree.split(i, surface);
             }
         }
         i += 1;
     }
     // Balance: split any block more than one level coarser than a neighbour, until none is.
-    let mut pending: Vec<usize> = (0..tree.nodes.len()).filter(|&i| tree.nodes[i].children == 0).collect();
+    let leaf_with_surface = |tree: &Tree, i: usize| tree.nodes[i].children == 0 && tree.holds[i];
+    let mut pending: Vec<usize> = (0..tree.nodes.len()).filter(|&i| leaf_with_surface(&tree, i)).collect();
     while let Some(i) = pending.pop() {
-        let n = tree.nodes[i];
-        if n.children != 0 {
+        if !leaf_with_surface(&tree, i) {
             continue;
         }
+        let n = tree.nodes[i];
         for d in directions() {
             let Some(p) = tree.beyond(n, d) else { continue };
             let j = tree.leaf_at(p);
-            if tree.nodes[j].level > n.level + 1 {
-                pending.extend(tree.split(j));
+            if tree.holds[j] && tree.nodes[j].level > n.level + 1 {
+                pending.extend(tree.split(j, surface));
                 pending.push(i);
                 break;
             }
         }
         if tree.nodes[i].children == 0 && tree.alternates_around_an_edge(n) {
-            pending.extend(tree.split(i));
+            pending.extend(tree.split(i, surface));
         }
     }
     let mut blocks = Vec::new();

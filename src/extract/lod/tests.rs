@@ -3,8 +3,10 @@
 
 use super::mesher::{LodMesher, TRANSITION};
 use super::select::{BLOCK_CELLS, Eye, Selection, select};
+use super::select_for_surface;
 use crate::extract::mesh::Mesh;
 use crate::extract::reference::{self, Construction, Grid};
+use crate::scene::params::view::Blend;
 use crate::scene::{BOX_HALF_EXTENT, Scene};
 use glam::{UVec3, Vec3};
 
@@ -65,7 +67,7 @@ fn owners(selection: &Selection) -> Vec<u32> {
 fn blocks_tile_the_box_and_neighbours_differ_by_at_most_one_level() {
     let mut all_levels = std::collections::BTreeSet::new();
     for position in cameras() {
-        let selection = select(128, &eye_at(position, 8.0));
+        let selection = select(128, &eye_at(position, 8.0), &|_, _, _| true);
         assert!(selection.levels >= 4, "{} levels", selection.levels);
         let owner = owners(&selection);
         let n = 128i32;
@@ -106,7 +108,7 @@ fn blocks_tile_the_box_and_neighbours_differ_by_at_most_one_level() {
 #[test]
 fn the_finest_blocks_surround_a_camera_inside_the_box_and_levels_grow_with_distance() {
     let position = Vec3::new(0.6, 0.5, 0.55);
-    let selection = select(256, &eye_at(position, 8.0));
+    let selection = select(256, &eye_at(position, 8.0), &|_, _, _| true);
     let n = selection.resolution;
     let finest = 2.0 * BOX_HALF_EXTENT / n as f32;
     let here = ((position + BOX_HALF_EXTENT) / finest).as_uvec3();
@@ -130,7 +132,7 @@ fn the_finest_blocks_surround_a_camera_inside_the_box_and_levels_grow_with_dista
 #[test]
 fn cells_outside_the_frustum_stay_coarse_and_visible_ones_project_within_lod_pixels() {
     let eye = eye_at(Vec3::new(0.0, 0.2, 2.4), 2.0);
-    let selection = select(512, &eye);
+    let selection = select(512, &eye, &|_, _, _| true);
     let finest = 2.0 * BOX_HALF_EXTENT / 512.0;
     let mut finest_count = 0;
     for b in &selection.blocks {
@@ -156,7 +158,8 @@ fn cells_outside_the_frustum_stay_coarse_and_visible_ones_project_within_lod_pix
 
 /// The LOD mesh of `scene` seen from `position` at `resolution`.
 fn lod_mesh(scene: &Scene, resolution: u32, position: Vec3, lod_pixels: f32) -> (LodMesher, Selection) {
-    let selection = select(resolution, &eye_at(position, lod_pixels));
+    let eye = eye_at(position, lod_pixels);
+    let selection = select_for_surface(scene.spheres(), 1.0, Blend::Sum, resolution, &eye);
     let mut mesher = LodMesher::new();
     mesher.mesh(scene.spheres(), 1.0, Construction::default(), &selection);
     (mesher, selection)
