@@ -232,3 +232,33 @@ fn gpu_lod_meshes_are_closed_for_twelve_scenes_and_eight_cameras() {
     let _ = device.poll(wgpu::PollType::wait_indefinitely());
     assert!(pollster::block_on(scope.pop()).is_none(), "validation error");
 }
+
+/// A browser grants a page WebGPU's default limits unless it asks for more: 8 storage buffers per
+/// stage among them. Every pass of both LOD paths and the views must fit them.
+#[test]
+fn every_lod_pass_fits_webgpus_default_limits() {
+    let instance = metaballs::device::native_instance();
+    let adapter =
+        pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions::default())).unwrap();
+    let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
+        label: Some("default limits"),
+        required_limits: wgpu::Limits::default(),
+        ..Default::default()
+    }))
+    .unwrap();
+    assert_eq!(device.limits().max_storage_buffers_per_shader_stage, 8);
+    let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
+    let settings = lod_settings(2, 16, 128, 4.0, 2.0).with_parameter("color_by", "level").unwrap();
+    let mut o =
+        metaballs::offscreen::Offscreen::with_device(adapter, device.clone(), queue, settings, 160, 120)
+            .unwrap();
+    for name in ["lod-gpu", "lod-cpu"] {
+        o.renderer.pin_extractor(Some(name)).unwrap();
+        o.render();
+    }
+    let _ = device.poll(wgpu::PollType::wait_indefinitely());
+    if let Some(error) = pollster::block_on(scope.pop()) {
+        panic!("validation error: {error}");
+    }
+    assert_eq!(o.renderer.gpu_error(), None);
+}

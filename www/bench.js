@@ -1,7 +1,8 @@
 // The benchmark in the browser (`?bench`, optionally `&bench_resolutions=32,64&bench_spheres=1,5&bench_frames=10`
 // and `&bench_meshers=gpu,cpu`): the same fixed sequence as `metaballs bench`, for each mesher the
 // adapter has (the GPU's compute passes and the CPU mesher; WebGL2 has only the CPU), timed with the
-// GPU queue synchronised after each frame. Shows a table, says which mesher `auto` picks here, and logs
+// GPU queue synchronised after each frame, then a row per mesher with level of detail at `bench_lod`
+// cells per axis (1024 unless given; 0 for none) and 16 spheres. Shows a table, says which mesher `auto` picks here, and logs
 // the records as JSON on the console (a line starting with "metaballs-bench ") for headless runs.
 
 const median = (values) => [...values].sort((a, b) => a - b)[Math.floor(values.length / 2)];
@@ -24,7 +25,7 @@ async function timeFrames(view, frames, step) {
 }
 
 function showTable(container, records, status) {
-  const rows = records.map((r) => `<tr><td>${r.mesher}</td><td>${r.resolution}</td><td>${r.spheres}</td><td>${r.frame_ms.toFixed(1)}</td>`
+  const rows = records.map((r) => `<tr><td>${r.mesher}</td><td>${r.resolution}${r.lod ? ' LOD' : ''}</td><td>${r.spheres}</td><td>${r.frame_ms.toFixed(1)}</td>`
     + `<td>${r.mesh_ms.toFixed(1)}</td><td>${r.triangles}</td><td>${(100 * r.active_cell_fraction).toFixed(2)}</td>`
     + `<td>${(100 * r.active_block_fraction).toFixed(1)}</td><td>${(r.mesh_bytes / 1048576).toFixed(1)}</td></tr>`);
   container.innerHTML = `<h2>Benchmark</h2><p>${status}</p><table><thead><tr><th>mesher</th><th>cells</th><th>spheres</th>`
@@ -70,6 +71,35 @@ export async function runBenchmark(view, container, { hasCompute = true } = {}) 
         stats?.free();
       }
     }
+  }
+  // Level of detail: the finest cells near the camera at a resolution no uniform grid holds.
+  const lodResolution = listParam(query, 'bench_lod', [1024])[0];
+  for (const mesher of lodResolution ? meshers : []) {
+    showTable(container, records, `Running ${lodResolution}³ cells with level of detail × 16 spheres, ${mesher} mesher…`);
+    view.set_parameter('mesher', mesher);
+    view.set_sphere_count(16);
+    view.set_grid(lodResolution, true);
+    await timeFrames(view, 3, () => view.frame(1 / 60));
+    const frame_ms = await timeFrames(view, frames, () => view.frame(1 / 60));
+    const mesh_ms = await timeFrames(view, frames, () => view.extract());
+    await timeFrames(view, 2, () => view.frame(0));
+    const stats = view.stats();
+    const levels = [...view.lod_levels()];
+    records.push({
+      mesher: view.mesh_source(),
+      lod: true,
+      resolution: lodResolution,
+      spheres: 16,
+      frame_ms,
+      mesh_ms,
+      triangles: stats?.triangles ?? 0,
+      active_cell_fraction: 0,
+      active_block_fraction: 0,
+      mesh_bytes: view.mesh_bytes(),
+      blocks_per_level: levels.slice(1).filter((_, i) => i % 2 === 0),
+    });
+    stats?.free();
+    view.set_grid(resolutions.at(-1) ?? 64, false);
   }
   view.set_parameter('mesher', 'auto');
   await timeFrames(view, 1, () => view.frame(0));

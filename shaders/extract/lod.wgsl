@@ -17,13 +17,28 @@ struct Lod {
     _pad1: u32,
 }
 
-@group(0) @binding(2) var<storage, read_write> counters: Counters;
+// The counters, then from word 64 (byte 256, LEVEL_COUNTS_OFFSET) the triangles of each level.
+struct LodCounters {
+    active_blocks: atomic<u32>,
+    vertices: atomic<u32>,
+    indices: atomic<u32>,
+    active_cells: atomic<u32>,
+    _pad: array<u32, 60>,
+    level_triangles: array<atomic<u32>, 12>,
+}
+
+@group(0) @binding(2) var<storage, read_write> counters: LodCounters;
 // Kept blocks, as indices into the selection.
 @group(0) @binding(3) var<storage, read_write> active_blocks: array<u32>;
-// Per case: bits 0..11 the crossed edges, bits 16.. the triangle count.
-@group(0) @binding(6) var<storage, read> case_table: array<u32, 256>;
-// Per case, 16 entries: edge numbers of the triangles, -1 after the last.
-@group(0) @binding(7) var<storage, read> triangle_table: array<i32, 4096>;
+// The tables, in one buffer (WebGPU lets a stage bind only 8 storage buffers): from CASES, per case
+// bits 0..11 the crossed edges and bits 16.. the triangle count; from TRIANGLES, per case 16 edge
+// numbers of the triangles (0xffffffff after the last); from TRANSITIONS, per transition case 13
+// words: the triangle count, then each triangle's three edges (a byte each, the edge's two samples as
+// nibbles), wound for a right-handed (u, v, w) frame.
+@group(0) @binding(6) var<storage, read> tables: array<u32>;
+const CASES: u32 = 0u;
+const TRIANGLES: u32 = 256u;
+const TRANSITIONS: u32 = 4352u;
 // Per vertex, 6 floats: position, then outward normal.
 @group(0) @binding(10) var<storage, read_write> vertices: array<f32>;
 @group(0) @binding(11) var<storage, read_write> indices: array<u32>;
@@ -32,16 +47,10 @@ struct Lod {
 @group(0) @binding(15) var<storage, read> selection: array<vec4<u32>>;
 // The listed cells: kept block's slot, then cell | case << 10 (cells 0..511 regular, 512.. transition).
 @group(0) @binding(16) var<storage, read_write> cells: array<vec2<u32>>;
-// The hash table: edge keys (0 for an empty slot) and the vertex made for each.
-@group(0) @binding(17) var<storage, read_write> keys: array<atomic<u32>>;
-@group(0) @binding(18) var<storage, read_write> slot_vertices: array<u32>;
-// Per transition case, 13 words: the triangle count, then each triangle's three edges (a byte each,
-// the edge's two samples as nibbles), wound for a right-handed (u, v, w) frame.
-@group(0) @binding(19) var<storage, read> transition_table: array<u32, 6656>;
+// The hash table: per slot, the edge key (0 for an empty slot) and the vertex made for it.
+@group(0) @binding(17) var<storage, read_write> hash: array<atomic<u32>>;
 // Per triangle, its level (with TRANSITION added for a transition cell's).
 @group(0) @binding(20) var<storage, read_write> triangle_levels: array<u32>;
-// Triangles per level: the counters buffer from byte 256 (LEVEL_COUNTS_OFFSET).
-@group(0) @binding(21) var<storage, read_write> level_triangles: array<atomic<u32>, 12>;
 
 const LOD_CELLS: u32 = 8u;
 const LOD_POINTS: u32 = 9u;
@@ -132,7 +141,7 @@ fn find_slot(part: u32, key: u32, insert: bool) -> u32 {
     for (var probe = 0u; probe <= mask; probe++) {
         let s = base + (at & mask);
         if (insert) {
-            let r = atomicCompareExchangeWeak(&keys[s], 0u, key);
+            let r = atomicCompareExchangeWeak(&hash[2u * s], 0u, key);
             if (r.exchanged) {
                 return s | 0x80000000u;
             }
@@ -145,7 +154,7 @@ fn find_slot(part: u32, key: u32, insert: bool) -> u32 {
                 continue;
             }
         } else {
-            let k = atomicLoad(&keys[s]);
+            let k = atomicLoad(&hash[2u * s]);
             if (k == key) {
                 return s;
             }
@@ -186,7 +195,7 @@ fn make_vertex(start: vec3<u32>, axis: u32, level: u32, fa: f32, fb: f32) {
     let slot = claimed & 0x7fffffffu;
     let index = atomicAdd(&counters.vertices, 1u);
     if (index >= grid.max_vertices) {
-        slot_vertices[slot] = INVALID;
+        atomicStore(&hash[2u * slot + 1u], INVALID);
         return;
     }
     let end = start + unit(axis) * (1u << level);
@@ -209,7 +218,7 @@ fn make_vertex(start: vec3<u32>, axis: u32, level: u32, fa: f32, fb: f32) {
         }
     }
     write_vertex(index, p, n);
-    slot_vertices[slot] = index;
+    atomicStore(&hash[2u * slot + 1u], index);
 }
 
 fn point_index(c: vec3<u32>) -> u32 {
@@ -304,7 +313,7 @@ fn find_cells(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_invoca
                 case_index |= 1u << c;
             }
         }
-        let crossed = case_table[case_index] & 0xfffu;
+        let crossed = tables[CASES + case_index] & 0xfffu;
         if (crossed == 0u) {
             continue;
         }
@@ -340,9 +349,9 @@ fn find_cells(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_invoca
             cells[listed] = vec2<u32>(slot, (REGULAR_CELLS + t) | (case_index << 10u));
         }
         let row = case_index * 13u;
-        let count = transition_table[row];
+        let count = tables[TRANSITIONS + row];
         for (var k = 0u; k < count; k++) {
-            let triangle = transition_table[row + 1u + k];
+            let triangle = tables[TRANSITIONS + row + 1u + k];
             for (var j = 0u; j < 3u; j++) {
                 let edge = (triangle >> (8u * j)) & 0xffu;
                 let e = transition_edge(b, face, edge, ci, cj);
@@ -362,7 +371,7 @@ fn vertex_of(start: vec3<u32>, axis: u32, level: u32) -> u32 {
     if (s == INVALID) {
         return INVALID;
     }
-    return slot_vertices[s];
+    return atomicLoad(&hash[2u * s + 1u]);
 }
 
 fn append_triangle(first: u32, k: u32, triangle: vec3<u32>, level: u32) {
@@ -393,9 +402,9 @@ fn make_triangles(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_in
     let case_index = listed.y >> 10u;
     let step = 1u << b.level;
     if (cell < REGULAR_CELLS) {
-        let count = case_table[case_index] >> 16u;
+        let count = tables[CASES + case_index] >> 16u;
         let first = atomicAdd(&counters.indices, count * 3u);
-        atomicAdd(&level_triangles[b.level], count);
+        atomicAdd(&counters.level_triangles[b.level], count);
         let at = vec3<u32>(cell % LOD_CELLS, (cell / LOD_CELLS) % LOD_CELLS, cell / (LOD_CELLS * LOD_CELLS));
         let row = case_index * 16u;
         for (var k = 0u; k < count; k++) {
@@ -403,7 +412,7 @@ fn make_triangles(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_in
             // The table winds clockwise seen from outside; emit counter-clockwise.
             let order = vec3<u32>(0u, 2u, 1u);
             for (var j = 0u; j < 3u; j++) {
-                let e = u32(triangle_table[row + 3u * k + order[j]]);
+                let e = tables[TRIANGLES + row + 3u * k + order[j]];
                 let ca = at + corner_offset(EDGE_CORNERS[e] & 15u);
                 let cb = at + corner_offset(EDGE_CORNERS[e] >> 4u);
                 let axis = select(select(2u, 1u, ca.y != cb.y), 0u, ca.x != cb.x);
@@ -418,11 +427,11 @@ fn make_triangles(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_in
     let ci = t % LOD_CELLS;
     let cj = (t / LOD_CELLS) % LOD_CELLS;
     let row = case_index * 13u;
-    let count = transition_table[row];
+    let count = tables[TRANSITIONS + row];
     let first = atomicAdd(&counters.indices, count * 3u);
-    atomicAdd(&level_triangles[b.level], count);
+    atomicAdd(&counters.level_triangles[b.level], count);
     for (var k = 0u; k < count; k++) {
-        let packed = transition_table[row + 1u + k];
+        let packed = tables[TRANSITIONS + row + 1u + k];
         var triangle = vec3<u32>(0u);
         for (var j = 0u; j < 3u; j++) {
             let e = transition_edge(b, face, (packed >> (8u * j)) & 0xffu, ci, cj);

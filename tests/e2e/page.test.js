@@ -168,8 +168,8 @@ test('the HUD reports frame rate, frame time and triangles at 32, 64 and 128 cel
   }
 });
 
-test('the benchmark mode times both meshers, shows a table, logs it as JSON and says what auto picks', async () => {
-  const { page, errors } = await open('?bench&bench_resolutions=16,24&bench_spheres=1,5&bench_frames=2');
+test('the benchmark mode times both meshers and level of detail, shows a table, logs it as JSON and says what auto picks', async () => {
+  const { page, errors } = await open('?bench&bench_resolutions=16,24&bench_spheres=1,5&bench_frames=2&bench_lod=128');
   const logged = new Promise((resolve) => {
     page.on('console', (m) => { if (m.text().startsWith('metaballs-bench ')) resolve(m.text()); });
   });
@@ -177,7 +177,7 @@ test('the benchmark mode times both meshers, shows a table, logs it as JSON and 
     page.on('console', (m) => { if (m.text().startsWith('metaballs-bench-auto ')) resolve(m.text().split(' ')[1]); });
   });
   const records = JSON.parse((await logged).slice('metaballs-bench '.length));
-  assert.equal(records.length, 8);
+  assert.equal(records.length, 10);
   for (const r of records) {
     for (const key of ['mesher', 'resolution', 'spheres', 'frame_ms', 'mesh_ms', 'triangles']) {
       assert.ok(key in r, `record lacks ${key}: ${JSON.stringify(r)}`);
@@ -187,7 +187,11 @@ test('the benchmark mode times both meshers, shows a table, logs it as JSON and 
   assert.deepEqual(records.map((r) => [r.resolution, r.spheres, r.mesher]), [
     [16, 1, 'gpu'], [16, 1, 'cpu'], [16, 5, 'gpu'], [16, 5, 'cpu'],
     [24, 1, 'gpu'], [24, 1, 'cpu'], [24, 5, 'gpu'], [24, 5, 'cpu'],
+    [128, 16, 'lod-gpu'], [128, 16, 'lod-cpu'],
   ]);
+  for (const r of records.slice(8)) {
+    assert.ok(r.lod && r.blocks_per_level.length >= 1 && r.blocks_per_level.some((n) => n > 0), JSON.stringify(r));
+  }
   // Both meshers make the same kind of surface (the spheres move a few frames between the two rows).
   for (let i = 0; i < records.length; i += 2) {
     const [gpu, cpu] = [records[i].triangles, records[i + 1].triangles];
@@ -196,7 +200,8 @@ test('the benchmark mode times both meshers, shows a table, logs it as JSON and 
   // SwiftShader is a software adapter: auto meshes on the CPU.
   assert.equal(await auto, 'cpu');
   await page.waitForSelector('#bench table');
-  assert.equal(await page.locator('#bench tbody tr').count(), 8);
+  assert.equal(await page.locator('#bench tbody tr').count(), 10);
+  assert.match(await page.textContent('#bench'), /128 LOD/);
   assert.match(await page.textContent('#bench'), /mesher=auto uses the CPU mesher/);
   assert.match(new URL(page.url()).search, /bench/);
   assert.deepEqual(errors, []);

@@ -10,7 +10,7 @@ use crate::extract::buffers::MeshBuffers;
 use crate::extract::extractor::{Capabilities, Extractor, Job, MeshCount, Output};
 use crate::extract::gpu::marching_cubes::{flat_triangle_table, packed_case_table};
 use crate::extract::gpu::scene_buffers::SceneBuffers;
-use crate::extract::uniforms::{Counters, LEVEL_COUNTS_OFFSET, LEVEL_SLOTS};
+use crate::extract::uniforms::Counters;
 use std::sync::{Arc, OnceLock};
 use wgpu::util::DeviceExt;
 
@@ -48,22 +48,17 @@ struct Pipelines {
     plan_cells: wgpu::ComputePipeline,
     triangles: wgpu::ComputePipeline,
     finalize: wgpu::ComputePipeline,
-    case_table: wgpu::Buffer,
-    triangle_table: wgpu::Buffer,
-    transition_table: wgpu::Buffer,
+    /// The case, triangle and transition tables in one buffer (`tables` in the shader).
+    tables: wgpu::Buffer,
 }
 
 impl Pipelines {
     fn new(device: &wgpu::Device) -> Self {
         let module = compute_module(device, "lod: shader", include_str!("../../../shaders/extract/lod.wgsl"));
         let pipeline = |name: &str| compute_pipeline(device, &format!("lod: {name} pipeline"), &module, name);
-        let table = |label: &str, contents: &[u8]| {
-            device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                label: Some(label),
-                contents,
-                usage: wgpu::BufferUsages::STORAGE,
-            })
-        };
+        let mut tables: Vec<u32> = packed_case_table().to_vec();
+        tables.extend(flat_triangle_table().iter().map(|&e| e as u32));
+        tables.extend(packed_transition_table());
         Self {
             classify: pipeline("classify"),
             plan_blocks: pipeline("plan_blocks"),
@@ -71,12 +66,11 @@ impl Pipelines {
             plan_cells: pipeline("plan_cells"),
             triangles: pipeline("make_triangles"),
             finalize: pipeline("finalize_draw"),
-            case_table: table("lod: case table", bytemuck::cast_slice(&packed_case_table())),
-            triangle_table: table("lod: triangle table", bytemuck::cast_slice(&flat_triangle_table())),
-            transition_table: table(
-                "lod: transition table",
-                bytemuck::cast_slice(&packed_transition_table()),
-            ),
+            tables: device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some("lod: tables"),
+                contents: bytemuck::cast_slice(&tables),
+                usage: wgpu::BufferUsages::STORAGE,
+            }),
         }
     }
 }
@@ -86,8 +80,8 @@ struct Bound {
     uniform: wgpu::Buffer,
     selection: wgpu::Buffer,
     selection_capacity: usize,
-    keys: wgpu::Buffer,
-    slot_vertices: wgpu::Buffer,
+    /// Per slot of the vertex hash table, its edge key and vertex.
+    hash: wgpu::Buffer,
     dispatch: wgpu::Buffer,
     groups: [wgpu::BindGroup; 6],
 }
@@ -122,8 +116,7 @@ impl Bound {
         let selection = buffer("lod: selection", selection_capacity as u64 * 16, U::COPY_DST);
         let active = buffer("lod: kept blocks", capacity.blocks as u64 * 4, U::empty());
         let cells = buffer("lod: listed cells", capacity.cells as u64 * 8, U::empty());
-        let keys = buffer("lod: edge keys", table_slots * 4, U::COPY_DST);
-        let slot_vertices = buffer("lod: edge vertices", table_slots * 4, U::empty());
+        let hash = buffer("lod: vertex hash table", table_slots * 8, U::COPY_DST);
         let dispatch = buffer("lod: dispatch", 24, U::INDIRECT);
         let group = |label: &str, pipeline: &wgpu::ComputePipeline, entries: &[(u32, &wgpu::Buffer)]| {
             bind_buffers(device, label, pipeline, entries)
@@ -154,61 +147,38 @@ impl Bound {
                     (1, &scene.spheres),
                     (2, &mesh.counters),
                     (3, &active),
-                    (6, &p.case_table),
+                    (6, &p.tables),
                     (10, &mesh.vertices),
                     (14, &uniform),
                     (15, &selection),
                     (16, &cells),
-                    (17, &keys),
-                    (18, &slot_vertices),
-                    (19, &p.transition_table),
+                    (17, &hash),
                 ],
             ),
             group("lod: plan cells", &p.plan_cells, &[(0, &scene.grid), (2, &mesh.counters), (5, &dispatch)]),
-            {
-                let mut entries: Vec<wgpu::BindGroupEntry> = [
+            group(
+                "lod: triangles",
+                &p.triangles,
+                &[
                     (0, &scene.grid),
                     (2, &mesh.counters),
                     (3, &active),
-                    (6, &p.case_table),
-                    (7, &p.triangle_table),
+                    (6, &p.tables),
                     (11, &mesh.indices),
                     (14, &uniform),
                     (15, &selection),
                     (16, &cells),
-                    (17, &keys),
-                    (18, &slot_vertices),
-                    (19, &p.transition_table),
+                    (17, &hash),
                     (20, &mesh.triangle_levels),
-                ]
-                .into_iter()
-                .map(|(binding, buffer): (u32, &wgpu::Buffer)| wgpu::BindGroupEntry {
-                    binding,
-                    resource: buffer.as_entire_binding(),
-                })
-                .collect();
-                // The per-level counts, apart from the counters they follow.
-                entries.push(wgpu::BindGroupEntry {
-                    binding: 21,
-                    resource: wgpu::BindingResource::Buffer(wgpu::BufferBinding {
-                        buffer: &mesh.counters,
-                        offset: LEVEL_COUNTS_OFFSET,
-                        size: wgpu::BufferSize::new(4 * LEVEL_SLOTS as u64),
-                    }),
-                });
-                device.create_bind_group(&wgpu::BindGroupDescriptor {
-                    label: Some("lod: triangles"),
-                    layout: &p.triangles.get_bind_group_layout(0),
-                    entries: &entries,
-                })
-            },
+                ],
+            ),
             group(
                 "lod: finalize",
                 &p.finalize,
                 &[(0, &scene.grid), (2, &mesh.counters), (12, &mesh.draw_args)],
             ),
         ];
-        Self { uniform, selection, selection_capacity, keys, slot_vertices, dispatch, groups }
+        Self { uniform, selection, selection_capacity, hash, dispatch, groups }
     }
 }
 
@@ -287,7 +257,7 @@ impl Extractor for LodGpuExtractor {
             self.stale = false;
         }
         encoder.clear_buffer(&buffers.counters, 0, None);
-        encoder.clear_buffer(&bound.keys, 0, None);
+        encoder.clear_buffer(&bound.hash, 0, None);
         let [classify, plan_blocks, find_cells, plan_cells, triangles, finalize] = &bound.groups;
         let describe = |label: &'static str, stage: u32| wgpu::ComputePassDescriptor {
             label: Some(label),
@@ -320,7 +290,6 @@ impl Extractor for LodGpuExtractor {
             pass.set_bind_group(0, finalize, &[]);
             pass.dispatch_workgroups(1, 1, 1);
         }
-        let _ = &bound.slot_vertices;
         MeshCount::OnDevice
     }
 
