@@ -150,13 +150,7 @@ fn ply(mesh: &IndexedMesh, scale: f32) -> Vec<u8> {
 /// The volume the mesh encloses (divergence theorem over its triangles; positive when they are
 /// wound counter-clockwise seen from outside).
 pub fn enclosed_volume(mesh: &IndexedMesh) -> f64 {
-    mesh.triangles
-        .iter()
-        .map(|t| {
-            let [a, b, c] = t.map(|i| mesh.positions[i as usize].as_dvec3());
-            a.dot(b.cross(c)) / 6.0
-        })
-        .sum()
+    mesh.enclosed_volume()
 }
 
 /// The mesh reduced to about `target_triangles` by edge collapses (meshoptimizer), keeping it closed:

@@ -31,9 +31,13 @@ fn every_setter_refuses_bad_values_and_keeps_the_previous_state() {
         assert_refused(r.set_iso(-1.0), "iso level must be between 0.05 and 20, got -1");
         assert_refused(r.set_iso(1e9), "iso level must be between");
 
-        assert_refused(r.set_resolution(0), "resolution (cells per axis) must be between 8 and 512, got 0");
-        assert_refused(r.set_resolution(7), "resolution (cells per axis) must be between 8 and 512, got 7");
-        assert_refused(r.set_resolution(100_000), "resolution (cells per axis) must be between 8 and 512");
+        assert_refused(r.set_resolution(0), "resolution (cells per axis) must be between 8 and 2048, got 0");
+        assert_refused(r.set_resolution(7), "resolution (cells per axis) must be between 8 and 2048, got 7");
+        assert_refused(r.set_resolution(100_000), "resolution (cells per axis) must be between 8 and 2048");
+        assert_refused(
+            r.set_resolution(1024),
+            "resolution must be at most 512 for a uniform grid (lod=on goes up to 2048)",
+        );
 
         let material = Material::default();
         for bad in BAD_FLOATS {
@@ -185,8 +189,11 @@ fn every_cli_flag_refuses_bad_values_with_its_message() {
         (&["--iso", "NaN"], "iso level must be a number, got NaN"),
         (&["--iso", "inf"], "iso level must be finite, got infinity"),
         (&["--iso", "-2"], "iso level must be between 0.05 and 20, got -2"),
-        (&["--resolution", "4"], "resolution (cells per axis) must be between 8 and 512, got 4"),
-        (&["--resolution", "9999"], "resolution (cells per axis) must be between 8 and 512, got 9999"),
+        (&["--resolution", "4"], "resolution (cells per axis) must be between 8 and 2048, got 4"),
+        (&["--resolution", "9999"], "resolution (cells per axis) must be between 8 and 2048, got 9999"),
+        (&["--resolution", "1024"], "at most 512 for a uniform grid (lod=on goes up to 2048)"),
+        (&["--view", "lod=on", "--resolution", "100"], "a multiple of 8 with lod=on"),
+        (&["--view", "lod_px=0"], "LOD cell size (pixels) must be between 0.25 and 32"),
         (&["--size", "0x10"], "width must be a whole number from 1 to 8192"),
         (&["--size", "640"], "size must look like 960x640"),
         (&["--size", "10x99999"], "height must be a whole number from 1 to 8192"),
@@ -292,6 +299,6 @@ fn the_benchmark_runs_and_writes_json_records() {
     }
     let (code, _, stderr) = cli(&["bench", "--resolutions", "4"]);
     assert_eq!(code, 2);
-    assert!(stderr.contains("resolution (cells per axis) must be between 8 and 512, got 4"), "{stderr}");
+    assert!(stderr.contains("resolution (cells per axis) must be between 8 and 2048, got 4"), "{stderr}");
     std::fs::remove_dir_all(&dir).unwrap();
 }

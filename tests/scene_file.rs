@@ -163,7 +163,7 @@ fn bad_documents_are_refused_with_the_field_and_value_and_change_nothing() {
         (
             "resolution not whole",
             doc(sphere, r#","settings":{"resolution":64.5}"#),
-            "settings.resolution: resolution (cells per axis) must be a whole number from 8 to 512, got \"64.5\"",
+            "settings.resolution: resolution (cells per axis) must be a whole number from 8 to 2048, got \"64.5\"",
         ),
         (
             "unknown setting",
@@ -197,4 +197,19 @@ fn bad_documents_are_refused_with_the_field_and_value_and_change_nothing() {
             }
         }
     }
+}
+
+#[test]
+fn a_scene_with_level_of_detail_past_512_loads_whatever_the_order_of_its_settings() {
+    let mut scene = a_scene();
+    scene.settings.retain(|(name, _)| *name != "resolution");
+    scene.settings.insert(0, ("resolution", Value::Number(1024.0)));
+    scene.settings.push(("lod", Value::Boolean(true)));
+    scene.settings.push(("lod_pixels", Value::Number(3.0)));
+    let read = SceneFile::parse(&scene.to_json()).unwrap();
+    let settings = read.applied_to(Settings::default()).unwrap();
+    assert_eq!((settings.resolution, settings.view.lod, settings.view.lod_pixels), (1024, true, 3.0));
+    scene.settings.retain(|(name, _)| *name != "lod");
+    let error = scene.applied_to(Settings::default()).unwrap_err().to_string();
+    assert!(error.contains("settings.resolution") && error.contains("lod=on goes up to 2048"), "{error}");
 }

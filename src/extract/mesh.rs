@@ -143,6 +143,18 @@ impl IndexedMesh {
         }
     }
 
+    /// The volume the mesh encloses (divergence theorem over its triangles; positive when they are
+    /// wound counter-clockwise seen from outside).
+    pub fn enclosed_volume(&self) -> f64 {
+        self.triangles
+            .iter()
+            .map(|t| {
+                let [a, b, c] = t.map(|i| self.positions[i as usize].as_dvec3());
+                a.dot(b.cross(c)) / 6.0
+            })
+            .sum()
+    }
+
     /// Edge use, orientation and per-component Euler characteristic.
     pub fn topology(&self) -> Topology {
         let mut directed: HashMap<(u32, u32), u32> = HashMap::new();

@@ -235,7 +235,9 @@ impl SceneFile {
     /// belong to the page, and are left out), and the sphere count of this scene.
     pub fn applied_to(&self, base: Settings) -> Result<Settings, SceneError> {
         let mut settings = Settings { sphere_count: self.spheres.len() as u32, ..base };
-        for (name, value) in &self.settings {
+        // Level of detail first: it decides which resolutions are allowed.
+        let lod_first = self.settings.iter().filter(|(n, _)| *n == "lod");
+        for (name, value) in lod_first.chain(self.settings.iter().filter(|(n, _)| *n != "lod")) {
             if matches!(*name, "speed" | "paused") {
                 continue;
             }

@@ -199,7 +199,7 @@ fn lod_meshes_have_the_uniform_meshs_topology_and_volume() {
         let resolution = 128;
         let oracle =
             reference::extract(scene.spheres(), 1.0, Grid { cells_per_axis: resolution }).weld_by_edge();
-        let volume = crate::export::enclosed_volume(&oracle);
+        let volume = oracle.enclosed_volume();
         let expected: Vec<i64> =
             oracle.topology().components.iter().filter(|c| c.1 > 16).map(|c| c.0).collect();
         for (c, position) in cameras().into_iter().enumerate() {
@@ -217,7 +217,7 @@ fn lod_meshes_have_the_uniform_meshs_topology_and_volume() {
             // of a few vertices. Apart from those, the components are the oracle's.
             let euler: Vec<i64> = topology.components.iter().filter(|c| c.1 > 16).map(|c| c.0).collect();
             assert_eq!(euler, expected, "{what}: Euler characteristic per component");
-            let ours = crate::export::enclosed_volume(&mesh);
+            let ours = mesh.enclosed_volume();
             assert!((ours - volume).abs() < 0.01 * volume, "{what}: volume {ours} against {volume}");
         }
     }
