@@ -179,7 +179,12 @@ fn measure(offscreen: &mut Offscreen, plan: &Plan, timed: bool) -> Result<Record
         median(&mut times)
     };
     let lod = offscreen.renderer.lod_summary();
-    let cells_processed = lod.as_ref().map_or(stats.active_blocks as u64 * 64, |l| l.cells_processed);
+    // Every cell of the kept blocks (uniform blocks of 4³ cells, LOD blocks of 8³), and the transition
+    // cells where the LOD mesher counts them.
+    let cells_processed = match &lod {
+        None => stats.active_blocks as u64 * 64,
+        Some(l) => l.cells_processed.unwrap_or(stats.active_blocks as u64 * 512),
+    };
     let oracle_ms = (plan.oracle && settings.resolution <= MAX_UNIFORM_RESOLUTION).then(|| {
         let started = Instant::now();
         let mesh = reference::extract(

@@ -181,6 +181,19 @@ impl MeshBuffers {
         ]
     }
 
+    /// Writes a mesh made on the CPU (6 `f32` per vertex, 3 indices per triangle), as much of it as
+    /// the buffers hold, and returns the indices written.
+    pub fn upload(&self, queue: &wgpu::Queue, vertices: &[f32], indices: &[u32]) -> u32 {
+        let written = (indices.len() as u32).min(self.capacity.indices);
+        if !vertices.is_empty() && vertices.len() as u64 <= 6 * self.capacity.vertices as u64 {
+            queue.write_buffer(&self.vertices, 0, bytemuck::cast_slice(vertices));
+        }
+        if written > 0 {
+            queue.write_buffer(&self.indices, 0, bytemuck::cast_slice(&indices[..written as usize]));
+        }
+        written
+    }
+
     /// GPU memory these buffers hold, in bytes.
     pub fn bytes(&self) -> u64 {
         self.all().iter().map(|b| b.size()).sum()

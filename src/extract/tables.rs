@@ -58,6 +58,16 @@ const fn case_triangles() -> [u8; 256] {
 /// The most triangles a single cell can emit.
 pub const MAX_TRIANGLES_PER_CELL: usize = 5;
 
+/// The case table as the shader reads it: crossed-edge mask in bits 0..11, triangle count from bit 16.
+pub fn packed_case_table() -> [u32; 256] {
+    std::array::from_fn(|case| EDGE_TABLE[case] as u32 | (CASE_TRIANGLES[case] as u32) << 16)
+}
+
+/// The triangle table flattened to 16 `i32` per case.
+pub fn flat_triangle_table() -> Vec<i32> {
+    TRI_TABLE.iter().flatten().map(|&e| e as i32).collect()
+}
+
 /// For each case, the triangles as triples of edge numbers, ended by -1.
 pub const TRI_TABLE: [[i8; 16]; 256] = [
     [-1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1],

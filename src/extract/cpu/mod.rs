@@ -48,7 +48,7 @@ impl Extractor for CpuExtractor {
 
     fn write(&mut self, output: Output) -> MeshCount {
         let mesher = &self.mesher;
-        let indices = upload(&output, &mesher.vertices, &mesher.indices);
+        let indices = output.buffers.upload(output.queue, &mesher.vertices, &mesher.indices);
         let (vertices, requested) = (mesher.vertex_count(), mesher.indices.len() as u32);
         self.written = indices;
         let stats = mesher.stats();
@@ -66,18 +66,4 @@ impl Extractor for CpuExtractor {
         mesh.triangles.truncate(self.written as usize / 3);
         Some(mesh)
     }
-}
-
-/// Writes a mesh made on the CPU (6 `f32` per vertex, 3 indices per triangle) into the buffers, as
-/// much of it as they hold, and returns the indices written.
-pub(crate) fn upload(output: &Output, vertices: &[f32], indices: &[u32]) -> u32 {
-    let Output { queue, buffers, .. } = output;
-    let written = (indices.len() as u32).min(buffers.capacity.indices);
-    if !vertices.is_empty() && vertices.len() as u64 <= 6 * buffers.capacity.vertices as u64 {
-        queue.write_buffer(&buffers.vertices, 0, bytemuck::cast_slice(vertices));
-    }
-    if written > 0 {
-        queue.write_buffer(&buffers.indices, 0, bytemuck::cast_slice(&indices[..written as usize]));
-    }
-    written
 }

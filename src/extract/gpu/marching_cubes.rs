@@ -4,18 +4,8 @@
 use crate::device::{bind_buffers, compute_module, compute_pipeline};
 use crate::extract::buffers::MeshBuffers;
 use crate::extract::gpu::scene_buffers::SceneBuffers;
-use crate::extract::tables::{CASE_TRIANGLES, EDGE_TABLE, TRI_TABLE};
+use crate::extract::tables::{flat_triangle_table, packed_case_table};
 use wgpu::util::DeviceExt;
-
-/// The case table as the shader reads it: crossed-edge mask in bits 0..11, triangle count from bit 16.
-pub fn packed_case_table() -> [u32; 256] {
-    std::array::from_fn(|case| EDGE_TABLE[case] as u32 | (CASE_TRIANGLES[case] as u32) << 16)
-}
-
-/// The triangle table flattened to 16 `i32` per case.
-pub fn flat_triangle_table() -> Vec<i32> {
-    TRI_TABLE.iter().flatten().map(|&e| e as i32).collect()
-}
 
 /// Owns the marching-cubes pipelines, the tables on the GPU, and bind groups for the current buffers.
 #[derive(Clone)]

@@ -4,7 +4,6 @@
 use super::mesher::LodMesher;
 use super::select::Selection;
 use super::{LodSummary, next_selection};
-use crate::extract::cpu::upload;
 use crate::extract::extractor::{Capabilities, Extractor, Job, MeshCount, Output};
 use crate::extract::mesh::IndexedMesh;
 use crate::extract::uniforms::Counters;
@@ -53,7 +52,7 @@ impl Extractor for LodCpuExtractor {
 
     fn write(&mut self, output: Output) -> MeshCount {
         let mesher = &self.mesher;
-        self.written = upload(&output, &mesher.vertices, &mesher.indices);
+        self.written = output.buffers.upload(output.queue, &mesher.vertices, &mesher.indices);
         let stats = mesher.stats();
         let needed = Counters {
             active_blocks: stats.active_blocks,
@@ -87,7 +86,7 @@ impl Extractor for LodCpuExtractor {
             resolution: self.selection.resolution,
             blocks: stats.blocks.clone(),
             triangles: Some(stats.triangles.clone()),
-            cells_processed: stats.cells_processed,
+            cells_processed: Some(stats.cells_processed),
         })
     }
 }

@@ -8,8 +8,8 @@ use super::{LodSummary, next_selection};
 use crate::device::{bind_buffers, compute_module, compute_pipeline, has_compute};
 use crate::extract::buffers::MeshBuffers;
 use crate::extract::extractor::{Capabilities, Extractor, Job, MeshCount, Output};
-use crate::extract::gpu::marching_cubes::{flat_triangle_table, packed_case_table};
 use crate::extract::gpu::scene_buffers::SceneBuffers;
+use crate::extract::tables::{flat_triangle_table, packed_case_table};
 use crate::extract::uniforms::Counters;
 use std::sync::{Arc, OnceLock};
 use wgpu::util::DeviceExt;
@@ -298,7 +298,7 @@ impl Extractor for LodGpuExtractor {
             resolution: self.selection.resolution,
             blocks: self.selection.blocks_per_level(),
             triangles: None,
-            cells_processed: 0,
+            cells_processed: None,
         })
     }
 }

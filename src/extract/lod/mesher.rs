@@ -9,7 +9,7 @@
 
 use super::select::{BLOCK_CELLS, Block, Selection};
 use super::transition::{self, HALF_RESOLUTION};
-use crate::extract::cpu::mesher::{Spheres, sample_run};
+use crate::extract::field::{Spheres, sample_run};
 use crate::extract::mesh::IndexedMesh;
 use crate::extract::reference::{self, Construction, Grid};
 use crate::extract::tables::{CASE_TRIANGLES, CORNER_OFFSETS, EDGE_CORNERS, EDGE_TABLE, TRI_TABLE};

@@ -14,8 +14,8 @@ pub mod transition;
 #[cfg(test)]
 mod tests;
 
-use super::cpu::mesher::Spheres;
 use super::extractor::Job;
+use super::field::Spheres;
 use crate::scene::Sphere;
 use crate::scene::params::view::Blend;
 use select::{Eye, Selection};
@@ -29,8 +29,9 @@ pub struct LodSummary {
     pub blocks: Vec<u32>,
     /// Triangles per level, where the extractor counts them on the CPU.
     pub triangles: Option<Vec<u32>>,
-    /// Cells meshed: regular cells of the blocks the bounds kept and their transition cells.
-    pub cells_processed: u64,
+    /// Cells meshed: regular cells of the blocks the bounds kept and their transition cells, where
+    /// the extractor counts them on the CPU.
+    pub cells_processed: Option<u64>,
 }
 
 /// The selection for `job`, or `None` to keep `current` (frozen, and made for the same resolution).
