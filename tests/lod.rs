@@ -262,3 +262,32 @@ fn every_lod_pass_fits_webgpus_default_limits() {
     }
     assert_eq!(o.renderer.gpu_error(), None);
 }
+
+#[test]
+fn grid_blocks_outlines_the_lod_blocks_alike_on_both_paths() {
+    let (width, height) = (320, 240);
+    let mut settings = lod_settings(3, 16, 256, 6.0, 1.8).with_parameter("grid", "blocks").unwrap();
+    settings.antialiasing = false;
+    let mut pictures = Vec::new();
+    for name in ["lod-gpu", "lod-cpu"] {
+        let (plain, outlined) = with_renderer(settings, width, height, |o| {
+            o.renderer.pin_extractor(Some(name)).unwrap();
+            for _ in 0..3 {
+                o.render();
+                pollster::block_on(o.renderer.flush_stats());
+            }
+            let outlined = o.render_rgba();
+            let mut plain = *o.renderer.settings();
+            plain.view.grid = metaballs::scene::params::view::GridView::None;
+            o.renderer.set_settings(plain).unwrap();
+            o.render();
+            (o.render_rgba(), outlined)
+        });
+        let differing = plain.chunks(4).zip(outlined.chunks(4)).filter(|(a, b)| a != b).count();
+        assert!(differing * 50 > plain.len() / 4, "{name}: the outlines change {differing} pixels");
+        assert_matches_reference(&format!("lod_blocks_{name}"), width, height, &outlined);
+        pictures.push(outlined);
+    }
+    let (mean, _) = flip(width, height, &pictures[0], &pictures[1]);
+    assert!(mean < 0.01, "the GPU and CPU outlines differ: mean FLIP {mean}");
+}

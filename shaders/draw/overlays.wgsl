@@ -14,8 +14,8 @@ struct Overlays {
     _pad0: u32,
     _pad1: u32,
     _pad2: u32,
-    // Seven indirect draws of four words (src/draw/views/, `Draw`).
-    draws: array<u32, 28>,
+    // Eight indirect draws of four words (src/draw/views/, `Draw`).
+    draws: array<u32, 32>,
 }
 
 @group(0) @binding(24) var<storage, read_write> overlays: Overlays;
@@ -123,4 +123,6 @@ fn plan_overlays() {
     set_draw(4u, 24u, min(atomicLoad(&counters.active_blocks), grid.max_blocks));
     set_draw(5u, 24u, cell_count);
     set_draw(6u, 2u, min(atomicLoad(&overlays.segment_count), 2u * n * n));
+    // Level of detail's kept blocks: 12 edges and two diagonals on each of six faces.
+    set_draw(7u, 48u, min(atomicLoad(&counters.active_blocks), grid.max_blocks));
 }

@@ -42,7 +42,8 @@ struct Shading {
     selected: u32,
     lattice_alpha: f32,
     selected_cell: vec3<u32>,
-    _pad: u32,
+    // Where the LOD blocks start in `lod_data` (shaders/draw/views/common.wgsl), in words.
+    lod_blocks_offset: u32,
     // x: the axis across the lattice's slab; y, z: its first and last grid planes.
     lattice_slab: vec4<u32>,
     lights: array<Light, 3>,

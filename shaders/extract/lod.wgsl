@@ -13,8 +13,9 @@ struct Lod {
     block_count: u32,
     // Slots in each of the hash table's PARTITIONS partitions (a power of two).
     partition_slots: u32,
-    _pad0: u32,
-    _pad1: u32,
+    // Where the kept blocks start in `lod_data`, in words.
+    blocks_offset: u32,
+    _pad: u32,
 }
 
 // The counters, then from word 64 (byte 256, LEVEL_COUNTS_OFFSET) the triangles of each level.
@@ -49,8 +50,9 @@ const TRANSITIONS: u32 = 4352u;
 @group(0) @binding(16) var<storage, read_write> cells: array<vec2<u32>>;
 // The hash table: per slot, the edge key (0 for an empty slot) and the vertex made for it.
 @group(0) @binding(17) var<storage, read_write> hash: array<atomic<u32>>;
-// Per triangle, its level (with TRANSITION added for a transition cell's).
-@group(0) @binding(20) var<storage, read_write> triangle_levels: array<u32>;
+// Per triangle, its level (with TRANSITION added for a transition cell's); then from
+// lod.blocks_offset the kept blocks as the views draw them (grid=blocks), four words each.
+@group(0) @binding(20) var<storage, read_write> lod_data: array<u32>;
 
 const LOD_CELLS: u32 = 8u;
 const LOD_POINTS: u32 = 9u;
@@ -105,6 +107,12 @@ fn classify(@builtin(global_invocation_id) id: vec3<u32>) {
         let s = atomicAdd(&counters.active_blocks, 1u);
         if (s < grid.max_blocks) {
             active_blocks[s] = index;
+            let b = selection[index];
+            let at = lod.blocks_offset + 4u * s;
+            lod_data[at] = b.x;
+            lod_data[at + 1u] = b.y;
+            lod_data[at + 2u] = b.z;
+            lod_data[at + 3u] = b.w;
         }
     }
 }
@@ -387,7 +395,7 @@ fn append_triangle(first: u32, k: u32, triangle: vec3<u32>, level: u32) {
     indices[at] = t.x;
     indices[at + 1u] = t.y;
     indices[at + 2u] = t.z;
-    triangle_levels[at / 3u] = level;
+    lod_data[at / 3u] = level;
 }
 
 @compute @workgroup_size(64)

@@ -62,7 +62,8 @@ pub struct ShadingUniform {
     /// Opacity of the lattice's lines.
     pub lattice_alpha: f32,
     pub selected_cell: [u32; 3],
-    pub _pad: u32,
+    /// Where the LOD blocks start in the mesh's `lod_data`, in words.
+    pub lod_blocks_offset: u32,
     /// The lattice's slab: the axis across it, its first and last grid planes, then padding.
     pub lattice_slab: [u32; 4],
     pub lights: [LightUniform; 3],

@@ -106,8 +106,11 @@ pub struct MeshBuffers {
     pub edge_vertices: wgpu::Buffer,
     pub vertices: wgpu::Buffer,
     pub indices: wgpu::Buffer,
-    /// Each triangle's level of detail (with `lod=on`), for `color_by=level`.
-    pub triangle_levels: wgpu::Buffer,
+    /// With `lod=on`: each triangle's level of detail (for `color_by=level`), then from
+    /// [`MeshBuffers::lod_blocks_offset`] the blocks the surface may cross, four words each (origin,
+    /// level | transition faces << 8; for `grid=blocks`, as many as the counters' `active_blocks`). One
+    /// buffer, as a stage binds at most 8 storage buffers.
+    pub lod_data: wgpu::Buffer,
     pub draw_args: wgpu::Buffer,
 }
 
@@ -154,9 +157,9 @@ impl MeshBuffers {
                 capacity.indices as u64 * INDEX_BYTES,
                 U::INDEX | U::COPY_SRC | U::COPY_DST,
             ),
-            triangle_levels: buffer(
-                "mesh: triangle levels",
-                if storage { capacity.indices as u64 / 3 * 4 } else { 0 },
+            lod_data: buffer(
+                "mesh: LOD levels and blocks",
+                if storage { (capacity.indices as u64 / 3 + 4 * blocks) * 4 } else { 0 },
                 U::COPY_DST,
             ),
             draw_args: buffer("mesh: draw arguments", 20, U::INDIRECT),
@@ -176,7 +179,7 @@ impl MeshBuffers {
             &self.edge_vertices,
             &self.vertices,
             &self.indices,
-            &self.triangle_levels,
+            &self.lod_data,
             &self.draw_args,
         ]
     }
@@ -192,6 +195,11 @@ impl MeshBuffers {
             queue.write_buffer(&self.indices, 0, bytemuck::cast_slice(&indices[..written as usize]));
         }
         written
+    }
+
+    /// Where the LOD blocks start in `lod_data`, in words: after one level per triangle.
+    pub fn lod_blocks_offset(&self) -> u32 {
+        self.capacity.indices / 3
     }
 
     /// GPU memory these buffers hold, in bytes.

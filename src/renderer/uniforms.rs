@@ -51,6 +51,7 @@ impl Renderer {
             iso: s.iso,
             selected: self.selected.is_some() as u32,
             selected_cell: self.selected.unwrap_or(UVec3::ZERO).to_array(),
+            lod_blocks_offset: self.mesh.lod_blocks_offset(),
             lights: lights(&self.settings),
             background_top: s.view.background()[0],
             background_bottom: s.view.background()[1],

@@ -22,7 +22,7 @@ fn triangle_color(a: vec3<f32>, b: vec3<f32>, c: vec3<f32>, triangle: u32) -> ve
     } else if (shading.color_by == COLOR_CASE) {
         return class_color(class_of(case_at((a + b + c) / 3.0)));
     } else if (shading.color_by == COLOR_LEVEL) {
-        let level = triangle_levels[triangle];
+        let level = lod_data[triangle];
         let color = level_color(level & 127u);
         // Transition cells' triangles, which stitch two levels, show paler.
         return select(color, mix(color, vec3<f32>(1.0), 0.55), level >= 128u);

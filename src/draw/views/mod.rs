@@ -20,11 +20,12 @@ enum Draw {
     Blocks = 4,
     Ambiguous = 5,
     Contour = 6,
+    LodBlocks = 7,
 }
 
 /// Bytes before the draws in the overlay buffer (the segment counter, padded).
 const DRAWS_OFFSET: u64 = 16;
-const OVERLAY_BYTES: u64 = DRAWS_OFFSET + 7 * 16;
+const OVERLAY_BYTES: u64 = DRAWS_OFFSET + 8 * 16;
 /// Side of the axis gizmo's square, in pixels.
 const GIZMO_PIXELS: f32 = 72.0;
 
@@ -52,12 +53,14 @@ pub fn needed(options: &ViewOptions, selected: bool) -> bool {
 }
 
 /// The views `options` ask for that the frame's mesh can show: with level of detail there is no
-/// uniform grid, so its lattice, cells, blocks, ambiguous faces and slice are left out.
+/// uniform grid, so its lattice, cells, ambiguous faces and slice are left out (`grid=blocks` shows
+/// the LOD blocks).
 pub fn shown(options: &ViewOptions) -> ViewOptions {
     if !options.lod {
         return *options;
     }
-    ViewOptions { grid: GridView::None, ambiguous: false, slice: None, ..*options }
+    let grid = if options.grid == GridView::Blocks { GridView::Blocks } else { GridView::None };
+    ViewOptions { grid, ambiguous: false, slice: None, ..*options }
 }
 
 /// One renderer's view resources for one grid: the slice's samples and contour, the overlay counts
@@ -112,7 +115,7 @@ impl ViewState {
                     (11, &mesh.indices),
                     (13, &mesh.active_cells),
                     (20, shading),
-                    (26, &mesh.triangle_levels),
+                    (26, &mesh.lod_data),
                     (21, &slice_values),
                     (22, &segments),
                     (23, &p.case_classes),
@@ -249,6 +252,7 @@ impl ViewState {
                 pass.draw(0..vertices, 0..instances);
             }
             GridView::Cells => self.indirect(pass, &p.cells, Draw::Cells),
+            GridView::Blocks if options.lod => self.indirect(pass, &p.lod_blocks, Draw::LodBlocks),
             GridView::Blocks => self.indirect(pass, &p.blocks, Draw::Blocks),
         }
         if options.ambiguous {

@@ -31,6 +31,7 @@ pub struct ViewPipelines {
     pub(super) lattice: wgpu::RenderPipeline,
     pub(super) cells: wgpu::RenderPipeline,
     pub(super) blocks: wgpu::RenderPipeline,
+    pub(super) lod_blocks: wgpu::RenderPipeline,
     pub(super) ambiguous: wgpu::RenderPipeline,
     pub(super) contour: wgpu::RenderPipeline,
     pub(super) slice: wgpu::RenderPipeline,
@@ -161,6 +162,7 @@ impl ViewPipelines {
             lattice: line("views: lattice pipeline", "lattice_vertex"),
             cells: line("views: cell pipeline", "cell_vertex"),
             blocks: line("views: block pipeline", "block_vertex"),
+            lod_blocks: line("views: LOD block pipeline", "lod_block_vertex"),
             // On top: an ambiguous face lies where the surface pinches, mostly inside it.
             ambiguous: on_top("views: ambiguous face pipeline", "ambiguous_vertex", LineList),
             contour: line("views: contour pipeline", "contour_vertex"),

@@ -62,10 +62,16 @@ impl Extractor for LodCpuExtractor {
         };
         let buffers = output.buffers;
         // The views colour by level and count what to draw from the device's copies.
-        if buffers.triangle_levels.size() >= 4 * (self.written as u64 / 3) && self.written > 0 {
+        let lod_data = &buffers.lod_data;
+        if lod_data.size() >= 4 * (self.written as u64 / 3) && self.written > 0 {
             let levels: Vec<u32> =
                 mesher.triangle_levels[..self.written as usize / 3].iter().map(|&l| l as u32).collect();
-            output.queue.write_buffer(&buffers.triangle_levels, 0, bytemuck::cast_slice(&levels));
+            output.queue.write_buffer(lod_data, 0, bytemuck::cast_slice(&levels));
+        }
+        let kept = mesher.kept_blocks.len().min(buffers.capacity.blocks as usize);
+        let at = 4 * buffers.lod_blocks_offset() as u64;
+        if kept > 0 && lod_data.size() >= at + 16 * kept as u64 {
+            output.queue.write_buffer(lod_data, at, bytemuck::cast_slice(&mesher.kept_blocks[..kept]));
         }
         if buffers.counters.usage().contains(wgpu::BufferUsages::STORAGE) {
             let drawn = Counters { indices: self.written, ..needed };

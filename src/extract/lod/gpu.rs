@@ -110,7 +110,7 @@ impl Bound {
         let selection_capacity = blocks.next_power_of_two().max(64);
         let uniform = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("lod: uniforms"),
-            contents: bytemuck::cast_slice(&[0u32, partition_slots as u32, 0, 0]),
+            contents: bytemuck::cast_slice(&[0u32, partition_slots as u32, mesh.lod_blocks_offset(), 0]),
             usage: U::UNIFORM | U::COPY_DST,
         });
         let selection = buffer("lod: selection", selection_capacity as u64 * 16, U::COPY_DST);
@@ -132,6 +132,7 @@ impl Bound {
                     (3, &active),
                     (14, &uniform),
                     (15, &selection),
+                    (20, &mesh.lod_data),
                 ],
             ),
             group(
@@ -169,7 +170,7 @@ impl Bound {
                     (15, &selection),
                     (16, &cells),
                     (17, &hash),
-                    (20, &mesh.triangle_levels),
+                    (20, &mesh.lod_data),
                 ],
             ),
             group(

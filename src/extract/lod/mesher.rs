@@ -47,6 +47,8 @@ pub struct LodMesher {
     pub indices: Vec<u32>,
     /// The level of each triangle, with [`TRANSITION`] added for a transition cell's.
     pub triangle_levels: Vec<u8>,
+    /// The blocks the bounds kept: origin, then level | transition faces << 8.
+    pub kept_blocks: Vec<[u32; 4]>,
     stats: LodStats,
     spheres: Spheres,
     /// Vertex by edge key.
@@ -123,6 +125,7 @@ impl LodMesher {
         self.vertices.clear();
         self.indices.clear();
         self.triangle_levels.clear();
+        self.kept_blocks.clear();
         self.edges.clear();
         let levels = selection.levels as usize;
         self.stats = LodStats {
@@ -146,6 +149,7 @@ impl LodMesher {
             return;
         }
         self.stats.active_blocks += 1;
+        self.kept_blocks.push([origin.x, origin.y, origin.z, block.level | (block.transitions as u32) << 8]);
         self.sample_block(frame, block);
         let m = (BLOCK_CELLS + 1) as usize;
         let at = |c: UVec3| c.x as usize + m * (c.y as usize + m * c.z as usize);
