@@ -177,3 +177,47 @@ fn straddles(low: vec3<f32>, high: vec3<f32>, touches_walls: bool) -> bool {
     let all_inside = !touches_walls && lower * (1.0 - BOUND_MARGIN) > grid.iso;
     return !all_outside && !all_inside;
 }
+
+// The arguments of an indexed indirect draw.
+struct DrawIndexedIndirect {
+    index_count: u32,
+    instance_count: u32,
+    first_index: u32,
+    base_vertex: i32,
+    first_instance: u32,
+}
+
+// One instance of the first `indices` indices written, never more than the buffer holds.
+fn indexed_draw(indices: u32) -> DrawIndexedIndirect {
+    return DrawIndexedIndirect(min(indices, grid.max_indices), 1u, 0u, 0, 0u);
+}
+
+// A surface vertex: where the edge from grid point `a` to `b` (values fa, fb) crosses iso, and its
+// outward normal: analytic, or across the wall where one end lies on the box's faces (the cap there is
+// flat), or along the edge where the gradient vanishes (reference.rs does the same).
+struct EdgeVertex {
+    position: vec3<f32>,
+    normal: vec3<f32>,
+}
+
+fn edge_vertex(a: vec3<u32>, b: vec3<u32>, fa: f32, fb: f32) -> EdgeVertex {
+    let pa = grid_point(a);
+    let pb = grid_point(b);
+    let t = edge_parameter(fa, fb);
+    let p = pa + (pb - pa) * t;
+    var n: vec3<f32>;
+    if (is_boundary(a)) {
+        n = normalize(pa - pb);
+    } else if (is_boundary(b)) {
+        n = normalize(pb - pa);
+    } else {
+        let g = outward_gradient(p);
+        let len2 = dot(g, g);
+        if (len2 > 0.0) {
+            n = g * inverseSqrt(len2);
+        } else {
+            n = normalize(select(pa - pb, pb - pa, fa > grid.iso));
+        }
+    }
+    return EdgeVertex(p, n);
+}

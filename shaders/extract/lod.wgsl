@@ -206,26 +206,8 @@ fn make_vertex(start: vec3<u32>, axis: u32, level: u32, fa: f32, fb: f32) {
         atomicStore(&hash[2u * slot + 1u], INVALID);
         return;
     }
-    let end = start + unit(axis) * (1u << level);
-    let pa = grid_point(start);
-    let pb = grid_point(end);
-    let t = edge_parameter(fa, fb);
-    let p = pa + (pb - pa) * t;
-    var n: vec3<f32>;
-    if (is_boundary(start)) {
-        n = normalize(pa - pb);
-    } else if (is_boundary(end)) {
-        n = normalize(pb - pa);
-    } else {
-        let g = outward_gradient(p);
-        let len2 = dot(g, g);
-        if (len2 > 0.0) {
-            n = g * inverseSqrt(len2);
-        } else {
-            n = normalize(select(pa - pb, pb - pa, fa > grid.iso));
-        }
-    }
-    write_vertex(index, p, n);
+    let v = edge_vertex(start, start + unit(axis) * (1u << level), fa, fb);
+    write_vertex(index, v.position, v.normal);
     atomicStore(&hash[2u * slot + 1u], index);
 }
 
@@ -453,21 +435,9 @@ fn make_triangles(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_in
     }
 }
 
-struct DrawIndexedIndirect {
-    index_count: u32,
-    instance_count: u32,
-    first_index: u32,
-    base_vertex: i32,
-    first_instance: u32,
-}
-
 @group(0) @binding(12) var<storage, read_write> draw: DrawIndexedIndirect;
 
 @compute @workgroup_size(1)
 fn finalize_draw() {
-    draw.index_count = min(atomicLoad(&counters.indices), grid.max_indices);
-    draw.instance_count = 1u;
-    draw.first_index = 0u;
-    draw.base_vertex = 0;
-    draw.first_instance = 0u;
+    draw = indexed_draw(atomicLoad(&counters.indices));
 }

@@ -106,27 +106,8 @@ fn make_vertices(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_inv
         if ((crossed & (1u << axis)) != 0u) {
             if (next < grid.max_vertices) {
                 index = next;
-                let ib = cell + unit(axis);
-                let pa = grid_point(cell);
-                let pb = grid_point(ib);
-                let fb = value_at(slot, at + unit(axis));
-                let t = edge_parameter(f0, fb);
-                let p = pa + (pb - pa) * t;
-                var n: vec3<f32>;
-                if (is_boundary(cell)) {
-                    n = normalize(pa - pb);
-                } else if (is_boundary(ib)) {
-                    n = normalize(pb - pa);
-                } else {
-                    let g = outward_gradient(p);
-                    let len2 = dot(g, g);
-                    if (len2 > 0.0) {
-                        n = g * inverseSqrt(len2);
-                    } else {
-                        n = normalize(select(pa - pb, pb - pa, inside0));
-                    }
-                }
-                write_vertex(index, p, n);
+                let v = edge_vertex(cell, cell + unit(axis), f0, value_at(slot, at + unit(axis)));
+                write_vertex(index, v.position, v.normal);
             }
             next += 1u;
         }
@@ -195,22 +176,10 @@ fn make_triangles(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_in
     }
 }
 
-struct DrawIndexedIndirect {
-    index_count: u32,
-    instance_count: u32,
-    first_index: u32,
-    base_vertex: i32,
-    first_instance: u32,
-}
-
 @group(0) @binding(12) var<storage, read_write> draw: DrawIndexedIndirect;
 
 // One invocation: the draw covers the indices written, never more than the buffer holds.
 @compute @workgroup_size(1)
 fn finalize_draw() {
-    draw.index_count = min(atomicLoad(&counters.indices), grid.max_indices);
-    draw.instance_count = 1u;
-    draw.first_index = 0u;
-    draw.base_vertex = 0;
-    draw.first_instance = 0u;
+    draw = indexed_draw(atomicLoad(&counters.indices));
 }

@@ -143,6 +143,17 @@ impl IndexedMesh {
         }
     }
 
+    /// A mesh from interleaved vertices (position then normal, 6 `f32` each) and three indices per
+    /// triangle, as the CPU meshers and the buffers hold them.
+    pub fn from_interleaved(vertices: &[f32], indices: &[u32]) -> Self {
+        let at = |v: &[f32]| Vec3::new(v[0], v[1], v[2]);
+        IndexedMesh {
+            positions: vertices.chunks_exact(6).map(at).collect(),
+            normals: vertices.chunks_exact(6).map(|v| at(&v[3..])).collect(),
+            triangles: indices.chunks_exact(3).map(|t| [t[0], t[1], t[2]]).collect(),
+        }
+    }
+
     /// The volume the mesh encloses (divergence theorem over its triangles; positive when they are
     /// wound counter-clockwise seen from outside).
     pub fn enclosed_volume(&self) -> f64 {

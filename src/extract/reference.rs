@@ -104,6 +104,32 @@ pub fn outward_gradient(spheres: &[Sphere], p: Vec3, blend: Blend) -> Vec3 {
     g
 }
 
+/// Where the edge from `pa` (value `fa`) to `pb` (value `fb`) crosses `iso`, and the outward normal
+/// there: analytic, or across the wall when an end lies on the box's faces (`a_on_wall`, `b_on_wall`;
+/// the cap there is flat), or along the edge where the gradient vanishes. Every extractor on the CPU
+/// places its vertices with this (`edge_vertex` in `shaders/common.wgsl` on the GPU).
+#[allow(clippy::too_many_arguments)]
+pub fn surface_vertex(
+    spheres: &[Sphere],
+    iso: f32,
+    construction: Construction,
+    (pa, fa, a_on_wall): (Vec3, f32, bool),
+    (pb, fb, b_on_wall): (Vec3, f32, bool),
+) -> (Vec3, Vec3) {
+    let t = construction.edge_parameter(iso, fa, fb);
+    let p = pa + (pb - pa) * t;
+    let normal = if a_on_wall {
+        (pa - pb).normalize()
+    } else if b_on_wall {
+        (pb - pa).normalize()
+    } else {
+        let g = outward_gradient(spheres, p, construction.blend);
+        let fallback = if fa > iso { pb - pa } else { pa - pb };
+        g.try_normalize().unwrap_or(fallback.normalize())
+    };
+    (p, normal)
+}
+
 /// Field values at every grid point, boundary points forced to 0 (outside).
 pub fn sample_field(spheres: &[Sphere], grid: Grid) -> Vec<f32> {
     sample_blended_field(spheres, grid, Blend::Sum)
@@ -151,19 +177,13 @@ pub fn extract_with(spheres: &[Sphere], iso: f32, grid: Grid, construction: Cons
                 let vertex = |e: usize| {
                     let [a, b] = EDGE_CORNERS[e];
                     let (ia, ib) = (corner(a), corner(b));
-                    let (pa, pb) = (grid.point(ia), grid.point(ib));
-                    let (fa, fb) = (value(a), value(b));
-                    let t = construction.edge_parameter(iso, fa, fb);
-                    let p = pa + (pb - pa) * t;
-                    let normal = if grid.is_boundary(ia) {
-                        (pa - pb).normalize()
-                    } else if grid.is_boundary(ib) {
-                        (pb - pa).normalize()
-                    } else {
-                        let g = outward_gradient(spheres, p, construction.blend);
-                        let fallback = if fa > iso { pb - pa } else { pa - pb };
-                        g.try_normalize().unwrap_or(fallback.normalize())
-                    };
+                    let (p, normal) = surface_vertex(
+                        spheres,
+                        iso,
+                        construction,
+                        (grid.point(ia), value(a), grid.is_boundary(ia)),
+                        (grid.point(ib), value(b), grid.is_boundary(ib)),
+                    );
                     let axis = (0..3).find(|&i| ia[i] != ib[i]).unwrap() as u64;
                     (p, normal, grid.point_index(ia) as u64 * 3 + axis)
                 };

@@ -97,12 +97,7 @@ impl CpuMesher {
 
     /// The last mesh as positions, normals and triangles.
     pub fn to_indexed(&self) -> IndexedMesh {
-        let at = |v: &[f32]| Vec3::new(v[0], v[1], v[2]);
-        IndexedMesh {
-            positions: self.vertices.chunks_exact(6).map(at).collect(),
-            normals: self.vertices.chunks_exact(6).map(|v| at(&v[3..])).collect(),
-            triangles: self.indices.chunks_exact(3).map(|t| [t[0], t[1], t[2]]).collect(),
-        }
+        IndexedMesh::from_interleaved(&self.vertices, &self.indices)
     }
 
     /// Extracts the surface f = `iso` of `spheres` on `grid`.
@@ -294,19 +289,14 @@ impl CpuMesher {
         let value = |p: [u32; 3]| self.values[(p[2] % 2) as usize][p[0] as usize + width * p[1] as usize];
         let (fa, fb) = (value(a), value(b));
         let point = |p: [u32; 3]| Vec3::from_array(p.map(|i| self.coords[i as usize]));
-        let (pa, pb) = (point(a), point(b));
-        let t = construction.edge_parameter(iso, fa, fb);
-        let p = pa + (pb - pa) * t;
         let boundary = |p: [u32; 3]| p.contains(&0) || p.contains(&n);
-        let normal = if boundary(a) {
-            (pa - pb).normalize()
-        } else if boundary(b) {
-            (pb - pa).normalize()
-        } else {
-            let g = reference::outward_gradient(spheres, p, construction.blend);
-            let fallback = if fa > iso { pb - pa } else { pa - pb };
-            g.try_normalize().unwrap_or(fallback.normalize())
-        };
+        let (p, normal) = reference::surface_vertex(
+            spheres,
+            iso,
+            construction,
+            (point(a), fa, boundary(a)),
+            (point(b), fb, boundary(b)),
+        );
         self.vertices.extend_from_slice(&[p.x, p.y, p.z, normal.x, normal.y, normal.z]);
         id
     }

@@ -15,7 +15,7 @@ use crate::extract::reference::{self, Construction, Grid};
 use crate::extract::tables::{CASE_TRIANGLES, CORNER_OFFSETS, EDGE_CORNERS, EDGE_TABLE, TRI_TABLE};
 use crate::scene::Sphere;
 use crate::scene::params::view::Blend;
-use glam::{UVec3, Vec3};
+use glam::UVec3;
 use rustc_hash::FxHashMap;
 
 /// Marks a transition cell's triangle in `LodMesher::triangle_levels`.
@@ -110,12 +110,7 @@ impl LodMesher {
 
     /// The last mesh as positions, normals and triangles.
     pub fn to_indexed(&self) -> IndexedMesh {
-        let at = |v: &[f32]| Vec3::new(v[0], v[1], v[2]);
-        IndexedMesh {
-            positions: self.vertices.chunks_exact(6).map(at).collect(),
-            normals: self.vertices.chunks_exact(6).map(|v| at(&v[3..])).collect(),
-            triangles: self.indices.chunks_exact(3).map(|t| [t[0], t[1], t[2]]).collect(),
-        }
+        IndexedMesh::from_interleaved(&self.vertices, &self.indices)
     }
 
     /// Meshes the surface f = `iso` of `spheres` over the blocks of `selection`.
@@ -299,18 +294,13 @@ impl LodMesher {
         let mut end = start;
         end[axis] += 1 << level;
         let grid = frame.grid;
-        let (pa, pb) = (grid.point(start), grid.point(end));
-        let t = frame.construction.edge_parameter(frame.iso, fa, fb);
-        let p = pa + (pb - pa) * t;
-        let normal = if grid.is_boundary(start) {
-            (pa - pb).normalize()
-        } else if grid.is_boundary(end) {
-            (pb - pa).normalize()
-        } else {
-            let g = reference::outward_gradient(frame.spheres, p, frame.construction.blend);
-            let fallback = if fa > frame.iso { pb - pa } else { pa - pb };
-            g.try_normalize().unwrap_or(fallback.normalize())
-        };
+        let (p, normal) = reference::surface_vertex(
+            frame.spheres,
+            frame.iso,
+            frame.construction,
+            (grid.point(start), fa, grid.is_boundary(start)),
+            (grid.point(end), fb, grid.is_boundary(end)),
+        );
         self.vertices.extend_from_slice(&[p.x, p.y, p.z, normal.x, normal.y, normal.z]);
         id
     }
