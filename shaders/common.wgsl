@@ -97,45 +97,61 @@ fn corner_offset(c: u32) -> vec3<u32> {
     return vec3<u32>(((c >> 1u) ^ c) & 1u, (c >> 1u) & 1u, (c >> 2u) & 1u);
 }
 
-// f(p) = Σ r² / |p − c|² (or the largest term, with blend by max: the union of separate spheres)
+// A sphere's term's numerator, charge · r²: w carries the radius with the charge's sign.
+fn weight(s: vec4<f32>) -> f32 {
+    return s.w * abs(s.w);
+}
+
+// f(p) = Σ chargeᵢ rᵢ² / |p − cᵢ|² (or, with blend by max, the largest adding term less the largest
+// subtracting one: the union of separate spheres, dented)
 fn field_at(p: vec3<f32>) -> f32 {
     var f = 0.0;
+    var dent = 0.0;
     let largest = blend_max();
     for (var i = 0u; i < grid.sphere_count; i++) {
         let s = spheres[i];
         let d = p - s.xyz;
-        let term = s.w * s.w / max(dot(d, d), MIN_DISTANCE_SQUARED);
-        if (largest) {
-            f = max(f, term);
-        } else {
+        let term = weight(s) / max(dot(d, d), MIN_DISTANCE_SQUARED);
+        if (!largest) {
             f += term;
+        } else if (term < 0.0) {
+            dent = max(dent, -term);
+        } else {
+            f = max(f, term);
         }
     }
-    return f;
+    return f - dent;
 }
 
-// −∇f / 2 = Σ r² (p − c) / |p − c|⁴, pointing out of the surface (with blend by max, the largest
-// term's alone).
+// −∇f / 2 = Σ chargeᵢ rᵢ² (p − cᵢ) / |p − cᵢ|⁴, pointing out of the surface (with blend by max, the
+// largest adding term's less the largest subtracting term's).
 fn outward_gradient(p: vec3<f32>) -> vec3<f32> {
     var g = vec3<f32>(0.0);
+    var dent = vec3<f32>(0.0);
     var largest = -1.0;
+    var deepest = -1.0;
     let by_max = blend_max();
     for (var i = 0u; i < grid.sphere_count; i++) {
         let s = spheres[i];
         let d = p - s.xyz;
         let d2 = max(dot(d, d), MIN_DISTANCE_SQUARED);
-        let term = d * (s.w * s.w / (d2 * d2));
-        if (by_max) {
-            let value = s.w * s.w / d2;
-            if (value > largest) {
-                largest = value;
-                g = term;
-            }
-        } else {
+        let term = d * (weight(s) / (d2 * d2));
+        if (!by_max) {
             g += term;
+            continue;
+        }
+        let value = s.w * s.w / d2;
+        if (s.w < 0.0) {
+            if (value > deepest) {
+                deepest = value;
+                dent = term;
+            }
+        } else if (value > largest) {
+            largest = value;
+            g = term;
         }
     }
-    return g;
+    return g + dent;
 }
 
 // Bounds are skipped on only with this relative margin, far above f32 rounding of the sums.
@@ -143,14 +159,18 @@ const BOUND_MARGIN: f32 = 1e-4;
 
 // False only when the field's bounds over the box from `low` to `high` keep it on one side of iso: no
 // cell there can emit a triangle. Over a box with centre c and half-diagonal h, a sphere's term
-// r²/|p − cᵢ|² lies between r²/(d + h)² and r²/(d − h)² (d = |c − cᵢ|), so the sums of those bound f.
-// A box touching the walls is never all inside, as the walls read outside.
+// r²/|p − cᵢ|² lies between r²/(d + h)² and r²/(d − h)² (d = |c − cᵢ|). Adding and subtracting terms
+// are bounded apart: f is at most the adding terms' upper bound less the subtracting terms' lower bound,
+// and at least the adding terms' lower bound less the subtracting terms' upper bound (with blend by
+// max, the largest bounds of each kind). A box touching the walls is never all inside, as the walls
+// read outside. src/extract/field.rs decides the same on the CPU.
 fn straddles(low: vec3<f32>, high: vec3<f32>, touches_walls: bool) -> bool {
     let centre = 0.5 * (low + high);
     let h = 0.5 * length(high - low);
-    var lower = 0.0;
-    var upper = 0.0;
-    var unbounded = false;
+    // x: adding, y: subtracting.
+    var lower = vec2<f32>(0.0);
+    var upper = vec2<f32>(0.0);
+    var unbounded = vec2<bool>(false);
     let by_max = blend_max();
     for (var i = 0u; i < grid.sphere_count; i++) {
         let s = spheres[i];
@@ -159,22 +179,24 @@ fn straddles(low: vec3<f32>, high: vec3<f32>, touches_walls: bool) -> bool {
         let low_term = r2 / ((d + h) * (d + h));
         let gap = d - h;
         var high_term = 0.0;
+        let kind = select(0u, 1u, s.w < 0.0);
         if (gap <= 0.0) {
-            unbounded = true;
+            unbounded[kind] = true;
         } else {
             high_term = r2 / (gap * gap);
         }
-        // With blend by max the bounds of the largest term are the largest bounds.
         if (by_max) {
-            lower = max(lower, low_term);
-            upper = max(upper, high_term);
+            lower[kind] = max(lower[kind], low_term);
+            upper[kind] = max(upper[kind], high_term);
         } else {
-            lower += low_term;
-            upper += high_term;
+            lower[kind] += low_term;
+            upper[kind] += high_term;
         }
     }
-    let all_outside = !unbounded && upper * (1.0 + BOUND_MARGIN) <= grid.iso;
-    let all_inside = !touches_walls && lower * (1.0 - BOUND_MARGIN) > grid.iso;
+    // The margin widens each sum on its own, so rounding in either cannot skip a crossed cell.
+    let all_outside = !unbounded.x && upper.x * (1.0 + BOUND_MARGIN) - lower.y * (1.0 - BOUND_MARGIN) <= grid.iso;
+    let all_inside = !touches_walls && !unbounded.y
+        && lower.x * (1.0 - BOUND_MARGIN) - upper.y * (1.0 + BOUND_MARGIN) > grid.iso;
     return !all_outside && !all_inside;
 }
 

@@ -181,7 +181,9 @@ fn description(p: &Parameter) -> String {
         Kind::Boolean => format!("{noun}: a boolean attribute."),
         Kind::Color => format!("{noun}: #rrggbb."),
         Kind::Slice => format!("{noun}: off, or an axis and a position in the box (z:0.25)."),
-        Kind::Spheres => format!("{noun}: x,y,z,radius[,vx,vy,vz] per sphere joined by ;."),
+        Kind::Spheres => {
+            format!("{noun}: x,y,z,radius[,vx,vy,vz] per sphere joined by ; (a negative radius subtracts).")
+        }
         Kind::Text => match p.name {
             "alt" => "The figure's accessible name (without it, one is made from what it shows).".into(),
             "poster" => {
@@ -318,7 +320,7 @@ pub fn declarations() -> String {
          export interface MetaballsStats {\n  triangles: number;\n  fps: number;\n  frameTime: number;\n  \
          adapter: string;\n  mesher: string;\n  overflowed: boolean;\n  [name: string]: unknown;\n}\n\n\
          export interface MetaballsSphere {\n  center: [number, number, number];\n  radius: number;\n  \
-         velocity: [number, number, number];\n}\n\n\
+         velocity: [number, number, number];\n  /** 1 adds the sphere's term, -1 subtracts it. */\n  charge: 1 | -1;\n}\n\n\
          /** The cell inspector's report (see docs/teaching.md). */\n\
          export type MetaballsCellReport = Record<string, unknown>;\n\n",
     );

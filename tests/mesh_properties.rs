@@ -164,3 +164,34 @@ fn triangles_face_outwards() {
         .count();
     assert_eq!(agree, mesh.triangle_count());
 }
+
+#[test]
+fn a_subtracting_sphere_dents_a_blob_to_the_volume_the_field_predicts() {
+    // A sphere of charge −1 inside a larger one, off its centre: a dented, still closed blob whose
+    // volume is the midpoint-rule integral of {f ≥ iso} over the same cells.
+    let spheres = common::scenes::dented();
+    let (iso, resolution) = (1.0, 128);
+    let grid = Grid { cells_per_axis: resolution };
+    let h = grid.cell_size() as f64;
+    let mut inside = 0u64;
+    for z in 0..resolution {
+        for y in 0..resolution {
+            for x in 0..resolution {
+                let p = grid.point(glam::UVec3::new(x, y, z)) + Vec3::splat(0.5 * grid.cell_size());
+                inside += (reference::field_at(&spheres, p) >= iso) as u64;
+            }
+        }
+    }
+    let predicted = inside as f64 * h * h * h;
+    let scene = Scene::from_spheres(spheres.clone()).unwrap();
+    let mesh = gpu_mesh(&scene, iso, resolution);
+    let topology = mesh.topology();
+    assert_eq!(topology.open_or_nonmanifold_edges, 0, "open or non-manifold edges");
+    assert_eq!(topology.misoriented_edges, 0, "inconsistent orientation");
+    assert_eq!(topology.component_euler, [2], "one blob, no hole through it");
+    let volume = mesh.enclosed_volume();
+    let whole = 4.0 / 3.0 * std::f64::consts::PI * 0.5f64.powi(3);
+    println!("dented volume {volume:.5}, midpoint rule {predicted:.5}, undented sphere {whole:.5}");
+    assert!((volume / predicted - 1.0).abs() < 0.01, "volume {volume} against {predicted}");
+    assert!(volume < 0.93 * whole, "the dent took away only {:.1} %", 100.0 * (1.0 - volume / whole));
+}

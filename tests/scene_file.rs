@@ -30,7 +30,7 @@ fn a_scene() -> SceneFile {
             let mut c = || rng.random_range(-limit..limit);
             let center = Vec3::new(c(), c(), c());
             let velocity = Vec3::new(rng.random_range(-0.5..0.5), 0.0, rng.random_range(-0.5..0.5));
-            Sphere { center, radius, velocity }
+            Sphere { center, radius, velocity, charge: 1.0 }
         })
         .collect();
     let text = |s: &str| Value::Text(s.into());
@@ -76,6 +76,7 @@ fn a_saved_scene_loads_as_the_same_scene_and_mesh() {
             center: Vec3::new(rng.random_range(-limit..limit), rng.random_range(-limit..limit), 0.0),
             radius,
             velocity: Vec3::new(rng.random_range(-99.0..99.0), 0.0, 0.0),
+            charge: if rng.random_bool(0.3) { -1.0 } else { 1.0 },
         };
         let file = SceneFile { spheres: vec![s], settings: vec![] };
         assert_eq!(SceneFile::parse(&file.to_json()).unwrap().spheres, vec![s]);
@@ -91,8 +92,33 @@ fn the_link_form_carries_hand_built_spheres() {
     let value =
         metaballs::scene::params::parse_parameter("balls", " -0.3,0,0,0.35 ; 0.4,0.1,-0.2,0.3 ").unwrap();
     assert_eq!(value, Value::Text(text));
-    let e = metaballs::scene::params::parse_parameter("balls", "0,0,0,-1").unwrap_err().to_string();
-    assert!(e.contains("sphere radius must be between 0.01 and 1, got -1"), "{e}");
+    let e = metaballs::scene::params::parse_parameter("balls", "0,0,0,1.5").unwrap_err().to_string();
+    assert!(e.contains("sphere radius must be between 0.01 and 1, got 1.5"), "{e}");
+    // A negative radius is a subtracting sphere.
+    let dented = parse_spheres_text("0,0,0,0.5;0.2,0,0,-0.25").unwrap();
+    assert_eq!((dented[1].charge, dented[1].radius), (-1.0, 0.25));
+    assert_eq!(spheres_text(&dented), "0,0,0,0.5;0.2,0,0,-0.25");
+}
+
+#[test]
+fn scene_files_carry_the_charge_and_files_without_it_add() {
+    let doc = |sphere: &str| format!(r#"{{"format":"metaballs-scene","version":1,"spheres":[{sphere}]}}"#);
+    let plain = SceneFile::parse(&doc(r#"{"center":[0,0,0],"radius":0.3}"#)).unwrap();
+    assert_eq!(plain.spheres[0].charge, 1.0);
+    assert!(!plain.to_json().contains("charge"), "an adding sphere is written as before");
+    let mut hole = sphere([0.1, 0.0, 0.0], 0.2);
+    hole.charge = -1.0;
+    let file = SceneFile { spheres: vec![sphere([0.0, 0.0, 0.0], 0.5), hole], settings: vec![] };
+    let json = file.to_json();
+    assert!(json.contains(r#""charge": -1"#), "{json}");
+    assert_eq!(SceneFile::parse(&json).unwrap().spheres, file.spheres);
+    let e = SceneFile::parse(&doc(r#"{"center":[0,0,0],"radius":0.3,"charge":0.5}"#)).unwrap_err();
+    assert!(
+        e.to_string().contains("spheres[0].charge: a sphere's charge is 1 (adds) or -1 (subtracts), got 0.5"),
+        "{e}"
+    );
+    let e = SceneFile::parse(&doc(r#"{"center":[0,0,0],"radius":0.3,"charge":"minus"}"#)).unwrap_err();
+    assert!(e.to_string().contains("spheres[0].charge must be a number"), "{e}");
 }
 
 #[test]

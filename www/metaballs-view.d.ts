@@ -15,6 +15,8 @@ export interface MetaballsSphere {
   center: [number, number, number];
   radius: number;
   velocity: [number, number, number];
+  /** 1 adds the sphere's term, -1 subtracts it. */
+  charge: 1 | -1;
 }
 
 /** The cell inspector's report (see docs/teaching.md). */
@@ -87,7 +89,7 @@ export declare class MetaballsView extends HTMLElement {
   theme: 'dark' | 'light' | 'auto';
   /** Edit: a boolean attribute. Attribute `edit`; default false. */
   edit: boolean;
-  /** Balls: x,y,z,radius[,vx,vy,vz] per sphere joined by ;. Attribute `balls`; default "". */
+  /** Balls: x,y,z,radius[,vx,vy,vz] per sphere joined by ; (a negative radius subtracts). Attribute `balls`; default "". */
   balls: string;
   /** Controls: all, none, or a comma list of spheres, iso, resolution, speed, shininess, color, antialiasing, mesher, lod, lod_pixels, lod_freeze, paused, seed, view, step, display, grid, color_by, slice, ambiguous, interpolation, blend, inspector, light, spot_angle, spot_softness, ambient, diffuse, specular, projection, fov, theme, edit, scene, export. Attribute `controls`; default "none". */
   controls: string;

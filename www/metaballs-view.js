@@ -144,6 +144,7 @@ export class MetaballsView extends FigureBase {
       wheel: (deltaY) => editing() && this.#editor.wheel(deltaY),
       remove: () => editing() && this.#editor.remove(),
       freeze: () => editing() && this.#editor.toggleFreeze(),
+      charge: () => editing() && this.#editor.toggleCharge(),
     });
     const file = this.#root.getElementById('scene-file');
     file.addEventListener('change', () => {

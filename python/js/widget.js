@@ -61,9 +61,10 @@ function tellWasmSources(model) {
   View.wasmSources = { webgpu: source('webgpu'), webgl2: source('webgl2') };
 }
 
-/** The spheres (as `sphereList` gives them: center, radius, velocity) as the `balls` attribute writes them. */
+/** The spheres (as `sphereList` gives them: center, radius, velocity, charge) as the `balls` attribute
+ * writes them: a subtracting sphere (charge −1) with a negative radius. */
 export function ballsText(list) {
-  return list.map((s) => [...s.center, s.radius, ...(s.velocity ?? [])].join(',')).join(';');
+  return list.map((s) => [...s.center, (s.charge ?? 1) < 0 ? -s.radius : s.radius, ...(s.velocity ?? [])].join(',')).join(';');
 }
 
 // What Python may ask the figure (`Metaballs.save_scene()` and the rest), by the element's method names.

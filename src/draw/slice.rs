@@ -132,7 +132,7 @@ mod tests {
 
     #[test]
     fn a_sphere_cut_through_its_centre_gives_a_closed_ring_on_its_circle() {
-        let spheres = [Sphere { center: Vec3::ZERO, radius: 0.5, velocity: Vec3::ZERO }];
+        let spheres = [Sphere { center: Vec3::ZERO, radius: 0.5, velocity: Vec3::ZERO, charge: 1.0 }];
         let grid = Grid { cells_per_axis: 32 };
         let slice = Slice { axis: 2, position: 0.0 };
         let segments = contour(&spheres, 1.0, grid, slice, Construction::default());

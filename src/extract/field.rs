@@ -16,6 +16,7 @@ pub struct Spheres {
     x: Vec<f32>,
     y: Vec<f32>,
     z: Vec<f32>,
+    /// `charge · r²`: negative for a subtractive sphere.
     r2: Vec<f32>,
 }
 
@@ -30,46 +31,65 @@ impl Spheres {
             self.x.push(sphere.center.x);
             self.y.push(sphere.center.y);
             self.z.push(sphere.center.z);
-            self.r2.push(sphere.radius * sphere.radius);
+            self.r2.push(sphere.weight());
         }
     }
 
     /// False only when the field's bounds over the box from `low` to `high` keep every point on one
     /// side of `iso` (as `classify_blocks` in `shaders/extract/blocks.wgsl` decides): no cell there can
     /// emit a triangle. A box touching the walls is never all inside, as the walls read outside.
+    /// Adding and subtracting terms are bounded apart: the field is at most the adding terms' upper
+    /// bound less the subtracting terms' lower bound, and at least the other way round.
     pub fn straddles(&self, low: Vec3, high: Vec3, touches_walls: bool, iso: f32, by_max: bool) -> bool {
         let centre = 0.5 * (low + high);
         let h = 0.5 * (high - low).length();
-        let (mut lower, mut upper, mut unbounded) = (0.0f32, 0.0f32, false);
+        let mut adding = Bounds::default();
+        let mut subtracting = Bounds::default();
         for i in 0..self.r2.len() {
             let d = (centre - Vec3::new(self.x[i], self.y[i], self.z[i])).length();
-            let low_term = self.r2[i] / ((d + h) * (d + h));
+            let r2 = self.r2[i].abs();
+            let low_term = r2 / ((d + h) * (d + h));
             let gap = d - h;
-            let high_term = if gap <= 0.0 {
-                unbounded = true;
-                0.0
-            } else {
-                self.r2[i] / (gap * gap)
-            };
-            if by_max {
-                lower = lower.max(low_term);
-                upper = upper.max(high_term);
-            } else {
-                lower += low_term;
-                upper += high_term;
-            }
+            let high_term = if gap <= 0.0 { f32::INFINITY } else { r2 / (gap * gap) };
+            let bounds = if self.r2[i] < 0.0 { &mut subtracting } else { &mut adding };
+            bounds.add(low_term, high_term, by_max);
         }
-        let all_outside = !unbounded && upper * (1.0 + BOUND_MARGIN) <= iso;
-        let all_inside = !touches_walls && lower * (1.0 - BOUND_MARGIN) > iso;
+        // The margin widens each sum on its own, so rounding in either cannot skip a crossed cell.
+        let upper = adding.upper * (1.0 + BOUND_MARGIN) - subtracting.lower * (1.0 - BOUND_MARGIN);
+        let lower = adding.lower * (1.0 - BOUND_MARGIN) - subtracting.upper * (1.0 + BOUND_MARGIN);
+        let all_outside = upper.is_finite() && upper <= iso;
+        let all_inside = !touches_walls && lower.is_finite() && lower > iso;
         !all_outside && !all_inside
+    }
+}
+
+/// Bounds of one kind of term over a box: summed, or the largest with blend by max; an infinite upper
+/// bound where a sphere's centre may lie in the box.
+#[derive(Default)]
+struct Bounds {
+    lower: f32,
+    upper: f32,
+}
+
+impl Bounds {
+    fn add(&mut self, low: f32, high: f32, by_max: bool) {
+        if by_max {
+            self.lower = self.lower.max(low);
+            self.upper = self.upper.max(high);
+        } else {
+            self.lower += low;
+            self.upper += high;
+        }
     }
 }
 
 /// Field values along a run of points sharing y and z: the sphere loop outside, the points inside, so
 /// the inner loop has no dependence between iterations and vectorises; each point still sums its
-/// spheres in order.
+/// spheres in order. With blend by max, the largest subtracting term is taken off after the loop, as
+/// `field_at` in `shaders/common.wgsl` does.
 pub fn sample_run(run: &mut [f32], xs: &[f32], py: f32, pz: f32, s: &Spheres, blend: Blend) {
     run.fill(0.0);
+    let mut subtracting = false;
     for i in 0..s.r2.len() {
         let (dy, dz, r2) = (py - s.y[i], pz - s.z[i], s.r2[i]);
         let (dy2, dz2, cx) = (dy * dy, dz * dz, s.x[i]);
@@ -81,6 +101,7 @@ pub fn sample_run(run: &mut [f32], xs: &[f32], py: f32, pz: f32, s: &Spheres, bl
                     *f += r2 / if d2 < MIN_DISTANCE_SQUARED { MIN_DISTANCE_SQUARED } else { d2 };
                 }
             }
+            Blend::Max if r2 < 0.0 => subtracting = true,
             Blend::Max => {
                 for (f, &x) in run.iter_mut().zip(xs) {
                     let dx = x - cx;
@@ -89,6 +110,16 @@ pub fn sample_run(run: &mut [f32], xs: &[f32], py: f32, pz: f32, s: &Spheres, bl
                     *f = if term > *f { term } else { *f };
                 }
             }
+        }
+    }
+    if subtracting {
+        for (f, &x) in run.iter_mut().zip(xs) {
+            let mut dent = 0.0f32;
+            for i in (0..s.r2.len()).filter(|&i| s.r2[i] < 0.0) {
+                let d2 = (Vec3::new(x, py, pz) - Vec3::new(s.x[i], s.y[i], s.z[i])).length_squared();
+                dent = dent.max(-s.r2[i] / d2.max(MIN_DISTANCE_SQUARED));
+            }
+            *f -= dent;
         }
     }
 }

@@ -67,33 +67,41 @@ pub fn field_at(spheres: &[Sphere], p: Vec3) -> f32 {
     blended_field_at(spheres, p, Blend::Sum)
 }
 
-/// f(p) with the spheres' terms summed or, with `Blend::Max`, the largest term alone.
+/// f(p) with the spheres' terms summed (subtractive ones with their sign) or, with `Blend::Max`, the
+/// largest adding term less the largest subtracting one.
 pub fn blended_field_at(spheres: &[Sphere], p: Vec3, blend: Blend) -> f32 {
-    let mut f = 0.0f32;
+    let (mut f, mut dent) = (0.0f32, 0.0f32);
     for s in spheres {
         let d = p - s.center;
-        let term = s.radius * s.radius / d.dot(d).max(MIN_DISTANCE_SQUARED);
-        f = match blend {
-            Blend::Sum => f + term,
-            Blend::Max => f.max(term),
-        };
+        let term = s.weight() / d.dot(d).max(MIN_DISTANCE_SQUARED);
+        match blend {
+            Blend::Sum => f += term,
+            Blend::Max if term < 0.0 => dent = dent.max(-term),
+            Blend::Max => f = f.max(term),
+        }
     }
-    f
+    f - dent
 }
 
-/// −∇f / 2 = Σ rᵢ² (p − cᵢ) / |p − cᵢ|⁴: it points out of the surface (the field falls outwards).
-/// With `Blend::Max`, the largest term's alone.
+/// −∇f / 2 = Σ chargeᵢ rᵢ² (p − cᵢ) / |p − cᵢ|⁴: it points out of the surface (the field falls
+/// outwards). With `Blend::Max`, the largest adding term's less the largest subtracting term's.
 pub fn outward_gradient(spheres: &[Sphere], p: Vec3, blend: Blend) -> Vec3 {
-    let mut g = Vec3::ZERO;
-    let mut largest = -1.0f32;
+    let (mut g, mut dent) = (Vec3::ZERO, Vec3::ZERO);
+    let (mut largest, mut deepest) = (-1.0f32, -1.0f32);
     for s in spheres {
         let d = p - s.center;
         let d2 = d.dot(d).max(MIN_DISTANCE_SQUARED);
-        let term = d * (s.radius * s.radius / (d2 * d2));
+        let term = d * (s.weight() / (d2 * d2));
+        let value = s.radius * s.radius / d2;
         match blend {
             Blend::Sum => g += term,
+            Blend::Max if s.is_subtractive() => {
+                if value > deepest {
+                    deepest = value;
+                    dent = term;
+                }
+            }
             Blend::Max => {
-                let value = s.radius * s.radius / d2;
                 if value > largest {
                     largest = value;
                     g = term;
@@ -101,7 +109,7 @@ pub fn outward_gradient(spheres: &[Sphere], p: Vec3, blend: Blend) -> Vec3 {
             }
         }
     }
-    g
+    g + dent
 }
 
 /// Where the edge from `pa` (value `fa`) to `pb` (value `fb`) crosses `iso`, and the outward normal

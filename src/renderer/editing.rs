@@ -62,7 +62,7 @@ impl Renderer {
         let radius = radii.get(radii.len() / 2).copied().unwrap_or(nominal_radius(spheres.len() as u32 + 1));
         let mut index = 0;
         self.edit(|scene| {
-            index = scene.add_sphere(Sphere { center, radius, velocity: Vec3::ZERO })?;
+            index = scene.add_sphere(Sphere { center, radius, velocity: Vec3::ZERO, charge: 1.0 })?;
             Ok(())
         })?;
         Ok(index)

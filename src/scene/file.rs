@@ -94,10 +94,15 @@ fn sphere(value: &serde_json::Value, field: &str) -> Result<Sphere, SceneError> 
         Some(v) => vector(v, &format!("{field}.velocity"))?,
         None => Vec3::ZERO,
     };
+    let charge = match object.get("charge") {
+        Some(c) => number(c, &format!("{field}.charge"))?,
+        None => 1.0,
+    };
     let s = Sphere {
         center: vector(get("center")?, &format!("{field}.center"))?,
         radius: number(get("radius")?, &format!("{field}.radius"))?,
         velocity,
+        charge,
     };
     check_sphere(field, s)
 }
@@ -201,11 +206,15 @@ impl SceneFile {
             .spheres
             .iter()
             .map(|s| {
-                json!({
+                let mut sphere = json!({
                     "center": s.center.to_array().map(short),
                     "radius": short(s.radius),
                     "velocity": s.velocity.to_array().map(short),
-                })
+                });
+                if s.is_subtractive() {
+                    sphere["charge"] = json!(-1);
+                }
+                sphere
             })
             .collect();
         let settings: Map<String, serde_json::Value> = self

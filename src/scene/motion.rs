@@ -63,6 +63,7 @@ impl Scene {
                     center: Vec3::splat(-BOX_HALF_EXTENT + r) + s.position * room,
                     radius: r,
                     velocity: s.velocity,
+                    charge: 1.0,
                 }
             })
             .collect();

@@ -16,19 +16,43 @@ pub const RADIUS_RANGE: (f32, f32) = (0.01, BOX_HALF_EXTENT);
 /// Largest speed along each axis accepted, box half-widths per second.
 pub const MAX_VELOCITY: f32 = 100.0;
 
-/// One sphere of the field: it adds `radius² / |p − center|²` at every point `p`.
+/// One sphere of the field: it adds `charge · radius² / |p − center|²` at every point `p`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Sphere {
     pub center: Vec3,
     pub radius: f32,
     /// Box half-widths per second.
     pub velocity: Vec3,
+    /// 1 adds the sphere's term; −1 subtracts it, denting or cutting the blobs it reaches.
+    pub charge: f32,
 }
 
 impl Sphere {
-    /// Centre and radius packed as the GPU reads them.
+    /// Centre and signed radius (`charge · radius`) packed as the GPU reads them.
     pub fn to_gpu(&self) -> [f32; 4] {
-        [self.center.x, self.center.y, self.center.z, self.radius]
+        [self.center.x, self.center.y, self.center.z, self.signed_radius()]
+    }
+
+    /// The radius with the charge's sign: the form links, the page and the GPU carry.
+    pub fn signed_radius(&self) -> f32 {
+        if self.is_subtractive() { -self.radius } else { self.radius }
+    }
+
+    /// The numerator of the sphere's term, `charge · radius²`.
+    pub fn weight(&self) -> f32 {
+        let r2 = self.radius * self.radius;
+        if self.is_subtractive() { -r2 } else { r2 }
+    }
+
+    /// True for a sphere that subtracts its term.
+    pub fn is_subtractive(&self) -> bool {
+        self.charge < 0.0
+    }
+
+    /// A still sphere from its centre and signed radius (negative: subtractive).
+    pub fn from_signed(center: Vec3, signed_radius: f32, velocity: Vec3) -> Sphere {
+        let charge = if signed_radius < 0.0 { -1.0 } else { 1.0 };
+        Sphere { center, radius: signed_radius.abs(), velocity, charge }
     }
 }
 
@@ -50,6 +74,12 @@ pub(crate) fn at(field: &str, error: ParamError) -> SceneError {
 
 /// Checks one sphere: radius in range, centre keeping it inside the box, finite bounded velocity.
 pub fn check_sphere(field: &str, sphere: Sphere) -> Result<Sphere, SceneError> {
+    if sphere.charge != 1.0 && sphere.charge != -1.0 {
+        return Err(SceneError(format!(
+            "{field}.charge: a sphere's charge is 1 (adds) or -1 (subtracts), got {}",
+            sphere.charge
+        )));
+    }
     let (min, max) = RADIUS_RANGE;
     check_f32("sphere radius", sphere.radius, min, max).map_err(|e| at(&format!("{field}.radius"), e))?;
     let limit = BOX_HALF_EXTENT - sphere.radius;
@@ -77,7 +107,7 @@ pub(crate) fn check_count(field: &str, count: usize) -> Result<(), SceneError> {
 }
 
 /// The compact form of spheres in links: `x,y,z,r` (a still sphere) or `x,y,z,r,vx,vy,vz`, joined by
-/// `;`, positions to 3 decimals and speeds to 2.
+/// `;`, positions to 3 decimals and speeds to 2. A subtractive sphere is written with a negative radius.
 pub fn spheres_text(spheres: &[Sphere]) -> String {
     let n = |x: f32, places: usize| {
         let t = format!("{x:.places$}");
@@ -88,7 +118,7 @@ pub fn spheres_text(spheres: &[Sphere]) -> String {
         .iter()
         .map(|s| {
             let mut parts: Vec<String> = s.center.to_array().iter().map(|&c| n(c, 3)).collect();
-            parts.push(n(s.radius, 3));
+            parts.push(n(s.signed_radius(), 3));
             let v: Vec<String> = s.velocity.to_array().iter().map(|&c| n(c, 2)).collect();
             if v.iter().any(|c| c != "0") {
                 parts.extend(v);
@@ -99,7 +129,8 @@ pub fn spheres_text(spheres: &[Sphere]) -> String {
         .join(";")
 }
 
-/// Reads the compact form written by [`spheres_text`]; every sphere is checked as in a document.
+/// Reads the compact form written by [`spheres_text`] (a negative radius: a subtractive sphere); every
+/// sphere is checked as in a document.
 pub fn parse_spheres_text(text: &str) -> Result<Vec<Sphere>, SceneError> {
     let groups: Vec<&str> = text.split(';').map(str::trim).filter(|g| !g.is_empty()).collect();
     check_count("balls", groups.len())?;
@@ -117,10 +148,8 @@ pub fn parse_spheres_text(text: &str) -> Result<Vec<Sphere>, SceneError> {
                 })
                 .collect::<Result<Vec<f32>, _>>()?;
             let s = match numbers[..] {
-                [x, y, z, r] => Sphere { center: Vec3::new(x, y, z), radius: r, velocity: Vec3::ZERO },
-                [x, y, z, r, vx, vy, vz] => {
-                    Sphere { center: Vec3::new(x, y, z), radius: r, velocity: Vec3::new(vx, vy, vz) }
-                }
+                [x, y, z, r] => Sphere::from_signed(Vec3::new(x, y, z), r, Vec3::ZERO),
+                [x, y, z, r, vx, vy, vz] => Sphere::from_signed(Vec3::new(x, y, z), r, Vec3::new(vx, vy, vz)),
                 _ => {
                     return Err(SceneError(format!(
                         "{field}: expected x,y,z,radius or x,y,z,radius,vx,vy,vz, got {} numbers",
@@ -140,8 +169,13 @@ mod tests {
     #[test]
     fn the_compact_form_reads_back_to_its_precision() {
         let spheres = vec![
-            Sphere { center: Vec3::new(-0.3, 0.1234, 0.0), radius: 0.35, velocity: Vec3::ZERO },
-            Sphere { center: Vec3::new(0.4, -0.2, 0.25), radius: 0.3, velocity: Vec3::new(0.5, -0.25, 0.0) },
+            Sphere { center: Vec3::new(-0.3, 0.1234, 0.0), radius: 0.35, velocity: Vec3::ZERO, charge: 1.0 },
+            Sphere {
+                center: Vec3::new(0.4, -0.2, 0.25),
+                radius: 0.3,
+                velocity: Vec3::new(0.5, -0.25, 0.0),
+                charge: 1.0,
+            },
         ];
         let text = spheres_text(&spheres);
         assert_eq!(text, "-0.3,0.123,0,0.35;0.4,-0.2,0.25,0.3,0.5,-0.25,0");
@@ -154,5 +188,10 @@ mod tests {
         assert!(parse_spheres_text("0,0,0").unwrap_err().to_string().contains("got 3 numbers"));
         assert!(parse_spheres_text("0,0,x,1").unwrap_err().to_string().contains("\"x\" is not a number"));
         assert!(parse_spheres_text("").is_err());
+        let dented = parse_spheres_text("0,0,0,0.5;0.2,0,0,-0.2").unwrap();
+        assert_eq!((dented[0].charge, dented[1].charge, dented[1].radius), (1.0, -1.0, 0.2));
+        assert_eq!(spheres_text(&dented), "0,0,0,0.5;0.2,0,0,-0.2");
+        let e = parse_spheres_text("0,0,0,-2").unwrap_err().to_string();
+        assert!(e.contains("balls sphere 1.radius: sphere radius must be between 0.01 and 1"), "{e}");
     }
 }

@@ -81,7 +81,7 @@ pub enum Target {
 /// The sphere whose term dominates the field at `point` (where a ray met the surface): the sphere a
 /// person points at, also where several have merged.
 pub fn dominant_sphere(spheres: &[Sphere], point: Vec3) -> Option<usize> {
-    let influence = |s: &Sphere| s.radius * s.radius / (point - s.center).length_squared().max(1e-12);
+    let influence = |s: &Sphere| s.weight() / (point - s.center).length_squared().max(1e-12);
     (0..spheres.len()).max_by(|&a, &b| influence(&spheres[a]).total_cmp(&influence(&spheres[b])))
 }
 
@@ -175,7 +175,7 @@ mod tests {
 
     #[test]
     fn a_ray_at_a_sphere_picks_a_crossed_cell_on_its_near_side() {
-        let spheres = [Sphere { center: Vec3::ZERO, radius: 0.5, velocity: Vec3::ZERO }];
+        let spheres = [Sphere { center: Vec3::ZERO, radius: 0.5, velocity: Vec3::ZERO, charge: 1.0 }];
         let grid = Grid { cells_per_axis: 16 };
         let origin = Vec3::new(0.03, 0.02, 3.0);
         let (cell, point) =

@@ -88,6 +88,11 @@ impl View {
         self.change_sphere(index, |s| Sphere { radius, ..s })
     }
 
+    /// Sets sphere `index`'s charge: 1 adds its term, −1 subtracts it.
+    pub fn set_sphere_charge(&mut self, index: u32, charge: f32) -> Result<(), JsError> {
+        self.change_sphere(index, |s| Sphere { charge, ..s })
+    }
+
     /// Sets sphere `index`'s velocity (box half-widths per second); zero freezes it.
     pub fn set_sphere_velocity(&mut self, index: u32, x: f32, y: f32, z: f32) -> Result<(), JsError> {
         self.change_sphere(index, |s| Sphere { velocity: Vec3::new(x, y, z), ..s })

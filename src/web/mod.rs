@@ -71,12 +71,12 @@ impl Drop for Polling {
     }
 }
 
-/// Spheres as the page passes them: 7 numbers each (centre, radius, velocity).
+/// Spheres as the page passes them: 7 numbers each (centre, radius with the charge's sign, velocity).
 fn pack_spheres(spheres: &[Sphere]) -> Vec<f32> {
     spheres
         .iter()
         .flat_map(|s| {
-            [s.center.x, s.center.y, s.center.z, s.radius, s.velocity.x, s.velocity.y, s.velocity.z]
+            [s.center.x, s.center.y, s.center.z, s.signed_radius(), s.velocity.x, s.velocity.y, s.velocity.z]
         })
         .collect()
 }
@@ -87,11 +87,7 @@ fn unpack_spheres(packed: &[f32]) -> Result<Vec<Sphere>, JsError> {
     }
     Ok(packed
         .chunks(7)
-        .map(|s| Sphere {
-            center: Vec3::new(s[0], s[1], s[2]),
-            radius: s[3],
-            velocity: Vec3::new(s[4], s[5], s[6]),
-        })
+        .map(|s| Sphere::from_signed(Vec3::new(s[0], s[1], s[2]), s[3], Vec3::new(s[4], s[5], s[6])))
         .collect())
 }
 

@@ -66,7 +66,7 @@ pub fn surface_inside_box(spheres: &[Sphere], iso: f32, resolution: u32) -> bool
 
 /// A sphere at rest.
 pub fn sphere(center: [f32; 3], radius: f32) -> Sphere {
-    Sphere { center: Vec3::from_array(center), radius, velocity: Vec3::ZERO }
+    Sphere { center: Vec3::from_array(center), radius, velocity: Vec3::ZERO, charge: 1.0 }
 }
 
 /// A scratch folder under the system's temporary folder, one per name and test process.

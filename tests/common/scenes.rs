@@ -41,14 +41,59 @@ pub fn random_scenes(how_many: usize) -> Vec<OracleScene> {
         .collect()
 }
 
-/// `random` seeded random scenes (the generator of `tests/gpu_matches_oracle.rs`), then the walls,
-/// overlaps and grid-point scenes at five iso levels, two placements and two blends.
+/// `how_many` seeded random scenes in which about a third of the spheres subtract (charge −1), with
+/// both placements and both blends: the exact bounds must keep every crossed cell with negative terms.
+pub fn subtractive_scenes(how_many: usize) -> Vec<OracleScene> {
+    let mut rng = rand_pcg::Pcg32::seed_from_u64(0x6e65_6761);
+    (0..how_many)
+        .map(|case| {
+            let count = rng.random_range(2..=32);
+            let resolution = rng.random_range(8..=40);
+            let iso = 10f32.powf(rng.random_range(-1.0..0.7));
+            let seed = rng.random_range(0..1_000_000);
+            let mut scene = Scene::new(seed, count).unwrap();
+            scene.step(rng.random_range(0.0..20.0)).unwrap();
+            let mut spheres = scene.spheres().to_vec();
+            for s in spheres.iter_mut().skip(1) {
+                if rng.random_bool(0.35) {
+                    s.charge = -1.0;
+                }
+            }
+            let negative = spheres.iter().filter(|s| s.is_subtractive()).count();
+            let interpolation = if case % 2 == 0 { Interpolation::Linear } else { Interpolation::Midpoint };
+            let blend = if case % 4 < 2 { Blend::Sum } else { Blend::Max };
+            OracleScene {
+                what: format!(
+                    "subtractive case {case}: seed {seed}, {count} spheres ({negative} negative), \
+                     {resolution} cells, iso {iso}, {interpolation:?}, {blend:?}"
+                ),
+                spheres,
+                iso,
+                resolution,
+                construction: Construction { interpolation, blend },
+            }
+        })
+        .collect()
+}
+
+/// A sphere with a subtracting sphere inside it, off its centre: a dented blob.
+pub fn dented() -> Vec<Sphere> {
+    let mut hole = sphere([0.25, 0.1, 0.0], 0.3);
+    hole.charge = -1.0;
+    vec![sphere([0.0, 0.0, 0.0], 0.5), hole]
+}
+
+/// `random` seeded random scenes (the generator of `tests/gpu_matches_oracle.rs`) and as many with
+/// subtracting spheres, then the walls, overlaps, grid-point and dented scenes at five iso levels, two
+/// placements and two blends.
 pub fn oracle_scenes(random: usize) -> Vec<OracleScene> {
     let mut scenes = random_scenes(random);
+    scenes.extend(subtractive_scenes(random.min(30)));
     for (name, spheres) in [
         ("touching walls", touching_walls()),
         ("overlapping", overlapping()),
         ("on a grid point", on_grid_point()),
+        ("dented", dented()),
     ] {
         for iso in [0.05, 0.3, 1.0, 4.0, 20.0] {
             for interpolation in [Interpolation::Linear, Interpolation::Midpoint] {

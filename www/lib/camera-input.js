@@ -13,7 +13,7 @@ const DISTANCE_RANGE = [1.5, 20];
  * distance} and set(partial); `actions` has togglePause, reseed, resetView, step, hint(text),
  * pick(x, y, event) (CSS pixels from the canvas's top left) and deselect, and for editing grab(x, y)
  * → a drag {move(x, y), end()} or null, hold(x, y) (a long touch on empty space) → true when it did
- * something, hover(x, y), leave(), wheel(deltaY) → true when it used the wheel, remove() and freeze().
+ * something, hover(x, y), leave(), wheel(deltaY) → true when it used the wheel, remove(), freeze() and charge().
  */
 export function wireCameraInput(host, surface, camera, actions) {
   const focused = () => host.matches(':focus-within');
@@ -143,7 +143,7 @@ export function wireCameraInput(host, surface, camera, actions) {
       '-': () => zoom(1 / 0.9), _: () => zoom(1 / 0.9),
       p: actions.togglePause, ' ': actions.togglePause,
       n: actions.reseed, r: actions.resetView, '.': actions.step, Escape: actions.deselect,
-      ...(actions.remove ? { Delete: actions.remove, Backspace: actions.remove, f: actions.freeze } : {}),
+      ...(actions.remove ? { Delete: actions.remove, Backspace: actions.remove, f: actions.freeze, n: actions.charge } : {}),
     };
     const action = keys[e.key.length === 1 ? e.key.toLowerCase() : e.key];
     if (action) {

@@ -1,7 +1,7 @@
 // Hands on the spheres (the `edit` attribute): hovering rings the sphere under the pointer, dragging
 // it moves it in the plane facing the camera (the animation holds still meanwhile), Shift-click on
 // empty space adds one, Delete or Backspace removes the selected one, the wheel or the slider changes
-// its radius, F freezes it or lets it move again. On touch, a long press on a sphere selects and drags
+// its radius, F freezes it or lets it move again, N makes it subtract its term (a dent) or add it again. On touch, a long press on a sphere selects and drags
 // it, and on empty space adds one.
 // Everything is computed by the wasm view on the CPU from the sphere list: no mesh is read back.
 
@@ -165,6 +165,15 @@ export class SphereEditor {
     this.#showBox();
   }
 
+  /** Makes the selected sphere subtract its term from the field (charge −1), or add it again. */
+  toggleCharge() {
+    const sphere = this.#sphere(this.#selected);
+    if (!sphere) return;
+    this.#try(() => this.#hooks.view()?.set_sphere_charge(this.#selected, sphere[3] < 0 ? 1 : -1));
+    this.#hooks.edited();
+    this.#showBox();
+  }
+
   // Runs a view call; a refusal becomes a notice (the scene stays as it was). Returns the result, or
   // null when refused.
   #try(f) {
@@ -181,8 +190,9 @@ export class SphereEditor {
     return spheres && index >= 0 && 7 * index < spheres.length ? Array.from(spheres.slice(7 * index, 7 * index + 7)) : null;
   }
 
+  // The page carries a subtracting sphere's radius negative.
   #radius() {
-    return this.#sphere(this.#selected)?.[3] ?? 0.2;
+    return Math.abs(this.#sphere(this.#selected)?.[3] ?? 0.2);
   }
 
   /** The view was rebuilt or its spheres replaced: nothing stays selected. */
@@ -201,12 +211,14 @@ export class SphereEditor {
     if (!sphere) return;
     const count = (this.#hooks.view()?.spheres().length ?? 0) / 7;
     const moving = sphere.slice(4).some((v) => v !== 0);
+    const subtracts = sphere[3] < 0;
+    const radius = Math.abs(sphere[3]);
     const slider = make('input', { type: 'range', id: 'sphere-radius' });
     slider.min = String(RADIUS.min);
     slider.max = String(RADIUS.max);
     slider.step = String(RADIUS.step);
-    slider.value = String(sphere[3]);
-    const output = make('output', { htmlFor: 'sphere-radius', textContent: sphere[3].toFixed(2) });
+    slider.value = String(radius);
+    const output = make('output', { htmlFor: 'sphere-radius', textContent: radius.toFixed(2) });
     slider.addEventListener('input', () => {
       output.textContent = Number(slider.value).toFixed(2);
       this.setRadius(Number(slider.value));
@@ -214,6 +226,10 @@ export class SphereEditor {
     const freeze = make('button', { type: 'button', id: 'sphere-freeze', textContent: moving ? 'Freeze' : 'Let it move' });
     freeze.title = 'Stop it where it is, or let it move again (F)';
     freeze.addEventListener('click', () => this.toggleFreeze());
+    const charge = make('button', { type: 'button', id: 'sphere-charge', textContent: subtracts ? 'Add' : 'Subtract' });
+    charge.title = subtracts ? 'Add its term to the field again (N)' : 'Subtract its term from the field: a dent (N)';
+    charge.setAttribute('aria-pressed', String(subtracts));
+    charge.addEventListener('click', () => this.toggleCharge());
     const remove = make('button', { type: 'button', id: 'sphere-remove', textContent: 'Remove' });
     remove.title = 'Remove this sphere (Delete)';
     remove.addEventListener('click', () => this.remove());
@@ -222,9 +238,9 @@ export class SphereEditor {
     const where = sphere.slice(0, 3).map((c) => c.toFixed(2)).join(', ');
     this.#box.replaceChildren(
       make('header', {}, make('h3', { textContent: `Sphere ${this.#selected + 1} of ${count}` }), close),
-      make('p', { textContent: `centre (${where}) · ${moving ? 'moving' : 'still'}` }),
+      make('p', { textContent: `centre (${where}) · ${moving ? 'moving' : 'still'}${subtracts ? ' · subtracts' : ''}` }),
       make('div', { className: 'control' }, make('label', { htmlFor: 'sphere-radius', textContent: 'Radius' }), slider, output),
-      make('div', { className: 'buttons' }, freeze, remove),
+      make('div', { className: 'buttons' }, freeze, charge, remove),
       make('p', { className: 'hint', textContent: 'Drag to move · wheel: radius · Shift-click: add' }),
     );
   }

@@ -46,12 +46,13 @@ export class SceneIO {
     }
   }
 
-  /** The spheres in play (or kept for a view being rebuilt): [{ center, radius, velocity }]. */
+  /** The spheres in play (or kept for a view being rebuilt): [{ center, radius, velocity, charge }]. */
   list(saved = null) {
     const packed = this.#hooks.view()?.spheres() ?? saved ?? [];
     const out = [];
     for (let i = 0; i + 7 <= packed.length; i += 7) {
-      out.push({ center: [...packed.slice(i, i + 3)], radius: packed[i + 3], velocity: [...packed.slice(i + 4, i + 7)] });
+      const r = packed[i + 3];
+      out.push({ center: [...packed.slice(i, i + 3)], radius: Math.abs(r), velocity: [...packed.slice(i + 4, i + 7)], charge: r < 0 ? -1 : 1 });
     }
     return out;
   }

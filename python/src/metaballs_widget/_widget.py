@@ -32,7 +32,7 @@ class _Figure(anywidget.AnyWidget):
     adapter = traitlets.Unicode("", help="What the figure draws with (WebGPU's adapter, or WebGL2).").tag(sync=True)
     sphere_list = traitlets.List(
         traitlets.Dict(),
-        help="The spheres as dicts (center, radius, velocity); set it to place them by hand.",
+        help="The spheres as dicts (center, radius, velocity, charge: -1 subtracts); set it to place them by hand.",
     ).tag(sync=True)
 
     def __init__(self, **kwargs):

@@ -28,7 +28,8 @@ pub enum Kind {
     List(&'static [&'static str]),
     /// `off`, or an axis and a position in the box: `z:0.25`.
     Slice,
-    /// Empty (the seeded layout), or spheres written `x,y,z,radius[,vx,vy,vz]` joined by `;`.
+    /// Empty (the seeded layout), or spheres written `x,y,z,radius[,vx,vy,vz]` joined by `;` (a negative
+    /// radius: a subtracting sphere).
     Spheres,
     /// Any text, kept as written (a description, a URL).
     Text,
