@@ -243,3 +243,44 @@ fn edge_vertex(a: vec3<u32>, b: vec3<u32>, fa: f32, fb: f32) -> EdgeVertex {
     }
     return EdgeVertex(p, n);
 }
+
+// Newton steps that project a point onto f = iso (src/extract/reference.rs, surface_distance, takes the
+// same steps on the CPU).
+const NEWTON_STEPS: u32 = 8u;
+
+// The distance from `p` to the exact surface, in cells: Newton steps along the gradient,
+// p ← p − (f(p) − iso) ∇f / |∇f|², each at most a cell long; or to the box face the solid meets, where
+// the face is its surface.
+fn surface_distance(p: vec3<f32>) -> f32 {
+    var q = p;
+    for (var k = 0u; k < NEWTON_STEPS; k++) {
+        let g = outward_gradient(q);
+        let g2 = dot(g, g);
+        if (g2 <= 0.0) {
+            break;
+        }
+        // ∇f = −2g.
+        var step = (field_at(q) - grid.iso) / (2.0 * g2) * g;
+        let len = length(step);
+        if (len > grid.cell_size) {
+            step *= grid.cell_size / len;
+        }
+        q += step;
+    }
+    var d = length(q - p);
+    let half = -grid.box_min.x;
+    let a = abs(p);
+    var axis = 0u;
+    if (a.y > a[axis]) {
+        axis = 1u;
+    }
+    if (a.z > a[axis]) {
+        axis = 2u;
+    }
+    var wall = p;
+    wall[axis] = select(-half, half, p[axis] > 0.0);
+    if (field_at(wall) >= grid.iso) {
+        d = min(d, half - a[axis]);
+    }
+    return d / grid.cell_size;
+}

@@ -51,8 +51,8 @@ export declare class MetaballsView extends HTMLElement {
   display: 'shaded' | 'flat' | 'wireframe' | 'points' | 'normals';
   /** Grid: none, lattice, cells, blocks. Attribute `grid`; default "none". */
   grid: 'none' | 'lattice' | 'cells' | 'blocks';
-  /** Color_by: none, area, quality, case, level. Attribute `color_by`; default "none". */
-  color_by: 'none' | 'area' | 'quality' | 'case' | 'level';
+  /** Color_by: none, area, quality, case, level, error. Attribute `color_by`; default "none". */
+  color_by: 'none' | 'area' | 'quality' | 'case' | 'level' | 'error';
   /** Slice: off, or an axis and a position in the box (z:0.25). Attribute `slice`; default "off". */
   slice: string;
   /** Ambiguous: a boolean attribute. Attribute `ambiguous`; default false. */

@@ -2,6 +2,7 @@
 //! buffers the compute passes fill (display modes, grid views, colourings, the slice), and the shading
 //! uniforms. Reads extraction's buffers; never writes them.
 
+pub mod measure;
 pub mod shade;
 pub mod slice;
 pub mod uniforms;

@@ -112,6 +112,48 @@ pub fn outward_gradient(spheres: &[Sphere], p: Vec3, blend: Blend) -> Vec3 {
     g + dent
 }
 
+/// Newton steps that project a point onto the surface (`NEWTON_STEPS` in `shaders/common.wgsl`).
+pub const NEWTON_STEPS: u32 = 8;
+
+/// The distance from `p` to the exact surface f = iso, in cells of `grid`, as `surface_distance` in
+/// `shaders/common.wgsl` measures it: Newton steps along the gradient, p ← p − (f(p) − iso) ∇f / |∇f|²,
+/// each at most a cell long; or to the box face the solid meets, where the face is its surface.
+pub fn surface_distance(spheres: &[Sphere], iso: f32, blend: Blend, p: Vec3, grid: Grid) -> f32 {
+    let cell = grid.cell_size();
+    let mut q = p;
+    for _ in 0..NEWTON_STEPS {
+        let g = outward_gradient(spheres, q, blend);
+        let g2 = g.dot(g);
+        if g2 <= 0.0 {
+            break;
+        }
+        let mut step = (blended_field_at(spheres, q, blend) - iso) / (2.0 * g2) * g;
+        let len = step.length();
+        if len > cell {
+            step *= cell / len;
+        }
+        q += step;
+    }
+    let mut d = (q - p).length();
+    let a = p.abs();
+    let axis = if a.z > a.x.max(a.y) {
+        2
+    } else if a.y > a.x {
+        1
+    } else {
+        0
+    };
+    let mut wall = p;
+    wall[axis] = BOX_HALF_EXTENT.copysign(p[axis]);
+    if p[axis] == 0.0 {
+        wall[axis] = -BOX_HALF_EXTENT;
+    }
+    if blended_field_at(spheres, wall, blend) >= iso {
+        d = d.min(BOX_HALF_EXTENT - a[axis]);
+    }
+    d / cell
+}
+
 /// Where the edge from `pa` (value `fa`) to `pb` (value `fb`) crosses `iso`, and the outward normal
 /// there: analytic, or across the wall when an end lies on the box's faces (`a_on_wall`, `b_on_wall`;
 /// the cap there is flat), or along the edge where the gradient vanishes. Every extractor on the CPU

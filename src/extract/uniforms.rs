@@ -39,15 +39,42 @@ pub const LEVEL_SLOTS: usize = 12;
 /// be a multiple of 256.
 pub const LEVEL_COUNTS_OFFSET: u64 = 256;
 
-/// The whole counters buffer: the counters, then (with level of detail) triangles per level.
+/// Where the mesh's measures start in the counters buffer.
+pub const MEASURES_OFFSET: u64 = 512;
+/// Bins of the triangles' shape histogram.
+pub const QUALITY_BINS: usize = 10;
+/// A squared error's units in the measures' sum: cells² / 2²⁰ (`SQUARES_SCALE` in
+/// `shaders/draw/measure.wgsl`).
+pub const SQUARES_SCALE: f64 = 1_048_576.0;
+
+/// What the measures pass (`shaders/draw/measure.wgsl`) sums over the mesh.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable, PartialEq, Eq)]
+pub struct Measures {
+    /// Σ error² in `SQUARES_SCALE` units, low and high words.
+    pub squares: [u32; 2],
+    /// The largest error's `f32` bits, in cells.
+    pub largest: u32,
+    /// Vertices measured.
+    pub measured: u32,
+    /// Triangles per tenth of the shape measure, from slivers (0) to equilateral (9).
+    pub quality: [u32; QUALITY_BINS],
+    pub _pad: [u32; 2],
+}
+
+/// The whole counters buffer: the counters, then (with level of detail) triangles per level, then the
+/// mesh's measures.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Pod, Zeroable, PartialEq, Eq)]
 pub struct CounterBlock {
     pub counters: Counters,
     pub _pad: [u32; 60],
     pub level_triangles: [u32; LEVEL_SLOTS],
+    pub _pad_measures: [u32; 52],
+    pub measures: Measures,
 }
 const _: () = assert!(std::mem::offset_of!(CounterBlock, level_triangles) == LEVEL_COUNTS_OFFSET as usize);
+const _: () = assert!(std::mem::offset_of!(CounterBlock, measures) == MEASURES_OFFSET as usize);
 
 impl Default for CounterBlock {
     fn default() -> Self {

@@ -6,6 +6,7 @@ mod editing;
 mod extraction;
 mod inspector;
 mod limits;
+mod measures;
 mod readback;
 mod setters;
 mod stats;
@@ -16,6 +17,7 @@ pub use readback::{MeshReadback, OverlayReadback};
 pub use stats::FrameStats;
 
 use crate::device::timing::{StageTimes, Timing};
+use crate::draw::measure::{MeasurePass, MeshMeasures};
 use crate::draw::shade::{MULTISAMPLES, MeshDraw, ShadePass, ViewFrame};
 use crate::draw::views::{self, ViewState};
 use crate::extract::Extractor;
@@ -71,6 +73,9 @@ pub struct Renderer {
     views: Option<ViewState>,
     /// The cell the inspector shows, if any.
     selected: Option<UVec3>,
+    /// The measures pass, made when a view first asks for the mesh's error or shape.
+    measures: Option<MeasurePass>,
+    latest_measures: Option<MeshMeasures>,
 }
 
 impl Renderer {
@@ -138,6 +143,8 @@ impl Renderer {
             frame: 0,
             timing: None,
             views: None,
+            measures: None,
+            latest_measures: None,
             selected: None,
         })
     }
@@ -289,6 +296,9 @@ impl Renderer {
     /// when next used.
     fn follow_new_buffers(&mut self) {
         self.drop_views();
+        if let Some(measures) = &mut self.measures {
+            measures.unbind();
+        }
         for extractor in &mut self.extractors {
             extractor.buffers_changed();
         }
@@ -311,6 +321,7 @@ impl Renderer {
             .device
             .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("frame: encoder") });
         let count = self.make_mesh(&mut encoder, timed);
+        let measured = self.encode_measures(&mut encoder, count);
         let show_views = self.views_shown();
         if show_views && self.views.is_none() {
             let pipelines = self.shade.pipelines().views(&self.device);
@@ -342,11 +353,12 @@ impl Renderer {
         if let Some(timing) = timing {
             timing.resolve(&mut encoder);
         }
+        let counted = self.counted_on_device;
         let slot =
-            if self.counted_on_device { self.stats.record(&mut encoder, &self.mesh.counters) } else { None };
+            if counted || measured { self.stats.record(&mut encoder, &self.mesh.counters) } else { None };
         self.queue.submit([encoder.finish()]);
         if let Some(slot) = slot {
-            self.stats.map(slot, self.frame, self.mesh.capacity);
+            self.stats.map(slot, self.frame, self.mesh.capacity, counted, measured);
         }
     }
 

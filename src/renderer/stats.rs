@@ -3,9 +3,10 @@
 
 use super::limits::storage_limit;
 use super::{Renderer, Sizing};
+use crate::draw::measure::MeshMeasures;
 use crate::extract::buffers::{BLOCK_CELLS, Capacity};
 use crate::extract::reference::Grid;
-use crate::extract::uniforms::{CounterBlock, Counters, LEVEL_SLOTS};
+use crate::extract::uniforms::{CounterBlock, Counters, LEVEL_SLOTS, Measures};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU8, Ordering};
 
@@ -84,6 +85,8 @@ struct StatsSlot {
     state: Arc<AtomicU8>,
     frame: u64,
     capacity: Capacity,
+    counted: bool,
+    measured: bool,
 }
 
 /// Counters of one past frame, with the capacity its buffers had.
@@ -92,6 +95,10 @@ pub(super) struct Reading {
     pub capacity: Capacity,
     pub counters: Counters,
     pub level_triangles: [u32; LEVEL_SLOTS],
+    /// False when the mesh was uploaded, so the counters say nothing of it.
+    pub counted: bool,
+    /// The measures pass's sums, when it ran.
+    pub measures: Option<Measures>,
 }
 
 /// A few mappable buffers the counters are copied into, frame after frame.
@@ -112,6 +119,8 @@ impl StatsRing {
                 state: Arc::new(AtomicU8::new(SLOT_FREE)),
                 frame: 0,
                 capacity: Capacity { blocks: 0, cells: 0, vertices: 0, indices: 0 },
+                counted: false,
+                measured: false,
             })
             .collect();
         Self { slots }
@@ -125,11 +134,14 @@ impl StatsRing {
         Some(slot)
     }
 
-    /// Maps the slot `record` returned, after its frame was submitted.
-    pub fn map(&mut self, slot: usize, frame: u64, capacity: Capacity) {
+    /// Maps the slot `record` returned, after its frame was submitted: `counted` when the compute
+    /// passes counted the mesh, `measured` when the measures pass ran.
+    pub fn map(&mut self, slot: usize, frame: u64, capacity: Capacity, counted: bool, measured: bool) {
         let slot = &mut self.slots[slot];
         slot.frame = frame;
         slot.capacity = capacity;
+        slot.counted = counted;
+        slot.measured = measured;
         slot.state.store(SLOT_PENDING, Ordering::Release);
         let state = slot.state.clone();
         slot.buffer.map_async(wgpu::MapMode::Read, .., move |result| {
@@ -155,8 +167,14 @@ impl StatsRing {
             };
             slot.buffer.unmap();
             slot.state.store(SLOT_FREE, Ordering::Release);
-            let (counters, level_triangles) = (block.counters, block.level_triangles);
-            readings.push(Reading { frame: slot.frame, capacity: slot.capacity, counters, level_triangles });
+            readings.push(Reading {
+                frame: slot.frame,
+                capacity: slot.capacity,
+                counters: block.counters,
+                level_triangles: block.level_triangles,
+                counted: slot.counted,
+                measures: slot.measured.then_some(block.measures),
+            });
         }
         readings
     }
@@ -175,7 +193,17 @@ impl Renderer {
         #[cfg(not(target_arch = "wasm32"))]
         let _ = self.device.poll(wgpu::PollType::Poll);
         let grid = self.grid();
-        for Reading { frame, capacity, counters, level_triangles } in self.stats.take_ready() {
+        for Reading { frame, capacity, counters, level_triangles, counted, measures } in
+            self.stats.take_ready()
+        {
+            if let Some(sums) = measures
+                && self.latest_measures.is_none_or(|m| m.frame < frame)
+            {
+                self.latest_measures = Some(MeshMeasures::from_sums(frame, &sums));
+            }
+            if !counted {
+                continue;
+            }
             let overflowed = !capacity.holds(&counters);
             let bytes = self.mesh.bytes();
             let stats =

@@ -3,4 +3,5 @@
 //! GPU here: `draw` puts the classes on screen, the renderer and the page show the picked cell.
 
 pub mod case_classes;
+pub mod error;
 pub mod inspect;

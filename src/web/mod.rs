@@ -344,6 +344,15 @@ impl View {
         out
     }
 
+    /// The mesh's measures while `color_by` is `error` or `quality`: `[frame, RMS error, largest error
+    /// (cells), vertices measured, then triangles in ten shape bins, slivers first]`; empty otherwise.
+    pub fn measures(&self) -> Vec<f64> {
+        let Some(m) = self.renderer.measures() else { return Vec::new() };
+        let mut out = vec![m.frame as f64, m.rms_error as f64, m.max_error as f64, m.vertices as f64];
+        out.extend(m.quality.iter().map(|&n| n as f64));
+        out
+    }
+
     /// GPU memory held by the mesh buffers, in bytes.
     pub fn mesh_bytes(&self) -> f64 {
         self.renderer.mesh_bytes() as f64

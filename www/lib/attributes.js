@@ -17,7 +17,7 @@ export const TABLE = Object.freeze([
   {"name":"antialiasing","url":"aa","label":"Antialiasing","kind":"boolean","words":[],"min":0,"max":0,"sliderMin":0,"sliderMax":0,"step":0,"default":"true","value":true},
   {"name":"display","url":"display","label":"Display","kind":"choice","words":["shaded","flat","wireframe","points","normals"],"min":0,"max":0,"sliderMin":0,"sliderMax":0,"step":0,"default":"shaded","value":"shaded"},
   {"name":"grid","url":"grid","label":"Grid","kind":"choice","words":["none","lattice","cells","blocks"],"min":0,"max":0,"sliderMin":0,"sliderMax":0,"step":0,"default":"none","value":"none"},
-  {"name":"color_by","url":"color_by","label":"Colour by","kind":"choice","words":["none","area","quality","case","level"],"min":0,"max":0,"sliderMin":0,"sliderMax":0,"step":0,"default":"none","value":"none"},
+  {"name":"color_by","url":"color_by","label":"Colour by","kind":"choice","words":["none","area","quality","case","level","error"],"min":0,"max":0,"sliderMin":0,"sliderMax":0,"step":0,"default":"none","value":"none"},
   {"name":"slice","url":"slice","label":"Field slice","kind":"slice","words":[],"min":0,"max":0,"sliderMin":0,"sliderMax":0,"step":0,"default":"off","value":"off"},
   {"name":"ambiguous","url":"ambiguous","label":"Ambiguous","kind":"boolean","words":[],"min":0,"max":0,"sliderMin":0,"sliderMax":0,"step":0,"default":"false","value":false},
   {"name":"interpolation","url":"interp","label":"Vertices","kind":"choice","words":["linear","midpoint"],"min":0,"max":0,"sliderMin":0,"sliderMax":0,"step":0,"default":"linear","value":"linear"},

@@ -155,6 +155,8 @@ button:focus-visible, input:focus-visible { outline: 2px solid var(--accent); ou
 #hud div { white-space: nowrap; overflow: hidden; text-overflow: ellipsis; }
 #hud #hud-lod ol { list-style: none; margin: 0; padding: 0; }
 #hud #hud-lod li i { display: inline-block; width: 8px; height: 8px; margin-right: 4px; border-radius: 2px; }
+#hud #hud-quality-bars { display: inline-flex; align-items: flex-end; gap: 1px; height: 14px; vertical-align: middle; }
+#hud #hud-quality-bars i { display: inline-block; width: 6px; background: currentColor; opacity: 0.8; }
 #hud .key { display: inline-block; width: 56px; color: var(--muted); }
 #overflow { color: #ffb347; white-space: normal !important; }
 /* Small figures keep the statistics to frames per second and triangles. */
@@ -320,6 +322,8 @@ export const TEMPLATE = `
     <div class="wide"><span class="key">Frame</span> <span id="frame-time">–</span></div>
     <div><span class="key">Triangles</span> <span id="triangles">–</span></div>
     <div class="wide"><span class="key">Adapter</span> <span id="adapter">–</span></div>
+    <div id="hud-error" hidden><span class="key">Error</span> <span id="hud-error-text"></span></div>
+    <div id="hud-quality" hidden><span class="key">Shape</span> <span id="hud-quality-bars" role="img"></span></div>
     <div id="hud-lod" hidden><span class="key">LOD</span> <span id="hud-lod-summary"></span><ol id="hud-lod-levels"></ol></div>
     <div id="overflow" role="alert" hidden>Triangle budget full: part of the surface is not drawn. Lower the resolution or raise the iso level.</div>
     </details>

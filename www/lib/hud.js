@@ -1,5 +1,6 @@
 // The figure's statistics: frames per second, frame time, triangles, adapter and mesher (GPU or CPU
-// meshing), with level of detail the effective resolution and each level's blocks and triangles, and a
+// meshing), with level of detail the effective resolution and each level's blocks and triangles, with
+// color_by=error or quality the mesh's distance to the exact surface and its shape histogram, and a
 // warning when the triangle budget stays full. Figures update twice a second from the GPU's
 // asynchronous reports.
 
@@ -16,7 +17,7 @@ export class Hud {
     this.frames = 0;
     this.since = 0;
     this.overflows = 0;
-    this.stats = { triangles: 0, fps: 0, frameTime: 0, adapter: '', mesher: '', overflowed: false, lod: null };
+    this.stats = { triangles: 0, fps: 0, frameTime: 0, adapter: '', mesher: '', overflowed: false, lod: null, error: null, quality: null };
     this.adapterLabel = '';
   }
 
@@ -69,6 +70,7 @@ export class Hud {
       this.#showAdapter();
     }
     this.#showLevels(view.lod_levels());
+    this.#showMeasures(view.measures());
     const stats = view.stats();
     if (!stats) return 0;
     this.stats.triangles = stats.triangles;
@@ -82,6 +84,36 @@ export class Hud {
     const { frame } = stats;
     stats.free();
     return frame;
+  }
+
+  /**
+   * The mesh's error and shape (with color_by=error or quality): `[frame, rms, max, vertices, bins…]`
+   * from the view, or empty.
+   */
+  #showMeasures(m) {
+    const $ = (id) => this.root.getElementById(id);
+    const showing = m.length > 0;
+    $('hud-error').hidden = $('hud-quality').hidden = !showing;
+    if (!showing) {
+      this.stats.error = this.stats.quality = null;
+      return;
+    }
+    const [, rms, max, vertices, ...bins] = m;
+    this.stats.error = { rms, max, vertices };
+    this.stats.quality = bins;
+    $('hud-error-text').textContent = `RMS ${rms.toPrecision(2)} · max ${max.toPrecision(2)} cells`;
+    $('hud-error-text').title = `distance of ${formatNumber(vertices)} vertices to the exact surface, in cell sizes`;
+    const top = Math.max(1, ...bins);
+    const bars = $('hud-quality-bars');
+    bars.replaceChildren(...bins.map((n, k) => {
+      const bar = document.createElement('i');
+      bar.style.height = `${Math.max(1, Math.round((14 * n) / top))}px`;
+      bar.title = `shape ${(k / 10).toFixed(1)}–${((k + 1) / 10).toFixed(1)}: ${formatNumber(n)} triangles`;
+      return bar;
+    }));
+    const total = bins.reduce((a, b) => a + b, 0) || 1;
+    const slivers = bins.slice(0, 2).reduce((a, b) => a + b, 0);
+    bars.setAttribute('aria-label', `triangle shapes from sliver to equilateral; ${Math.round((100 * slivers) / total)} % below 0.2`);
   }
 
   /** Level of detail: `[resolution, blocks₀, triangles₀, …]` from the view, or empty without it. */

@@ -63,6 +63,8 @@ export function colorKey(state, classNames) {
     case 'quality': return ramp('sliver', 'equilateral');
     case 'case': return classes(classNames);
     case 'level': return levels();
+    // The views colour the square root of the error's share of half a cell: the middle is ⅛ cell.
+    case 'error': return ramp('on the surface', '½ cell away (middle: ⅛)');
     default: return state.grid === 'cells' ? classes(classNames) : null;
   }
 }

@@ -35,6 +35,15 @@ const COLOR_AREA: u32 = 1u;
 const COLOR_QUALITY: u32 = 2u;
 const COLOR_CASE: u32 = 3u;
 const COLOR_LEVEL: u32 = 4u;
+const COLOR_ERROR: u32 = 5u;
+// The error at the top of its key, in cells.
+const ERROR_TOP: f32 = 0.5;
+
+// Colour of an error of `cells`: the ramp over the square root of its share of ERROR_TOP, so that the
+// hundredths of a cell linear placement leaves stay apart (www/lib/legends.js draws the same key).
+fn error_color(cells: f32) -> vec3<f32> {
+    return ramp(sqrt(clamp(cells / ERROR_TOP, 0.0, 1.0)));
+}
 
 // Colour of level of detail k (0 the finest): the case classes' hues, 96° apart from level to level
 // so that neighbouring levels differ most (www/lib/legends.js draws the same key).

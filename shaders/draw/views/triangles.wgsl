@@ -1,4 +1,4 @@
-// The mesh one triangle at a time (display=flat, wireframe; color_by=area, quality, case, level).
+// The mesh one triangle at a time (display=flat, wireframe; color_by=area, quality, case, level, error).
 
 struct TriangleOut {
     @builtin(position) clip: vec4<f32>,
@@ -7,6 +7,8 @@ struct TriangleOut {
     @location(2) @interpolate(flat) face_normal: vec3<f32>,
     @location(3) barycentric: vec3<f32>,
     @location(4) @interpolate(flat) albedo: vec3<f32>,
+    // With color_by=error, this vertex's distance to the exact surface in cells.
+    @location(5) error: f32,
 }
 
 fn triangle_color(a: vec3<f32>, b: vec3<f32>, c: vec3<f32>, triangle: u32) -> vec3<f32> {
@@ -45,6 +47,10 @@ fn triangle_vertex(@builtin(vertex_index) v: u32) -> TriangleOut {
     out.face_normal = select(out.normal, normalize(n), dot(n, n) > 0.0);
     out.barycentric = vec3<f32>(f32(v % 3u == 0u), f32(v % 3u == 1u), f32(v % 3u == 2u));
     out.albedo = triangle_color(a, b, c, v / 3u);
+    out.error = 0.0;
+    if (shading.color_by == COLOR_ERROR) {
+        out.error = surface_distance(out.world);
+    }
     return out;
 }
 
@@ -57,7 +63,11 @@ fn triangle_fragment(in: TriangleOut, @builtin(front_facing) front: bool) -> @lo
     if (!front) {
         n = -n;
     }
-    var color = lit(in.albedo, in.world, n);
+    var albedo = in.albedo;
+    if (shading.color_by == COLOR_ERROR) {
+        albedo = error_color(in.error);
+    }
+    var color = lit(albedo, in.world, n);
     if (shading.display == DISPLAY_WIREFRAME) {
         // Dark edges about a pixel wide whatever the triangle's size on screen, over a paler surface.
         let width = fwidth(in.barycentric);

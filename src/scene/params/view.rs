@@ -77,6 +77,8 @@ choice!(
         Case = "case",
         /// The level of detail of the emitting block (with `lod=on`), finest first.
         Level = "level",
+        /// Each vertex's distance to the exact surface f = iso, in cells.
+        Error = "error",
     }
 );
 
