@@ -91,12 +91,14 @@ export declare class MetaballsView extends HTMLElement {
   edit: boolean;
   /** Balls: x,y,z,radius[,vx,vy,vz] per sphere joined by ; (a negative radius subtracts). Attribute `balls`; default "". */
   balls: string;
-  /** Controls: all, none, or a comma list of spheres, iso, resolution, speed, shininess, color, antialiasing, mesher, lod, lod_pixels, lod_freeze, paused, seed, view, step, display, grid, color_by, slice, ambiguous, interpolation, blend, inspector, light, spot_angle, spot_softness, ambient, diffuse, specular, projection, fov, theme, edit, scene, export. Attribute `controls`; default "none". */
+  /** Controls: all, none, or a comma list of spheres, iso, resolution, speed, shininess, color, antialiasing, mesher, lod, lod_pixels, lod_freeze, paused, pause_on, seed, view, step, display, grid, color_by, slice, ambiguous, interpolation, blend, inspector, error_plot, light, spot_angle, spot_softness, ambient, diffuse, specular, projection, fov, theme, edit, scene, export. Attribute `controls`; default "none". */
   controls: string;
   /** Hud: on, off. Attribute `hud`; default "off". */
   hud: 'on' | 'off';
   /** Autoplay: visible, off. Attribute `autoplay`; default "visible". */
   autoplay: 'visible' | 'off';
+  /** Pause_on: none, merge. Attribute `pause_on`; default "none". */
+  pause_on: 'none' | 'merge';
   /** Max-pixel-ratio: 0.25 to 4. Attribute `max-pixel-ratio`; default 2. */
   maxPixelRatio: number;
   /** The figure's accessible name (without it, one is made from what it shows). Attribute `alt`; default "". */

@@ -16,6 +16,8 @@ import { CostGuard } from './lib/frame-cost.js';
 import { SphereEditor } from './lib/editor.js';
 import { wireDrop } from './lib/scene-files.js';
 import { SceneIO } from './lib/scene-io.js';
+import { sweepErrors } from './lib/error-plot.js';
+import { TopologyWatch } from './lib/topology-watch.js';
 import {
   CONTROL_NAMES, defaultOf, defaults, FigureState, NAMES, TABLE, TEXT_NAMES,
 } from './lib/figure-state.js';
@@ -57,9 +59,11 @@ export class MetaballsView extends FigureBase {
     loadScene: () => this.#root.getElementById('scene-file').click(),
     exportMesh: (format) => this.#run(() => this.downloadMesh(format)),
     picture: (scale) => this.#run(() => this.downloadPicture(scale)),
+    errorSweep: (status) => sweepErrors(() => this.#frames.view, status),
   };
   #started = false;
   #look;
+  #topology;
   // Resolves once the wasm is in and the attributes given so far are read.
   #loaded = null;
 
@@ -93,6 +97,14 @@ export class MetaballsView extends FigureBase {
       showPanel: () => this.#showPanel(this.#state),
       buildPanel: () => this.#buildPanel(),
       emit: (type, detail) => this.#emit(type, detail),
+      topology: () => this.#topology,
+    });
+    this.#topology = new TopologyWatch({
+      view: () => this.#frames.view,
+      state: () => this.#state,
+      hud: this.#hud,
+      announce: (text) => this.#look.announce(text),
+      pause: () => this.pause(),
     });
     this.#inspector = new Inspector(this.#root, () => caseGallery().cube, {
       view: () => this.#frames.view,
@@ -431,6 +443,11 @@ export class MetaballsView extends FigureBase {
 
   /** Resolves once the figure has a picture for print (its poster, or one of a drawn frame). */
   printable() { return this.#look.printable(); }
+  /** The surface's shape now: resolves to { components, genus, closed, manifold }. */
+  async topology() {
+    await this.ready();
+    return this.#topology.check();
+  }
 
   /**
    * Runs `f(view)` with the wasm view while the element's own frames are held (the benchmark uses it).

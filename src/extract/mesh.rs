@@ -36,6 +36,20 @@ pub struct Topology {
     pub components: Vec<(i64, i64)>,
 }
 
+/// What a person asks of a surface's shape: how many separate blobs, how many holes through them, and
+/// whether it is a closed, well-formed surface.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ShapeSummary {
+    /// Connected pieces with at least one triangle.
+    pub components: u32,
+    /// Handles (holes through the surface) summed over the closed components: (2 − χ) / 2 each.
+    pub genus: u32,
+    /// No edge lies on one triangle only.
+    pub closed: bool,
+    /// Every edge lies on exactly two triangles, wound in opposite directions.
+    pub manifold: bool,
+}
+
 impl Mesh {
     /// Triangles in the soup.
     pub fn triangle_count(&self) -> usize {
@@ -164,6 +178,24 @@ impl IndexedMesh {
                 a.dot(b.cross(c)) / 6.0
             })
             .sum()
+    }
+
+    /// Components, genus, closed and manifold, from `topology`.
+    pub fn shape(&self) -> ShapeSummary {
+        let t = self.topology();
+        let mut edge_use: HashMap<(u32, u32), u32> = HashMap::new();
+        for tri in &self.triangles {
+            for k in 0..3 {
+                let (a, b) = (tri[k], tri[(k + 1) % 3]);
+                *edge_use.entry((a.min(b), a.max(b))).or_default() += 1;
+            }
+        }
+        let closed = edge_use.values().all(|&n| n >= 2);
+        let manifold = t.open_or_nonmanifold_edges == 0 && t.misoriented_edges == 0;
+        // A component of one vertex and no triangle is a vertex no triangle uses: not a blob.
+        let blobs: Vec<i64> = t.components.iter().filter(|c| c.1 > 1).map(|c| c.0).collect();
+        let genus = if closed { blobs.iter().map(|&euler| ((2 - euler) / 2).max(0) as u32).sum() } else { 0 };
+        ShapeSummary { components: blobs.len() as u32, genus, closed, manifold }
     }
 
     /// Edge use, orientation and per-component Euler characteristic.

@@ -15,7 +15,7 @@ impl Renderer {
         let (origin, direction) = self.ray(x, y);
         let s = &self.settings;
         let spheres = self.scene.spheres();
-        let (_, point) = inspect::pick(
+        let on_surface = inspect::pick(
             spheres,
             s.iso,
             self.grid(),
@@ -23,8 +23,26 @@ impl Renderer {
             origin,
             direction,
             Target::Surface,
-        )?;
-        inspect::dominant_sphere(spheres, point)
+        )
+        .and_then(|(_, point)| Some(((point - origin).length(), inspect::dominant_sphere(spheres, point)?)));
+        // A subtracting sphere has no surface of its own: it is picked where the ray meets its ball
+        // before any surface.
+        let subtracting = spheres
+            .iter()
+            .enumerate()
+            .filter(|(_, sphere)| sphere.is_subtractive())
+            .filter_map(|(i, sphere)| {
+                let to_centre = sphere.center - origin;
+                let along = to_centre.dot(direction);
+                let miss2 = to_centre.length_squared() - along * along;
+                let r2 = sphere.radius * sphere.radius;
+                (along > 0.0 && miss2 <= r2).then(|| (along - (r2 - miss2).sqrt(), i))
+            })
+            .min_by(|a, b| a.0.total_cmp(&b.0));
+        match (on_surface, subtracting) {
+            (Some(hit), Some(ball)) => Some(if ball.0 < hit.0 { ball.1 } else { hit.1 }),
+            (hit, ball) => hit.or(ball).map(|h| h.1),
+        }
     }
 
     /// Where the ray through pixel (`x`, `y`) meets the plane through `point` facing the camera.

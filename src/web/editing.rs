@@ -130,6 +130,21 @@ impl View {
         }))
     }
 
+    /// The shape of the current mesh: resolves to `[components, genus, closed (0/1), manifold (0/1)]`.
+    /// On the CPU path the mesh is at hand; on the GPU path it is one readback, queued now and asked for
+    /// only on demand, never every frame.
+    pub fn topology(&mut self) -> js_sys::Promise {
+        let readback = self.renderer.mesh_readback();
+        let device = self.device.clone();
+        wasm_bindgen_futures::future_to_promise(async move {
+            let _polling = Polling::start(&device);
+            let mesh = readback.finish().await.map_err(|e| JsValue::from(js_error(e)))?;
+            let s = mesh.shape();
+            let out = [s.components as f64, s.genus as f64, s.closed as u8 as f64, s.manifold as u8 as f64];
+            Ok(js_sys::Float64Array::from(&out[..]).into())
+        })
+    }
+
     /// Draws the current state once at `width` × `height` pixels (without advancing the animation) and
     /// resolves to its pixels, RGBA8 sRGB, rows top to bottom: pictures at any size, on demand.
     pub fn render_pixels(&mut self, width: u32, height: u32) -> Result<js_sys::Promise, JsError> {

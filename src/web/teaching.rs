@@ -2,8 +2,11 @@
 //! report) and the case gallery's data.
 
 use super::{View, js_error};
+use crate::extract::reference::Construction;
 use crate::extract::tables::{CASE_TRIANGLES, CORNER_OFFSETS, EDGE_CORNERS, TRI_TABLE};
+use crate::scene::params::view::Interpolation;
 use crate::teach::case_classes::{CLASS_NAMES, CLASS_REPRESENTATIVES, case_classes};
+use crate::teach::error::error_at;
 use crate::teach::inspect::CellReport;
 use glam::UVec3;
 use wasm_bindgen::prelude::*;
@@ -142,5 +145,21 @@ impl View {
             Some(cell) => report_object(&self.renderer.inspect(cell)),
             None => JsValue::NULL,
         }
+    }
+}
+
+#[wasm_bindgen]
+impl View {
+    /// One point of the "error vs resolution" plot for the current spheres, iso level and blend: the
+    /// mesh at `cells_per_axis` on the CPU, with `midpoint` or linear placement. Returns `[RMS error,
+    /// largest error (box half-widths), triangles]`. The page calls it between frames, one resolution
+    /// at a time.
+    pub fn error_at(&self, cells_per_axis: u32, midpoint: bool) -> Result<Vec<f64>, JsError> {
+        crate::scene::params::check_resolution(cells_per_axis).map_err(js_error)?;
+        let settings = self.renderer.settings();
+        let interpolation = if midpoint { Interpolation::Midpoint } else { Interpolation::Linear };
+        let construction = Construction { interpolation, blend: settings.view.blend };
+        let p = error_at(self.renderer.scene().spheres(), settings.iso, construction, cells_per_axis);
+        Ok(vec![p.rms, p.max, p.triangles as f64])
     }
 }

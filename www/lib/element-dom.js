@@ -323,7 +323,8 @@ export const TEMPLATE = `
     <div><span class="key">Triangles</span> <span id="triangles">–</span></div>
     <div class="wide"><span class="key">Adapter</span> <span id="adapter">–</span></div>
     <div id="hud-error" hidden><span class="key">Error</span> <span id="hud-error-text"></span></div>
-    <div id="hud-quality" hidden><span class="key">Shape</span> <span id="hud-quality-bars" role="img"></span></div>
+    <div id="hud-topology" hidden><span class="key">Topology</span> <span id="hud-topology-text"></span></div>
+    <div id="hud-quality" hidden><span class="key">Quality</span> <span id="hud-quality-bars" role="img"></span></div>
     <div id="hud-lod" hidden><span class="key">LOD</span> <span id="hud-lod-summary"></span><ol id="hud-lod-levels"></ol></div>
     <div id="overflow" role="alert" hidden>Triangle budget full: part of the surface is not drawn. Lower the resolution or raise the iso level.</div>
     </details>

@@ -290,7 +290,8 @@ export class FigureFrames {
       const elapsed = this.#last ? Math.min(Math.max(now - this.#last, 0) / 1000, 0.1) : 0;
       this.#last = now;
       // A sphere being dragged holds the animation still.
-      const animating = !state.paused && state.speed > 0 && !f.editor().dragging;
+      // So does a shape check that pause_on=merge waits for.
+      const animating = !state.paused && state.speed > 0 && !f.editor().dragging && !f.topology().holding;
       if (animating || this.#dirty > 0 || this.#stepRequested || view.needs_redraw()) {
         const dt = animating ? elapsed * state.speed : this.#stepRequested ? 1 / 60 : 0;
         this.#stepRequested = false;
@@ -310,6 +311,7 @@ export class FigureFrames {
         if (blocked > 100) this.#observeCost(blocked);
         this.#framesDrawn += 1;
         f.hud.countFrame();
+        f.topology().afterFrame(now);
       } else {
         view.poll();
         // The picture for print is older than the frame on screen: draw once more and take it.

@@ -17,7 +17,7 @@ export class Hud {
     this.frames = 0;
     this.since = 0;
     this.overflows = 0;
-    this.stats = { triangles: 0, fps: 0, frameTime: 0, adapter: '', mesher: '', overflowed: false, lod: null, error: null, quality: null };
+    this.stats = { triangles: 0, fps: 0, frameTime: 0, adapter: '', mesher: '', overflowed: false, lod: null, error: null, quality: null, topology: null };
     this.adapterLabel = '';
   }
 
@@ -84,6 +84,16 @@ export class Hud {
     const { frame } = stats;
     stats.free();
     return frame;
+  }
+
+  /** The surface's shape from the topology watch: blobs, genus, closed and manifold. */
+  showTopology(shape) {
+    const $ = (id) => this.root.getElementById(id);
+    this.stats.topology = shape;
+    $('hud-topology').hidden = false;
+    const blobs = `${shape.components} blob${shape.components === 1 ? '' : 's'}`;
+    const form = shape.manifold ? 'closed manifold' : shape.closed ? 'closed, not manifold' : 'open';
+    $('hud-topology-text').textContent = `${blobs} · genus ${shape.genus} · ${form}`;
   }
 
   /**

@@ -5,11 +5,12 @@
 
 import { colorKey, sliceKey } from './legends.js';
 import { buildGallery } from './inspector.js';
+import { plotErrors } from './error-plot.js';
 
 const GROUPS = [
-  ['Surface', ['spheres', 'iso', 'resolution', 'lod', 'lod_pixels', 'lod_freeze', 'mesher', 'speed', 'seed', 'paused', 'step', 'view']],
+  ['Surface', ['spheres', 'iso', 'resolution', 'lod', 'lod_pixels', 'lod_freeze', 'mesher', 'speed', 'seed', 'paused', 'pause_on', 'step', 'view']],
   ['Display', ['display', 'grid', 'color_by', 'ambiguous', 'color', 'theme', 'antialiasing']],
-  ['Teaching', ['slice', 'interpolation', 'blend', 'inspector']],
+  ['Teaching', ['slice', 'interpolation', 'blend', 'inspector', 'error_plot']],
   ['Light', ['light', 'spot_angle', 'spot_softness', 'ambient', 'diffuse', 'specular', 'shininess']],
   ['Camera', ['projection', 'fov']],
   ['Scene', ['edit', 'scene', 'export']],
@@ -231,6 +232,26 @@ export function buildPanel(container, names, table, state, onChange, actions, op
           className: 'hint',
           textContent: 'Drag a sphere to move it · Shift-click to add one · Delete removes · wheel: radius',
         }));
+      } else if (name === 'error_plot') {
+        const status = element('p', { className: 'hint', role: 'status' });
+        const plot = element('figure', { className: 'error-plot' });
+        const button = makeButton('error-plot', 'Error vs resolution',
+          'Mesh these spheres at 8³ to 64³ on the CPU and plot the distance to the exact surface', async () => {
+            button.disabled = true;
+            try {
+              const result = await actions.errorSweep((text) => { status.textContent = text; });
+              const { svg, lines } = plotErrors(result);
+              const caption = element('figcaption', {});
+              caption.innerHTML = '<span style="color:#4aa3ff">■</span> linear · <span style="color:#ff9f43">■</span> midpoint · solid RMS, dashed max<br>';
+              caption.append(lines.join(' · '), ` · triangles ∝ n^${result.slopes.triangles?.toFixed(2)}`);
+              plot.replaceChildren(svg, caption);
+            } catch (error) {
+              status.textContent = `The plot stopped: ${error?.message ?? error}`;
+            } finally {
+              button.disabled = false;
+            }
+          });
+        section.append(element('div', { className: 'buttons' }, button), status, plot);
       } else if (name === 'inspector') {
         section.append(element('p', { className: 'hint', textContent: 'Click the surface to inspect a cell (Esc to let go).' }));
         const cases = element('details', { className: 'cases' }, element('summary', { textContent: 'The 15 cases' }));

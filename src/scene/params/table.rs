@@ -71,6 +71,7 @@ pub const CONTROLS: &[&str] = &[
     "lod_pixels",
     "lod_freeze",
     "paused",
+    "pause_on",
     "seed",
     "view",
     "step",
@@ -82,6 +83,7 @@ pub const CONTROLS: &[&str] = &[
     "interpolation",
     "blend",
     "inspector",
+    "error_plot",
     "light",
     "spot_angle",
     "spot_softness",
@@ -254,6 +256,7 @@ pub const PARAMETERS: &[Parameter] = &[
     other("controls", "controls", "Controls", Kind::List(CONTROLS), "none"),
     other("hud", "hud", "Statistics", Kind::Choice(&["on", "off"]), "off"),
     other("autoplay", "autoplay", "Autoplay", Kind::Choice(&["visible", "off"]), "visible"),
+    other("pause_on", "pause_on", "Pause on", Kind::Choice(&["none", "merge"]), "none"),
     number(
         "max-pixel-ratio",
         "max_pixel_ratio",

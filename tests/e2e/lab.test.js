@@ -1,0 +1,101 @@
+// End-to-end tests of the lab in headless Chromium (SwiftShader): the error colouring with its HUD
+// figures and shape histogram, the error-vs-resolution plot with its slopes, the live topology with
+// pause_on=merge stopping the animation when two blobs touch, and a subtracting sphere from a link.
+
+import { test, afterEach } from 'node:test';
+import assert from 'node:assert/strict';
+import { useServerAndBrowser, browser, baseUrl, settledTriangles, screenshot, differingFraction } from './helpers.js';
+
+useServerAndBrowser();
+
+const contexts = new Set();
+afterEach(async () => {
+  for (const context of contexts) await context.close().catch(() => {});
+  contexts.clear();
+});
+
+async function open(query, width = 960, height = 640) {
+  const context = await browser.newContext({ viewport: { width, height } });
+  contexts.add(context);
+  const page = await context.newPage();
+  const errors = [];
+  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+  page.on('pageerror', (e) => errors.push(String(e)));
+  await page.goto(`${baseUrl}${query}`);
+  return { page, errors };
+}
+
+test('color_by=error colours the mesh, the HUD gives RMS and max error and a shape histogram, and the link carries it', async () => {
+  // Spheres inside the box: where a wall cuts the solid, its cap sits up to a cell off the wall.
+  const { page, errors } = await open('?balls=-0.25,0,0,0.3;0.2,0.1,0,0.28;0,-0.2,0.2,0.25&res=32&paused=1&hud=on&aa=0');
+  await settledTriangles(page);
+  const plain = await screenshot(page, 'lab-plain');
+  await page.$eval('metaballs-view', (e) => e.setAttribute('color_by', 'error'));
+  await page.waitForFunction(() => document.querySelector('metaballs-view').stats.error !== null, null, { timeout: 20000 });
+  const stats = await page.$eval('metaballs-view', (e) => e.stats);
+  assert.ok(stats.error.rms > 0 && stats.error.rms < stats.error.max && stats.error.max < 1.5, JSON.stringify(stats.error));
+  assert.equal(stats.quality.length, 10);
+  assert.ok(stats.quality.reduce((a, b) => a + b, 0) >= stats.triangles * 0.9, `${stats.quality} against ${stats.triangles}`);
+  assert.match(await page.textContent('#hud-error-text'), /^RMS [\d.e-]+ · max [\d.e-]+ cells$/);
+  await page.waitForTimeout(500);
+  const coloured = await screenshot(page, 'lab-error');
+  assert.ok(await differingFraction(page, plain, coloured) > 0.02, 'the error colouring changes the picture');
+  assert.match(page.url(), /color_by=error/);
+  // Midpoint placement sits further off the surface.
+  await page.$eval('metaballs-view', (e) => e.setAttribute('interpolation', 'midpoint'));
+  await page.waitForFunction((linear) => (document.querySelector('metaballs-view').stats.error?.rms ?? 0) > 4 * linear,
+    stats.error.rms, { timeout: 20000 }).catch(async (e) => {
+    console.log('linear', stats.error, 'now', await page.$eval('metaballs-view', (f) => [f.stats.error, f.interpolation]));
+    throw e;
+  });
+  assert.deepEqual(errors, []);
+});
+
+test('the error plot sweeps the resolutions off the frame loop and shows second and first order slopes', async () => {
+  const balls = '-0.25,0,0,0.3;0.2,0.1,0,0.28;0,-0.2,0.2,0.25';
+  const { page, errors } = await open(`?balls=${balls}&res=32&paused=1&controls=all`);
+  await settledTriangles(page);
+  await page.click('text=Teaching');
+  await page.click('#error-plot');
+  await page.waitForSelector('figure.error-plot svg', { timeout: 120000 });
+  const caption = await page.textContent('figure.error-plot figcaption');
+  const slope = (name, key) => Number(new RegExp(`${name}: RMS slope (-?[\\d.]+), max slope (-?[\\d.]+)`).exec(caption)[key === 'rms' ? 1 : 2]);
+  assert.ok(slope('linear', 'rms') < -1.6 && slope('linear', 'rms') > -2.6, caption);
+  assert.ok(slope('midpoint', 'rms') < -0.7 && slope('midpoint', 'rms') > -1.35, caption);
+  assert.match(await page.getAttribute('figure.error-plot svg', 'aria-label'), /log-log/);
+  assert.deepEqual(errors, []);
+});
+
+test('pause_on=merge stops the animation at the frame two blobs become one, and says so', async () => {
+  // Two spheres flying at each other.
+  const balls = '-0.5,0,0,0.2,0.6,0,0;0.5,0,0,0.2,-0.6,0,0';
+  const { page, errors } = await open(`?balls=${balls}&res=32&pause_on=merge&hud=on&mesher=cpu`);
+  await page.waitForFunction(() => document.querySelector('metaballs-view').stats.topology?.components === 2, null, { timeout: 30000 });
+  assert.match(await page.textContent('#hud-topology-text'), /^2 blobs · genus 0 · closed manifold$/);
+  await page.waitForFunction(() => document.querySelector('metaballs-view').paused, null, { timeout: 60000 });
+  const shape = await page.$eval('metaballs-view', (e) => e.stats.topology);
+  assert.deepEqual(shape, { components: 1, genus: 0, closed: true, manifold: true });
+  assert.match(await page.$eval('metaballs-view', (e) => e.shadowRoot.getElementById('announce').textContent), /2 blobs → 1/);
+  // The shape on demand agrees.
+  assert.deepEqual(await page.$eval('metaballs-view', (e) => e.topology()), shape);
+  assert.deepEqual(errors, []);
+});
+
+test('a negative radius in the link subtracts a sphere, and the editor toggles it', async () => {
+  const { page, errors } = await open('?balls=-0.3,0,0,0.4&res=48&paused=1&edit=on');
+  const whole = await settledTriangles(page);
+  const before = await screenshot(page, 'lab-whole');
+  await page.$eval('metaballs-view', (e) => e.setAttribute('balls', '-0.3,0,0,0.4;0.4,0,0,-0.3'));
+  const dented = await settledTriangles(page);
+  assert.notEqual(dented, whole);
+  assert.equal(await page.$eval('metaballs-view', (e) => e.sphereList[1].charge), -1);
+  assert.ok(await differingFraction(page, before, await screenshot(page, 'lab-dented')) > 0.01, 'the dent shows');
+  // The editor's Subtract button adds the sphere back, and the list says so.
+  await page.$eval('metaballs-view', (e) => e.shadowRoot.getElementById('view').focus());
+  const at = await page.$eval('metaballs-view', (e) => e.sphereOnScreen(1));
+  await page.mouse.click(at.x, at.y);
+  assert.equal(await page.$eval('metaballs-view', (e) => e.selectedSphere), 1);
+  await page.click('#sphere-charge');
+  await page.waitForFunction(() => document.querySelector('metaballs-view').sphereList[1].charge === 1);
+  assert.deepEqual(errors, []);
+});
