@@ -24,8 +24,19 @@ pub const VERSION: u64 = 1;
 pub const MAX_BYTES: usize = 1 << 20;
 /// Parameters that belong to the figure on its page rather than to the scene: a document neither
 /// saves nor restores them. The sphere count is the length of `spheres`.
-pub const NOT_IN_SCENE: &[&str] =
-    &["spheres", "balls", "controls", "hud", "autoplay", "max-pixel-ratio", "edit", "theme", "alt", "poster"];
+pub const NOT_IN_SCENE: &[&str] = &[
+    "spheres",
+    "balls",
+    "controls",
+    "hud",
+    "autoplay",
+    "pause_on",
+    "max-pixel-ratio",
+    "edit",
+    "theme",
+    "alt",
+    "poster",
+];
 
 /// A checked scene: the spheres, and settings by parameter name (only names a scene holds, each
 /// value checked by the parameter table).
