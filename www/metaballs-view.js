@@ -8,7 +8,7 @@
 import { caseGallery, hub, loadWasm, propertyName, wasmLoaded } from './lib/engine.js';
 import { FigureBase } from './lib/figure-base.js';
 import { Inspector } from './lib/inspector.js';
-import { wireCameraInput } from './lib/camera-input.js';
+import { wireFigureGestures } from './lib/figure-gestures.js';
 import { buildPanel, listedControls } from './lib/panel.js';
 import { elementStyle, flasher, TEMPLATE } from './lib/element-dom.js';
 import { Hud } from './lib/hud.js';
@@ -136,27 +136,14 @@ export class MetaballsView extends FigureBase {
       notice: (text, ms) => this.#notice(text, ms),
       emit: (type, detail) => this.#emit(type, detail),
     });
-    const editing = () => this.#state.edit && this.#frames.view !== null;
-    wireCameraInput(this, this.#canvas, {
-      get: () => ({ yaw: this.#state.yaw, pitch: this.#state.pitch, distance: this.#state.distance }),
-      set: (camera) => {
-        for (const [name, value] of Object.entries(camera)) this.#set(name, Number(value.toFixed(3)));
-      },
-    }, {
-      ...this.#actions,
-      hint: (text) => this.#flash('wheel-hint', text, 1500),
-      pick: (x, y, e) => (editing() ? this.#editor.click(x, y, e.shiftKey)
-        : this.#inspector.pick(x * (this.#canvas.width / Math.max(1, this.#canvas.clientWidth)),
-          y * (this.#canvas.height / Math.max(1, this.#canvas.clientHeight)))),
-      deselect: () => this.deselect(),
-      grab: (x, y) => (editing() ? this.#editor.grab(x, y) : null),
-      hold: (x, y) => editing() && this.#editor.add(x, y),
-      hover: (x, y) => editing() && this.#editor.hover(x, y),
-      leave: () => this.#editor.leave(),
-      wheel: (deltaY) => editing() && this.#editor.wheel(deltaY),
-      remove: () => editing() && this.#editor.remove(),
-      freeze: () => editing() && this.#editor.toggleFreeze(),
-      charge: () => editing() && this.#editor.toggleCharge(),
+    wireFigureGestures(this, this.#canvas, {
+      state: this.#state,
+      set: (name, value) => this.#set(name, value),
+      actions: this.#actions,
+      flash: this.#flash,
+      editor: this.#editor,
+      inspector: this.#inspector,
+      view: () => this.#frames.view,
     });
     const file = this.#root.getElementById('scene-file');
     file.addEventListener('change', () => {
