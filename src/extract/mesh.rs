@@ -28,6 +28,8 @@ pub struct IndexedMesh {
 pub struct Topology {
     /// Edges used by a number of triangles other than two (0 for a closed 2-manifold).
     pub open_or_nonmanifold_edges: usize,
+    /// Edges used by one triangle only: the rims of holes in the surface (0 for a closed surface).
+    pub open_edges: usize,
     /// Edges used twice in the same direction (0 for a consistently oriented surface).
     pub misoriented_edges: usize,
     /// Euler characteristic V − E + F of each connected component, sorted.
@@ -183,14 +185,7 @@ impl IndexedMesh {
     /// Components, genus, closed and manifold, from `topology`.
     pub fn shape(&self) -> ShapeSummary {
         let t = self.topology();
-        let mut edge_use: HashMap<(u32, u32), u32> = HashMap::new();
-        for tri in &self.triangles {
-            for k in 0..3 {
-                let (a, b) = (tri[k], tri[(k + 1) % 3]);
-                *edge_use.entry((a.min(b), a.max(b))).or_default() += 1;
-            }
-        }
-        let closed = edge_use.values().all(|&n| n >= 2);
+        let closed = t.open_edges == 0;
         let manifold = t.open_or_nonmanifold_edges == 0 && t.misoriented_edges == 0;
         // A component of one vertex and no triangle is a vertex no triangle uses: not a blob.
         let blobs: Vec<i64> = t.components.iter().filter(|c| c.1 > 1).map(|c| c.0).collect();
@@ -211,6 +206,7 @@ impl IndexedMesh {
             *undirected.entry((a.min(b), a.max(b))).or_default() += n;
         }
         let open_or_nonmanifold_edges = undirected.values().filter(|&&n| n != 2).count();
+        let open_edges = undirected.values().filter(|&&n| n == 1).count();
         let misoriented_edges = directed.values().filter(|&&n| n > 1).count();
 
         // Components by union-find over vertices joined by triangles.
@@ -245,6 +241,6 @@ impl IndexedMesh {
             per_component.values().map(|(v, e, f)| (v - e + f, *v)).collect();
         components.sort();
         let component_euler = components.iter().map(|c| c.0).collect();
-        Topology { open_or_nonmanifold_edges, misoriented_edges, component_euler, components }
+        Topology { open_or_nonmanifold_edges, open_edges, misoriented_edges, component_euler, components }
     }
 }

@@ -163,3 +163,11 @@ impl View {
         Ok(vec![p.rms, p.max, p.triangles as f64])
     }
 }
+
+/// The least-squares slope of log `ys` against log `xs` (the order the error plot reads off), or
+/// nothing with fewer than two usable points.
+#[wasm_bindgen]
+pub fn fitted_slope(xs: Vec<f64>, ys: Vec<f64>) -> Option<f64> {
+    let points: Vec<(f64, f64)> = xs.into_iter().zip(ys).collect();
+    crate::teach::error::fitted_slope(&points)
+}

@@ -4,25 +4,20 @@
 
 import { test, afterEach } from 'node:test';
 import assert from 'node:assert/strict';
-import { useServerAndBrowser, browser, baseUrl, settledTriangles, screenshot, differingFraction } from './helpers.js';
+import { useServerAndBrowser, open as openPage, settledTriangles, screenshot, differingFraction } from './helpers.js';
 
 useServerAndBrowser();
 
-const contexts = new Set();
+const pages = new Set();
 afterEach(async () => {
-  for (const context of contexts) await context.close().catch(() => {});
-  contexts.clear();
+  for (const page of pages) await page.context().close().catch(() => {});
+  pages.clear();
 });
 
-async function open(query, width = 960, height = 640) {
-  const context = await browser.newContext({ viewport: { width, height } });
-  contexts.add(context);
-  const page = await context.newPage();
-  const errors = [];
-  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
-  page.on('pageerror', (e) => errors.push(String(e)));
-  await page.goto(`${baseUrl}${query}`);
-  return { page, errors };
+async function open(query) {
+  const opened = await openPage(query);
+  pages.add(opened.page);
+  return opened;
 }
 
 test('color_by=error colours the mesh, the HUD gives RMS and max error and a shape histogram, and the link carries it', async () => {

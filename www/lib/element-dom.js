@@ -155,6 +155,10 @@ button:focus-visible, input:focus-visible { outline: 2px solid var(--accent); ou
 #hud div { white-space: nowrap; overflow: hidden; text-overflow: ellipsis; }
 #hud #hud-lod ol { list-style: none; margin: 0; padding: 0; }
 #hud #hud-lod li i { display: inline-block; width: 8px; height: 8px; margin-right: 4px; border-radius: 2px; }
+figure.error-plot { margin: 6px 0 0; font-size: 11px; }
+figure.error-plot svg { display: block; width: 100%; height: auto; }
+figure.error-plot text { fill: currentColor; font-size: 9px; }
+figure.error-plot line.grid { stroke: currentColor; opacity: 0.2; }
 #hud #hud-quality-bars { display: inline-flex; align-items: flex-end; gap: 1px; height: 14px; vertical-align: middle; }
 #hud #hud-quality-bars i { display: inline-block; width: 6px; background: currentColor; opacity: 0.8; }
 #hud .key { display: inline-block; width: 56px; color: var(--muted); }

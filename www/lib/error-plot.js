@@ -3,6 +3,8 @@
 // drawing), then RMS and largest distance to the exact surface and the triangle count against cells
 // per axis, log-log, with the fitted slopes. Linear placement falls about as h², midpoints as h.
 
+import { wasmModule } from './engine.js';
+
 const RESOLUTIONS = [8, 12, 16, 24, 32, 48, 64];
 const PLACEMENTS = [
   { name: 'linear', midpoint: false, color: '#4aa3ff' },
@@ -10,16 +12,8 @@ const PLACEMENTS = [
 ];
 const SVG = 'http://www.w3.org/2000/svg';
 
-/** Least-squares slope of log y against log x (null with fewer than two usable points). */
-export function fittedSlope(points) {
-  const logs = points.filter(([x, y]) => x > 0 && y > 0).map(([x, y]) => [Math.log(x), Math.log(y)]);
-  if (logs.length < 2) return null;
-  const mean = (k) => logs.reduce((s, p) => s + p[k], 0) / logs.length;
-  const [mx, my] = [mean(0), mean(1)];
-  const sxx = logs.reduce((s, [x]) => s + (x - mx) ** 2, 0);
-  const sxy = logs.reduce((s, [x, y]) => s + (x - mx) * (y - my), 0);
-  return sxx > 0 ? sxy / sxx : null;
-}
+/** Least-squares slope of log y against log x, as the crate fits it (null with fewer than two usable points). */
+const fittedSlope = (points) => wasmModule().fitted_slope(points.map((p) => p[0]), points.map((p) => p[1])) ?? null;
 
 const idle = () => new Promise((resolve) => (globalThis.requestIdleCallback ?? setTimeout)(resolve, { timeout: 200 }));
 
@@ -68,7 +62,7 @@ export function plotErrors(result) {
   const [xLow, xHigh] = [Math.log10(RESOLUTIONS[0]), Math.log10(RESOLUTIONS.at(-1))];
   const x = (n) => left + ((Math.log10(n) - xLow) / (xHigh - xLow)) * (w - left - right);
   const y = (v) => top + (1 - (Math.log10(v) - Math.floor(yLow)) / (Math.ceil(yHigh) - Math.floor(yLow))) * (h - top - bottom);
-  const svg = node('svg', { viewBox: `0 0 ${w} ${h}`, width: w, height: h, role: 'img', class: 'error-plot' });
+  const svg = node('svg', { viewBox: `0 0 ${w} ${h}`, role: 'img' });
   const lines = [];
   for (let e = Math.floor(yLow); e <= Math.ceil(yHigh); e += 1) {
     svg.append(node('line', { x1: left, x2: w - right, y1: y(10 ** e), y2: y(10 ** e), class: 'grid' }));
