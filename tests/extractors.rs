@@ -1,7 +1,8 @@
 //! Every extractor in `extract::EXTRACTORS`, run through the renderer, against the CPU oracle on the
-//! scenes the GPU and CPU tests use. A new extractor of the uniform grid added to that list is held to
-//! the same scenes without a line here; level-of-detail extractors, whose cells follow the camera, are
-//! held to the oracle in their finest blocks and to each other in `tests/lod.rs`.
+//! scenes the GPU and CPU tests use. A new marching-cubes extractor of the uniform grid added to that
+//! list is held to the same scenes without a line here; level-of-detail extractors, whose cells follow
+//! the camera, are held to the oracle in their finest blocks and to each other in `tests/lod.rs`, and
+//! surface nets, another method, to its own properties in `tests/surface_nets.rs`.
 #![cfg(not(target_arch = "wasm32"))]
 
 mod common;
@@ -10,6 +11,7 @@ use common::scenes::oracle_scenes;
 use common::*;
 use metaballs::extract::reference::{self, Grid};
 use metaballs::extract::{EXTRACTORS, compile_all};
+use metaballs::scene::params::view::Method;
 use metaballs::{Scene, Settings};
 
 #[test]
@@ -33,8 +35,12 @@ fn the_renderer_holds_every_extractor_the_list_builds_on_this_device() {
 fn every_extractor_in_the_list_matches_the_oracle() {
     let scenes = oracle_scenes(40);
     let (_, device, _) = device();
-    let uniform: Vec<&str> =
-        compile_all(&device).iter().filter(|e| !e.capabilities().lod).map(|e| e.name()).collect();
+    let uniform: Vec<&str> = compile_all(&device)
+        .iter()
+        .map(|e| (e.capabilities(), e.name()))
+        .filter(|(c, _)| !c.lod && c.method == Method::MarchingCubes)
+        .map(|(_, name)| name)
+        .collect();
     assert!(uniform.len() >= 2, "{uniform:?}");
     with_renderer(settings(1, 1, 16, 1.0), 16, 16, |o| {
         for name in uniform {

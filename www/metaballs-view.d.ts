@@ -63,6 +63,8 @@ export declare class MetaballsView extends HTMLElement {
   blend: 'sum' | 'max';
   /** Mesher: auto, gpu, cpu. Attribute `mesher`; default "auto". */
   mesher: 'auto' | 'gpu' | 'cpu';
+  /** Extractor: marching_cubes, surface_nets. Attribute `extractor`; default "marching_cubes". */
+  extractor: 'marching_cubes' | 'surface_nets';
   /** Lod: a boolean attribute. Attribute `lod`; default false. */
   lod: boolean;
   /** LOD cell size (pixels): 0.25 to 32. Attribute `lod_pixels`; default 2. */
@@ -91,7 +93,7 @@ export declare class MetaballsView extends HTMLElement {
   edit: boolean;
   /** Balls: x,y,z,radius[,vx,vy,vz] per sphere joined by ; (a negative radius subtracts). Attribute `balls`; default "". */
   balls: string;
-  /** Controls: all, none, or a comma list of spheres, iso, resolution, speed, shininess, color, antialiasing, mesher, lod, lod_pixels, lod_freeze, paused, pause_on, seed, view, step, display, grid, color_by, slice, ambiguous, interpolation, blend, inspector, error_plot, light, spot_angle, spot_softness, ambient, diffuse, specular, projection, fov, theme, edit, scene, export. Attribute `controls`; default "none". */
+  /** Controls: all, none, or a comma list of spheres, iso, resolution, speed, shininess, color, antialiasing, mesher, extractor, lod, lod_pixels, lod_freeze, paused, pause_on, seed, view, step, display, grid, color_by, slice, ambiguous, interpolation, blend, inspector, error_plot, light, spot_angle, spot_softness, ambient, diffuse, specular, projection, fov, theme, edit, scene, export. Attribute `controls`; default "none". */
   controls: string;
   /** Hud: on, off. Attribute `hud`; default "off". */
   hud: 'on' | 'off';

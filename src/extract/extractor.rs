@@ -10,6 +10,7 @@ use super::reference::{Construction, Grid};
 use super::uniforms::Counters;
 use crate::device::timing::Timing;
 use crate::scene::Sphere;
+use crate::scene::params::view::Method;
 
 /// What an extractor can do. The renderer chooses by these (and by name only for the `mesher`
 /// setting), never by type.
@@ -24,6 +25,8 @@ pub struct Capabilities {
     pub cpu_copy: bool,
     /// Meshes a level-of-detail selection (`lod=on`) rather than the uniform grid.
     pub lod: bool,
+    /// How it joins the field's crossings into a mesh (`extractor`).
+    pub method: Method,
 }
 
 /// One frame's extraction problem: the surface f = `iso` of `spheres` on `grid`.

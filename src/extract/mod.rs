@@ -8,6 +8,7 @@
 //! - [`gpu`]: the compute passes (blocks → field → marching cubes), all on the device, no readback.
 //! - [`cpu`]: the CPU mesher, uploaded into the same buffers (faster on software adapters, the only
 //!   one on WebGL2).
+//!   It also holds surface nets, the dual method, to compare with.
 //! - [`lod`]: level of detail: fine blocks near the camera, coarse far away, closed by transition
 //!   cells.
 //!
@@ -36,6 +37,7 @@ pub const EXTRACTORS: &[Compile] = &[
     cpu::CpuExtractor::compile,
     lod::gpu::LodGpuExtractor::compile,
     lod::cpu::LodCpuExtractor::compile,
+    cpu::SurfaceNetsExtractor::compile,
 ];
 
 /// The extractors `device` can run, in the order of [`EXTRACTORS`].

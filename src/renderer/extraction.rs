@@ -66,22 +66,25 @@ impl Renderer {
     }
 
     /// True when the teaching views draw this frame. They read the lists the compute passes fill, so
-    /// without an extractor that fills them (WebGL2, level of detail) the surface shows alone.
+    /// without an extractor that fills them (WebGL2, level of detail, surface nets) the surface shows
+    /// alone.
     pub(super) fn views_shown(&self) -> bool {
-        let lod = self.settings.view.lod;
-        // With level of detail the views draw the mesh alone (display modes, colours), which needs
-        // storage buffers but no cell lists.
-        let drawable = if lod {
+        let mesh_only = views::mesh_only(&self.settings.view);
+        // With level of detail or surface nets the views draw the mesh alone (display modes, colours),
+        // which needs storage buffers but no cell lists.
+        let drawable = if mesh_only {
             self.context.has_compute()
         } else {
             self.extractors.iter().any(|e| self.in_mode(e.capabilities()) && e.capabilities().cell_lists)
         };
-        drawable && views::needed(&self.settings.view, self.selected.is_some() && !lod)
+        drawable && views::needed(&self.settings.view, self.selected.is_some() && !mesh_only)
     }
 
-    /// True for the extractors of the current mode: level of detail or the uniform grid.
+    /// True for the extractors of the current mode: level of detail (marching cubes and its transition
+    /// cells) or the uniform grid with the chosen method.
     fn in_mode(&self, c: Capabilities) -> bool {
-        c.lod == self.settings.view.lod
+        let view = &self.settings.view;
+        c.lod == view.lod && (view.lod || c.method == view.extractor)
     }
 
     /// The extractor for the next frame, among those of the current mode (`lod`): one with the
@@ -94,7 +97,7 @@ impl Renderer {
                 .iter()
                 .position(|e| self.in_mode(e.capabilities()) && wanted(e.capabilities(), e.name()))
         };
-        let chosen = if self.views_shown() && !self.settings.view.lod {
+        let chosen = if self.views_shown() && !views::mesh_only(&self.settings.view) {
             find(&|c, _| c.cell_lists)
         } else if self.pinned.is_some() {
             self.pinned

@@ -8,7 +8,7 @@ use crate::draw::uniforms::ShadingUniform;
 use crate::extract::buffers::MeshBuffers;
 use crate::extract::gpu::scene_buffers::SceneBuffers;
 use crate::extract::reference::Grid;
-use crate::scene::params::view::{ColorBy, Display, GridView, Projection, Slice, ViewOptions};
+use crate::scene::params::view::{ColorBy, Display, GridView, Method, Projection, Slice, ViewOptions};
 
 /// The indirect draws the overlay pass plans, in order (`plan_overlays`).
 #[derive(Clone, Copy)]
@@ -52,12 +52,24 @@ pub fn needed(options: &ViewOptions, selected: bool) -> bool {
         || options.projection == Projection::Orthographic
 }
 
+/// True when the frame's mesh comes without the cell lists the teaching views read: level of detail
+/// and surface nets.
+pub fn mesh_only(options: &ViewOptions) -> bool {
+    options.lod || options.extractor == Method::SurfaceNets
+}
+
 /// The views `options` ask for that the frame's mesh can show: with level of detail there is no
 /// uniform grid, so its lattice, cells, ambiguous faces and slice are left out (`grid=blocks` shows
-/// the LOD blocks).
+/// the LOD blocks); surface nets keep the grid but have no cases, so the crossed cells, kept blocks,
+/// ambiguous faces and case colours are left out.
 pub fn shown(options: &ViewOptions) -> ViewOptions {
     if !options.lod {
-        return *options;
+        if options.extractor != Method::SurfaceNets {
+            return *options;
+        }
+        let grid = if options.grid == GridView::Lattice { GridView::Lattice } else { GridView::None };
+        let color_by = if options.color_by == ColorBy::Case { ColorBy::None } else { options.color_by };
+        return ViewOptions { grid, color_by, ambiguous: false, ..*options };
     }
     let grid = if options.grid == GridView::Blocks { GridView::Blocks } else { GridView::None };
     ViewOptions { grid, ambiguous: false, slice: None, ..*options }

@@ -4,12 +4,15 @@
 //! WebGL2 it is the only extractor.
 
 pub mod mesher;
+pub mod surface_nets;
 
 pub use mesher::CpuMesher;
+pub use surface_nets::SurfaceNetsMesher;
 
 use super::extractor::{Capabilities, Extractor, Job, MeshCount, Output};
 use super::mesh::IndexedMesh;
 use super::uniforms::Counters;
+use crate::scene::params::view::Method;
 
 /// The CPU mesher and what it last uploaded.
 #[derive(Default)]
@@ -32,7 +35,13 @@ impl Extractor for CpuExtractor {
     }
 
     fn capabilities(&self) -> Capabilities {
-        Capabilities { needs_compute: false, cell_lists: false, cpu_copy: true, lod: false }
+        Capabilities {
+            needs_compute: false,
+            cell_lists: false,
+            cpu_copy: true,
+            lod: false,
+            method: Method::MarchingCubes,
+        }
     }
 
     fn fresh(&self) -> Box<dyn Extractor> {
@@ -59,6 +68,67 @@ impl Extractor for CpuExtractor {
             active_cells: stats.active_cells,
         };
         MeshCount::Known { needed, indices }
+    }
+
+    fn cpu_mesh(&self) -> Option<IndexedMesh> {
+        let mut mesh = self.mesher.to_indexed();
+        mesh.triangles.truncate(self.written as usize / 3);
+        Some(mesh)
+    }
+}
+
+/// Surface nets on the CPU, uploaded like the marching-cubes mesher's mesh (`extractor=surface_nets`).
+#[derive(Default)]
+pub struct SurfaceNetsExtractor {
+    mesher: SurfaceNetsMesher,
+    written: u32,
+}
+
+impl SurfaceNetsExtractor {
+    /// Runs anywhere: there is nothing to compile.
+    pub fn compile(_device: &wgpu::Device) -> Option<Box<dyn Extractor>> {
+        Some(Box::<Self>::default())
+    }
+
+    fn counters(&self) -> Counters {
+        let stats = self.mesher.stats();
+        Counters {
+            active_blocks: stats.active_blocks,
+            vertices: self.mesher.vertex_count(),
+            indices: self.mesher.indices.len() as u32,
+            active_cells: stats.active_cells,
+        }
+    }
+}
+
+impl Extractor for SurfaceNetsExtractor {
+    fn name(&self) -> &'static str {
+        "surface-nets"
+    }
+
+    fn capabilities(&self) -> Capabilities {
+        Capabilities {
+            needs_compute: false,
+            cell_lists: false,
+            cpu_copy: true,
+            lod: false,
+            method: Method::SurfaceNets,
+        }
+    }
+
+    fn fresh(&self) -> Box<dyn Extractor> {
+        Box::<Self>::default()
+    }
+
+    fn prepare(&mut self, job: &Job) -> Option<Counters> {
+        self.mesher.mesh(job.spheres, job.iso, job.grid, job.construction);
+        Some(self.counters())
+    }
+
+    fn write(&mut self, output: Output) -> MeshCount {
+        let mesher = &self.mesher;
+        self.written = output.buffers.upload(output.queue, &mesher.vertices, &mesher.indices);
+        MeshCount::Known { needed: self.counters(), indices: self.written }
     }
 
     fn cpu_mesh(&self) -> Option<IndexedMesh> {

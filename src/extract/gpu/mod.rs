@@ -11,6 +11,7 @@ pub mod scene_buffers;
 use super::extractor::{Capabilities, Extractor, Job, MeshCount, Output};
 use super::uniforms::Counters;
 use crate::device::has_compute;
+use crate::scene::params::view::Method;
 use blocks::BlockPass;
 use field::FieldPass;
 use marching_cubes::MarchingCubesPass;
@@ -54,7 +55,13 @@ impl Extractor for GpuExtractor {
     }
 
     fn capabilities(&self) -> Capabilities {
-        Capabilities { needs_compute: true, cell_lists: true, cpu_copy: false, lod: false }
+        Capabilities {
+            needs_compute: true,
+            cell_lists: true,
+            cpu_copy: false,
+            lod: false,
+            method: Method::MarchingCubes,
+        }
     }
 
     fn fresh(&self) -> Box<dyn Extractor> {

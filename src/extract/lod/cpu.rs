@@ -7,6 +7,7 @@ use super::{LodSummary, next_selection};
 use crate::extract::extractor::{Capabilities, Extractor, Job, MeshCount, Output};
 use crate::extract::mesh::IndexedMesh;
 use crate::extract::uniforms::Counters;
+use crate::scene::params::view::Method;
 
 /// The LOD mesher and the selection it last meshed.
 #[derive(Default)]
@@ -29,7 +30,13 @@ impl Extractor for LodCpuExtractor {
     }
 
     fn capabilities(&self) -> Capabilities {
-        Capabilities { needs_compute: false, cell_lists: false, cpu_copy: true, lod: true }
+        Capabilities {
+            needs_compute: false,
+            cell_lists: false,
+            cpu_copy: true,
+            lod: true,
+            method: Method::MarchingCubes,
+        }
     }
 
     fn fresh(&self) -> Box<dyn Extractor> {

@@ -11,6 +11,7 @@ use crate::extract::extractor::{Capabilities, Extractor, Job, MeshCount, Output}
 use crate::extract::gpu::scene_buffers::SceneBuffers;
 use crate::extract::tables::{flat_triangle_table, packed_case_table};
 use crate::extract::uniforms::Counters;
+use crate::scene::params::view::Method;
 use std::sync::{Arc, OnceLock};
 use wgpu::util::DeviceExt;
 
@@ -211,7 +212,13 @@ impl Extractor for LodGpuExtractor {
     }
 
     fn capabilities(&self) -> Capabilities {
-        Capabilities { needs_compute: true, cell_lists: false, cpu_copy: false, lod: true }
+        Capabilities {
+            needs_compute: true,
+            cell_lists: false,
+            cpu_copy: false,
+            lod: true,
+            method: Method::MarchingCubes,
+        }
     }
 
     fn fresh(&self) -> Box<dyn Extractor> {

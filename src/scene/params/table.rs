@@ -3,8 +3,8 @@
 //! live here once.
 
 use super::view::{
-    Blend, ColorBy, Display, GridView, Interpolation, LIGHT_KINDS, LOD_PIXELS_RANGE, Mesher, Projection,
-    SPOT_ANGLE_RANGE, Slice, Theme,
+    Blend, ColorBy, Display, GridView, Interpolation, LIGHT_KINDS, LOD_PIXELS_RANGE, Mesher, Method,
+    Projection, SPOT_ANGLE_RANGE, Slice, Theme,
 };
 use super::{
     DISTANCE_RANGE, ISO_RANGE, MAX_RESOLUTION, MAX_SPHERES, MIN_RESOLUTION, PITCH_RANGE, ParamError,
@@ -67,6 +67,7 @@ pub const CONTROLS: &[&str] = &[
     "color",
     "antialiasing",
     "mesher",
+    "extractor",
     "lod",
     "lod_pixels",
     "lod_freeze",
@@ -194,6 +195,7 @@ pub const PARAMETERS: &[Parameter] = &[
     other("interpolation", "interp", "Vertices", Kind::Choice(Interpolation::WORDS), "linear"),
     other("blend", "blend", "Blend", Kind::Choice(Blend::WORDS), "sum"),
     other("mesher", "mesher", "Meshing", Kind::Choice(Mesher::WORDS), "auto"),
+    other("extractor", "extractor", "Extractor", Kind::Choice(Method::WORDS), "marching_cubes"),
     other("lod", "lod", "Level of detail", Kind::Boolean, "false"),
     number(
         "lod_pixels",

@@ -121,6 +121,16 @@ choice!(
     }
 );
 
+choice!(
+    /// How the mesh is made from the sampled field.
+    Method {
+        /// One to five triangles per crossed cell from the 256-case table, vertices on the grid's edges.
+        MarchingCubes = "marching_cubes",
+        /// One vertex per crossed cell, quads across crossed edges (on the CPU; the uniform grid only).
+        SurfaceNets = "surface_nets",
+    }
+);
+
 /// Light kinds a scene can have at once (up to one of each).
 pub const LIGHT_KINDS: &[&str] = &["point", "directional", "spot"];
 
@@ -237,6 +247,8 @@ pub struct ViewOptions {
     pub spot_softness: f32,
     pub projection: Projection,
     pub mesher: Mesher,
+    /// Marching cubes or surface nets (with `lod`, always marching cubes and its transition cells).
+    pub extractor: Method,
     /// Level of detail: fine cells near the camera, coarse far away (`resolution` is the finest).
     pub lod: bool,
     /// With `lod`, the largest a cell may look on screen, in pixels.
@@ -263,6 +275,7 @@ impl Default for ViewOptions {
             spot_softness: 0.3,
             projection: Projection::Perspective,
             mesher: Mesher::Auto,
+            extractor: Method::MarchingCubes,
             lod: false,
             lod_pixels: 2.0,
             lod_freeze: false,
@@ -324,6 +337,7 @@ impl ViewOptions {
             "blend" => pick!(blend, Blend),
             "projection" => pick!(projection, Projection),
             "mesher" => pick!(mesher, Mesher),
+            "extractor" => pick!(extractor, Method),
             "theme" => pick!(theme, Theme),
             "slice" => self.slice = Slice::parse(text())?,
             "light" => self.lights = Lights::from_list(text()),
