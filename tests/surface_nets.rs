@@ -97,13 +97,13 @@ fn surface_nets_make_one_vertex_per_crossed_cell_and_closed_surfaces() {
 #[test]
 fn surface_nets_follow_the_setting_and_leave_level_of_detail_to_marching_cubes() {
     with_renderer(settings(3, 4, 32, 1.0), 32, 32, |o| {
-        let mut settings = o.renderer.settings().clone();
+        let mut settings = *o.renderer.settings();
         settings.view.extractor = Method::SurfaceNets;
-        o.renderer.set_settings(settings.clone()).unwrap();
+        o.renderer.set_settings(settings).unwrap();
         o.render();
         assert_eq!(o.renderer.mesh_source(), "surface-nets");
         settings.view.lod = true;
-        o.renderer.set_settings(settings.clone()).unwrap();
+        o.renderer.set_settings(settings).unwrap();
         o.render();
         assert!(o.renderer.mesh_capabilities().lod, "lod=on meshes with transition cells");
         settings.view.lod = false;
