@@ -47,8 +47,12 @@ export declare class MetaballsView extends HTMLElement {
   color: string;
   /** Antialiasing: a boolean attribute. Attribute `antialiasing`; default true. */
   antialiasing: boolean;
-  /** Display: shaded, flat, wireframe, points, normals. Attribute `display`; default "shaded". */
-  display: 'shaded' | 'flat' | 'wireframe' | 'points' | 'normals';
+  /** Display: shaded, flat, wireframe, points, normals, exact. Attribute `display`; default "shaded". */
+  display: 'shaded' | 'flat' | 'wireframe' | 'points' | 'normals' | 'exact';
+  /** Compare: none, split, overlay. Attribute `compare`; default "none". */
+  compare: 'none' | 'split' | 'overlay';
+  /** Divider position: 0.05 to 0.95. Attribute `divider`; default 0.5. */
+  divider: number;
   /** Grid: none, lattice, cells, blocks. Attribute `grid`; default "none". */
   grid: 'none' | 'lattice' | 'cells' | 'blocks';
   /** Color_by: none, area, quality, case, level, error. Attribute `color_by`; default "none". */
@@ -93,7 +97,7 @@ export declare class MetaballsView extends HTMLElement {
   edit: boolean;
   /** Balls: x,y,z,radius[,vx,vy,vz] per sphere joined by ; (a negative radius subtracts). Attribute `balls`; default "". */
   balls: string;
-  /** Controls: all, none, or a comma list of spheres, iso, resolution, speed, shininess, color, antialiasing, mesher, extractor, lod, lod_pixels, lod_freeze, paused, pause_on, seed, view, step, display, grid, color_by, slice, ambiguous, interpolation, blend, inspector, error_plot, light, spot_angle, spot_softness, ambient, diffuse, specular, projection, fov, theme, edit, scene, export. Attribute `controls`; default "none". */
+  /** Controls: all, none, or a comma list of spheres, iso, resolution, speed, shininess, color, antialiasing, mesher, extractor, lod, lod_pixels, lod_freeze, paused, pause_on, seed, view, step, display, compare, grid, color_by, slice, ambiguous, interpolation, blend, inspector, error_plot, light, spot_angle, spot_softness, ambient, diffuse, specular, projection, fov, theme, edit, scene, export. Attribute `controls`; default "none". */
   controls: string;
   /** Hud: on, off. Attribute `hud`; default "off". */
   hud: 'on' | 'off';

@@ -49,9 +49,13 @@ struct Shading {
     lights: array<Light, 3>,
     // The background's gradient, linear RGB.
     background_top: vec3<f32>,
-    _pad_top: f32,
+    // 0 none, 1 split, 2 overlay (shaders/draw/views/exact.wgsl).
+    compare: u32,
     background_bottom: vec3<f32>,
-    _pad_bottom: f32,
+    // With compare=split, where the exact half starts, as a fraction of the width.
+    divider: f32,
+    // Clip space to world: the exact view's rays.
+    inverse_view_proj: mat4x4<f32>,
 }
 
 @group(0) @binding(20) var<uniform> shading: Shading;

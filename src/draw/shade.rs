@@ -253,6 +253,10 @@ impl ShadePass {
             v.state.draw_before_surface(&mut pass, v.pipelines, v.options);
         }
         if views.as_ref().is_none_or(|v| ViewState::draws_plain_surface(v.options)) {
+            if let Some(v) = &views {
+                let size = (self.targets.depth.width(), self.targets.depth.height());
+                crate::draw::views::exact::clip_mesh(&mut pass, v.options, size);
+            }
             pass.set_bind_group(0, &self.bind_group, &[]);
             pass.set_pipeline(&self.pipelines.surface);
             pass.set_vertex_buffer(0, mesh.vertices.slice(..));

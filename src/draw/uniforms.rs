@@ -69,8 +69,12 @@ pub struct ShadingUniform {
     pub lights: [LightUniform; 3],
     /// The background's gradient, linear RGB: top, then bottom.
     pub background_top: [f32; 3],
-    pub _pad_top: f32,
+    /// `Compare::index`: 0 none, 1 split, 2 overlay.
+    pub compare: u32,
     pub background_bottom: [f32; 3],
-    pub _pad_bottom: f32,
+    /// With `compare=split`, where the exact half starts, as a fraction of the width.
+    pub divider: f32,
+    /// Clip space to world, for the exact view's rays.
+    pub inverse_view_proj: [[f32; 4]; 4],
 }
-const _: () = assert!(std::mem::size_of::<ShadingUniform>() == 448);
+const _: () = assert!(std::mem::size_of::<ShadingUniform>() == 512);

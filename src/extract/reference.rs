@@ -250,3 +250,35 @@ pub fn extract_with(spheres: &[Sphere], iso: f32, grid: Grid, construction: Cons
     }
     mesh
 }
+
+/// Where the ray from `origin` along unit `direction` first enters the solid {f > iso} ∩ box, by brute
+/// force: steps of a thousandth of the box, then bisection. `None` where it misses. The exact view's
+/// ray caster (`shaders/draw/views/exact.wgsl`) must agree with it.
+pub fn exact_hit(spheres: &[Sphere], iso: f32, blend: Blend, origin: Vec3, direction: Vec3) -> Option<f32> {
+    let h = BOX_HALF_EXTENT;
+    let inv = direction.recip();
+    let (a, b) = ((Vec3::splat(-h) - origin) * inv, (Vec3::splat(h) - origin) * inv);
+    let (enter, leave) = (a.min(b).max_element().max(0.0), a.max(b).min_element());
+    if enter >= leave {
+        return None;
+    }
+    let inside = |t: f32| blended_field_at(spheres, origin + t * direction, blend) > iso;
+    if inside(enter) {
+        return Some(enter);
+    }
+    let step = 2.0 * h / 1000.0;
+    let mut t = enter;
+    while t < leave {
+        let next = (t + step).min(leave);
+        if inside(next) {
+            let (mut lo, mut hi) = (t, next);
+            for _ in 0..30 {
+                let mid = 0.5 * (lo + hi);
+                if inside(mid) { hi = mid } else { lo = mid }
+            }
+            return Some(hi);
+        }
+        t = next;
+    }
+    None
+}

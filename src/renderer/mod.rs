@@ -3,6 +3,7 @@
 
 pub mod context;
 mod editing;
+mod exact;
 mod extraction;
 mod inspector;
 mod limits;

@@ -36,6 +36,7 @@ impl Renderer {
         let eye = s.camera.eye();
         let mut shading = ShadingUniform {
             view_proj: self.view_projection().to_cols_array_2d(),
+            inverse_view_proj: self.view_projection().inverse().to_cols_array_2d(),
             view: view_matrix(eye).to_cols_array_2d(),
             camera_position: eye.to_array(),
             ambient: s.material.ambient,

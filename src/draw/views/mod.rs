@@ -8,7 +8,9 @@ use crate::draw::uniforms::ShadingUniform;
 use crate::extract::buffers::MeshBuffers;
 use crate::extract::gpu::scene_buffers::SceneBuffers;
 use crate::extract::reference::Grid;
-use crate::scene::params::view::{ColorBy, Display, GridView, Method, Projection, Slice, ViewOptions};
+use crate::scene::params::view::{
+    ColorBy, Compare, Display, GridView, Method, Projection, Slice, ViewOptions,
+};
 
 /// The indirect draws the overlay pass plans, in order (`plan_overlays`).
 #[derive(Clone, Copy)]
@@ -37,6 +39,7 @@ pub fn lattice_draw(cells_per_axis: u32) -> (u32, u32) {
     (2 * points, 3 * points)
 }
 
+pub mod exact;
 mod pipelines;
 pub use pipelines::ViewPipelines;
 
@@ -48,6 +51,7 @@ pub fn needed(options: &ViewOptions, selected: bool) -> bool {
         || options.color_by != ColorBy::None
         || options.slice.is_some()
         || options.ambiguous
+        || options.compare != Compare::None
         // Orthographic views carry the axis gizmo: without perspective, depth cues are few.
         || options.projection == Projection::Orthographic
 }
@@ -63,6 +67,7 @@ pub fn mesh_only(options: &ViewOptions) -> bool {
 /// the LOD blocks); surface nets keep the grid but have no cases, so the crossed cells, kept blocks,
 /// ambiguous faces and case colours are left out.
 pub fn shown(options: &ViewOptions) -> ViewOptions {
+    let options = &exact::mesh_side(options);
     if !options.lod {
         if options.extractor != Method::SurfaceNets {
             return *options;
@@ -248,14 +253,19 @@ impl ViewState {
     ) {
         let p = pipelines;
         pass.set_bind_group(0, &self.draw_group, &[]);
+        exact::clip_mesh(pass, options, size);
         if options.display == Display::Points {
             self.indirect(pass, &p.points, Draw::Points);
+        } else if options.display == Display::Exact {
+            pass.set_pipeline(&p.exact);
+            pass.draw(0..3, 0..1);
         } else if !Self::draws_plain_surface(options) {
             self.indirect(pass, &p.triangles, Draw::Triangles);
         }
         if options.display == Display::Normals {
             self.indirect(pass, &p.normals, Draw::Normals);
         }
+        exact::draw_beside_mesh(pass, p, options, size);
         match options.grid {
             GridView::None => {}
             GridView::Lattice => {
@@ -323,6 +333,8 @@ pub fn lattice_slab(grid: Grid, forward: glam::Vec3, slice: Option<Slice>) -> [u
 /// camera's view direction).
 pub fn view_fields(uniform: &mut ShadingUniform, options: &ViewOptions, grid: Grid, forward: glam::Vec3) {
     uniform.display = options.display.index();
+    uniform.compare = options.compare.index();
+    uniform.divider = options.divider;
     uniform.color_by = options.color_by.index();
     uniform.grid_view = options.grid.index();
     uniform.cells_per_axis = grid.cells_per_axis;

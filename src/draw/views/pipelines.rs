@@ -8,7 +8,7 @@ use crate::teach::case_classes::case_classes;
 use wgpu::util::DeviceExt;
 
 /// The teaching views' WGSL, one file per view after what they share: one module holds them all.
-const VIEW_SOURCES: [&str; 10] = [
+const VIEW_SOURCES: [&str; 11] = [
     include_str!("../../../shaders/draw/views/common.wgsl"),
     include_str!("../../../shaders/draw/views/triangles.wgsl"),
     include_str!("../../../shaders/draw/views/points.wgsl"),
@@ -19,6 +19,7 @@ const VIEW_SOURCES: [&str; 10] = [
     include_str!("../../../shaders/draw/views/slice.wgsl"),
     include_str!("../../../shaders/draw/views/selected.wgsl"),
     include_str!("../../../shaders/draw/views/gizmo.wgsl"),
+    include_str!("../../../shaders/draw/views/exact.wgsl"),
 ];
 
 /// The pipelines of the views for one output format and sample count, with the compute pipelines of
@@ -38,6 +39,10 @@ pub struct ViewPipelines {
     pub(super) selected_edges: wgpu::RenderPipeline,
     pub(super) selected_corners: wgpu::RenderPipeline,
     pub(super) gizmo: wgpu::RenderPipeline,
+    pub(super) exact: wgpu::RenderPipeline,
+    pub(super) exact_outline: wgpu::RenderPipeline,
+    /// Casts the exact view's rays for listed pixels (`exact_probe`).
+    pub(crate) exact_probe: wgpu::ComputePipeline,
     pub(super) sample_slice: wgpu::ComputePipeline,
     pub(super) contour_slice: wgpu::ComputePipeline,
     pub(super) plan: wgpu::ComputePipeline,
@@ -130,16 +135,17 @@ impl ViewPipelines {
         let line = |label, vertex| pipeline(label, vertex, "mark_fragment", LineList, false, LessEqual);
         let on_top =
             |label, vertex, topology| pipeline(label, vertex, "mark_fragment", topology, false, Always);
-        let compute = |label, entry| {
+        let compute_in = |module, label, entry| {
             device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
                 label: Some(label),
                 layout: None,
-                module: &overlays,
+                module,
                 entry_point: Some(entry),
                 compilation_options: Default::default(),
                 cache: None,
             })
         };
+        let compute = |label, entry| compute_in(&overlays, label, entry);
         let classes: Vec<u32> = case_classes().iter().map(|&c| c as u32).collect();
         Self {
             triangles: pipeline(
@@ -181,6 +187,23 @@ impl ViewPipelines {
                 TriangleList,
             ),
             gizmo: on_top("views: gizmo pipeline", "gizmo_vertex", LineList),
+            exact: pipeline(
+                "views: exact surface pipeline",
+                "exact_vertex",
+                "exact_fragment",
+                TriangleList,
+                true,
+                wgpu::CompareFunction::Less,
+            ),
+            exact_outline: pipeline(
+                "views: exact outline pipeline",
+                "exact_vertex",
+                "exact_outline_fragment",
+                TriangleList,
+                false,
+                Always,
+            ),
+            exact_probe: compute_in(&views, "views: exact probe pipeline", "exact_probe"),
             sample_slice: compute("overlays: slice sample pipeline", "sample_slice"),
             contour_slice: compute("overlays: slice contour pipeline", "contour_slice"),
             plan: compute("overlays: plan pipeline", "plan_overlays"),

@@ -3,8 +3,8 @@
 //! live here once.
 
 use super::view::{
-    Blend, ColorBy, Display, GridView, Interpolation, LIGHT_KINDS, LOD_PIXELS_RANGE, Mesher, Method,
-    Projection, SPOT_ANGLE_RANGE, Slice, Theme,
+    Blend, ColorBy, Compare, DIVIDER_RANGE, Display, GridView, Interpolation, LIGHT_KINDS, LOD_PIXELS_RANGE,
+    Mesher, Method, Projection, SPOT_ANGLE_RANGE, Slice, Theme,
 };
 use super::{
     DISTANCE_RANGE, ISO_RANGE, MAX_RESOLUTION, MAX_SPHERES, MIN_RESOLUTION, PITCH_RANGE, ParamError,
@@ -77,6 +77,7 @@ pub const CONTROLS: &[&str] = &[
     "view",
     "step",
     "display",
+    "compare",
     "grid",
     "color_by",
     "slice",
@@ -188,6 +189,17 @@ pub const PARAMETERS: &[Parameter] = &[
     other("color", "color", "Colour", Kind::Color, "#e77661"),
     other("antialiasing", "aa", "Antialiasing", Kind::Boolean, "true"),
     other("display", "display", "Display", Kind::Choice(Display::WORDS), "shaded"),
+    other("compare", "compare", "Exact surface", Kind::Choice(Compare::WORDS), "none"),
+    number(
+        "divider",
+        "divider",
+        "Divider",
+        "divider position",
+        false,
+        wide(DIVIDER_RANGE),
+        (0.05, 0.95, 0.01),
+        "0.5",
+    ),
     other("grid", "grid", "Grid", Kind::Choice(GridView::WORDS), "none"),
     other("color_by", "color_by", "Colour by", Kind::Choice(ColorBy::WORDS), "none"),
     other("slice", "slice", "Field slice", Kind::Slice, "off"),

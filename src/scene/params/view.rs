@@ -36,7 +36,8 @@ macro_rules! choice {
 }
 
 choice!(
-    /// How the mesh is drawn. The triangle count is the same in every mode.
+    /// How the surface is drawn. The triangle count is the same in every mode but `exact`, which draws
+    /// the surface without the mesh.
     Display {
         /// Smooth Blinn-Phong with the analytic vertex normals.
         Shaded = "shaded",
@@ -48,6 +49,19 @@ choice!(
         Points = "points",
         /// Short segments along each vertex normal over the shaded surface.
         Normals = "normals",
+        /// No mesh: the exact surface f = iso, ray cast through the analytic field.
+        Exact = "exact",
+    }
+);
+
+choice!(
+    /// The exact surface beside the mesh.
+    Compare {
+        None = "none",
+        /// The mesh left of a divider, the exact surface right of it.
+        Split = "split",
+        /// The exact surface's outline over the mesh.
+        Overlay = "overlay",
     }
 );
 
@@ -233,6 +247,9 @@ impl Theme {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ViewOptions {
     pub display: Display,
+    pub compare: Compare,
+    /// With `compare=split`, where the exact half starts, as a fraction of the width.
+    pub divider: f32,
     pub grid: GridView,
     pub color_by: ColorBy,
     pub slice: Option<Slice>,
@@ -264,6 +281,8 @@ impl Default for ViewOptions {
     fn default() -> Self {
         Self {
             display: Display::Shaded,
+            compare: Compare::None,
+            divider: 0.5,
             grid: GridView::None,
             color_by: ColorBy::None,
             slice: None,
@@ -288,6 +307,9 @@ impl Default for ViewOptions {
 /// LOD cell sizes on screen accepted, pixels.
 pub const LOD_PIXELS_RANGE: (f32, f32) = (0.25, 32.0);
 
+/// Where the split view's divider may sit, as a fraction of the width.
+pub const DIVIDER_RANGE: (f32, f32) = (0.05, 0.95);
+
 /// Spot cone half-angles accepted, degrees.
 pub const SPOT_ANGLE_RANGE: (f32, f32) = (2.0, 80.0);
 
@@ -297,6 +319,7 @@ impl ViewOptions {
         check_f32("spot cone angle (degrees)", self.spot_angle, SPOT_ANGLE_RANGE.0, SPOT_ANGLE_RANGE.1)?;
         check_f32("spot softness", self.spot_softness, 0.0, 1.0)?;
         check_f32("LOD cell size (pixels)", self.lod_pixels, LOD_PIXELS_RANGE.0, LOD_PIXELS_RANGE.1)?;
+        check_f32("divider position", self.divider, DIVIDER_RANGE.0, DIVIDER_RANGE.1)?;
         if let Some(slice) = self.slice {
             check_f32("slice position", slice.position, -1.0, 1.0)?;
         }
@@ -331,6 +354,10 @@ impl ViewOptions {
         }
         match name {
             "display" => pick!(display, Display),
+            "compare" => pick!(compare, Compare),
+            "divider" => {
+                self.divider = check_f32("divider position", number(), DIVIDER_RANGE.0, DIVIDER_RANGE.1)?
+            }
             "grid" => pick!(grid, GridView),
             "color_by" => pick!(color_by, ColorBy),
             "interpolation" => pick!(interpolation, Interpolation),
