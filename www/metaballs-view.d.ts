@@ -111,6 +111,8 @@ export declare class MetaballsView extends HTMLElement {
   alt: string;
   /** An image URL shown before the first frame and in print until a frame is drawn. Attribute `poster`; default "". */
   poster: string;
+  /** Sync. Attribute `sync`; default "". */
+  sync: string;
   /** Figures of the newest frames. */
   readonly stats: MetaballsStats;
   /** Frames this element has drawn (none while off screen). */

@@ -18,6 +18,7 @@ import { wireDrop } from './lib/scene-files.js';
 import { SceneIO } from './lib/scene-io.js';
 import { sweepErrors } from './lib/error-plot.js';
 import { TopologyWatch } from './lib/topology-watch.js';
+import { CAMERA, joinSync, leaderOf, leaveSync, shareCamera } from './lib/sync.js';
 import {
   CONTROL_NAMES, defaultOf, defaults, FigureState, NAMES, TABLE, TEXT_NAMES,
 } from './lib/figure-state.js';
@@ -64,6 +65,12 @@ export class MetaballsView extends FigureBase {
   #started = false;
   #look;
   #topology;
+  // This figure in its `sync` group: camera changes from the others arrive here.
+  #sync = {
+    name: () => this.#state.sync,
+    frames: null,
+    camera: (name, value) => this.#set(name, value, false),
+  };
   // Resolves once the wasm is in and the attributes given so far are read.
   #loaded = null;
 
@@ -98,7 +105,9 @@ export class MetaballsView extends FigureBase {
       buildPanel: () => this.#buildPanel(),
       emit: (type, detail) => this.#emit(type, detail),
       topology: () => this.#topology,
+      leader: () => leaderOf(this.#sync)?.frames ?? null,
     });
+    this.#sync.frames = this.#frames;
     this.#topology = new TopologyWatch({
       view: () => this.#frames.view,
       state: () => this.#state,
@@ -169,6 +178,7 @@ export class MetaballsView extends FigureBase {
   // ---------------------------------------------------------------- lifecycle
 
   connectedCallback() {
+    joinSync(this.#sync);
     const watch = pageWatch();
     this.#load().then(() => {
       if (!this.isConnected) return;
@@ -193,6 +203,7 @@ export class MetaballsView extends FigureBase {
   }
 
   disconnectedCallback() {
+    leaveSync(this.#sync);
     unwatch(this);
     hub.unregister(this);
     this.#frames.detach();
@@ -268,7 +279,7 @@ export class MetaballsView extends FigureBase {
   }
 
   // A change from inside (gestures, panel, methods): reflected to the attribute, then accepted.
-  #set(name, value) {
+  #set(name, value, share = true) {
     // A new count or layout replaces hand-placed spheres with the seeded ones.
     if ((name === 'spheres' || name === 'seed') && this.#state.balls) this.#adopt('balls', '');
     this.#settings.reflect(name, value);
@@ -276,6 +287,7 @@ export class MetaballsView extends FigureBase {
     const before = this.#state[name];
     this.#accept(name, value);
     if (this.#state[name] !== before) this.#look.announceChange(name, this.#state[name]);
+    if (share && CAMERA.includes(name)) shareCamera(this.#sync, name, this.#state[name]);
   }
 
   #showsPlayButton() {

@@ -36,6 +36,7 @@ pub const NOT_IN_SCENE: &[&str] = &[
     "theme",
     "alt",
     "poster",
+    "sync",
 ];
 
 /// A checked scene: the spheres, and settings by parameter name (only names a scene holds, each

@@ -47,4 +47,5 @@ export const TABLE = Object.freeze([
   {"name":"max-pixel-ratio","url":"max_pixel_ratio","label":"Pixel ratio","kind":"number","words":[],"min":0.25,"max":4,"sliderMin":0.25,"sliderMax":4,"step":0.25,"default":"2","value":2},
   {"name":"alt","url":"alt","label":"Description","kind":"text","words":[],"min":0,"max":0,"sliderMin":0,"sliderMax":0,"step":0,"default":"","value":""},
   {"name":"poster","url":"poster","label":"Poster","kind":"text","words":[],"min":0,"max":0,"sliderMin":0,"sliderMax":0,"step":0,"default":"","value":""},
+  {"name":"sync","url":"sync","label":"Sync group","kind":"text","words":[],"min":0,"max":0,"sliderMin":0,"sliderMax":0,"step":0,"default":"","value":""},
 ]);

@@ -5,7 +5,7 @@
 
 import { hub, wasmModule, within, WEBGL_WAIT } from './engine.js';
 import { applySetting, isRendererSetting } from './view-settings.js';
-import { canvasPixels, pixelRatio } from './canvas-size.js';
+import { canvasPixels, drawsExact, pixelRatio, SOFTWARE_EXACT_RATIO } from './canvas-size.js';
 import { CREATION, NAMES, defaultOf, defaults } from './figure-state.js';
 import { picturesTaken } from './figure-look.js';
 
@@ -19,6 +19,9 @@ export class FigureFrames {
   #onScreen = false;
   #failed = false;
   #software = false;
+  #exactNoticed = false;
+  // The sync leader's frame whose spheres this figure last took.
+  #ledFrame = -1;
   #savedSpheres = null;
   #dirty = 0;
   #stepRequested = false;
@@ -34,7 +37,7 @@ export class FigureFrames {
   /**
    * `figure`: { element, root, canvas, settings (a FigureState), guard, hud, look (a FigureLook),
    * editor(), io(), inspector(), notice(text, ms), showPanel(), buildPanel(), emit(type, detail),
-   * loaded() (resolves once the element has read its attributes) }.
+   * leader() (the sync group's leading FigureFrames, or null), loaded() (resolves once the element has read its attributes) }.
    */
   constructor(figure) {
     this.#f = figure;
@@ -253,8 +256,19 @@ export class FigureFrames {
         this.#f.showPanel();
       }
     }
+    if (settings.changed.has('display') || settings.changed.has('compare')) this.#exactChanged();
     if (settings.changed.size) this.#dirty = Math.max(this.#dirty, 3);
     settings.changed.clear();
+  }
+
+  // The exact surface is ray cast per pixel: on a software adapter at a lower pixel ratio, said once.
+  #exactChanged() {
+    this.resize();
+    const exact = drawsExact(this.#f.settings.state);
+    if (exact && this.#software && !this.#exactNoticed) {
+      this.#exactNoticed = true;
+      this.#f.notice(`The exact surface is drawn at ${SOFTWARE_EXACT_RATIO}× pixel ratio on this software renderer.`, 4000);
+    }
   }
 
   /**
@@ -289,9 +303,16 @@ export class FigureFrames {
       }
       const elapsed = this.#last ? Math.min(Math.max(now - this.#last, 0) / 1000, 0.1) : 0;
       this.#last = now;
+      // A figure in a sync group that does not lead takes the leader's spheres instead of animating.
+      const leader = f.leader();
+      if (leader?.view && leader.framesDrawn !== this.#ledFrame) {
+        this.#ledFrame = leader.framesDrawn;
+        view.set_spheres(leader.view.spheres());
+        this.#dirty = Math.max(this.#dirty, 1);
+      }
       // A sphere being dragged holds the animation still.
       // So does a shape check that pause_on=merge waits for.
-      const animating = !state.paused && state.speed > 0 && !f.editor().dragging && !f.topology().holding;
+      const animating = !leader && !state.paused && state.speed > 0 && !f.editor().dragging && !f.topology().holding;
       if (animating || this.#dirty > 0 || this.#stepRequested || view.needs_redraw()) {
         const dt = animating ? elapsed * state.speed : this.#stepRequested ? 1 / 60 : 0;
         this.#stepRequested = false;
@@ -344,7 +365,8 @@ export class FigureFrames {
   }
 
   #ratio() {
-    return pixelRatio(this.#f.settings.state['max-pixel-ratio'], this.#software);
+    const s = this.#f.settings.state;
+    return pixelRatio(s['max-pixel-ratio'], this.#software, drawsExact(s));
   }
 
   sizeCanvas() {

@@ -1,5 +1,5 @@
 // How each parameter reaches the wasm view: one setter call per renderer setting. The others (speed,
-// paused, controls, hud, autoplay, max-pixel-ratio, alt, poster) live in the element alone.
+// paused, controls, hud, autoplay, max-pixel-ratio, alt, poster, sync) live in the element alone.
 
 import { resolvedTheme } from './figure-look.js';
 
@@ -15,6 +15,7 @@ function hexToLinear(hex) {
 const BY_NAME = [
   'display', 'grid', 'color_by', 'slice', 'ambiguous', 'interpolation', 'blend', 'light', 'spot_angle',
   'spot_softness', 'ambient', 'diffuse', 'specular', 'projection', 'fov', 'mesher', 'lod_pixels', 'lod_freeze',
+  'compare', 'divider', 'extractor',
 ];
 
 const SETTERS = {

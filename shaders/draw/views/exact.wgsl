@@ -14,7 +14,7 @@ const DISPLAY_EXACT: u32 = 5u;
 // Steps per ray at most, over every block it crosses.
 const MAX_STEPS: u32 = 384u;
 // The shortest step in a block, in cells; and the bisection steps that refine a hit.
-const MIN_STEP: f32 = 0.05;
+const MIN_STEP: f32 = 0.25;
 const BISECTIONS: u32 = 20u;
 
 struct Ray {

@@ -283,6 +283,7 @@ pub const PARAMETERS: &[Parameter] = &[
     ),
     other("alt", "alt", "Description", Kind::Text, ""),
     other("poster", "poster", "Poster", Kind::Text, ""),
+    other("sync", "sync", "Sync group", Kind::Text, ""),
 ];
 
 /// A parameter by its name or its short name in links.

@@ -1,0 +1,136 @@
+// End-to-end tests of the comparisons in headless Chromium (SwiftShader): the exact surface alone,
+// split against the mesh with a draggable divider, and as an outline; surface nets; and two figures
+// sharing spheres and camera through `sync`. Each control changes the picture, goes into the link, and
+// a bad value gets the notice.
+
+import { test, afterEach } from 'node:test';
+import assert from 'node:assert/strict';
+import { useServerAndBrowser, open as openPage, settledTriangles, screenshot, differingFraction } from './helpers.js';
+
+useServerAndBrowser();
+
+const pages = new Set();
+afterEach(async () => {
+  for (const page of pages) await page.context().close().catch(() => {});
+  pages.clear();
+});
+
+async function open(query) {
+  const opened = await openPage(query);
+  pages.add(opened.page);
+  return opened;
+}
+
+const BALLS = '-0.3,0,0,0.32;0.25,0.1,0,0.3;0,-0.25,0.2,0.26';
+const set = (page, name, value) => page.$eval('metaballs-view', (e, [n, v]) => e.setAttribute(n, v), [name, value]);
+const drawn = (page) => page.waitForTimeout(400);
+
+// The figure's own picture (not a screenshot, which would include the notices over it), 480 pixels
+// wide whatever the canvas's pixel ratio.
+async function picture(page) {
+  return Buffer.from(await page.evaluate(async () => {
+    const e = window.metaballs.element;
+    const blob = await e.picture(480 / e.shadowRoot.querySelector('canvas').width);
+    return [...new Uint8Array(await blob.arrayBuffer())];
+  }));
+}
+
+test('display=exact, compare=split with its divider and compare=overlay change the picture and go into the link', async () => {
+  const { page, errors } = await open(`?balls=${BALLS}&res=8&paused=1&aa=0&yaw=0&pitch=0`);
+  await settledTriangles(page);
+  const mesh = await picture(page);
+  await screenshot(page, 'compare-mesh');
+  const pictures = { mesh };
+  for (const [name, value] of [['display', 'exact'], ['display', 'shaded'], ['compare', 'split'], ['compare', 'overlay']]) {
+    await set(page, name, value);
+    await page.waitForFunction(([n, v]) => location.search.includes(`${n}=${v}`) || (n === 'display' && v === 'shaded' && !location.search.includes('display=')), [name, value]);
+    await drawn(page);
+    pictures[`${name}-${value}`] = await picture(page);
+    await screenshot(page, `compare-${name}-${value}`);
+  }
+  assert.ok(await differingFraction(page, mesh, pictures['display-exact']) > 0.005, 'the exact surface is not the 8³ mesh');
+  assert.ok(await differingFraction(page, mesh, pictures['compare-split']) > 0.003, 'the split shows the exact half');
+  assert.ok(await differingFraction(page, mesh, pictures['compare-overlay']) > 0.003, 'the overlay draws the outline');
+  // On this software renderer the exact surface is drawn at a lower pixel ratio, and it says so.
+  const notice = await page.textContent('#notice');
+  assert.match(notice, /exact surface is drawn at 0.5× pixel ratio/);
+
+  // The divider drags with the mouse and its place goes into the link.
+  await set(page, 'compare', 'split');
+  const box = await page.$eval('metaballs-view', (e) => {
+    const r = e.shadowRoot.querySelector('canvas').getBoundingClientRect();
+    return { x: r.x, y: r.y, width: r.width, height: r.height };
+  });
+  const y = box.y + box.height * 0.8;
+  await page.mouse.move(box.x + box.width * 0.5, y);
+  await page.mouse.down();
+  for (let k = 1; k <= 8; k++) await page.mouse.move(box.x + box.width * (0.5 - 0.03 * k), y);
+  await page.mouse.up();
+  await page.waitForFunction(() => /divider=0\.2\d*/.test(location.search));
+  const divider = await page.$eval('metaballs-view', (e) => e.divider);
+  assert.ok(Math.abs(divider - 0.26) < 0.03, `divider at ${divider}`);
+  const yaw = await page.$eval('metaballs-view', (e) => e.yaw);
+  assert.equal(yaw, 0, 'dragging the divider does not turn the camera');
+  assert.deepEqual(errors, []);
+});
+
+test('extractor=surface_nets meshes one vertex per crossed cell, shows in the picture, the HUD and the link', async () => {
+  const { page, errors } = await open(`?balls=${BALLS}&res=16&paused=1&aa=0&display=wireframe&hud=on`);
+  const cubes = await settledTriangles(page);
+  const before = await picture(page);
+  await set(page, 'extractor', 'surface_nets');
+  await page.waitForFunction(() => location.search.includes('extractor=surface_nets'));
+  await page.waitForFunction(() => /SURFACE-NETS/.test(window.metaballs.element.stats.adapter), null, { timeout: 20000 });
+  const nets = await settledTriangles(page);
+  const after = await picture(page);
+  await screenshot(page, 'extractor-nets');
+  assert.ok(await differingFraction(page, before, after) > 0.005, 'the wireframe changes');
+  // Two triangles per crossed edge, where marching cubes has about two per vertex: comparable counts.
+  assert.ok(nets > cubes * 0.7 && nets < cubes * 1.3, `${nets} against ${cubes}`);
+  const shape = await page.$eval('metaballs-view', (e) => e.topology());
+  assert.equal(shape.closed, true);
+  assert.deepEqual(errors, []);
+});
+
+test('bad comparison values get the notice and the figure keeps its view', async () => {
+  const { page } = await open(`?balls=${BALLS}&res=16&paused=1&compare=sideways&extractor=dual&divider=2`);
+  await settledTriangles(page);
+  const notice = await page.textContent('#notice');
+  for (const fragment of ['compare=sideways', 'one of none, split, overlay', 'extractor=dual',
+    'one of marching_cubes, surface_nets', 'divider position must be between 0.05 and 0.95, got 2']) {
+    assert.ok(notice.includes(fragment), `the notice lacks ${fragment}: ${notice}`);
+  }
+  const kept = await page.$eval('metaballs-view', (e) => [e.compare, e.extractor, e.divider]);
+  assert.deepEqual(kept, ['none', 'marching_cubes', 0.5]);
+});
+
+test('figures with one sync name share spheres and camera: turning one turns the other', async () => {
+  const { page, errors } = await open('www/examples/lecture.html');
+  const figures = '#methods metaballs-view';
+  await page.$eval('#methods', (e) => e.scrollIntoView());
+  await page.waitForFunction((sel) => [...document.querySelectorAll(sel)].every((e) => e.stats.triangles > 0), figures, { timeout: 60000 });
+  const sources = await page.$$eval(figures, (es) => es.map((e) => e.stats.adapter));
+  assert.match(sources[1], /SURFACE-NETS/);
+  // The spheres move in the first and follow in the second.
+  const centres = () => page.$$eval(figures, (es) => es.map((e) => JSON.stringify(e.sphereList.map((s) => s.center.map((c) => c.toFixed(3))))));
+  await page.waitForTimeout(1500);
+  await page.$$eval(figures, (es) => es[0].pause());
+  await page.waitForTimeout(600);
+  const [lead, follow] = await centres();
+  assert.equal(follow, lead, 'the second figure shows the first one\'s spheres');
+  // Dragging the camera in the second turns the first.
+  const box = await page.$$eval(figures, (es) => {
+    const r = es[1].shadowRoot.querySelector('canvas').getBoundingClientRect();
+    // Low on the left: the statistics sit top right.
+    return { x: r.x + r.width * 0.2, y: r.y + r.height * 0.85 };
+  });
+  const before = await page.$$eval(figures, (es) => es.map((e) => e.yaw));
+  await page.mouse.move(box.x, box.y);
+  await page.mouse.down();
+  for (let k = 1; k <= 10; k++) await page.mouse.move(box.x + 6 * k, box.y);
+  await page.mouse.up();
+  const after = await page.$$eval(figures, (es) => es.map((e) => e.yaw));
+  assert.notEqual(after[1], before[1], 'the dragged figure turned');
+  assert.equal(after[0], after[1], 'the other figure turned with it');
+  assert.deepEqual(errors, []);
+});
