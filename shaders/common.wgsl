@@ -244,6 +244,19 @@ fn edge_vertex(a: vec3<u32>, b: vec3<u32>, fa: f32, fb: f32) -> EdgeVertex {
     return EdgeVertex(p, n);
 }
 
+// The axis of the box's face nearest to `p` (the largest coordinate in size).
+fn nearest_face_axis(p: vec3<f32>) -> u32 {
+    let a = abs(p);
+    var axis = 0u;
+    if (a.y > a[axis]) {
+        axis = 1u;
+    }
+    if (a.z > a[axis]) {
+        axis = 2u;
+    }
+    return axis;
+}
+
 // Newton steps that project a point onto f = iso (src/extract/reference.rs, surface_distance, takes the
 // same steps on the CPU).
 const NEWTON_STEPS: u32 = 8u;
@@ -270,13 +283,7 @@ fn surface_distance(p: vec3<f32>) -> f32 {
     var d = length(q - p);
     let half = -grid.box_min.x;
     let a = abs(p);
-    var axis = 0u;
-    if (a.y > a[axis]) {
-        axis = 1u;
-    }
-    if (a.z > a[axis]) {
-        axis = 2u;
-    }
+    let axis = nearest_face_axis(p);
     var wall = p;
     wall[axis] = select(-half, half, p[axis] > 0.0);
     if (field_at(wall) >= grid.iso) {

@@ -63,6 +63,21 @@ impl Spheres {
     }
 }
 
+impl Spheres {
+    /// True when block `[bx, by, bz]` (of `BLOCK_CELLS`³ cells) of an `n`³ grid with point coordinates
+    /// `coords` may hold the surface, as [`Spheres::straddles`] decides: the block every extractor
+    /// keeps.
+    pub fn block_straddles(&self, coords: &[f32], block: [u32; 3], n: u32, iso: f32, by_max: bool) -> bool {
+        use crate::extract::buffers::BLOCK_CELLS;
+        let first = block.map(|b| b * BLOCK_CELLS);
+        let last = first.map(|f| (f + BLOCK_CELLS).min(n));
+        let low = Vec3::from_array(first.map(|i| coords[i as usize]));
+        let high = Vec3::from_array(last.map(|i| coords[i as usize]));
+        let touches_walls = first.contains(&0) || last.contains(&n);
+        self.straddles(low, high, touches_walls, iso, by_max)
+    }
+}
+
 /// Bounds of one kind of term over a box: summed, or the largest with blend by max; an infinite upper
 /// bound where a sphere's centre may lie in the box.
 #[derive(Default)]

@@ -78,14 +78,7 @@ fn cast_ray(ray: Ray) -> Hit {
     let entry = ray.origin + span.x * ray.direction;
     if (inside_at(entry)) {
         // The solid meets the box's face here: the face is its surface.
-        let a = abs(entry);
-        var axis = 0u;
-        if (a.y > a[axis]) {
-            axis = 1u;
-        }
-        if (a.z > a[axis]) {
-            axis = 2u;
-        }
+        let axis = nearest_face_axis(entry);
         var n = vec3<f32>(0.0);
         n[axis] = sign(entry[axis]);
         return Hit(span.x, n);

@@ -143,12 +143,7 @@ impl CpuMesher {
             layer.clear();
             for by in 0..nb {
                 for bx in 0..nb {
-                    let first = [bx, by, bz].map(|b| b * BLOCK_CELLS);
-                    let last = first.map(|f| (f + BLOCK_CELLS).min(n));
-                    let low = Vec3::from_array(first.map(|i| self.coords[i as usize]));
-                    let high = Vec3::from_array(last.map(|i| self.coords[i as usize]));
-                    let touches_walls = first.contains(&0) || last.contains(&n);
-                    if self.spheres.straddles(low, high, touches_walls, iso, by_max) {
+                    if self.spheres.block_straddles(&self.coords, [bx, by, bz], n, iso, by_max) {
                         layer.push((bx, by));
                         active += 1;
                     }

@@ -104,12 +104,7 @@ impl SurfaceNetsMesher {
         for bz in 0..nb {
             for by in 0..nb {
                 for bx in 0..nb {
-                    let first = [bx, by, bz].map(|b| b * BLOCK_CELLS);
-                    let last = first.map(|f| (f + BLOCK_CELLS).min(n));
-                    let low = Vec3::from_array(first.map(|i| self.coords[i as usize]));
-                    let high = Vec3::from_array(last.map(|i| self.coords[i as usize]));
-                    let walls = first.contains(&0) || last.contains(&n);
-                    if self.spheres.straddles(low, high, walls, iso, by_max) {
+                    if self.spheres.block_straddles(&self.coords, [bx, by, bz], n, iso, by_max) {
                         self.kept.push([bx, by, bz]);
                     }
                 }
