@@ -254,9 +254,11 @@ pub fn check_light_position(position: Vec3) -> Result<Vec3, ParamError> {
     check_vec3("light position", position, -100.0, 100.0)
 }
 
+mod parse;
 mod table;
 pub mod view;
-pub use table::{CONTROLS, Kind, PARAMETERS, Parameter, Value, parameter, parse_parameter};
+pub use parse::parse_parameter;
+pub use table::{CONTROLS, Kind, PARAMETERS, Parameter, Value, parameter};
 pub use view::ViewOptions;
 
 #[cfg(test)]

@@ -1,0 +1,159 @@
+//! How a parameter's text is read: each kind of the table's parameters parsed and checked, with a
+//! message saying what is accepted when the text is refused.
+
+use super::table::{Kind, PARAMETERS, Parameter, Value, parameter};
+use super::view::Slice;
+use super::{ParamError, check_f32, check_range};
+
+impl Parameter {
+    /// Reads `text` as this parameter's value and checks it; the error says what is accepted.
+    pub fn parse(&self, text: &str) -> Result<Value, ParamError> {
+        let trimmed = text.trim();
+        let invalid =
+            |expected: String| ParamError::Invalid { name: self.noun, value: text.to_string(), expected };
+        match self.kind {
+            Kind::Integer => {
+                let range = format!("a whole number from {} to {}", self.min, self.max);
+                if trimmed.is_empty() || !trimmed.bytes().all(|b| b.is_ascii_digit()) {
+                    return Err(invalid(range));
+                }
+                let value: f64 = trimmed.parse().map_err(|_| invalid(range))?;
+                check_range(self.noun, value, self.min, self.max).map(Value::Number)
+            }
+            Kind::Number => {
+                let (min, max) = (self.min as f32, self.max as f32);
+                let expected = format!("a number from {min} to {max}");
+                let value: f64 = trimmed.parse().map_err(|_| invalid(expected.clone()))?;
+                check_f32(self.noun, value as f32, min, max)?;
+                Ok(Value::Number(value))
+            }
+            Kind::Boolean => match trimmed.to_ascii_lowercase().as_str() {
+                "" | "1" | "true" | "on" | "yes" => Ok(Value::Boolean(true)),
+                "0" | "false" | "off" | "no" => Ok(Value::Boolean(false)),
+                _ => Err(invalid("true or false (also 1/0, on/off)".into())),
+            },
+            Kind::Color => {
+                let hex = trimmed.strip_prefix('#').unwrap_or(trimmed);
+                if hex.len() == 6 && hex.bytes().all(|b| b.is_ascii_hexdigit()) {
+                    Ok(Value::Text(format!("#{}", hex.to_ascii_lowercase())))
+                } else {
+                    Err(invalid("a colour written #rrggbb".into()))
+                }
+            }
+            Kind::Choice(words) => {
+                let word = trimmed.to_ascii_lowercase();
+                if words.contains(&word.as_str()) {
+                    Ok(Value::Text(word))
+                } else {
+                    Err(invalid(format!("one of {}", words.join(", "))))
+                }
+            }
+            Kind::List(words) => {
+                let list = trimmed.to_ascii_lowercase();
+                if list == "all" || list == "none" {
+                    return Ok(Value::Text(list));
+                }
+                let items: Vec<&str> = list.split(',').map(str::trim).filter(|s| !s.is_empty()).collect();
+                if items.is_empty() || !items.iter().all(|item| words.contains(item)) {
+                    return Err(invalid(format!("all, none, or a comma list of {}", words.join(", "))));
+                }
+                Ok(Value::Text(items.join(",")))
+            }
+            Kind::Slice => Slice::parse(trimmed).map(|slice| Value::Text(Slice::text(slice))),
+            Kind::Text => Ok(Value::Text(text.to_string())),
+            Kind::Spheres if trimmed.is_empty() => Ok(Value::Text(String::new())),
+            Kind::Spheres => crate::scene::sphere::parse_spheres_text(trimmed)
+                .map(|spheres| Value::Text(crate::scene::sphere::spheres_text(&spheres)))
+                .map_err(|e| ParamError::Invalid {
+                    name: self.noun,
+                    value: text.to_string(),
+                    expected: format!("x,y,z,radius[,vx,vy,vz] per sphere joined by ; ({e})"),
+                }),
+        }
+    }
+}
+
+/// Reads `text` as the value of the parameter called `name` (or its short name in links).
+pub fn parse_parameter(name: &str, text: &str) -> Result<Value, ParamError> {
+    parameter(name)
+        .ok_or_else(|| ParamError::Invalid {
+            name: "parameter name",
+            value: name.to_string(),
+            expected: format!("one of {}", PARAMETERS.iter().map(|p| p.name).collect::<Vec<_>>().join(", ")),
+        })?
+        .parse(text)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::params::Settings;
+
+    #[test]
+    fn every_default_in_the_table_parses() {
+        for p in PARAMETERS {
+            assert!(p.parse(p.default).is_ok(), "{}: default {:?}", p.name, p.default);
+        }
+    }
+
+    #[test]
+    fn the_table_agrees_with_the_settings_defaults() {
+        let s = Settings::default();
+        let number = |name| match parse_parameter(name, parameter(name).unwrap().default) {
+            Ok(Value::Number(v)) => v,
+            other => panic!("{name}: {other:?}"),
+        };
+        assert_eq!(number("spheres") as u32, s.sphere_count);
+        assert_eq!(number("iso") as f32, s.iso);
+        assert_eq!(number("resolution") as u32, s.resolution);
+        assert_eq!(number("seed") as u64, s.seed);
+        assert_eq!(number("yaw") as f32, s.camera.yaw_degrees);
+        assert_eq!(number("pitch") as f32, s.camera.pitch_degrees);
+        assert_eq!(number("distance") as f32, s.camera.distance);
+        assert_eq!(number("shininess") as f32, s.material.shininess);
+    }
+
+    #[test]
+    fn parameter_text_is_read_and_refused_with_what_is_accepted() {
+        assert_eq!(parse_parameter("iso", " 0.8 "), Ok(Value::Number(0.8)));
+        assert_eq!(parse_parameter("res", "96"), Ok(Value::Number(96.0)));
+        assert_eq!(parse_parameter("paused", ""), Ok(Value::Boolean(true)));
+        assert_eq!(parse_parameter("aa", "0"), Ok(Value::Boolean(false)));
+        assert_eq!(parse_parameter("color", "E77661"), Ok(Value::Text("#e77661".into())));
+        assert_eq!(parse_parameter("controls", "iso, resolution"), Ok(Value::Text("iso,resolution".into())));
+        assert_eq!(parse_parameter("hud", "ON"), Ok(Value::Text("on".into())));
+        let message = |name, text| parse_parameter(name, text).unwrap_err().to_string();
+        assert_eq!(message("iso", "abc"), "iso level must be a number from 0.05 to 20, got \"abc\"");
+        assert_eq!(message("iso", "NaN"), "iso level must be a number, got NaN");
+        assert_eq!(message("iso", "-1"), "iso level must be between 0.05 and 20, got -1");
+        assert_eq!(message("spheres", "500"), "sphere count must be between 1 and 64, got 500");
+        assert_eq!(
+            message("spheres", "2.5"),
+            "sphere count must be a whole number from 1 to 64, got \"2.5\""
+        );
+        assert_eq!(
+            message("resolution", ""),
+            "resolution (cells per axis) must be a whole number from 8 to 2048, got \"\""
+        );
+        let settings = crate::scene::params::Settings::default();
+        let refused = settings.with_parameter("resolution", "1024").unwrap_err().to_string();
+        assert!(refused.contains("at most 512 for a uniform grid (lod=on goes up to 2048)"), "{refused}");
+        let lod = settings.with_parameter("lod", "on").unwrap();
+        assert_eq!(lod.with_parameter("resolution", "2048").unwrap().resolution, 2048);
+        let refused = lod.with_parameter("resolution", "100").unwrap_err().to_string();
+        assert!(refused.contains("a multiple of 8 with lod=on"), "{refused}");
+        assert!(lod.with_parameter("lod_px", "0.1").is_err());
+        assert_eq!(lod.with_parameter("lod_px", "3.5").unwrap().view.lod_pixels, 3.5);
+        assert_eq!(message("color", "red"), "color must be a colour written #rrggbb, got \"red\"");
+        assert!(message("controls", "iso,zoom").contains("comma list of spheres, iso"));
+        assert!(message("autoplay", "always").contains("one of visible, off"));
+        assert!(message("nonsense", "1").starts_with("parameter name must be one of spheres"));
+        assert_eq!(parse_parameter("edit", "on"), Ok(Value::Boolean(true)));
+        assert_eq!(parse_parameter("balls", "0, 0,0,0.40"), Ok(Value::Text("0,0,0,0.4".into())));
+        assert_eq!(parse_parameter("balls", ""), Ok(Value::Text(String::new())));
+        assert!(
+            message("balls", "0,0,0,2")
+                .contains("balls sphere 1.radius: sphere radius must be between 0.01 and 1")
+        );
+    }
+}
