@@ -5,20 +5,17 @@
 // Importing it does nothing but define the element, and only where `customElements` exists (a
 // server-side build imports it safely); the wasm loads when the first figure is connected.
 
+import { makeFigureParts } from './lib/figure-parts.js';
 import { caseGallery, hub, loadWasm, propertyName, wasmLoaded } from './lib/engine.js';
 import { FigureBase } from './lib/figure-base.js';
-import { Inspector } from './lib/inspector.js';
 import { wireFigureGestures } from './lib/figure-gestures.js';
 import { buildPanel, listedControls } from './lib/panel.js';
 import { elementStyle, flasher, TEMPLATE } from './lib/element-dom.js';
 import { Hud } from './lib/hud.js';
 import { CostGuard } from './lib/frame-cost.js';
-import { SphereEditor } from './lib/editor.js';
 import { wireDrop } from './lib/scene-files.js';
-import { SceneIO } from './lib/scene-io.js';
 import { sweepErrors } from './lib/error-plot.js';
-import { TopologyWatch } from './lib/topology-watch.js';
-import { CAMERA, joinSync, leaderOf, leaveSync, shareCamera } from './lib/sync.js';
+import { CAMERA, joinSync, leaderOf, leaveSync, shareCamera, syncMember } from './lib/sync.js';
 import {
   CONTROL_NAMES, defaultOf, defaults, FigureState, NAMES, TABLE, TEXT_NAMES,
 } from './lib/figure-state.js';
@@ -66,11 +63,7 @@ export class MetaballsView extends FigureBase {
   #look;
   #topology;
   // This figure in its `sync` group: camera changes from the others arrive here.
-  #sync = {
-    name: () => this.#state.sync,
-    frames: null,
-    camera: (name, value) => this.#set(name, value, false),
-  };
+  #sync = syncMember(() => this.#state.sync, (name, value) => this.#set(name, value, false));
   // Resolves once the wasm is in and the attributes given so far are read.
   #loaded = null;
 
@@ -108,43 +101,20 @@ export class MetaballsView extends FigureBase {
       leader: () => leaderOf(this.#sync)?.frames ?? null,
     });
     this.#sync.frames = this.#frames;
-    this.#topology = new TopologyWatch({
-      view: () => this.#frames.view,
-      state: () => this.#state,
+    ({ topology: this.#topology, inspector: this.#inspector, editor: this.#editor, io: this.#io } = makeFigureParts({
+      root: this.#root,
+      canvas: this.#canvas,
+      frames: this.#frames,
       hud: this.#hud,
-      announce: (text) => this.#look.announce(text),
-      pause: () => this.pause(),
-    });
-    this.#inspector = new Inspector(this.#root, () => caseGallery().cube, {
-      view: () => this.#frames.view,
-      iso: () => this.#state.iso,
-      onShow: (report) => {
-        this.#frames.redraw(2);
-        this.#emit('metaballs-inspect', { cell: report });
-      },
-      onClass: (k) => this.#showPanel(this.#state, k),
-    });
-    this.#editor = new SphereEditor(this.#root, {
-      view: () => this.#frames.view,
-      scale: () => this.#canvas.width / Math.max(1, this.#canvas.clientWidth),
-      edited: () => this.#io.edited(),
-      redraw: () => this.#frames.redraw(1),
-      notice: (text) => this.#notice(text),
-    });
-    this.#io = new SceneIO({
-      view: () => this.#frames.view,
+      look: this.#look,
       state: () => this.#state,
       set: (name, value) => this.#set(name, value),
       adopt: (name, value) => this.#adopt(name, value),
-      apply: () => this.#frames.apply(),
-      restoreLater: (packed) => { this.#frames.savedSpheres = packed; },
-      changed: () => this.#frames.redraw(2),
-      editor: this.#editor,
-      canvas: this.#canvas,
-      ready: () => this.#frames.nextFrame(),
+      pause: () => this.pause(),
+      showPanel: (k) => this.#showPanel(this.#state, k),
       notice: (text, ms) => this.#notice(text, ms),
       emit: (type, detail) => this.#emit(type, detail),
-    });
+    }));
     wireFigureGestures(this, this.#canvas, {
       state: this.#state,
       set: (name, value) => this.#set(name, value),

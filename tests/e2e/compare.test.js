@@ -3,23 +3,13 @@
 // sharing spheres and camera through `sync`. Each control changes the picture, goes into the link, and
 // a bad value gets the notice.
 
-import { test, afterEach } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { useServerAndBrowser, open as openPage, settledTriangles, screenshot, differingFraction } from './helpers.js';
+import { useServerAndBrowser, openClosedAfterEach, settledTriangles, screenshot, differingFraction } from './helpers.js';
 
 useServerAndBrowser();
 
-const pages = new Set();
-afterEach(async () => {
-  for (const page of pages) await page.context().close().catch(() => {});
-  pages.clear();
-});
-
-async function open(query) {
-  const opened = await openPage(query);
-  pages.add(opened.page);
-  return opened;
-}
+const open = openClosedAfterEach();
 
 const BALLS = '-0.3,0,0,0.32;0.25,0.1,0,0.3;0,-0.25,0.2,0.26';
 const set = (page, name, value) => page.$eval('metaballs-view', (e, [n, v]) => e.setAttribute(n, v), [name, value]);

@@ -2,14 +2,14 @@
 // device, idle off screen, input scoped to the focused figure, attribute checks with inline notices,
 // Shadow DOM isolation, device loss from JavaScript, the iframe page, and dist/ under a sub-path.
 
-import { test, afterEach } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { spawn, execFileSync } from 'node:child_process';
 import { cpSync, mkdtempSync, rmSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import {
-  useServerAndBrowser, browser, baseUrl, root, freePort, waitForServer, pixelStats, differingFraction,
+  useServerAndBrowser, openClosedAfterEach, root, freePort, waitForServer, pixelStats, differingFraction,
 } from './helpers.js';
 
 useServerAndBrowser();
@@ -17,22 +17,7 @@ useServerAndBrowser();
 const FIXTURES = 'tests/e2e/fixtures';
 
 // Every page a test opens is closed after it, passed or failed, so that no figure keeps drawing.
-const contexts = new Set();
-afterEach(async () => {
-  for (const context of contexts) await context.close().catch(() => {});
-  contexts.clear();
-});
-
-async function open(url, { viewport = { width: 840, height: 600 }, reducedMotion } = {}) {
-  const context = await browser.newContext({ viewport, reducedMotion });
-  contexts.add(context);
-  const page = await context.newPage();
-  const errors = [];
-  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
-  page.on('pageerror', (e) => errors.push(String(e)));
-  await page.goto(url.startsWith('http') ? url : `${baseUrl}${url}`);
-  return { page, errors, close: () => context.close() };
-}
+const open = openClosedAfterEach({ viewport: { width: 840, height: 600 } });
 
 const frames = (page, id) => page.$eval(`#${id}`, (e) => e.framesDrawn);
 const waitForFrames = (page, id, count = 3) => page.waitForFunction(

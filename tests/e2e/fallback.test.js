@@ -3,11 +3,11 @@
 // neither API exists, several WebGL2 figures on one page, `auto` choosing the CPU mesher on SwiftShader,
 // and a link that asks for frames too slow to draw without confirmation.
 
-import { test, afterEach } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { chromium } from 'playwright-core';
 import {
-  useServerAndBrowser, browser, baseUrl, CHROMIUM, FLAGS, differingFraction, pixelStats, settledTriangles,
+  useServerAndBrowser, openClosedAfterEach, CHROMIUM, FLAGS, differingFraction, pixelStats, settledTriangles,
   openPanelGroups,
 } from './helpers.js';
 
@@ -21,23 +21,7 @@ const NO_WEBGL2 = () => {
   };
 };
 
-const contexts = new Set();
-afterEach(async () => {
-  for (const context of contexts) await context.close().catch(() => {});
-  contexts.clear();
-});
-
-async function open(query, { scripts = [], on = browser, viewport = { width: 960, height: 640 } } = {}) {
-  const context = await on.newContext({ viewport });
-  contexts.add(context);
-  const page = await context.newPage();
-  const errors = [];
-  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
-  page.on('pageerror', (e) => errors.push(String(e)));
-  for (const script of scripts) await page.addInitScript(script);
-  await page.goto(`${baseUrl}${query}`);
-  return { page, errors };
-}
+const open = openClosedAfterEach();
 
 const canvasShot = (page) => page.locator('metaballs-view').locator('#view').screenshot();
 
@@ -47,7 +31,7 @@ async function setAndSettle(page, name, value) {
 }
 
 test('without navigator.gpu the page draws with WebGL2 and CPU meshing, and its controls change the picture', async () => {
-  const { page, errors } = await open('?paused=1&res=32', { scripts: [NO_WEBGPU] });
+  const { page, errors } = await open('?paused=1&res=32', { initScript: [NO_WEBGPU] });
   const triangles = await settledTriangles(page);
   assert.ok(triangles > 500, `${triangles} triangles`);
   assert.match(await page.textContent('#adapter'), /^WebGL2 · CPU meshing$/);
@@ -94,14 +78,14 @@ test('Chromium started without WebGPU falls back to WebGL2', async () => {
 });
 
 test('with neither WebGPU nor WebGL2 the figure says so', async () => {
-  const { page } = await open('', { scripts: [NO_WEBGPU, NO_WEBGL2] });
+  const { page } = await open('', { initScript: [NO_WEBGPU, NO_WEBGL2] });
   await page.waitForSelector('#message:not([hidden])', { timeout: 30_000 });
   assert.match(await page.textContent('#message-title'), /Neither WebGPU nor WebGL2/);
   assert.match(await page.textContent('#message-text'), /Chrome|Firefox|Safari/);
 });
 
 test('WebGL2 figures beyond the page\'s share wait, say why, and start when one leaves', async () => {
-  const { page, errors } = await open(`tests/e2e/fixtures/many.html?n=10`, { scripts: [NO_WEBGPU] });
+  const { page, errors } = await open(`tests/e2e/fixtures/many.html?n=10`, { initScript: [NO_WEBGPU] });
   const census = () => page.$$eval('metaballs-view', (elements) => elements.map((e) => {
     const $ = (id) => e.shadowRoot.getElementById(id);
     return { drawing: Number($('triangles').textContent.replace(/,/g, '')) > 0, waiting: !$('message').hidden };

@@ -1,7 +1,7 @@
 // Shared by the end-to-end tests: a static server over the repository on 127.0.0.1, headless Chromium
 // with real WebGPU (SwiftShader), and checks of what a person sees, computed on decoded pixels.
 
-import { before, after } from 'node:test';
+import { before, after, afterEach } from 'node:test';
 import { spawn } from 'node:child_process';
 import { createServer } from 'node:net';
 import { mkdirSync } from 'node:fs';
@@ -72,15 +72,37 @@ after(async () => {
 });
 }
 
-// Opens the page and collects console errors and uncaught exceptions.
-export async function open(query = '', { initScript, viewport = { width: 960, height: 640 } } = {}) {
-  const page = await browser.newPage({ viewport });
+/**
+ * Opens `url` (relative to the server, or whole) in a new context and collects console errors and
+ * uncaught exceptions. Options: initScript (one function or a list, run before the page's scripts),
+ * viewport, reducedMotion, on (another browser).
+ */
+export async function open(url = '', { initScript, viewport = { width: 960, height: 640 }, reducedMotion, on = browser } = {}) {
+  const context = await on.newContext({ viewport, reducedMotion });
+  const page = await context.newPage();
   const errors = [];
   page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
   page.on('pageerror', (e) => errors.push(String(e)));
-  if (initScript) await page.addInitScript(initScript);
-  await page.goto(`${baseUrl}${query}`);
-  return { page, errors };
+  for (const script of [initScript ?? []].flat()) await page.addInitScript(script);
+  await page.goto(url.startsWith('http') ? url : `${baseUrl}${url}`);
+  return { page, errors, close: () => context.close() };
+}
+
+/**
+ * An `open` whose pages are closed after each test (for files whose tests each open their own): call
+ * once at the top of a test file; `defaults` are options for every page.
+ */
+export function openClosedAfterEach(defaults = {}) {
+  const pages = new Set();
+  afterEach(async () => {
+    for (const page of pages) await page.context().close().catch(() => {});
+    pages.clear();
+  });
+  return async (url, options) => {
+    const opened = await open(url, { ...defaults, ...options });
+    pages.add(opened.page);
+    return opened;
+  };
 }
 
 export async function waitForTriangles(page, differentFrom = null) {

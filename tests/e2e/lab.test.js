@@ -2,23 +2,13 @@
 // figures and shape histogram, the error-vs-resolution plot with its slopes, the live topology with
 // pause_on=merge stopping the animation when two blobs touch, and a subtracting sphere from a link.
 
-import { test, afterEach } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { useServerAndBrowser, open as openPage, settledTriangles, screenshot, differingFraction } from './helpers.js';
+import { useServerAndBrowser, openClosedAfterEach, settledTriangles, screenshot, differingFraction } from './helpers.js';
 
 useServerAndBrowser();
 
-const pages = new Set();
-afterEach(async () => {
-  for (const page of pages) await page.context().close().catch(() => {});
-  pages.clear();
-});
-
-async function open(query) {
-  const opened = await openPage(query);
-  pages.add(opened.page);
-  return opened;
-}
+const open = openClosedAfterEach();
 
 test('color_by=error colours the mesh, the HUD gives RMS and max error and a shape histogram, and the link carries it', async () => {
   // Spheres inside the box: where a wall cuts the solid, its cap sits up to a cell off the wall.

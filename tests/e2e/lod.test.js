@@ -3,28 +3,13 @@
 // frozen selection stays while the camera moves; and a 2048³ link asks first instead of freezing the
 // page.
 
-import { test, afterEach } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { useServerAndBrowser, browser, baseUrl, settledTriangles } from './helpers.js';
+import { useServerAndBrowser, openClosedAfterEach, settledTriangles } from './helpers.js';
 
 useServerAndBrowser();
 
-const contexts = new Set();
-afterEach(async () => {
-  for (const context of contexts) await context.close().catch(() => {});
-  contexts.clear();
-});
-
-async function open(query) {
-  const context = await browser.newContext({ viewport: { width: 960, height: 640 } });
-  contexts.add(context);
-  const page = await context.newPage();
-  const errors = [];
-  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
-  page.on('pageerror', (e) => errors.push(String(e)));
-  await page.goto(`${baseUrl}${query}`);
-  return { page, errors };
-}
+const open = openClosedAfterEach();
 
 const levels = (page) => page.$eval('metaballs-view', (e) => e.stats.lod?.levels.map((l) => l.blocks) ?? null);
 

@@ -9,6 +9,12 @@ export const CAMERA = ['yaw', 'pitch', 'distance'];
 // value) }.
 const members = new Set();
 
+/**
+ * A figure as a member of its group: `name()` reads its `sync` setting, `camera(name, value)` makes a
+ * camera change another member shared; `frames` (its FigureFrames) is set once they exist.
+ */
+export const syncMember = (name, camera) => ({ name, camera, frames: null });
+
 /** Adds a figure; `name()` reads its current `sync` setting (empty: none). */
 export function joinSync(member) {
   members.add(member);
