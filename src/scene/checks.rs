@@ -24,9 +24,11 @@ impl fmt::Display for ParamError {
         match self {
             Self::NotANumber { name } => write!(f, "{name} must be a number, got NaN"),
             Self::Infinite { name } => write!(f, "{name} must be finite, got infinity"),
-            Self::Invalid { name, value, expected } => write!(f, "{name} must be {expected}, got {value:?}"),
+            Self::Invalid { name, value, expected } => {
+                write!(f, "{name} must be {expected}, got {}", quoted(value))
+            }
             Self::OutOfRange { name, value, min, max } => {
-                write!(f, "{name} must be between {min} and {max}, got {value}")
+                write!(f, "{name} must be between {min} and {max}, got {}", short_number(value))
             }
             Self::DeviceLimit { name, value, detail } => {
                 write!(f, "{name} {value} is more than this device can hold: {detail}")
@@ -36,6 +38,35 @@ impl fmt::Display for ParamError {
 }
 
 impl std::error::Error for ParamError {}
+
+/// Longest part of a given text a message repeats, in characters: a message stays readable in a
+/// notice whatever a link or a file holds.
+const SHOWN_CHARS: usize = 40;
+
+/// `text` cut short after [`SHOWN_CHARS`] characters (with an ellipsis), for a message.
+pub fn cut(text: &str) -> String {
+    match text.char_indices().nth(SHOWN_CHARS) {
+        Some((end, _)) => format!("{}…", &text[..end]),
+        None => text.to_string(),
+    }
+}
+
+/// `text` in quotes for a message (escaped as Rust's debug format does), cut short after
+/// [`SHOWN_CHARS`] characters.
+pub fn quoted(text: &str) -> String {
+    match text.char_indices().nth(SHOWN_CHARS) {
+        Some((end, _)) => format!("{:?}…", &text[..end]),
+        None => format!("{text:?}"),
+    }
+}
+
+/// A number written for a message: as given, or in scientific notation when its digits run long.
+fn short_number(text: &str) -> String {
+    match text.parse::<f64>() {
+        Ok(x) if text.len() > 24 => format!("{x:e}"),
+        _ => text.to_string(),
+    }
+}
 
 /// Checks that `value` is a finite number within `[min, max]`.
 pub fn check_f32(name: &'static str, value: f32, min: f32, max: f32) -> Result<f32, ParamError> {

@@ -11,6 +11,7 @@
 //!   "settings": { "iso": 1, "resolution": 64, "color": "#e77661", "yaw": 30 } }
 //! ```
 
+use super::checks::cut;
 use super::params::{Settings, Value, parameter};
 use super::sphere::{SceneError, Sphere, at, check_count, check_sphere};
 use glam::Vec3;
@@ -120,7 +121,7 @@ fn sphere(value: &serde_json::Value, field: &str) -> Result<Sphere, SceneError> 
 }
 
 fn setting(name: &str, value: &serde_json::Value) -> Result<(&'static str, Value), SceneError> {
-    let field = format!("settings.{name}");
+    let field = format!("settings.{}", cut(name));
     let spec = parameter(name)
         .filter(|p| p.name == name && !NOT_IN_SCENE.contains(&p.name))
         .ok_or_else(|| SceneError(format!("{field}: not a setting a scene holds")))?;

@@ -1,7 +1,7 @@
 //! One sphere of the field, the checks every sphere passes (wherever it comes from: a layout, a hand
 //! edit, a scene file, a link), and the compact text form of a sphere list that links carry.
 
-use super::checks::{ParamError, check_f32, check_u32};
+use super::checks::{ParamError, check_f32, check_u32, quoted};
 use glam::Vec3;
 use std::fmt;
 
@@ -108,6 +108,8 @@ pub(crate) fn check_count(field: &str, count: usize) -> Result<(), SceneError> {
 
 /// The compact form of spheres in links: `x,y,z,r` (a still sphere) or `x,y,z,r,vx,vy,vz`, joined by
 /// `;`, positions to 3 decimals and speeds to 2. A subtractive sphere is written with a negative radius.
+/// A centre coordinate is pulled in by a step of its last decimal where rounding would put the sphere
+/// past a wall, so that what is written always reads back as a valid sphere.
 pub fn spheres_text(spheres: &[Sphere]) -> String {
     let n = |x: f32, places: usize| {
         let t = format!("{x:.places$}");
@@ -117,8 +119,24 @@ pub fn spheres_text(spheres: &[Sphere]) -> String {
     spheres
         .iter()
         .map(|s| {
-            let mut parts: Vec<String> = s.center.to_array().iter().map(|&c| n(c, 3)).collect();
-            parts.push(n(s.signed_radius(), 3));
+            let radius = n(s.radius, 3).parse::<f32>().unwrap_or(s.radius);
+            let limit = BOX_HALF_EXTENT - radius;
+            let mut parts: Vec<String> = s
+                .center
+                .to_array()
+                .iter()
+                .map(|&c| {
+                    let mut t = n(c, 3);
+                    for step in 1..=3 {
+                        if !t.parse::<f32>().is_ok_and(|v| v.abs() > limit) {
+                            break;
+                        }
+                        t = n(c - c.signum() * 0.001 * step as f32, 3);
+                    }
+                    t
+                })
+                .collect();
+            parts.push(n(radius * s.charge, 3));
             let v: Vec<String> = s.velocity.to_array().iter().map(|&c| n(c, 2)).collect();
             if v.iter().any(|c| c != "0") {
                 parts.extend(v);
@@ -144,7 +162,7 @@ pub fn parse_spheres_text(text: &str) -> Result<Vec<Sphere>, SceneError> {
                 .map(|t| {
                     t.trim()
                         .parse::<f32>()
-                        .map_err(|_| SceneError(format!("{field}: {:?} is not a number", t.trim())))
+                        .map_err(|_| SceneError(format!("{field}: {} is not a number", quoted(t.trim()))))
                 })
                 .collect::<Result<Vec<f32>, _>>()?;
             let s = match numbers[..] {

@@ -23,9 +23,11 @@ impl Parameter {
             Kind::Number => {
                 let (min, max) = (self.min as f32, self.max as f32);
                 let expected = format!("a number from {min} to {max}");
-                let value: f64 = trimmed.parse().map_err(|_| invalid(expected.clone()))?;
-                check_f32(self.noun, value as f32, min, max)?;
-                Ok(Value::Number(value))
+                // Read as the f32 the renderer keeps, and held as that f32's shortest decimal: the
+                // value checked is the value used, and it reads back as itself.
+                let value: f32 = trimmed.parse().map_err(|_| invalid(expected.clone()))?;
+                check_f32(self.noun, value, min, max)?;
+                Ok(Value::Number(value.to_string().parse().unwrap_or(f64::from(value))))
             }
             Kind::Boolean => match trimmed.to_ascii_lowercase().as_str() {
                 "" | "1" | "true" | "on" | "yes" => Ok(Value::Boolean(true)),
