@@ -5,7 +5,7 @@
 
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { useServerAndBrowser, openClosedAfterEach, settledTriangles, screenshot, differingFraction } from './helpers.js';
+import { useServerAndBrowser, openClosedAfterEach, picture, settledTriangles, screenshot, differingFraction } from './helpers.js';
 
 useServerAndBrowser();
 
@@ -14,16 +14,6 @@ const open = openClosedAfterEach();
 const BALLS = '-0.3,0,0,0.32;0.25,0.1,0,0.3;0,-0.25,0.2,0.26';
 const set = (page, name, value) => page.$eval('metaballs-view', (e, [n, v]) => e.setAttribute(n, v), [name, value]);
 const drawn = (page) => page.waitForTimeout(400);
-
-// The figure's own picture (not a screenshot, which would include the notices over it), 480 pixels
-// wide whatever the canvas's pixel ratio.
-async function picture(page) {
-  return Buffer.from(await page.evaluate(async () => {
-    const e = window.metaballs.element;
-    const blob = await e.picture(480 / e.shadowRoot.querySelector('canvas').width);
-    return [...new Uint8Array(await blob.arrayBuffer())];
-  }));
-}
 
 test('display=exact, compare=split with its divider and compare=overlay change the picture and go into the link', async () => {
   const { page, errors } = await open(`?balls=${BALLS}&res=8&paused=1&aa=0&yaw=0&pitch=0`);

@@ -1,11 +1,13 @@
 // Device loss for real: Chromium's GPU process is killed while figures draw, as a driver reset or a GPU
-// crash would do. Every figure on the page must draw again, with its settings, without a reload.
+// crash would do. Every figure on the page must draw again, with its settings, without a reload. On
+// WebGL2 the context is lost and given back through WEBGL_lose_context, as the browser does after a
+// GPU reset: the figure draws again, and stops with "Try again" after three losses in a minute.
 
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { readdirSync, readFileSync } from 'node:fs';
 import { chromium } from 'playwright-core';
-import { useServerAndBrowser, baseUrl, browser, CHROMIUM, FLAGS, pixelStats } from './helpers.js';
+import { useServerAndBrowser, baseUrl, browser, CHROMIUM, FLAGS, differingFraction, open, picture, pixelStats } from './helpers.js';
 
 let server;
 useServerAndBrowser({
@@ -97,4 +99,57 @@ test('the full page draws again after the GPU process is killed', async () => {
   assert.equal(await page.isVisible('#message'), false, 'the page shows an error instead of drawing');
   assert.deepEqual(errors, []);
   await context.close();
+});
+
+// The figure's WebGL2 context, lost or given back (the canvas returns the context it already has; a
+// lost context gives no extensions, so the one taken before the loss is kept).
+const loseContext = (page, restore = false) => page.$eval('metaballs-view', (e, again) => {
+  const gl = e.shadowRoot.getElementById('view').getContext('webgl2');
+  if (!gl.isContextLost()) window.loseExtension = gl.getExtension('WEBGL_lose_context');
+  if (again) window.loseExtension.restoreContext();
+  else window.loseExtension.loseContext();
+}, restore);
+
+test('a WebGL2 figure whose context is lost draws again with its settings, and stops after three losses in a minute', async () => {
+  const { page, errors, close } = await open('?paused=1&res=32&aa=0&spheres=6&iso=0.9', {
+    initScript: () => { delete Navigator.prototype.gpu; },
+  });
+  try {
+    await page.waitForFunction(() => document.querySelector('metaballs-view').stats?.triangles > 0, null, { timeout: 30_000 });
+    await page.waitForTimeout(500);
+    assert.match(await page.textContent('#adapter'), /^WebGL2/);
+    const before = await picture(page);
+    for (let loss = 1; loss <= 2; loss++) {
+      const drawn = await page.$eval('metaballs-view', (e) => e.framesDrawn);
+      await loseContext(page);
+      await page.waitForFunction(() => /context was lost/.test(
+        document.querySelector('metaballs-view').shadowRoot.getElementById('notice').textContent), null, { timeout: 10_000 });
+      await page.waitForTimeout(300);
+      await loseContext(page, true);
+      const started = Date.now();
+      await page.waitForFunction((n) => {
+        const e = document.querySelector('metaballs-view');
+        return e.framesDrawn > n && e.stats.triangles > 0;
+      }, drawn, { timeout: 30_000 });
+      console.log(`loss ${loss}: drawn again ${Date.now() - started} ms after the context came back`);
+      assert.deepEqual(await page.$eval('metaballs-view', (e) => [e.spheres, e.iso, e.resolution]), [6, 0.9, 32]);
+      const differing = await differingFraction(page, before, await picture(page));
+      assert.ok(differing < 0.001, `${(100 * differing).toFixed(2)} % of the picture differs from the one before the loss`);
+    }
+    await loseContext(page);
+    await page.waitForSelector('#message:not([hidden])', { timeout: 10_000 });
+    assert.match(await page.textContent('#message-title'), /keeps failing/);
+    assert.match(await page.textContent('#message-text'), /lost 3 times within a minute/);
+    assert.equal(await page.isVisible('#retry'), true, 'the figure offers to try again');
+    await loseContext(page, true);
+    const drawn = await page.$eval('metaballs-view', (e) => e.framesDrawn);
+    await page.waitForTimeout(1000);
+    assert.equal(await page.$eval('metaballs-view', (e) => e.framesDrawn), drawn, 'a stopped figure waits for the person');
+    await page.click('#retry');
+    await page.waitForFunction((n) => document.querySelector('metaballs-view').framesDrawn > n, drawn, { timeout: 30_000 });
+    assert.equal(await page.isVisible('#message'), false);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
 });

@@ -139,6 +139,17 @@ export async function screenshot(page, name) {
 }
 
 // Pixel statistics of a canvas screenshot, computed in the page (it decodes PNGs for us).
+/**
+ * The first figure's own picture as PNG bytes (not a screenshot, which would include the notices over
+ * it), 480 pixels wide whatever the canvas's pixel ratio.
+ */
+export async function picture(page, selector = 'metaballs-view') {
+  return Buffer.from(await page.$eval(selector, async (e) => {
+    const blob = await e.picture(480 / e.shadowRoot.querySelector('canvas').width);
+    return [...new Uint8Array(await blob.arrayBuffer())];
+  }));
+}
+
 export async function pixelStats(page, png) {
   return page.evaluate(async (b64) => {
     const image = await createImageBitmap(await (await fetch(`data:image/png;base64,${b64}`)).blob());

@@ -4,6 +4,8 @@
 // a device per canvas), drives all of them from one requestAnimationFrame loop (which stops when none
 // needs a frame), and rebuilds every view on a new device when the device is lost.
 
+import { LossCount } from './losses.js';
+
 let wasm = null;
 let backend = null;
 let detectedAdapter = null;
@@ -129,10 +131,6 @@ export const WEBGL_WAIT = 'This browser has no WebGPU, so the figures draw with 
   + `only a few drawing contexts: ${MAX_WEBGL_FIGURES} figures are drawing already. This one starts when `
   + 'one of them is removed.';
 
-// Losses closer together than this count as one run; this many in a run and the hub stops retrying.
-const LOSS_WINDOW_MS = 60_000;
-const MAX_LOSSES = 3;
-
 class Hub {
   constructor() {
     this.gpu = null;
@@ -140,7 +138,7 @@ class Hub {
     this.adapter = null;
     this.elements = new Set();
     this.devicesCreated = 0;
-    this.losses = [];
+    this.losses = new LossCount();
     this.recovering = false;
     this.stopped = null;
     this.frameRequested = false;
@@ -279,17 +277,15 @@ class Hub {
     for (const element of this.elements) element.suspend(reason);
     try { this.gpu.free(); } catch { /* already gone */ }
     this.gpu = null;
-    const now = performance.now();
-    this.losses = this.losses.filter((t) => now - t < LOSS_WINDOW_MS);
-    this.losses.push(now);
-    if (this.losses.length >= MAX_LOSSES) {
+    const losses = this.losses.record();
+    if (this.losses.exhausted) {
       this.recovering = false;
-      this.stopped = `The GPU was lost ${this.losses.length} times within a minute (${reason}), so the figures stopped trying.`;
+      this.stopped = `The GPU was lost ${losses} times within a minute (${reason}), so the figures stopped trying.`;
       for (const element of this.elements) element.fail('The GPU keeps failing', this.stopped, { retry: true });
       return;
     }
     for (let attempt = 0; attempt < 6; attempt++) {
-      await new Promise((r) => setTimeout(r, 250 * 2 ** (this.losses.length - 1 + attempt)));
+      await new Promise((r) => setTimeout(r, this.losses.backoff(attempt)));
       try {
         await this.acquire();
         break;
@@ -310,7 +306,7 @@ class Hub {
   /** After the hub gave up: try again from scratch (an element's "Try again" button). */
   retry() {
     this.stopped = null;
-    this.losses = [];
+    this.losses.clear();
     this.reportedError = false;
     for (const element of this.elements) element.resume();
   }

@@ -8,6 +8,7 @@ import { applySetting, isRendererSetting } from './view-settings.js';
 import { canvasPixels, drawsExact, pixelRatio, SOFTWARE_EXACT_RATIO } from './canvas-size.js';
 import { CREATION, NAMES, defaultOf, defaults } from './figure-state.js';
 import { picturesTaken } from './figure-look.js';
+import { ContextWatch } from './context-watch.js';
 
 export class FigureFrames {
   #f;
@@ -33,6 +34,8 @@ export class FigureFrames {
   // Callers waiting for the next frame (`nextFrame()`): it is drawn even off screen or when still.
   #frameWaiters = [];
   #picturesSeen = 0;
+  // The canvas's WebGL2 context, lost and given back.
+  #context;
 
   /**
    * `figure`: { element, root, canvas, settings (a FigureState), guard, hud, look (a FigureLook),
@@ -41,6 +44,12 @@ export class FigureFrames {
    */
   constructor(figure) {
     this.#f = figure;
+    this.#context = new ContextWatch(figure.canvas, {
+      lost: (reason) => this.suspend(reason, 'The drawing context was lost; starting again…'),
+      restored: () => this.resume(),
+      stop: (count) => this.fail('The drawing context keeps failing',
+        `The WebGL2 context was lost ${count} times within a minute, so the figure stopped trying.`, { retry: true }),
+    });
   }
 
   /** The wasm view, once started. */
@@ -99,7 +108,7 @@ export class FigureFrames {
   }
 
   start(forPrint = false) {
-    if (this.#view || this.#starting || this.#failed || !(this.#near || forPrint)) return;
+    if (this.#view || this.#starting || this.#failed || this.#context.lost || !(this.#near || forPrint)) return;
     if (!this.#f.element.isConnected) return;
     // The panel follows what the device allows (its largest grid, compute shaders): a figure that
     // starts builds it just after its first frame, one that cannot start as soon as it knows.
@@ -194,19 +203,21 @@ export class FigureFrames {
     this.#gpu = null;
   }
 
-  /** The device is lost: keep the scene on the CPU and let go of the GPU. */
-  suspend(reason) {
+  /** The device is lost: keep the scene on the CPU and let go of the GPU (`text`: what the figure says). */
+  suspend(reason, text = `The GPU was lost (${reason}); starting again…`) {
     if (this.#view) {
       try {
         this.#savedSpheres = this.#view.spheres();
       } catch { /* keep what was saved before */ }
     }
     this.release();
-    if (this.#near) this.#f.notice(`The GPU was lost (${reason}); starting again…`, 4000);
+    if (this.#near) this.#f.notice(text, 4000);
   }
 
   /** A new device is ready (or a retry was asked for): start again with the current state. */
   resume() {
+    // A figure that had stopped starts a new run of losses.
+    if (this.#failed) this.#context.clear();
     this.#failed = false;
     this.#hideMessage();
     this.start();
