@@ -6,7 +6,7 @@
 // server-side build imports it safely); the wasm loads when the first figure is connected.
 
 import { makeFigureParts } from './lib/figure-parts.js';
-import { caseGallery, hub, loadWasm, propertyName, wasmLoaded } from './lib/engine.js';
+import { caseGallery, hub, loadWarning, loadWasm, propertyName, wasmLoaded } from './lib/engine.js';
 import { FigureBase } from './lib/figure-base.js';
 import { wireFigureGestures } from './lib/figure-gestures.js';
 import { buildPanel, listedControls } from './lib/panel.js';
@@ -155,6 +155,7 @@ export class MetaballsView extends FigureBase {
       if (!this.#started) {
         this.#started = true;
         if (this.#state.autoplay === 'off' || watch.reducedMotion.matches) this.#set('paused', true);
+        if (loadWarning()) this.#notice(loadWarning());
         // Very small figures start with their statistics folded, like the panel.
         this.#root.querySelector('#hud details').open = !(this.clientWidth > 0 && this.clientWidth < 300);
         // A figure without a poster is drawn once while the page is idle, so it prints as a picture.
@@ -166,7 +167,7 @@ export class MetaballsView extends FigureBase {
       // A figure about to start builds its panel once it knows its device (after its first frame).
       if (!this.#frames.starting) this.#buildPanel();
       this.#root.getElementById('hud').hidden = this.#state.hud !== 'on';
-    }, (error) => this.fail('The figure could not load', `${error?.message ?? error}`));
+    }, (error) => this.fail(error?.title ?? 'The figure could not load', `${error?.message ?? error}`));
     hub.register(this);
     watch.near.observe(this);
     watch.visible.observe(this);

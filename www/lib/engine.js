@@ -5,6 +5,7 @@
 // needs a frame), and rebuilds every view on a new device when the device is lost.
 
 import { LossCount } from './losses.js';
+import { describeLoadError, fetchWasm } from './asset-errors.js';
 
 let wasm = null;
 let backend = null;
@@ -72,12 +73,27 @@ export function setWasmSources(sources) {
   wasmSources = { ...sources };
 }
 
-// Imports a build's module while its wasm is fetched, and starts the wasm.
+// What the figures should be told once the wasm is in (it came with the wrong type), or null.
+let warning = null;
+/** A notice for every figure about how the wasm was served, or null. */
+export const loadWarning = () => warning;
+
+// Imports a build's module while its wasm is fetched, and starts the wasm; a failure says what failed
+// and what to do.
 async function start(build) {
-  const bytes = wasmSources[build.name]?.() ?? fetch(build.wasm());
-  const module = await build.glue();
-  await module.default({ module_or_path: bytes });
-  return module;
+  const url = build.wasm();
+  const given = wasmSources[build.name];
+  const fetched = given ? Promise.resolve({ source: given(), warning: null }) : fetchWasm(url);
+  fetched.catch(() => { /* reported below */ });
+  try {
+    const module = await build.glue();
+    const wasmFile = await fetched;
+    await module.default({ module_or_path: wasmFile.source });
+    warning = wasmFile.warning;
+    return module;
+  } catch (error) {
+    throw describeLoadError(error, url);
+  }
 }
 
 // A WebGPU device asked for as soon as its build has started, while the page still looks for an adapter
