@@ -107,6 +107,8 @@ export declare class MetaballsView extends HTMLElement {
   pause_on: 'none' | 'merge';
   /** Max-pixel-ratio: 0.25 to 4. Attribute `max-pixel-ratio`; default 2. */
   maxPixelRatio: number;
+  /** Min-render-scale: 0.25 to 1. Attribute `min-render-scale`; default 0.5. */
+  minRenderScale: number;
   /** The figure's accessible name (without it, one is made from what it shows). Attribute `alt`; default "". */
   alt: string;
   /** An image URL shown before the first frame and in print until a frame is drawn. Attribute `poster`; default "". */

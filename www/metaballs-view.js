@@ -235,7 +235,8 @@ export class MetaballsView extends FigureBase {
     // The panel is first built when the figure starts (after the attributes are read).
     if (name === 'controls' && this.#started) this.#buildPanel();
     if (name === 'hud') this.#root.getElementById('hud').hidden = value !== 'on';
-    if (name === 'max-pixel-ratio') this.#frames.resize();
+    // A still figure draws at full scale; an animating one at its render scale.
+    if (['max-pixel-ratio', 'min-render-scale', 'paused', 'speed'].includes(name)) this.#frames.resize();
     if (name === 'paused') this.#root.getElementById('play').hidden = !this.#showsPlayButton();
     if (name === 'edit') {
       this.#editor.reset();
@@ -395,6 +396,9 @@ export class MetaballsView extends FigureBase {
 
   /** Figures of the newest frames: triangles, fps, frame time (ms), adapter, overflowed. */
   get stats() { return { ...this.#hud.stats }; }
+
+  /** The fraction of its pixel ratio the figure draws at now (lower while frames are slow). */
+  get renderScale() { return this.#frames.renderScale; }
 
   /** Frames this element has drawn (none while off screen). */
   get framesDrawn() { return this.#frames.framesDrawn; }

@@ -33,6 +33,7 @@ pub const NOT_IN_SCENE: &[&str] = &[
     "autoplay",
     "pause_on",
     "max-pixel-ratio",
+    "min-render-scale",
     "edit",
     "theme",
     "alt",

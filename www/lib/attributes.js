@@ -45,6 +45,7 @@ export const TABLE = Object.freeze([
   {"name":"autoplay","url":"autoplay","label":"Autoplay","kind":"choice","words":["visible","off"],"min":0,"max":0,"sliderMin":0,"sliderMax":0,"step":0,"default":"visible","value":"visible"},
   {"name":"pause_on","url":"pause_on","label":"Pause on","kind":"choice","words":["none","merge"],"min":0,"max":0,"sliderMin":0,"sliderMax":0,"step":0,"default":"none","value":"none"},
   {"name":"max-pixel-ratio","url":"max_pixel_ratio","label":"Pixel ratio","kind":"number","words":[],"min":0.25,"max":4,"sliderMin":0.25,"sliderMax":4,"step":0.25,"default":"2","value":2},
+  {"name":"min-render-scale","url":"min_render_scale","label":"Lowest render scale","kind":"number","words":[],"min":0.25,"max":1,"sliderMin":0.25,"sliderMax":1,"step":0.05,"default":"0.5","value":0.5},
   {"name":"alt","url":"alt","label":"Description","kind":"text","words":[],"min":0,"max":0,"sliderMin":0,"sliderMax":0,"step":0,"default":"","value":""},
   {"name":"poster","url":"poster","label":"Poster","kind":"text","words":[],"min":0,"max":0,"sliderMin":0,"sliderMax":0,"step":0,"default":"","value":""},
   {"name":"sync","url":"sync","label":"Sync group","kind":"text","words":[],"min":0,"max":0,"sliderMin":0,"sliderMax":0,"step":0,"default":"","value":""},

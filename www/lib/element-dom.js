@@ -326,6 +326,7 @@ export const TEMPLATE = `
     <div class="wide"><span class="key">Frame</span> <span id="frame-time">–</span></div>
     <div><span class="key">Triangles</span> <span id="triangles">–</span></div>
     <div class="wide"><span class="key">Adapter</span> <span id="adapter">–</span></div>
+    <div class="wide" title="The fraction of the pixel ratio drawn: lower while frames are slow"><span class="key">Scale</span> <span id="hud-scale">–</span></div>
     <div id="hud-error" hidden><span class="key">Error</span> <span id="hud-error-text"></span></div>
     <div id="hud-topology" hidden><span class="key">Topology</span> <span id="hud-topology-text"></span></div>
     <div id="hud-quality" hidden><span class="key">Quality</span> <span id="hud-quality-bars" role="img"></span></div>

@@ -4,6 +4,7 @@
 
 import { hub, setWasmSources } from './engine.js';
 import { NAMES } from './figure-state.js';
+import { frameBudget, setFrameBudget } from './render-scale.js';
 
 const Base = globalThis.HTMLElement ?? class {};
 
@@ -25,6 +26,12 @@ export class FigureBase extends Base {
    * connects): `{ webgpu, webgl2 }`, functions returning the wasm's bytes or Response, or promises of them.
    */
   static set wasmSources(sources) { setWasmSources(sources); }
+  /**
+   * The time between the page's frames the figures aim for, in ms (30): a figure whose frames take
+   * longer lowers its render scale, down to its `min-render-scale`.
+   */
+  static get frameBudget() { return frameBudget(); }
+  static set frameBudget(ms) { setFrameBudget(ms); }
   /** Destroys the shared device, as a driver reset would (for testing recovery). */
   static destroyDevice() { hub.gpu?.destroy(); hub.requestFrame(); }
 }

@@ -5,10 +5,10 @@
 
 import { hub, wasmModule, within, WEBGL_WAIT } from './engine.js';
 import { applySetting, isRendererSetting } from './view-settings.js';
-import { canvasPixels, drawsExact, pixelRatio, SOFTWARE_EXACT_RATIO } from './canvas-size.js';
 import { CREATION, NAMES, defaultOf, defaults } from './figure-state.js';
 import { picturesTaken } from './figure-look.js';
 import { ContextWatch } from './context-watch.js';
+import { FigureSize } from './figure-size.js';
 
 export class FigureFrames {
   #f;
@@ -20,7 +20,6 @@ export class FigureFrames {
   #onScreen = false;
   #failed = false;
   #software = false;
-  #exactNoticed = false;
   // The sync leader's frame whose spheres this figure last took.
   #ledFrame = -1;
   #savedSpheres = null;
@@ -36,6 +35,8 @@ export class FigureFrames {
   #picturesSeen = 0;
   // The canvas's WebGL2 context, lost and given back.
   #context;
+  // The canvas's size, with the render scale that follows the frame times.
+  #size;
 
   /**
    * `figure`: { element, root, canvas, settings (a FigureState), guard, hud, look (a FigureLook),
@@ -44,6 +45,7 @@ export class FigureFrames {
    */
   constructor(figure) {
     this.#f = figure;
+    this.#size = new FigureSize(figure.canvas, () => figure.settings.state, figure.hud);
     this.#context = new ContextWatch(figure.canvas, {
       lost: (reason) => this.suspend(reason, 'The drawing context was lost; starting again…'),
       restored: () => this.resume(),
@@ -143,11 +145,12 @@ export class FigureFrames {
     const webgl = !gpu.has_compute();
     const settings = f.settings;
     this.#software = Boolean(hub.adapter?.software || gpu.is_fallback());
+    this.#size.software = this.#software;
     f.hud.setAdapter(hub.adapter?.label ?? 'WebGPU');
     if (this.#software && !settings.given.has('antialiasing')) settings.state.antialiasing = false;
     f.guard.start(this.#software || webgl);
     for (const name of f.guard.startAffordably(settings.state, defaults())) settings.reflect(name);
-    this.sizeCanvas();
+    this.#size.fit();
     const s = settings.state;
     const create = (resolution) => within(f.element, () => wasmModule().View.create(
       gpu, f.canvas, s.spheres, s.iso, resolution, s.seed, s.antialiasing));
@@ -275,12 +278,9 @@ export class FigureFrames {
   // The exact surface is ray cast per pixel: on a software adapter at a lower pixel ratio, said once.
   #exactChanged() {
     this.resize();
-    const exact = drawsExact(this.#f.settings.state);
-    if (exact && this.#software && !this.#exactNoticed) {
-      this.#exactNoticed = true;
-      this.#f.notice(`The exact surface is drawn at ${SOFTWARE_EXACT_RATIO}× pixel ratio on this software renderer.`, 4000);
-    }
+    this.#size.exactChanged((text) => this.#f.notice(text, 4000));
   }
+
 
   /**
    * One animation frame of the page: draws if the figure is on screen and has something to show.
@@ -300,6 +300,7 @@ export class FigureFrames {
       return true;
     }
     const state = f.settings.state;
+    let animating = false;
     try {
       this.apply();
       const background = f.look.backgroundChange(now);
@@ -323,7 +324,7 @@ export class FigureFrames {
       }
       // A sphere being dragged holds the animation still.
       // So does a shape check that pause_on=merge waits for.
-      const animating = !leader && !state.paused && state.speed > 0 && !f.editor().dragging && !f.topology().holding;
+      animating = !leader && !state.paused && state.speed > 0 && !f.editor().dragging && !f.topology().holding;
       if (animating || this.#dirty > 0 || this.#stepRequested || view.needs_redraw()) {
         const dt = animating ? elapsed * state.speed : this.#stepRequested ? 1 / 60 : 0;
         this.#stepRequested = false;
@@ -360,6 +361,7 @@ export class FigureFrames {
       const pictures = picturesTaken();
       if (!state.paused && pictures === this.#picturesSeen) this.#observeCost(frameMs);
       this.#picturesSeen = pictures;
+      if (animating && this.#size.observe(frameMs)) this.resize();
     }
     f.inspector().follow(now);
     if (state.edit) f.editor().draw();
@@ -375,30 +377,21 @@ export class FigureFrames {
     this.#f.guard.observe(this.#f.settings.applied, ms);
   }
 
-  #ratio() {
-    const s = this.#f.settings.state;
-    return pixelRatio(s['max-pixel-ratio'], this.#software, drawsExact(s));
-  }
+  /** The render scale in effect: 1 while the figure is still. */
+  get renderScale() { return this.#size.renderScale; }
 
-  sizeCanvas() {
-    const canvas = this.#f.canvas;
-    [canvas.width, canvas.height] = canvasPixels(canvas, this.#ratio());
-  }
-
+  /** Fits the canvas to its box, pixel ratio and render scale; a new size is drawn again. */
   resize(entry) {
-    const canvas = this.#f.canvas;
-    const [width, height] = canvasPixels(canvas, this.#ratio(), entry);
-    if (canvas.width === width && canvas.height === height) return;
-    canvas.width = width;
-    canvas.height = height;
-    if (!this.#view) return;
+    const size = this.#size.fit(entry);
+    if (!size || !this.#view) return;
     try {
-      this.#view.resize(width, height);
+      this.#view.resize(...size);
     } catch (error) {
       this.#f.notice(error.message);
     }
     this.redraw(2);
   }
+
 
   /**
    * Resolves after a frame of the current settings has been drawn: the renderer is started and a frame

@@ -17,7 +17,7 @@ export class Hud {
     this.frames = 0;
     this.since = 0;
     this.overflows = 0;
-    this.stats = { triangles: 0, fps: 0, frameTime: 0, adapter: '', mesher: '', overflowed: false, lod: null, error: null, quality: null, topology: null };
+    this.stats = { triangles: 0, fps: 0, frameTime: 0, adapter: '', mesher: '', overflowed: false, lod: null, error: null, quality: null, topology: null, renderScale: 1 };
     this.adapterLabel = '';
   }
 
@@ -31,6 +31,12 @@ export class Hud {
     const mesher = this.stats.mesher ? ` · ${this.stats.mesher.toUpperCase()} meshing` : '';
     this.stats.adapter = `${this.adapterLabel}${mesher}`;
     this.root.getElementById('adapter').textContent = this.stats.adapter;
+  }
+
+  /** The render scale (a fraction of the pixel ratio) and the canvas's size in pixels. */
+  setScale(scale, width, height) {
+    this.stats.renderScale = scale;
+    this.root.getElementById('hud-scale').textContent = `${scale.toFixed(2)}× · ${width}×${height}`;
   }
 
   /** Counts a frame drawn. */

@@ -1,0 +1,62 @@
+// A semester of use in headless Chromium (SwiftShader): the render scale falls while frames are over
+// the page's budget and rises again when they are fast, down to `min-render-scale`, and a still figure
+// draws at full scale.
+
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { useServerAndBrowser, openClosedAfterEach } from './helpers.js';
+
+useServerAndBrowser();
+const open = openClosedAfterEach();
+
+const figure = (page) => page.$eval('metaballs-view', (e) => ({
+  scale: e.renderScale,
+  width: e.shadowRoot.getElementById('view').width,
+  cssWidth: e.shadowRoot.getElementById('view').clientWidth,
+  hud: e.shadowRoot.getElementById('hud-scale').textContent,
+}));
+const setBudget = (page, ms) => page.evaluate((b) => { customElements.get('metaballs-view').frameBudget = b; }, ms);
+const waitForScale = (page, test, timeout = 30_000) => page.waitForFunction(
+  (t) => new Function('s', `return ${t}`)(document.querySelector('metaballs-view').renderScale), String(test), { timeout });
+
+test('a slow budget lowers the render scale to its floor, a fast one restores it, and a still figure draws at full scale', async () => {
+  const { page, errors } = await open('tests/e2e/fixtures/grid.html?n=1&cols=1&res=32&hud=on');
+  await page.waitForFunction(() => document.querySelector('metaballs-view').stats?.triangles > 0, null, { timeout: 30_000 });
+  // Held under a fast budget first: on this machine the figure's own frames are over the real one.
+  await setBudget(page, 10_000);
+  await waitForScale(page, 's === 1');
+  const full = await figure(page);
+  assert.equal(full.width, full.cssWidth, 'a software renderer draws at pixel ratio 1');
+
+  await setBudget(page, 0.5);
+  let started = Date.now();
+  await waitForScale(page, 's === 0.5');
+  const low = await figure(page);
+  console.log(`over budget: scale ${low.scale} after ${Date.now() - started} ms, canvas ${low.width} of ${low.cssWidth} px, HUD "${low.hud}"`);
+  assert.equal(low.width, Math.round(low.cssWidth / 2));
+  assert.match(low.hud, /^0\.50× · \d+×\d+$/);
+
+  // Paused, the figure draws once at full scale; playing again, it goes back to its scale.
+  await page.$eval('metaballs-view', (e) => e.pause());
+  await page.waitForFunction(() => {
+    const canvas = document.querySelector('metaballs-view').shadowRoot.getElementById('view');
+    return canvas.width === canvas.clientWidth;
+  });
+  assert.equal((await figure(page)).scale, 1);
+  await page.$eval('metaballs-view', (e) => e.play());
+  assert.equal((await figure(page)).scale, 0.5);
+
+  // A higher floor holds.
+  await page.$eval('metaballs-view', (e) => e.setAttribute('min-render-scale', '0.7'));
+  await waitForScale(page, 's === 0.7');
+  await page.waitForTimeout(1500);
+  assert.equal((await figure(page)).scale, 0.7);
+
+  await setBudget(page, 10_000);
+  started = Date.now();
+  await waitForScale(page, 's === 1');
+  console.log(`under budget: back to scale 1 after ${Date.now() - started} ms`);
+  assert.equal((await figure(page)).width, full.width);
+  await setBudget(page, 0);
+  assert.deepEqual(errors, []);
+});
