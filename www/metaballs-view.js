@@ -27,7 +27,7 @@ export class MetaballsView extends FigureBase {
   /** GPU memory held by every element's buffers and targets, in bytes. */
   static get gpuBytes() {
     let bytes = 0;
-    for (const element of hub.elements) bytes += element.#frames.view?.gpu_bytes() ?? 0;
+    for (const element of hub.elements) bytes += element.gpuBytes;
     return bytes;
   }
 
@@ -396,6 +396,9 @@ export class MetaballsView extends FigureBase {
 
   /** Figures of the newest frames: triangles, fps, frame time (ms), adapter, overflowed. */
   get stats() { return { ...this.#hud.stats }; }
+
+  /** GPU memory this figure's renderer holds, in bytes (0 while it has none, as when long off screen). */
+  get gpuBytes() { return this.#frames.view?.gpu_bytes() ?? 0; }
 
   /** The fraction of its pixel ratio the figure draws at now (lower while frames are slow). */
   get renderScale() { return this.#frames.renderScale; }

@@ -1,10 +1,11 @@
 // A semester of use in headless Chromium (SwiftShader): the render scale falls while frames are over
 // the page's budget and rises again when they are fast, down to `min-render-scale`, and a still figure
-// draws at full scale.
+// draws at full scale; a figure long off screen lets go of its GPU memory and comes back with the same
+// picture.
 
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { useServerAndBrowser, openClosedAfterEach } from './helpers.js';
+import { useServerAndBrowser, openClosedAfterEach, picture, differingFraction } from './helpers.js';
 
 useServerAndBrowser();
 const open = openClosedAfterEach();
@@ -58,5 +59,31 @@ test('a slow budget lowers the render scale to its floor, a fast one restores it
   console.log(`under budget: back to scale 1 after ${Date.now() - started} ms`);
   assert.equal((await figure(page)).width, full.width);
   await setBudget(page, 0);
+  assert.deepEqual(errors, []);
+});
+
+test('a figure off screen for a while lets go of its GPU memory and, back on screen, draws the same picture', async () => {
+  const { page, errors } = await open('tests/e2e/fixtures/five.html', { viewport: { width: 840, height: 600 } });
+  await page.waitForFunction(() => document.getElementById('a').stats?.triangles > 0, null, { timeout: 30_000 });
+  await page.$eval('#a', async (e) => { e.pause(); await e.nextFrame(); });
+  const before = await picture(page, '#a');
+  const bytes = await page.$eval('#a', (e) => e.gpuBytes);
+  const renderers = await page.evaluate(() => customElements.get('metaballs-view').liveRenderers);
+  assert.ok(bytes > 0);
+  await page.evaluate(() => { customElements.get('metaballs-view').releaseAfter = 1000; });
+  await page.$eval('#c', (e) => e.scrollIntoView());
+  await page.waitForFunction(() => document.getElementById('a').gpuBytes === 0, null, { timeout: 10_000 });
+  // Figure c has started meanwhile; a and b have let go of theirs.
+  await page.waitForFunction(() => customElements.get('metaballs-view').liveRenderers === 1, null, { timeout: 10_000 });
+  console.log(`off screen: figure a went from ${bytes} GPU bytes to 0; ${renderers} renderers became 1`);
+  await page.evaluate(() => window.scrollTo(0, 0));
+  const back = performance.now();
+  await page.waitForFunction(() => document.getElementById('a').gpuBytes > 0 && document.getElementById('a').framesDrawn > 0,
+    null, { timeout: 10_000 });
+  await page.$eval('#a', (e) => e.nextFrame());
+  console.log(`back on screen: figure a drew again within ${Math.round(performance.now() - back)} ms`);
+  assert.equal(await page.$eval('#a', (e) => e.gpuBytes), bytes);
+  const differing = await differingFraction(page, before, await picture(page, '#a'));
+  assert.equal(differing, 0, `${(100 * differing).toFixed(3)} % of the picture changed`);
   assert.deepEqual(errors, []);
 });

@@ -5,6 +5,7 @@
 import { hub, setWasmSources } from './engine.js';
 import { NAMES } from './figure-state.js';
 import { frameBudget, setFrameBudget } from './render-scale.js';
+import { releaseDelay, setReleaseDelay } from './page-watch.js';
 
 const Base = globalThis.HTMLElement ?? class {};
 
@@ -32,6 +33,9 @@ export class FigureBase extends Base {
    */
   static get frameBudget() { return frameBudget(); }
   static set frameBudget(ms) { setFrameBudget(ms); }
+  /** How long a figure stays off screen before it lets go of its GPU memory, in ms (30 000). */
+  static get releaseAfter() { return releaseDelay(); }
+  static set releaseAfter(ms) { setReleaseDelay(ms); }
   /** Destroys the shared device, as a driver reset would (for testing recovery). */
   static destroyDevice() { hub.gpu?.destroy(); hub.requestFrame(); }
 }

@@ -9,6 +9,7 @@ import { CREATION, NAMES, defaultOf, defaults } from './figure-state.js';
 import { picturesTaken } from './figure-look.js';
 import { ContextWatch } from './context-watch.js';
 import { FigureSize } from './figure-size.js';
+import { releaseDelay } from './page-watch.js';
 
 export class FigureFrames {
   #f;
@@ -37,6 +38,7 @@ export class FigureFrames {
   #context;
   // The canvas's size, with the render scale that follows the frame times.
   #size;
+  #restTimer = 0;
 
   /**
    * `figure`: { element, root, canvas, settings (a FigureState), guard, hud, look (a FigureLook),
@@ -95,15 +97,33 @@ export class FigureFrames {
     hub.requestFrame();
   }
 
-  /** The figure entered or left the screen. */
+  /**
+   * The figure entered or left the screen. Off screen for a while, it lets go of its renderer's GPU
+   * memory and keeps its scene on the CPU; back on screen, it starts again from it.
+   */
   setOnScreen(onScreen) {
     this.#onScreen = onScreen;
     this.#last = 0;
-    if (onScreen) hub.requestFrame();
+    clearTimeout(this.#restTimer);
+    if (onScreen) {
+      this.start();
+      hub.requestFrame();
+    } else {
+      this.#restTimer = setTimeout(() => this.#rest(), releaseDelay());
+    }
+  }
+
+  #rest() {
+    if (this.#onScreen || !this.#view || this.#held || this.#frameWaiters.length) return;
+    try {
+      this.#savedSpheres = this.#view.spheres();
+    } catch { /* keep what was saved before */ }
+    this.release();
   }
 
   /** The figure left the page: free the renderer and forget where it was. */
   detach() {
+    clearTimeout(this.#restTimer);
     this.release();
     this.#near = false;
     this.#onScreen = false;

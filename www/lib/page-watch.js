@@ -1,10 +1,19 @@
 // What every figure on the page shares, made when the first one is connected (never at import): a
 // pair of observers (one starts elements as they come near the viewport, the other tells whether each
-// is on screen at all), and the page's visibility and colour-scheme listeners.
+// is on screen at all), the page's visibility and colour-scheme listeners, and how long a figure
+// off screen keeps its GPU memory.
 
 import { hub } from './engine.js';
 
 let page = null;
+
+/** How long a figure stays off screen before it lets go of its GPU memory, in ms. */
+export const RELEASE_AFTER_MS = 30_000;
+let releaseAfter = RELEASE_AFTER_MS;
+export const releaseDelay = () => releaseAfter;
+export function setReleaseDelay(ms) {
+  releaseAfter = Number.isFinite(ms) && ms >= 0 ? ms : RELEASE_AFTER_MS;
+}
 
 /** The page's shared observers and listeners (made on the first call). */
 export function pageWatch() {
