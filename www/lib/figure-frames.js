@@ -207,6 +207,8 @@ export class FigureFrames {
     this.#hideMessage();
     this.#dirty = 3;
     this.#last = 0;
+    // Started near the screen but not on it: it lets go again unless it comes on screen.
+    if (!this.#onScreen) this.setOnScreen(false);
     hub.requestFrame();
     requestAnimationFrame(() => setTimeout(() => f.element.isConnected && f.buildPanel()));
     return true;
@@ -243,7 +245,8 @@ export class FigureFrames {
     if (this.#failed) this.#context.clear();
     this.#failed = false;
     this.#hideMessage();
-    this.start();
+    // One off screen starts when it comes back.
+    if (this.#onScreen) this.start();
   }
 
   /** Shows a message in the figure's box and stops drawing it. */
