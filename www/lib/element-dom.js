@@ -362,3 +362,18 @@ export function flasher(root) {
     timers[id] = setTimeout(() => { box.hidden = true; }, ms);
   };
 }
+
+/** The figure's message box (`#message` in `root`): a title, a text and perhaps "Try again". */
+export function messageBox(root) {
+  const $ = (id) => root.getElementById(id);
+  return {
+    show(title, text, retry = false) {
+      $('message-title').textContent = title;
+      $('message-text').textContent = text;
+      $('retry').hidden = !retry;
+      $('message').hidden = false;
+    },
+    hide() { $('message').hidden = true; },
+    get text() { return $('message-text').textContent; },
+  };
+}

@@ -5,10 +5,11 @@
 
 import { hub, wasmModule, within, WEBGL_WAIT } from './engine.js';
 import { applySetting, isRendererSetting } from './view-settings.js';
-import { CREATION, NAMES, defaultOf, defaults } from './figure-state.js';
 import { picturesTaken } from './figure-look.js';
 import { ContextWatch } from './context-watch.js';
+import { messageBox } from './element-dom.js';
 import { FigureSize } from './figure-size.js';
+import { makeView } from './view-start.js';
 import { releaseDelay } from './page-watch.js';
 
 export class FigureFrames {
@@ -39,6 +40,7 @@ export class FigureFrames {
   // The canvas's size, with the render scale that follows the frame times.
   #size;
   #restTimer = 0;
+  #message;
 
   /**
    * `figure`: { element, root, canvas, settings (a FigureState), guard, hud, look (a FigureLook),
@@ -47,6 +49,7 @@ export class FigureFrames {
    */
   constructor(figure) {
     this.#f = figure;
+    this.#message = messageBox(figure.root);
     this.#size = new FigureSize(figure.canvas, () => figure.settings.state, figure.hud);
     this.#context = new ContextWatch(figure.canvas, {
       lost: (reason) => this.suspend(reason, 'The drawing context was lost; starting again…'),
@@ -154,7 +157,7 @@ export class FigureFrames {
     }
     if (gpu === null) {
       this.#failed = true;
-      this.#showMessage('Paused', WEBGL_WAIT);
+      this.#message.show('Paused', WEBGL_WAIT);
       return false;
     }
     if (!f.element.isConnected || this.#view) {
@@ -162,38 +165,16 @@ export class FigureFrames {
       return false;
     }
     this.#gpu = gpu;
-    const webgl = !gpu.has_compute();
-    const settings = f.settings;
     this.#software = Boolean(hub.adapter?.software || gpu.is_fallback());
     this.#size.software = this.#software;
-    f.hud.setAdapter(hub.adapter?.label ?? 'WebGPU');
-    if (this.#software && !settings.given.has('antialiasing')) settings.state.antialiasing = false;
-    f.guard.start(this.#software || webgl);
-    for (const name of f.guard.startAffordably(settings.state, defaults())) settings.reflect(name);
     this.#size.fit();
-    const s = settings.state;
-    const create = (resolution) => within(f.element, () => wasmModule().View.create(
-      gpu, f.canvas, s.spheres, s.iso, resolution, s.seed, s.antialiasing));
     try {
-      // With level of detail the resolution may be beyond a uniform grid's: the view starts uniform and
-      // takes both from the `lod` setting below.
-      this.#view = create(s.lod ? defaultOf('resolution') : s.resolution);
+      this.#view = makeView(f, gpu, this.#software);
     } catch (error) {
-      // Most likely a resolution beyond this device: start at the default and say why.
-      const fallback = defaultOf('resolution');
-      f.notice(`resolution ${s.resolution}: ${error.message}`);
-      s.resolution = fallback;
-      try {
-        this.#view = create(fallback);
-      } catch (again) {
-        this.fail('The figure could not start', again.message);
-        return false;
-      }
+      this.fail('The figure could not start', error.message);
+      return false;
     }
     f.look.forgetBackground();
-    settings.applied = { ...s };
-    settings.changed = new Set(NAMES.filter((name) => (isRendererSetting(name) && !CREATION.has(name))
-      || (name === 'balls' && s.balls)));
     this.apply();
     if (this.#savedSpheres) {
       try {
@@ -204,7 +185,7 @@ export class FigureFrames {
       this.#savedSpheres = null;
     }
     f.editor().reset();
-    this.#hideMessage();
+    this.#message.hide();
     this.#dirty = 3;
     this.#last = 0;
     // Started near the screen but not on it: it lets go again unless it comes on screen.
@@ -244,7 +225,7 @@ export class FigureFrames {
     // A figure that had stopped starts a new run of losses.
     if (this.#failed) this.#context.clear();
     this.#failed = false;
-    this.#hideMessage();
+    this.#message.hide();
     // One off screen starts when it comes back.
     if (this.#onScreen) this.start();
   }
@@ -253,20 +234,8 @@ export class FigureFrames {
   fail(title, text, { retry = false } = {}) {
     this.#failed = true;
     this.release();
-    this.#showMessage(title, text, retry);
+    this.#message.show(title, text, retry);
     this.#f.emit('metaballs-error', { message: `${title}: ${text}` });
-  }
-
-  #showMessage(title, text, retry = false) {
-    const $ = (id) => this.#f.root.getElementById(id);
-    $('message-title').textContent = title;
-    $('message-text').textContent = text;
-    $('retry').hidden = !retry;
-    $('message').hidden = false;
-  }
-
-  #hideMessage() {
-    this.#f.root.getElementById('message').hidden = true;
   }
 
   // Pushes the changed values into the renderer. A value it refuses (a resolution beyond the device)
@@ -443,7 +412,7 @@ export class FigureFrames {
   /** Resolves once the renderer has started (or rejects with why it could not). */
   async ready() {
     while (!this.#view) {
-      if (this.#failed) throw new Error(this.#f.root.getElementById('message-text').textContent);
+      if (this.#failed) throw new Error(this.#message.text);
       await new Promise((r) => setTimeout(r, 50));
     }
   }
