@@ -78,6 +78,8 @@ test(`a page of 12 figures used for ${SECONDS} s stays within 10 % of its memory
   await page.waitForFunction(() => [...document.querySelectorAll('metaballs-view')].slice(0, 4)
     .every((e) => e.stats?.triangles > 0), null, { timeout: 60_000 });
   await page.evaluate(() => { customElements.get('metaballs-view').releaseAfter = 2000; });
+  const first = await measure(page, cdp);
+  console.log(`at the start: JS heap ${(first.heap / 1e6).toFixed(2)} MB, GPU ${(first.gpu / 1e6).toFixed(2)} MB`);
   // The same settings at both ends means the same scene too: the figures are paused on spheres
   // given by attribute (the soak plays and pauses them at random).
   await page.$$eval('metaballs-view', (all) => all.slice(0, 4).forEach((e) => {

@@ -81,8 +81,10 @@ export const loadWarning = () => warning;
 // Imports a build's module while its wasm is fetched, and starts the wasm; a failure says what failed
 // and what to do.
 async function start(build) {
-  const url = build.wasm();
+  // The wasm's place beside this module, only where it is fetched from there: a module imported from
+  // a blob: URL (a notebook widget's) has no place to resolve it against, and is given its wasm.
   const given = wasmSources[build.name];
+  const url = given ? `the ${build.name} build's WebAssembly` : build.wasm();
   const fetched = given ? Promise.resolve({ source: given(), warning: null }) : fetchWasm(url);
   fetched.catch(() => { /* reported below */ });
   try {
