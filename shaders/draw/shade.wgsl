@@ -68,29 +68,44 @@ fn view_direction(world: vec3<f32>) -> vec3<f32> {
     return normalize(shading.camera_position - world);
 }
 
+// The light slots a pipeline may light with: bit i for `shading.lights[i]` (1 point, 2 directional,
+// 4 spot). The surface pipeline is built for the slots that are on, so a software rasteriser skips the
+// others' arithmetic; every other pipeline keeps all three and skips a slot whose kind is off.
+override LIGHT_SLOTS: u32 = 7u;
+
+// One light's Blinn-Phong term for surface colour `albedo` at `world` with unit normal `n`, seen along `v`.
+fn light_term(light: Light, albedo: vec3<f32>, world: vec3<f32>, n: vec3<f32>, v: vec3<f32>) -> vec3<f32> {
+    if (light.kind == 0u) {
+        return vec3<f32>(0.0);
+    }
+    var l = -light.direction;
+    var strength = 1.0;
+    if (light.kind != LIGHT_DIRECTIONAL) {
+        l = normalize(light.position - world);
+    }
+    if (light.kind == LIGHT_SPOT) {
+        strength = smoothstep(light.cos_outer, light.cos_inner, dot(-l, light.direction));
+    }
+    let lambert = max(dot(n, l), 0.0);
+    var highlight = 0.0;
+    if (lambert > 0.0) {
+        highlight = pow(max(dot(n, normalize(l + v)), 0.0), shading.shininess);
+    }
+    return strength * light.color * (albedo * shading.diffuse * lambert + vec3<f32>(shading.specular * highlight));
+}
+
 // Blinn-Phong for surface colour `albedo` at `world` with unit normal `n`, summed over the lights.
 fn lit(albedo: vec3<f32>, world: vec3<f32>, n: vec3<f32>) -> vec3<f32> {
     let v = view_direction(world);
     var color = albedo * shading.ambient;
-    for (var i = 0u; i < 3u; i++) {
-        let light = shading.lights[i];
-        if (light.kind == 0u) {
-            continue;
-        }
-        var l = -light.direction;
-        var strength = 1.0;
-        if (light.kind != LIGHT_DIRECTIONAL) {
-            l = normalize(light.position - world);
-        }
-        if (light.kind == LIGHT_SPOT) {
-            strength = smoothstep(light.cos_outer, light.cos_inner, dot(-l, light.direction));
-        }
-        let lambert = max(dot(n, l), 0.0);
-        var highlight = 0.0;
-        if (lambert > 0.0) {
-            highlight = pow(max(dot(n, normalize(l + v)), 0.0), shading.shininess);
-        }
-        color += strength * light.color * (albedo * shading.diffuse * lambert + vec3<f32>(shading.specular * highlight));
+    if ((LIGHT_SLOTS & 1u) != 0u) {
+        color += light_term(shading.lights[0], albedo, world, n, v);
+    }
+    if ((LIGHT_SLOTS & 2u) != 0u) {
+        color += light_term(shading.lights[1], albedo, world, n, v);
+    }
+    if ((LIGHT_SLOTS & 4u) != 0u) {
+        color += light_term(shading.lights[2], albedo, world, n, v);
     }
     return color;
 }

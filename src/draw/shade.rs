@@ -17,7 +17,11 @@ const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 pub struct ShadePipelines {
     background: wgpu::RenderPipeline,
     box_edges: wgpu::RenderPipeline,
-    surface: wgpu::RenderPipeline,
+    /// The surface's pipeline for each set of lights (`LIGHT_SLOTS` in the shader), drawing both sides
+    /// or front faces only (`+ 8`), built on first use.
+    surface: Arc<[OnceLock<wgpu::RenderPipeline>; 16]>,
+    /// What a surface pipeline is built from.
+    surface_source: SurfaceSource,
     layout: wgpu::BindGroupLayout,
     format: wgpu::TextureFormat,
     sample_count: u32,
@@ -50,82 +54,119 @@ impl ShadePipelines {
             bind_group_layouts: &[Some(&layout)],
             immediate_size: 0,
         });
-        let vertex_layout = wgpu::VertexBufferLayout {
-            array_stride: VERTEX_BYTES,
-            step_mode: wgpu::VertexStepMode::Vertex,
-            attributes: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3],
-        };
-        let pipeline = |label,
-                        vertex_entry,
-                        fragment_entry,
-                        buffers: &[Option<wgpu::VertexBufferLayout>],
-                        topology,
-                        depth_write| {
-            device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-                label: Some(label),
-                layout: Some(&pipeline_layout),
-                vertex: wgpu::VertexState {
-                    module: &module,
-                    entry_point: Some(vertex_entry),
-                    compilation_options: Default::default(),
-                    buffers,
-                },
-                fragment: Some(wgpu::FragmentState {
-                    module: &module,
-                    entry_point: Some(fragment_entry),
-                    compilation_options: Default::default(),
-                    targets: &[Some(format.into())],
-                }),
-                primitive: wgpu::PrimitiveState {
-                    topology,
-                    front_face: wgpu::FrontFace::Ccw,
-                    // Both sides are drawn: where a wall cuts the surface open, its inside shows.
-                    cull_mode: None,
-                    ..Default::default()
-                },
-                depth_stencil: Some(wgpu::DepthStencilState {
-                    format: DEPTH_FORMAT,
-                    depth_write_enabled: Some(depth_write),
-                    depth_compare: Some(if depth_write {
-                        wgpu::CompareFunction::Less
-                    } else {
-                        wgpu::CompareFunction::Always
-                    }),
-                    stencil: Default::default(),
-                    bias: Default::default(),
-                }),
-                multisample: wgpu::MultisampleState { count: sample_count, ..Default::default() },
-                multiview_mask: None,
-                cache: None,
-            })
-        };
+        let source = SurfaceSource { device: device.clone(), module, pipeline_layout, format, sample_count };
         use wgpu::PrimitiveTopology::{LineList, TriangleList};
-        let background = pipeline(
+        let background = source.pipeline(
             "shade: background pipeline",
-            "background_vertex",
-            "background_fragment",
+            ("background_vertex", "background_fragment"),
             &[],
-            TriangleList,
+            (TriangleList, None),
             false,
+            &[],
         );
-        let box_edges = pipeline("shade: box pipeline", "box_vertex", "box_fragment", &[], LineList, true);
-        let surface = pipeline(
-            "shade: surface pipeline",
-            "surface_vertex",
-            "surface_fragment",
-            &[Some(vertex_layout)],
-            TriangleList,
+        let box_edges = source.pipeline(
+            "shade: box pipeline",
+            ("box_vertex", "box_fragment"),
+            &[],
+            (LineList, None),
             true,
+            &[],
         );
         // On wasm32 wgpu's objects are not Send: a page runs them on one thread.
         #[allow(clippy::arc_with_non_send_sync)]
         let views = Arc::new(OnceLock::new());
-        Self { background, box_edges, surface, layout, format, sample_count, views }
+        #[allow(clippy::arc_with_non_send_sync)]
+        let surface = Arc::new(Default::default());
+        Self { background, box_edges, surface, surface_source: source, layout, format, sample_count, views }
+    }
+
+    /// The surface's pipeline lit by the light slots in `slots` (bit 0 point, 1 directional, 2 spot):
+    /// the lights that are off cost a software rasteriser nothing. `front_only` culls back faces.
+    fn surface(&self, slots: u32, front_only: bool) -> &wgpu::RenderPipeline {
+        let slots = slots & 7;
+        self.surface[slots as usize + 8 * front_only as usize].get_or_init(|| {
+            let vertex_layout = wgpu::VertexBufferLayout {
+                array_stride: VERTEX_BYTES,
+                step_mode: wgpu::VertexStepMode::Vertex,
+                attributes: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3],
+            };
+            self.surface_source.pipeline(
+                "shade: surface pipeline",
+                ("surface_vertex", "surface_fragment"),
+                &[Some(vertex_layout)],
+                (wgpu::PrimitiveTopology::TriangleList, front_only.then_some(wgpu::Face::Back)),
+                true,
+                &[("LIGHT_SLOTS", slots as f64)],
+            )
+        })
     }
 
     /// The teaching views' pipelines for this format and sample count, built on first use.
     pub fn views(&self, device: &wgpu::Device) -> &ViewPipelines {
         self.views.get_or_init(|| ViewPipelines::new(device, self.format, self.sample_count, DEPTH_FORMAT))
+    }
+}
+
+/// The shading shader with what its pipelines share.
+#[derive(Clone)]
+struct SurfaceSource {
+    device: wgpu::Device,
+    module: wgpu::ShaderModule,
+    pipeline_layout: wgpu::PipelineLayout,
+    format: wgpu::TextureFormat,
+    sample_count: u32,
+}
+
+impl SurfaceSource {
+    /// A pipeline of the shading shader drawing `topology` with `entries` (vertex, fragment), culling
+    /// the faces given, writing depth or drawing behind everything, with `constants` for the shader's
+    /// overrides.
+    fn pipeline(
+        &self,
+        label: &str,
+        (vertex_entry, fragment_entry): (&str, &str),
+        buffers: &[Option<wgpu::VertexBufferLayout>],
+        (topology, cull_mode): (wgpu::PrimitiveTopology, Option<wgpu::Face>),
+        depth_write: bool,
+        constants: &[(&str, f64)],
+    ) -> wgpu::RenderPipeline {
+        let options = wgpu::PipelineCompilationOptions { constants, ..Default::default() };
+        self.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some(label),
+            layout: Some(&self.pipeline_layout),
+            vertex: wgpu::VertexState {
+                module: &self.module,
+                entry_point: Some(vertex_entry),
+                compilation_options: options.clone(),
+                buffers,
+            },
+            fragment: Some(wgpu::FragmentState {
+                module: &self.module,
+                entry_point: Some(fragment_entry),
+                compilation_options: options,
+                targets: &[Some(self.format.into())],
+            }),
+            primitive: wgpu::PrimitiveState {
+                topology,
+                front_face: wgpu::FrontFace::Ccw,
+                cull_mode,
+                ..Default::default()
+            },
+            depth_stencil: Some(wgpu::DepthStencilState {
+                format: DEPTH_FORMAT,
+                depth_write_enabled: Some(depth_write),
+                depth_compare: Some(if depth_write {
+                    wgpu::CompareFunction::Less
+                } else {
+                    wgpu::CompareFunction::Always
+                }),
+                stencil: Default::default(),
+                bias: Default::default(),
+            }),
+            multisample: wgpu::MultisampleState { count: self.sample_count, ..Default::default() },
+            multiview_mask: None,
+            cache: None,
+        })
     }
 }
 
@@ -145,6 +186,10 @@ pub struct MeshDraw<'a> {
     /// The indexed indirect draw's arguments (read with `DrawCount::Indirect`).
     pub draw_args: &'a wgpu::Buffer,
     pub count: DrawCount,
+    /// The light slots that are on (`LIGHT_SLOTS` in the shader).
+    pub light_slots: u32,
+    /// The mesh is closed and the eye outside it, so its back faces are hidden and need not be drawn.
+    pub front_only: bool,
 }
 
 /// What the shading pass draws of the teaching views this frame.
@@ -258,7 +303,7 @@ impl ShadePass {
                 crate::draw::views::exact::clip_mesh(&mut pass, v.options, size);
             }
             pass.set_bind_group(0, &self.bind_group, &[]);
-            pass.set_pipeline(&self.pipelines.surface);
+            pass.set_pipeline(self.pipelines.surface(mesh.light_slots, mesh.front_only));
             pass.set_vertex_buffer(0, mesh.vertices.slice(..));
             pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
             match mesh.count {

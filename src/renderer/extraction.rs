@@ -9,9 +9,10 @@ use crate::extract::lod::select::Eye;
 use crate::extract::reference::Construction;
 use crate::extract::uniforms::LEVEL_SLOTS;
 use crate::extract::{Capabilities, Extractor, Job, LodJob, MeshCount, Output};
+use crate::scene::BOX_HALF_EXTENT;
 use crate::scene::params::ParamError;
 use crate::scene::params::view::Mesher;
-use crate::scene::params::view::Projection;
+use crate::scene::params::view::{Method, Projection};
 
 impl Renderer {
     /// Makes this frame's mesh with the chosen extractor: the room it reports is made first (a fixed
@@ -43,6 +44,7 @@ impl Renderer {
             timing: self.timing.as_ref().filter(|_| timed),
         };
         self.counted_on_device = false;
+        self.mesh_closed = false;
         match self.extractors[self.active].write(output) {
             MeshCount::OnDevice => {
                 self.counted_on_device = true;
@@ -51,6 +53,8 @@ impl Renderer {
             MeshCount::Known { needed, indices } => {
                 let (grid, capacity, bytes) = (self.grid(), self.mesh.capacity, self.mesh.bytes());
                 let overflowed = indices < needed.indices;
+                self.mesh_closed = !overflowed
+                    && self.extractors[self.active].capabilities().method == Method::MarchingCubes;
                 let mut levels = [0; LEVEL_SLOTS];
                 if let Some(triangles) = self.lod_summary().and_then(|s| s.triangles) {
                     for (slot, n) in levels.iter_mut().zip(triangles) {
@@ -63,6 +67,14 @@ impl Renderer {
                 DrawCount::Direct(indices)
             }
         }
+    }
+
+    /// True when no back face of the mesh can show: marching cubes gives a closed surface inside the
+    /// box (the grid's boundary reads 0, below any iso level), so from an eye outside the box every back
+    /// face lies behind a front face. The margin keeps the near plane clear of the box.
+    pub(super) fn back_faces_hidden(&self) -> bool {
+        let eye = self.settings.camera.eye();
+        self.mesh_closed && eye.abs().max_element() > BOX_HALF_EXTENT + 0.1
     }
 
     /// True when the teaching views draw this frame. They read the lists the compute passes fill, so

@@ -62,6 +62,8 @@ pub struct Renderer {
     pinned: Option<usize>,
     /// True when the latest frame's mesh was counted on the device (its statistics come back later).
     counted_on_device: bool,
+    /// The latest mesh is known to be closed: whole, by marching cubes, counted on the CPU.
+    mesh_closed: bool,
     shade: ShadePass,
     sizing: Sizing,
     /// Capacity a past frame asked for, applied before the next one.
@@ -121,6 +123,7 @@ impl Renderer {
             active: 0,
             pinned: None,
             counted_on_device: false,
+            mesh_closed: false,
             shade: ShadePass::new(
                 &device,
                 context.shade_pipelines(format, sample_count(settings.antialiasing)),
@@ -349,6 +352,8 @@ impl Renderer {
             indices: &self.mesh.indices,
             draw_args: &self.mesh.draw_args,
             count,
+            light_slots: self.settings.view.lights.slots(),
+            front_only: self.back_faces_hidden(),
         };
         self.shade.encode(&mut encoder, view, mesh, frame_views, timing.map(|t| t.render_writes(3)));
         if let Some(timing) = timing {

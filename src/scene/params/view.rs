@@ -211,6 +211,11 @@ impl Lights {
         Self { point: has("point"), directional: has("directional"), spot: has("spot") }
     }
 
+    /// The shading shader's light slots that are on: bit 0 the point light, 1 the directional, 2 the spot.
+    pub fn slots(&self) -> u32 {
+        self.point as u32 | (self.directional as u32) << 1 | (self.spot as u32) << 2
+    }
+
     /// The list text (`none` when no light is on).
     pub fn text(&self) -> String {
         let on: Vec<&str> = [(self.point, "point"), (self.directional, "directional"), (self.spot, "spot")]
