@@ -41,8 +41,13 @@ impl Spheres {
     /// Adding and subtracting terms are bounded apart: the field is at most the adding terms' upper
     /// bound less the subtracting terms' lower bound, and at least the other way round.
     pub fn straddles(&self, low: Vec3, high: Vec3, touches_walls: bool, iso: f32, by_max: bool) -> bool {
-        let centre = 0.5 * (low + high);
-        let h = 0.5 * (high - low).length();
+        self.ball_straddles(0.5 * (low + high), 0.5 * (high - low).length(), touches_walls, iso, by_max)
+    }
+
+    /// [`Spheres::straddles`] over the ball of radius `h` about `centre`, which holds the box. A ball
+    /// holding another bounds the field more loosely, so where it keeps every point on one side of
+    /// `iso`, so does the ball it holds.
+    pub fn ball_straddles(&self, centre: Vec3, h: f32, touches_walls: bool, iso: f32, by_max: bool) -> bool {
         let mut adding = Bounds::default();
         let mut subtracting = Bounds::default();
         for i in 0..self.r2.len() {
@@ -75,6 +80,39 @@ impl Spheres {
         let high = Vec3::from_array(last.map(|i| coords[i as usize]));
         let touches_walls = first.contains(&0) || last.contains(&n);
         self.straddles(low, high, touches_walls, iso, by_max)
+    }
+
+    /// False only when no block of the `group`³ blocks from block `first` on (as many as the grid has)
+    /// can straddle `iso` by [`Spheres::block_straddles`]: one bound for them all, over a ball holding
+    /// each block's ball with room to spare for rounding. Most of a grid is far from every sphere, so
+    /// most blocks are passed over a group at a time.
+    pub fn group_straddles(
+        &self,
+        coords: &[f32],
+        first: [u32; 3],
+        group: u32,
+        n: u32,
+        iso: f32,
+        by_max: bool,
+    ) -> bool {
+        use crate::extract::buffers::BLOCK_CELLS;
+        let nb = n.div_ceil(BLOCK_CELLS);
+        let last = first.map(|b| (b + group).min(nb));
+        let corner =
+            |blocks: [u32; 3]| Vec3::from_array(blocks.map(|b| coords[(b * BLOCK_CELLS).min(n) as usize]));
+        let (low, high) = (corner(first), corner(last));
+        let centre = 0.5 * (low + high);
+        let mut reach = 0.0f32;
+        for bz in first[2]..last[2] {
+            for by in first[1]..last[1] {
+                for bx in first[0]..last[0] {
+                    let (a, b) = (corner([bx, by, bz]), corner([bx + 1, by + 1, bz + 1]));
+                    reach = reach.max((0.5 * (a + b) - centre).length() + 0.5 * (b - a).length());
+                }
+            }
+        }
+        let touches_walls = first.contains(&0) || last.contains(&nb);
+        self.ball_straddles(centre, reach * (1.0 + 1e-3) + 1e-5, touches_walls, iso, by_max)
     }
 }
 

@@ -53,8 +53,8 @@ impl Renderer {
             MeshCount::Known { needed, indices } => {
                 let (grid, capacity, bytes) = (self.grid(), self.mesh.capacity, self.mesh.bytes());
                 let overflowed = indices < needed.indices;
-                self.mesh_closed = !overflowed
-                    && self.extractors[self.active].capabilities().method == Method::MarchingCubes;
+                let made_by = self.extractors[self.active].capabilities();
+                self.mesh_closed = !overflowed && !made_by.lod && made_by.method == Method::MarchingCubes;
                 let mut levels = [0; LEVEL_SLOTS];
                 if let Some(triangles) = self.lod_summary().and_then(|s| s.triangles) {
                     for (slot, n) in levels.iter_mut().zip(triangles) {

@@ -18,6 +18,9 @@ use crate::scene::params::view::Blend;
 use crate::scene::{BOX_HALF_EXTENT, Sphere};
 use glam::Vec3;
 
+/// Blocks per side of the groups bounded before their blocks.
+const GROUP_BLOCKS: u32 = 2;
+
 /// Marks an edge without a vertex yet.
 const NONE: u32 = u32::MAX;
 
@@ -61,6 +64,8 @@ pub struct CpuMesher {
     spheres: Spheres,
     /// Coordinate of grid point `i` along any axis.
     coords: Vec<f32>,
+    /// Per group of `GROUP_BLOCKS`³ blocks: whether its blocks need bounding one by one.
+    groups: Vec<bool>,
     /// Per layer of blocks: the kept blocks' (x, y) block coordinates.
     layer_blocks: Vec<Vec<(u32, u32)>>,
     /// Per column of blocks in the current plane: its points are needed.
@@ -130,20 +135,41 @@ impl CpuMesher {
     }
 
     /// Keeps the blocks whose field bounds straddle `iso`, as `classify_blocks` in
-    /// `shaders/extract/blocks.wgsl` does, and lists them by layer.
+    /// `shaders/extract/blocks.wgsl` does, and lists them by layer. Groups of blocks that cannot hold the
+    /// surface are passed over first, then each block of the other groups is bounded on its own.
     fn classify_blocks(&mut self, iso: f32, n: u32, blend: Blend) {
         let nb = n.div_ceil(BLOCK_CELLS);
         let total = (nb as usize).pow(3);
+        let ng = nb.div_ceil(GROUP_BLOCKS);
+        let by_max = blend == Blend::Max;
+        self.groups.clear();
+        for gz in 0..ng {
+            for gy in 0..ng {
+                for gx in 0..ng {
+                    let first = [gx, gy, gz].map(|g| g * GROUP_BLOCKS);
+                    self.groups.push(self.spheres.group_straddles(
+                        &self.coords,
+                        first,
+                        GROUP_BLOCKS,
+                        n,
+                        iso,
+                        by_max,
+                    ));
+                }
+            }
+        }
         self.layer_blocks.resize_with(nb as usize, Vec::new);
         self.layer_blocks.truncate(nb as usize);
-        let by_max = blend == Blend::Max;
         let mut active = 0;
         for bz in 0..nb {
             let layer = &mut self.layer_blocks[bz as usize];
             layer.clear();
             for by in 0..nb {
                 for bx in 0..nb {
-                    if self.spheres.block_straddles(&self.coords, [bx, by, bz], n, iso, by_max) {
+                    let [gx, gy, gz] = [bx, by, bz].map(|b| b / GROUP_BLOCKS);
+                    if self.groups[(gx + ng * (gy + ng * gz)) as usize]
+                        && self.spheres.block_straddles(&self.coords, [bx, by, bz], n, iso, by_max)
+                    {
                         layer.push((bx, by));
                         active += 1;
                     }
