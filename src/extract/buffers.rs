@@ -184,6 +184,11 @@ impl MeshBuffers {
         ]
     }
 
+    /// True when `vertices` vertices and `indices` indices fit in these buffers.
+    pub fn holds(&self, vertices: u32, indices: u32) -> bool {
+        vertices <= self.capacity.vertices && indices <= self.capacity.indices
+    }
+
     /// Writes a mesh made on the CPU (6 `f32` per vertex, 3 indices per triangle), as much of it as
     /// the buffers hold, and returns the indices written.
     pub fn upload(&self, queue: &wgpu::Queue, vertices: &[f32], indices: &[u32]) -> u32 {

@@ -11,6 +11,7 @@ use super::uniforms::Counters;
 use crate::device::timing::Timing;
 use crate::scene::Sphere;
 use crate::scene::params::view::Method;
+use glam::Vec3;
 
 /// What an extractor can do. The renderer chooses by these (and by name only for the `mesher`
 /// setting), never by type.
@@ -59,6 +60,19 @@ pub struct Output<'a> {
     pub buffers: &'a MeshBuffers,
     /// Timestamp queries for the stages, when a timed frame asks for them.
     pub timing: Option<&'a Timing>,
+    /// Where the mesh is seen from, when nothing but the shading pass reads this frame's index buffer
+    /// and the eye is outside the box: an extractor whose mesh is closed may then leave out the
+    /// triangles facing away, which the shading pass would cull anyway.
+    pub front_faces: Option<Viewpoint>,
+}
+
+/// Where a mesh is seen from.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Viewpoint {
+    /// A perspective camera's eye.
+    At(Vec3),
+    /// An orthographic camera looking along this direction.
+    Along(Vec3),
 }
 
 /// How a frame's mesh is counted.
@@ -71,8 +85,10 @@ pub enum MeshCount {
     Known {
         /// What the surface needed (vertices, indices, active blocks and cells), even past capacity.
         needed: Counters,
-        /// Indices written, at most the index buffer's capacity.
+        /// Indices of the mesh written, at most the index buffer's capacity.
         indices: u32,
+        /// Indices to draw: fewer than `indices` where the triangles facing away were left out.
+        drawn: u32,
     },
 }
 

@@ -8,7 +8,7 @@ use crate::extract::lod::LodSummary;
 use crate::extract::lod::select::Eye;
 use crate::extract::reference::Construction;
 use crate::extract::uniforms::LEVEL_SLOTS;
-use crate::extract::{Capabilities, Extractor, Job, LodJob, MeshCount, Output};
+use crate::extract::{Capabilities, Extractor, Job, LodJob, MeshCount, Output, Viewpoint};
 use crate::scene::BOX_HALF_EXTENT;
 use crate::scene::params::ParamError;
 use crate::scene::params::view::Mesher;
@@ -35,6 +35,7 @@ impl Renderer {
                 self.reallocate(self.mesh.capacity.grown_for(&room));
             }
         }
+        let front_faces = self.front_faces_from();
         let output = Output {
             device: &self.device,
             queue: &self.queue,
@@ -42,6 +43,7 @@ impl Renderer {
             encoder,
             buffers: &self.mesh,
             timing: self.timing.as_ref().filter(|_| timed),
+            front_faces,
         };
         self.counted_on_device = false;
         self.mesh_closed = false;
@@ -50,7 +52,7 @@ impl Renderer {
                 self.counted_on_device = true;
                 DrawCount::Indirect
             }
-            MeshCount::Known { needed, indices } => {
+            MeshCount::Known { needed, indices, drawn } => {
                 let (grid, capacity, bytes) = (self.grid(), self.mesh.capacity, self.mesh.bytes());
                 let overflowed = indices < needed.indices;
                 let made_by = self.extractors[self.active].capabilities();
@@ -64,7 +66,7 @@ impl Renderer {
                 self.latest_stats = Some(FrameStats::from_counts(
                     self.frame, grid, capacity, needed, overflowed, bytes, levels,
                 ));
-                DrawCount::Direct(indices)
+                DrawCount::Direct(drawn)
             }
         }
     }
@@ -73,8 +75,24 @@ impl Renderer {
     /// box (the grid's boundary reads 0, below any iso level), so from an eye outside the box every back
     /// face lies behind a front face. The margin keeps the near plane clear of the box.
     pub(super) fn back_faces_hidden(&self) -> bool {
+        self.mesh_closed && self.eye_outside_box()
+    }
+
+    fn eye_outside_box(&self) -> bool {
+        self.settings.camera.eye().abs().max_element() > BOX_HALF_EXTENT + 0.1
+    }
+
+    /// Where the mesh is seen from, when the extractor may leave its back faces out of the index
+    /// buffer: the eye is outside the box, and nothing but the shading pass reads the buffer.
+    fn front_faces_from(&self) -> Option<Viewpoint> {
+        if !self.eye_outside_box() || self.views_shown() || self.measuring() {
+            return None;
+        }
         let eye = self.settings.camera.eye();
-        self.mesh_closed && eye.abs().max_element() > BOX_HALF_EXTENT + 0.1
+        Some(match self.settings.view.projection {
+            Projection::Perspective => Viewpoint::At(eye),
+            Projection::Orthographic => Viewpoint::Along(-eye),
+        })
     }
 
     /// True when the teaching views draw this frame. They read the lists the compute passes fill, so

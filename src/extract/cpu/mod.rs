@@ -3,6 +3,7 @@
 //! mesh is drawn the same way. On a software adapter it beats compute passes emulated on the CPU; on
 //! WebGL2 it is the only extractor.
 
+pub mod facing;
 pub mod mesher;
 pub mod surface_nets;
 
@@ -18,8 +19,10 @@ use crate::scene::params::view::Method;
 #[derive(Default)]
 pub struct CpuExtractor {
     mesher: CpuMesher,
-    /// Indices the latest `write` uploaded.
+    /// Indices of the mesh the latest `write` uploaded (or would have, before leaving out back faces).
     written: u32,
+    /// The indices of the triangles facing the viewer, when only those are drawn.
+    front: Vec<u32>,
 }
 
 impl CpuExtractor {
@@ -57,8 +60,20 @@ impl Extractor for CpuExtractor {
 
     fn write(&mut self, output: Output) -> MeshCount {
         let mesher = &self.mesher;
-        let indices = output.buffers.upload(output.queue, &mesher.vertices, &mesher.indices);
         let (vertices, requested) = (mesher.vertex_count(), mesher.indices.len() as u32);
+        let fits = output.buffers.holds(vertices, requested);
+        // A whole marching-cubes mesh is closed, so from outside the box its back faces never show.
+        let (indices, drawn) = match output.front_faces {
+            Some(viewpoint) if fits => {
+                facing::front_faces(&mesher.vertices, &mesher.indices, viewpoint, &mut self.front);
+                let drawn = output.buffers.upload(output.queue, &mesher.vertices, &self.front);
+                (requested, drawn)
+            }
+            _ => {
+                let written = output.buffers.upload(output.queue, &mesher.vertices, &mesher.indices);
+                (written, written)
+            }
+        };
         self.written = indices;
         let stats = mesher.stats();
         let needed = Counters {
@@ -67,7 +82,7 @@ impl Extractor for CpuExtractor {
             indices: requested,
             active_cells: stats.active_cells,
         };
-        MeshCount::Known { needed, indices }
+        MeshCount::Known { needed, indices, drawn }
     }
 
     fn cpu_mesh(&self) -> Option<IndexedMesh> {
@@ -128,7 +143,7 @@ impl Extractor for SurfaceNetsExtractor {
     fn write(&mut self, output: Output) -> MeshCount {
         let mesher = &self.mesher;
         self.written = output.buffers.upload(output.queue, &mesher.vertices, &mesher.indices);
-        MeshCount::Known { needed: self.counters(), indices: self.written }
+        MeshCount::Known { needed: self.counters(), indices: self.written, drawn: self.written }
     }
 
     fn cpu_mesh(&self) -> Option<IndexedMesh> {

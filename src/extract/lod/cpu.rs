@@ -84,7 +84,7 @@ impl Extractor for LodCpuExtractor {
             let drawn = Counters { indices: self.written, ..needed };
             output.queue.write_buffer(&buffers.counters, 0, bytemuck::bytes_of(&drawn));
         }
-        MeshCount::Known { needed, indices: self.written }
+        MeshCount::Known { needed, indices: self.written, drawn: self.written }
     }
 
     fn cpu_mesh(&self) -> Option<IndexedMesh> {

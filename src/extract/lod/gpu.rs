@@ -250,7 +250,7 @@ impl Extractor for LodGpuExtractor {
     }
 
     fn write(&mut self, output: Output) -> MeshCount {
-        let Output { device, queue, scene, encoder, buffers, timing } = output;
+        let Output { device, queue, scene, encoder, buffers, timing, .. } = output;
         let p = self.compiled.get_or_init(|| Pipelines::new(device));
         let blocks = self.selection.blocks.len();
         if self.bound.as_ref().is_none_or(|b| b.selection_capacity < blocks) {
