@@ -176,3 +176,65 @@ pub fn sample_run(run: &mut [f32], xs: &[f32], py: f32, pz: f32, s: &Spheres, bl
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::extract::buffers::BLOCK_CELLS;
+    use crate::scene::Scene;
+
+    /// Where a group's bound passes its blocks over, every block's own bound would too, with adding
+    /// and subtracting spheres, both blends, iso levels near and far from the spheres' values, and grids
+    /// whose last group and block are cut short.
+    #[test]
+    fn a_group_passed_over_holds_no_block_that_straddles() {
+        let mut groups_passed = 0;
+        for (seed, count, n) in [(1, 16, 64u32), (2, 5, 37), (3, 40, 50), (4, 3, 22), (5, 64, 29)] {
+            let mut spheres = Scene::new(seed, count).unwrap().spheres().to_vec();
+            for (k, sphere) in spheres.iter_mut().enumerate() {
+                if k % 3 == 1 {
+                    sphere.charge = -1.0;
+                }
+            }
+            let mut s = Spheres::default();
+            s.set(&spheres);
+            let cell = 2.0 * crate::scene::BOX_HALF_EXTENT / n as f32;
+            let coords: Vec<f32> =
+                (0..=n).map(|i| -crate::scene::BOX_HALF_EXTENT + i as f32 * cell).collect();
+            let nb = n.div_ceil(BLOCK_CELLS);
+            for iso in [0.05, 0.4, 1.0, 3.0] {
+                for by_max in [false, true] {
+                    for gz in (0..nb).step_by(2) {
+                        for gy in (0..nb).step_by(2) {
+                            for gx in (0..nb).step_by(2) {
+                                if s.group_straddles(&coords, [gx, gy, gz], 2, n, iso, by_max) {
+                                    continue;
+                                }
+                                groups_passed += 1;
+                                for b in [
+                                    [0, 0, 0],
+                                    [1, 0, 0],
+                                    [0, 1, 0],
+                                    [1, 1, 1],
+                                    [0, 1, 1],
+                                    [1, 0, 1],
+                                    [0, 0, 1],
+                                    [1, 1, 0],
+                                ] {
+                                    let block = [gx + b[0], gy + b[1], gz + b[2]];
+                                    if block.iter().all(|&c| c < nb) {
+                                        assert!(
+                                            !s.block_straddles(&coords, block, n, iso, by_max),
+                                            "seed {seed}, {n} cells, iso {iso}, max {by_max}: block {block:?} straddles"
+                                        );
+                                    }
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        assert!(groups_passed > 1000, "only {groups_passed} groups were passed over");
+    }
+}

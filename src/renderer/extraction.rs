@@ -47,6 +47,7 @@ impl Renderer {
         };
         self.counted_on_device = false;
         self.mesh_closed = false;
+        self.drawn = None;
         match self.extractors[self.active].write(output) {
             MeshCount::OnDevice => {
                 self.counted_on_device = true;
@@ -66,6 +67,7 @@ impl Renderer {
                 self.latest_stats = Some(FrameStats::from_counts(
                     self.frame, grid, capacity, needed, overflowed, bytes, levels,
                 ));
+                self.drawn = Some(drawn);
                 DrawCount::Direct(drawn)
             }
         }
@@ -171,6 +173,12 @@ impl Renderer {
     /// What the extractor the next frame will use can do.
     pub fn next_capabilities(&self) -> Capabilities {
         self.extractors[self.next_extractor()].capabilities()
+    }
+
+    /// Triangles the latest frame drew, where the CPU counted them: fewer than the mesh has where its
+    /// back faces were left out.
+    pub fn triangles_drawn(&self) -> Option<u32> {
+        self.drawn.map(|indices| indices / 3)
     }
 
     /// The extractor that made the latest frame's mesh (`gpu`, `cpu`).

@@ -64,6 +64,8 @@ pub struct Renderer {
     counted_on_device: bool,
     /// The latest mesh is known to be closed: whole, by marching cubes, counted on the CPU.
     mesh_closed: bool,
+    /// Indices the latest frame drew, when counted on the CPU.
+    drawn: Option<u32>,
     shade: ShadePass,
     sizing: Sizing,
     /// Capacity a past frame asked for, applied before the next one.
@@ -124,6 +126,7 @@ impl Renderer {
             pinned: None,
             counted_on_device: false,
             mesh_closed: false,
+            drawn: None,
             shade: ShadePass::new(
                 &device,
                 context.shade_pipelines(format, sample_count(settings.antialiasing)),
