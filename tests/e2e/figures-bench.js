@@ -1,14 +1,35 @@
 // Frames per second of pages of animating figures in headless Chromium (SwiftShader here), 128³ cells
 // and 16 spheres each: one figure 960×640, and four in a 960-pixel-wide 2×2 grid. `npm run
 // bench:figures` (after www/build.sh); `-- --fixed` holds every figure at full render scale (as before
-// the scale adapted). Prints one line per page, with each figure's render scale at the end, and a JSON
-// line starting "metaballs-figures ". Not a test: figures depend on the machine.
+// the scale adapted). Prints one line per page, with each figure's render scale and, where /proc tells,
+// the CPU time per frame of the page's process and of the GPU process (whose software rasteriser runs
+// there), and a JSON line starting "metaballs-figures ". Not a test: figures depend on the machine.
 
 import { spawn } from 'node:child_process';
+import { readdirSync, readFileSync } from 'node:fs';
 import { chromium } from 'playwright-core';
 import { root, CHROMIUM, FLAGS, freePort, waitForServer } from './helpers.js';
 
 const fixed = process.argv.includes('--fixed');
+
+/** CPU seconds used so far by Chromium's processes (run nothing else in Chromium meanwhile), by kind
+ * (`renderer`, `gpu-process`), from /proc. */
+function cpuSeconds() {
+  const seconds = {};
+  let pids = [];
+  try { pids = readdirSync('/proc').filter((name) => /^\d+$/.test(name)); } catch { return seconds; }
+  for (const pid of pids) {
+    try {
+      const command = readFileSync(`/proc/${pid}/cmdline`, 'utf8');
+      if (!command.split('\0')[0].includes('chromium')) continue;
+      const kind = command.match(/--type=([a-z-]+)/)?.[1] ?? 'browser';
+      // utime and stime, in clock ticks (100 per second on Linux), after the command's name.
+      const fields = readFileSync(`/proc/${pid}/stat`, 'utf8').split(') ')[1].split(' ');
+      seconds[kind] = (seconds[kind] ?? 0) + (Number(fields[11]) + Number(fields[12])) / 100;
+    } catch { /* the process ended meanwhile */ }
+  }
+  return seconds;
+}
 const PAGES = [
   { name: 'one figure 960×640', query: 'n=1&cols=1&aspect=3/2' },
   { name: 'four figures in a 2×2 grid, 960 wide', query: 'n=4&cols=2' },
@@ -30,13 +51,23 @@ try {
     await page.waitForTimeout(6000);
     const count = () => page.evaluate(() => [...document.querySelectorAll('metaballs-view')].map((e) => e.framesDrawn));
     const start = await count();
+    const cpuStart = cpuSeconds();
     const seconds = 10;
     await page.waitForTimeout(seconds * 1000);
     const end = await count();
+    const cpuEnd = cpuSeconds();
     const scales = await page.evaluate(() => [...document.querySelectorAll('metaballs-view')].map((e) => e.renderScale));
     const fps = end.map((f, i) => (f - start[i]) / seconds);
-    const record = { page: name, fixed, fps_each: Math.min(...fps), render_scale: scales };
-    console.log(`${name}: ${record.fps_each.toFixed(1)} fps each (slowest figure), render scale ${scales.map((s) => s?.toFixed(2)).join(', ')}`);
+    const frames = Math.min(...end.map((f, i) => f - start[i]));
+    const cpuMs = (kind) => (frames > 0 && cpuEnd[kind] !== undefined
+      ? Math.round((cpuEnd[kind] - (cpuStart[kind] ?? 0)) / frames * 1000 * 10) / 10 : null);
+    const record = {
+      page: name, fixed, fps_each: Math.min(...fps), render_scale: scales,
+      cpu_ms_per_frame: { page: cpuMs('renderer'), gpu_process: cpuMs('gpu-process') },
+    };
+    const cpu = record.cpu_ms_per_frame.page === null ? ''
+      : `; CPU per frame: page ${record.cpu_ms_per_frame.page} ms, GPU process ${record.cpu_ms_per_frame.gpu_process} ms`;
+    console.log(`${name}: ${record.fps_each.toFixed(1)} fps each (slowest figure), render scale ${scales.map((s) => s?.toFixed(2)).join(', ')}${cpu}`);
     results.push(record);
     await page.close();
   }

@@ -1,6 +1,6 @@
-//! Extraction on the CPU: the [`CpuMesher`] meshes the frame in `prepare`, then `write` uploads its
-//! vertices and indices into the same buffers the compute passes fill (`Queue::write_buffer`), and the
-//! mesh is drawn the same way. On a software adapter it beats compute passes emulated on the CPU; on
+//! Extraction on the CPU: a mesher (marching cubes, [`CpuMesher`], or surface nets) meshes the frame in
+//! `prepare`, then `write` uploads its vertices and indices into the same buffers the compute passes
+//! fill (`Queue::write_buffer`), and the mesh is drawn the same way. On a software adapter it beats compute passes emulated on the CPU; on
 //! WebGL2 it is the only extractor.
 
 pub mod facing;
@@ -15,26 +15,86 @@ use super::mesh::IndexedMesh;
 use super::uniforms::Counters;
 use crate::scene::params::view::Method;
 
-/// The CPU mesher and what it last uploaded.
+/// A mesher on the CPU whose mesh [`CpuMeshExtractor`] uploads: vertices of 6 `f32` (position, then
+/// outward normal) and three indices per triangle, counter-clockwise seen from outside.
+pub trait CpuMeshing: Default + 'static {
+    /// The extractor's name (`Extractor::name`).
+    const NAME: &'static str;
+    /// How it joins the field's crossings into a mesh.
+    const METHOD: Method;
+    /// Meshes the frame's surface.
+    fn mesh_job(&mut self, job: &Job);
+    fn vertices(&self) -> &[f32];
+    fn indices(&self) -> &[u32];
+    /// Blocks the bounds kept and cells the surface crosses, in the last mesh.
+    fn blocks_and_cells(&self) -> (u32, u32);
+    fn to_indexed(&self) -> IndexedMesh;
+}
+
+/// Both meshers keep their mesh in `vertices` and `indices` and count blocks and cells in `stats()`.
+macro_rules! cpu_meshing {
+    ($mesher:ty, $name:literal, $method:expr) => {
+        impl CpuMeshing for $mesher {
+            const NAME: &'static str = $name;
+            const METHOD: Method = $method;
+            fn mesh_job(&mut self, job: &Job) {
+                self.mesh(job.spheres, job.iso, job.grid, job.construction);
+            }
+            fn vertices(&self) -> &[f32] {
+                &self.vertices
+            }
+            fn indices(&self) -> &[u32] {
+                &self.indices
+            }
+            fn blocks_and_cells(&self) -> (u32, u32) {
+                (self.stats().active_blocks, self.stats().active_cells)
+            }
+            fn to_indexed(&self) -> IndexedMesh {
+                <$mesher>::to_indexed(self)
+            }
+        }
+    };
+}
+
+cpu_meshing!(CpuMesher, "cpu", Method::MarchingCubes);
+cpu_meshing!(SurfaceNetsMesher, "surface-nets", Method::SurfaceNets);
+
+/// Marching cubes on the CPU (`mesher=cpu`, and everything on WebGL2).
+pub type CpuExtractor = CpuMeshExtractor<CpuMesher>;
+/// Surface nets on the CPU (`extractor=surface_nets`).
+pub type SurfaceNetsExtractor = CpuMeshExtractor<SurfaceNetsMesher>;
+
+/// A CPU mesher and what it last uploaded.
 #[derive(Default)]
-pub struct CpuExtractor {
-    mesher: CpuMesher,
+pub struct CpuMeshExtractor<M> {
+    mesher: M,
     /// Indices of the mesh the latest `write` uploaded (or would have, before leaving out back faces).
     written: u32,
     /// The indices of the triangles facing the viewer, when only those are drawn.
     front: Vec<u32>,
 }
 
-impl CpuExtractor {
+impl<M: CpuMeshing> CpuMeshExtractor<M> {
     /// Runs anywhere: there is nothing to compile.
     pub fn compile(_device: &wgpu::Device) -> Option<Box<dyn Extractor>> {
         Some(Box::<Self>::default())
     }
+
+    /// What the last mesh needs, even past the buffers' capacity.
+    fn counters(&self) -> Counters {
+        let (active_blocks, active_cells) = self.mesher.blocks_and_cells();
+        Counters {
+            active_blocks,
+            vertices: (self.mesher.vertices().len() / 6) as u32,
+            indices: self.mesher.indices().len() as u32,
+            active_cells,
+        }
+    }
 }
 
-impl Extractor for CpuExtractor {
+impl<M: CpuMeshing> Extractor for CpuMeshExtractor<M> {
     fn name(&self) -> &'static str {
-        "cpu"
+        M::NAME
     }
 
     fn capabilities(&self) -> Capabilities {
@@ -43,7 +103,7 @@ impl Extractor for CpuExtractor {
             cell_lists: false,
             cpu_copy: true,
             lod: false,
-            method: Method::MarchingCubes,
+            method: M::METHOD,
         }
     }
 
@@ -53,97 +113,27 @@ impl Extractor for CpuExtractor {
 
     /// Meshes the frame; the buffers need room for its vertices and indices only.
     fn prepare(&mut self, job: &Job) -> Option<Counters> {
-        self.mesher.mesh(job.spheres, job.iso, job.grid, job.construction);
-        let (vertices, indices) = (self.mesher.vertex_count(), self.mesher.indices.len() as u32);
-        Some(Counters { active_blocks: 0, vertices, indices, active_cells: 0 })
-    }
-
-    fn write(&mut self, output: Output) -> MeshCount {
-        let mesher = &self.mesher;
-        let (vertices, requested) = (mesher.vertex_count(), mesher.indices.len() as u32);
-        let fits = output.buffers.holds(vertices, requested);
-        // A whole marching-cubes mesh is closed, so from outside the box its back faces never show.
-        let (indices, drawn) = match output.front_faces {
-            Some(viewpoint) if fits => {
-                facing::front_faces(&mesher.vertices, &mesher.indices, viewpoint, &mut self.front);
-                let drawn = output.buffers.upload(output.queue, &mesher.vertices, &self.front);
-                (requested, drawn)
-            }
-            _ => {
-                let written = output.buffers.upload(output.queue, &mesher.vertices, &mesher.indices);
-                (written, written)
-            }
-        };
-        self.written = indices;
-        let stats = mesher.stats();
-        let needed = Counters {
-            active_blocks: stats.active_blocks,
-            vertices,
-            indices: requested,
-            active_cells: stats.active_cells,
-        };
-        MeshCount::Known { needed, indices, drawn }
-    }
-
-    fn cpu_mesh(&self) -> Option<IndexedMesh> {
-        let mut mesh = self.mesher.to_indexed();
-        mesh.triangles.truncate(self.written as usize / 3);
-        Some(mesh)
-    }
-}
-
-/// Surface nets on the CPU, uploaded like the marching-cubes mesher's mesh (`extractor=surface_nets`).
-#[derive(Default)]
-pub struct SurfaceNetsExtractor {
-    mesher: SurfaceNetsMesher,
-    written: u32,
-}
-
-impl SurfaceNetsExtractor {
-    /// Runs anywhere: there is nothing to compile.
-    pub fn compile(_device: &wgpu::Device) -> Option<Box<dyn Extractor>> {
-        Some(Box::<Self>::default())
-    }
-
-    fn counters(&self) -> Counters {
-        let stats = self.mesher.stats();
-        Counters {
-            active_blocks: stats.active_blocks,
-            vertices: self.mesher.vertex_count(),
-            indices: self.mesher.indices.len() as u32,
-            active_cells: stats.active_cells,
-        }
-    }
-}
-
-impl Extractor for SurfaceNetsExtractor {
-    fn name(&self) -> &'static str {
-        "surface-nets"
-    }
-
-    fn capabilities(&self) -> Capabilities {
-        Capabilities {
-            needs_compute: false,
-            cell_lists: false,
-            cpu_copy: true,
-            lod: false,
-            method: Method::SurfaceNets,
-        }
-    }
-
-    fn fresh(&self) -> Box<dyn Extractor> {
-        Box::<Self>::default()
-    }
-
-    fn prepare(&mut self, job: &Job) -> Option<Counters> {
-        self.mesher.mesh(job.spheres, job.iso, job.grid, job.construction);
+        self.mesher.mesh_job(job);
         Some(self.counters())
     }
 
     fn write(&mut self, output: Output) -> MeshCount {
-        let mesher = &self.mesher;
-        self.written = output.buffers.upload(output.queue, &mesher.vertices, &mesher.indices);
-        MeshCount::Known { needed: self.counters(), indices: self.written, drawn: self.written }
+        let needed = self.counters();
+        let (vertices, indices) = (self.mesher.vertices(), self.mesher.indices());
+        let fits = output.buffers.holds(needed.vertices, needed.indices);
+        // A whole marching-cubes mesh is closed, so from outside the box its back faces never show.
+        let (written, drawn) = match output.front_faces {
+            Some(viewpoint) if fits && M::METHOD == Method::MarchingCubes => {
+                facing::front_faces(vertices, indices, viewpoint, &mut self.front);
+                (needed.indices, output.buffers.upload(output.queue, vertices, &self.front))
+            }
+            _ => {
+                let written = output.buffers.upload(output.queue, vertices, indices);
+                (written, written)
+            }
+        };
+        self.written = written;
+        MeshCount::Known { needed, indices: written, drawn }
     }
 
     fn cpu_mesh(&self) -> Option<IndexedMesh> {
