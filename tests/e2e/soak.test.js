@@ -2,7 +2,8 @@
 // random attribute changes every few frames, scrolling down and back, two device losses, and now and
 // then an edit, a mesh export or a picture. After warm-up and at the end, with every figure given its
 // warm-up settings back, the JS heap (after a garbage collection) and the figures' GPU bytes are
-// within 10 % of each other, and nothing was logged as an error. The test command runs it for 150 s;
+// within 10 % of each other, and nothing was logged as an error. It also logs the heap in parts (from a
+// heap snapshot) and the wasm memory every 10 s. The test command runs it for 150 s;
 // `SOAK_SECONDS=1800 node --test soak.test.js` (in tests/e2e, after www/build.sh) is the 30-minute run.
 
 import { test } from 'node:test';
@@ -32,9 +33,39 @@ async function measure(page, cdp) {
   await cdp.send('HeapProfiler.collectGarbage');
   await cdp.send('HeapProfiler.collectGarbage');
   const { usedSize } = await cdp.send('Runtime.getHeapUsage');
-  const gpu = await page.evaluate(() => customElements.get('metaballs-view').gpuBytes);
-  return { heap: usedSize, gpu };
+  const [gpu, wasm] = await page.evaluate(() => {
+    const View = customElements.get('metaballs-view');
+    return [View.gpuBytes, View.wasmBytes];
+  });
+  return { heap: usedSize, gpu, wasm };
 }
+
+// What the heap holds, from a CDP heap snapshot: the page's JavaScript objects, compiled code, the
+// browser's own objects, and the bytes of array buffers (the wasm's memory among them).
+async function heapParts(cdp) {
+  const chunks = [];
+  const take = (event) => chunks.push(event.chunk);
+  cdp.on('HeapProfiler.addHeapSnapshotChunk', take);
+  await cdp.send('HeapProfiler.takeHeapSnapshot', { reportProgress: false });
+  cdp.off('HeapProfiler.addHeapSnapshotChunk', take);
+  const { snapshot: { meta }, nodes, strings } = JSON.parse(chunks.join(''));
+  const width = meta.node_fields.length;
+  const [type, name, size] = ['type', 'name', 'self_size'].map((f) => meta.node_fields.indexOf(f));
+  const parts = { objects: 0, code: 0, browser: 0, buffers: 0 };
+  for (let i = 0; i < nodes.length; i += width) {
+    const kind = meta.node_types[0][nodes[i + type]];
+    const part = kind === 'code' ? 'code'
+      : kind !== 'native' ? 'objects'
+        : strings[nodes[i + name]].includes('JSArrayBufferData') ? 'buffers' : 'browser';
+    parts[part] += nodes[i + size];
+  }
+  return parts;
+}
+
+const megabytes = (bytes) => `${(bytes / 1e6).toFixed(2)} MB`;
+const describe = (m, parts) => `JS heap ${megabytes(m.heap)} (objects ${megabytes(parts.objects)}, code `
+  + `${megabytes(parts.code)}, browser ${megabytes(parts.browser)}), array buffers ${megabytes(parts.buffers)}, `
+  + `wasm memory ${megabytes(m.wasm)}`;
 
 const attributes = (page) => page.$$eval('metaballs-view', (all) => all.map((e) => Object.fromEntries(
   [...e.attributes].map((a) => [a.name, a.value]))));
@@ -108,11 +139,14 @@ test(`a page of 12 figures used for ${SECONDS} s stays within 10 % of its memory
   await page.waitForTimeout(1000);
   const start = await measure(page, cdp);
   console.log(`after warm-up: JS heap ${(start.heap / 1e6).toFixed(2)} MB, GPU ${(start.gpu / 1e6).toFixed(2)} MB`);
+  console.log(`after warm-up, in parts: ${describe(start, await heapParts(cdp))}`);
 
   const began = Date.now();
   const losses = new Set();
   let actions = 0;
   let lastScroll = began;
+  // The wasm's memory every 10 s: it grows to the most the figures need at once, and never shrinks.
+  const wasmSeries = [];
   while (Date.now() - began < SECONDS * 1000) {
     const t = (Date.now() - began) / (SECONDS * 1000);
     const figure = Math.floor(random() * 4);
@@ -124,6 +158,7 @@ test(`a page of 12 figures used for ${SECONDS} s stays within 10 % of its memory
       await page.waitForFunction((n) => customElements.get('metaballs-view').devicesCreated > n, created, { timeout: 30_000 });
     } else if (Date.now() - lastScroll > 10_000) {
       lastScroll = Date.now();
+      wasmSeries.push(await page.evaluate(() => customElements.get('metaballs-view').wasmBytes));
       await page.$$eval('metaballs-view', (all, k) => all[k].scrollIntoView(), 4 + Math.floor(random() * 8));
       await page.waitForTimeout(1000);
       await page.evaluate(() => window.scrollTo(0, 0));
@@ -145,6 +180,8 @@ test(`a page of 12 figures used for ${SECONDS} s stays within 10 % of its memory
   await page.waitForTimeout(2000);
   const end = await measure(page, cdp);
   const change = (a, b) => `${(100 * (b - a) / a).toFixed(1)} %`;
+  console.log(`at the end, in parts: ${describe(end, await heapParts(cdp))}`);
+  console.log(`wasm memory every 10 s (MB): ${wasmSeries.map((b) => (b / 1e6).toFixed(2)).join(' ')}`);
   console.log(`after ${actions} actions in ${SECONDS} s: JS heap ${(end.heap / 1e6).toFixed(2)} MB (${change(start.heap, end.heap)}), `
     + `GPU ${(end.gpu / 1e6).toFixed(2)} MB (${change(start.gpu, end.gpu)})`);
   assert.ok(Math.abs(end.heap - start.heap) <= 0.1 * start.heap, `the JS heap went from ${start.heap} to ${end.heap} bytes`);

@@ -8,6 +8,8 @@ import { LossCount } from './losses.js';
 import { describeLoadError, fetchWasm } from './asset-errors.js';
 
 let wasm = null;
+// Each started build's linear memory, by its module.
+const memories = new WeakMap();
 let backend = null;
 let detectedAdapter = null;
 
@@ -47,6 +49,8 @@ let wasmReady = null;
 
 /** True once the wasm has loaded (attributes can be read from then on). */
 export const wasmLoaded = () => wasm !== null;
+/** Bytes of the wasm's linear memory (it grows and never shrinks), 0 before it starts. */
+export const wasmBytes = () => (wasm && memories.get(wasm)?.buffer.byteLength) ?? 0;
 
 // The two builds: their JavaScript and their WebAssembly, fetched together. Each path is written out
 // in full where it is used, so that bundlers (Vite, webpack) find the files and copy them.
@@ -90,7 +94,7 @@ async function start(build) {
   try {
     const module = await build.glue();
     const wasmFile = await fetched;
-    await module.default({ module_or_path: wasmFile.source });
+    memories.set(module, (await module.default({ module_or_path: wasmFile.source })).memory);
     warning = wasmFile.warning;
     return module;
   } catch (error) {
