@@ -111,10 +111,12 @@ impl<M: CpuMeshing> Extractor for CpuMeshExtractor<M> {
         Box::<Self>::default()
     }
 
-    /// Meshes the frame; the buffers need room for its vertices and indices only.
+    /// Meshes the frame; the buffers need room for its vertices and indices only (it fills no block or
+    /// cell lists, and asking for room in them would grow them for nothing).
     fn prepare(&mut self, job: &Job) -> Option<Counters> {
         self.mesher.mesh_job(job);
-        Some(self.counters())
+        let Counters { vertices, indices, .. } = self.counters();
+        Some(Counters { active_blocks: 0, vertices, indices, active_cells: 0 })
     }
 
     fn write(&mut self, output: Output) -> MeshCount {
