@@ -1,7 +1,7 @@
 //! Extraction on the CPU: a mesher (marching cubes, [`CpuMesher`], or surface nets) meshes the frame in
 //! `prepare`, then `write` uploads its vertices and indices into the same buffers the compute passes
-//! fill (`Queue::write_buffer`), and the mesh is drawn the same way. On a software adapter it beats compute passes emulated on the CPU; on
-//! WebGL2 it is the only extractor.
+//! fill (`Queue::write_buffer`), and the mesh is drawn the same way. On a software adapter it beats
+//! compute passes emulated on the CPU; on WebGL2 it is the only extractor.
 
 pub mod facing;
 pub mod mesher;
