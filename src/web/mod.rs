@@ -15,6 +15,7 @@ use web_sys::HtmlCanvasElement;
 
 mod editing;
 mod gpu;
+mod memory;
 mod parameters;
 mod teaching;
 

@@ -51,6 +51,8 @@ let wasmReady = null;
 export const wasmLoaded = () => wasm !== null;
 /** Bytes of the wasm's linear memory (it grows and never shrinks), 0 before it starts. */
 export const wasmBytes = () => (wasm && memories.get(wasm)?.buffer.byteLength) ?? 0;
+/** Bytes the wasm's heap holds (allocated and not freed) for every figure together, 0 before it starts. */
+export const wasmHeapBytes = () => wasm?.heap_bytes() ?? 0;
 
 // The two builds: their JavaScript and their WebAssembly, fetched together. Each path is written out
 // in full where it is used, so that bundlers (Vite, webpack) find the files and copy them.

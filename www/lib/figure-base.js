@@ -2,7 +2,7 @@
 // GPU device and what it holds, where the WebAssembly comes from, and the attributes the element
 // watches. Where the DOM is missing (a server-side build), the class still loads and is never defined.
 
-import { hub, setWasmSources, wasmBytes } from './engine.js';
+import { hub, setWasmSources, wasmBytes, wasmHeapBytes } from './engine.js';
 import { NAMES } from './figure-state.js';
 import { frameBudget, setFrameBudget } from './render-scale.js';
 import { releaseDelay, setReleaseDelay } from './page-watch.js';
@@ -22,6 +22,8 @@ export class FigureBase extends Base {
   static get liveRenderers() { return hub.gpu?.live_renderers() ?? 0; }
   /** Bytes of WebAssembly memory the figures share (it grows and never shrinks). */
   static get wasmBytes() { return wasmBytes(); }
+  /** Bytes the figures hold in that memory (allocated and not freed). */
+  static get wasmHeapBytes() { return wasmHeapBytes(); }
   /** Pipeline sets compiled on the shared device (not one per element). */
   static get pipelineSets() { return hub.gpu?.pipeline_sets_built() ?? 0; }
   /**
