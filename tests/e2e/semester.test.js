@@ -1,7 +1,7 @@
 // A semester of use in headless Chromium (SwiftShader): the render scale falls while frames are over
 // the page's budget and rises again when they are fast, down to `min-render-scale`, and a still figure
 // draws at full scale; a figure long off screen lets go of its GPU memory and comes back with the same
-// picture.
+// picture; a lecture of 24 figures, scrolled through, holds only what the figures on screen need.
 
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -85,5 +85,47 @@ test('a figure off screen for a while lets go of its GPU memory and, back on scr
   assert.equal(await page.$eval('#a', (e) => e.gpuBytes), bytes);
   const differing = await differingFraction(page, before, await picture(page, '#a'));
   assert.equal(differing, 0, `${(100 * differing).toFixed(3)} % of the picture changed`);
+  assert.deepEqual(errors, []);
+});
+
+test('a lecture of 24 figures, scrolled through, holds no more GPU memory than the figures on screen', async () => {
+  const { page, errors } = await open('tests/e2e/fixtures/lecture.html?n=24');
+  await page.waitForFunction(() => [...document.querySelectorAll('metaballs-view')].some((e) => e.framesDrawn > 0),
+    null, { timeout: 30_000 });
+  await page.evaluate(() => { customElements.get('metaballs-view').releaseAfter = 1000; });
+  // Each figure below the fold draws once while the page is idle, for print, and lets go again.
+  await page.$$eval('metaballs-view', (all) => Promise.all(all.map((e) => e.printable())));
+  const onScreen = () => page.$$eval('metaballs-view', (all) => all.map((e, i) => {
+    const box = e.getBoundingClientRect();
+    return { i, bytes: e.gpuBytes, visible: box.bottom > 0 && box.top < innerHeight };
+  }));
+  const totals = () => page.evaluate(() => {
+    const View = customElements.get('metaballs-view');
+    return { bytes: View.gpuBytes, renderers: View.liveRenderers };
+  });
+  let most = { bytes: 0, renderers: 0 };
+  let figureBytes = 0;
+  for (let k = 0; k < 24; k++) {
+    const drawn = await page.$$eval('metaballs-view', (all, i) => { all[i].scrollIntoView({ block: 'center' }); return all[i].framesDrawn; }, k);
+    await page.waitForFunction(([i, n]) => document.querySelectorAll('metaballs-view')[i].framesDrawn > n, [k, drawn], { timeout: 30_000 });
+    figureBytes = Math.max(figureBytes, await page.$$eval('metaballs-view', (all, i) => all[i].gpuBytes, k));
+    await page.waitForTimeout(300);
+    const now = await totals();
+    most = { bytes: Math.max(most.bytes, now.bytes), renderers: Math.max(most.renderers, now.renderers) };
+  }
+  await page.waitForTimeout(2000);
+  const figures = await onScreen();
+  const visible = figures.filter((f) => f.visible);
+  const end = await totals();
+  console.log(`24 figures scrolled through: at most ${most.renderers} renderers and ${(most.bytes / 1e6).toFixed(2)} MB at once `
+    + `(one figure: ${(figureBytes / 1e6).toFixed(2)} MB); at the end ${visible.length} on screen, ${end.renderers} renderers, `
+    + `${(end.bytes / 1e6).toFixed(2)} MB`);
+  assert.ok(visible.length >= 1 && visible.length <= 2);
+  assert.deepEqual(figures.filter((f) => !f.visible && f.bytes > 0).map((f) => f.i), [], 'figures off screen hold GPU memory');
+  assert.equal(end.renderers, visible.length);
+  assert.equal(end.bytes, visible.reduce((sum, f) => sum + f.bytes, 0));
+  assert.ok(end.bytes <= visible.length * figureBytes);
+  // While scrolling, only the figures seen within the last second keep theirs.
+  assert.ok(most.renderers <= 8, `${most.renderers} renderers alive at once`);
   assert.deepEqual(errors, []);
 });
