@@ -85,11 +85,17 @@ const HEAVIEST = {
 const attributes = (page) => page.$$eval('metaballs-view', (all) => all.map((e) => Object.fromEntries(
   [...e.attributes].map((a) => [a.name, a.value]))));
 
-// Gives every figure back the attributes it had (removing those it did not), on screen at the top.
+// Gives every figure back the attributes it had (removing those it did not) and, last, the spheres
+// its `balls` gave it (a change of count since has added or removed spheres, leaving `balls` as it
+// was), on screen at the top.
 async function restore(page, saved) {
   await page.$$eval('metaballs-view', (all, list) => all.forEach((e, i) => {
     for (const a of [...e.attributes]) if (!(a.name in list[i])) e.removeAttribute(a.name);
     for (const [name, value] of Object.entries(list[i])) if (e.getAttribute(name) !== value) e.setAttribute(name, value);
+    if ('balls' in list[i]) {
+      e.removeAttribute('balls');
+      e.setAttribute('balls', list[i].balls);
+    }
   }), saved);
   await page.evaluate(() => window.scrollTo(0, 0));
 }
@@ -107,6 +113,15 @@ async function scrollThrough(page) {
     .every((e) => e.gpuBytes === 0), null, { timeout: 30_000 });
   await page.evaluate(() => window.scrollTo(0, 0));
 }
+
+// A mesh, a picture and a scene from each of the four figures at the top.
+const useOnce = (page) => page.$$eval('metaballs-view', async (all) => {
+  for (const e of all.slice(0, 4)) {
+    await e.exportMesh('stl');
+    await e.picture(1);
+    e.loadScene(e.saveScene());
+  }
+});
 
 async function settle(page) {
   try {
@@ -145,26 +160,14 @@ test(`a page of 12 figures used for ${SECONDS} s stays within 10 % of its memory
       await page.waitForTimeout(150);
     }
   }
-  await page.$$eval('metaballs-view', async (all) => {
-    for (const e of all.slice(0, 4)) {
-      await e.exportMesh('stl');
-      await e.picture(1);
-      e.loadScene(e.saveScene());
-    }
-  });
+  await useOnce(page);
   // The heaviest settings on all four at once, with a mesh, a picture and a scene from each, while
   // the figures below start one after another: what the wasm memory may need at most.
   await page.$$eval('metaballs-view', (all, heaviest) => all.slice(0, 4).forEach((e) => {
     for (const [name, value] of Object.entries(heaviest)) e.setAttribute(name, value);
   }), HEAVIEST);
   await page.waitForTimeout(1000);
-  await page.$$eval('metaballs-view', async (all) => {
-    for (const e of all.slice(0, 4)) {
-      await e.exportMesh('stl');
-      await e.picture(1);
-      e.loadScene(e.saveScene());
-    }
-  });
+  await useOnce(page);
   await scrollThrough(page);
   await restore(page, saved);
   await scrollThrough(page);
