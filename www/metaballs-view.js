@@ -232,6 +232,8 @@ export class MetaballsView extends FigureBase {
     }
     this.#state[name] = value;
     this.#settings.changed.add(name);
+    // Spheres kept from before the renderer was let go give way to spheres the attributes now set.
+    if (name === 'balls' || name === 'spheres' || name === 'seed') this.#frames.savedSpheres = null;
     // The panel is first built when the figure starts (after the attributes are read).
     if (name === 'controls' && this.#started) this.#buildPanel();
     if (name === 'hud') this.#root.getElementById('hud').hidden = value !== 'on';

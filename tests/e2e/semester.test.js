@@ -1,7 +1,8 @@
 // A semester of use in headless Chromium (SwiftShader): the render scale falls while frames are over
 // the page's budget and rises again when they are fast, down to `min-render-scale`, and a still figure
 // draws at full scale; a figure long off screen lets go of its GPU memory and comes back with the same
-// picture; a lecture of 24 figures, scrolled through, holds only what the figures on screen need.
+// picture (or, when its spheres were set meanwhile, those); a lecture of 24 figures, scrolled through,
+// holds only what the figures on screen need.
 
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -127,5 +128,21 @@ test('a lecture of 24 figures, scrolled through, holds no more GPU memory than t
   assert.ok(end.bytes <= visible.length * figureBytes);
   // While scrolling, only the figures seen within the last second keep theirs.
   assert.ok(most.renderers <= 8, `${most.renderers} renderers alive at once`);
+  assert.deepEqual(errors, []);
+});
+
+test('spheres set by attribute while a figure is let go are the ones it draws when it comes back', async () => {
+  const { page, errors } = await open('tests/e2e/fixtures/five.html', { viewport: { width: 840, height: 600 } });
+  await page.waitForFunction(() => document.getElementById('a').stats?.triangles > 0, null, { timeout: 30_000 });
+  await page.evaluate(() => { customElements.get('metaballs-view').releaseAfter = 500; });
+  await page.$eval('#c', (e) => e.scrollIntoView());
+  await page.waitForFunction(() => document.getElementById('a').gpuBytes === 0, null, { timeout: 10_000 });
+  const balls = '-0.3,0,0,0.3,0,0,0;0.35,0.1,0,0.25,0,0,0';
+  await page.$eval('#a', (e, b) => { e.pause(); e.setAttribute('balls', b); }, balls);
+  await page.evaluate(() => window.scrollTo(0, 0));
+  await page.waitForFunction(() => document.getElementById('a').gpuBytes > 0, null, { timeout: 10_000 });
+  await page.$eval('#a', (e) => e.nextFrame());
+  const list = await page.$eval('#a', (e) => e.sphereList.map((b) => [...b.center, b.radius].map((x) => Number(x.toFixed(3)))));
+  assert.deepEqual(list, [[-0.3, 0, 0, 0.3], [0.35, 0.1, 0, 0.25]]);
   assert.deepEqual(errors, []);
 });
