@@ -55,8 +55,12 @@ test('pause_on=merge stops the animation at the frame two blobs become one, and 
   // Two spheres flying at each other.
   const balls = '-0.5,0,0,0.2,0.6,0,0;0.5,0,0,0.2,-0.6,0,0';
   const { page, errors } = await open(`?balls=${balls}&res=32&pause_on=merge&hud=on&mesher=cpu`);
-  await page.waitForFunction(() => document.querySelector('metaballs-view').stats.topology?.components === 2, null, { timeout: 30000 });
-  assert.match(await page.textContent('#hud-topology-text'), /^2 blobs · genus 0 · closed manifold$/);
+  // The HUD says so while they are apart (read in the same moment as the statistics: they may touch soon after).
+  const apart = await page.waitForFunction(() => {
+    const view = document.querySelector('metaballs-view');
+    return view.stats.topology?.components === 2 && view.shadowRoot.getElementById('hud-topology-text').textContent;
+  }, null, { timeout: 30000 });
+  assert.match(await apart.jsonValue(), /^2 blobs · genus 0 · closed manifold$/);
   await page.waitForFunction(() => document.querySelector('metaballs-view').paused, null, { timeout: 60000 });
   const shape = await page.$eval('metaballs-view', (e) => e.stats.topology);
   assert.deepEqual(shape, { components: 1, genus: 0, closed: true, manifold: true });
