@@ -41,11 +41,19 @@ async function measure(page, cdp) {
   await cdp.send('HeapProfiler.collectGarbage');
   const { usedSize } = await cdp.send('Runtime.getHeapUsage');
   const { nodes, jsEventListeners } = await cdp.send('Memory.getDOMCounters');
-  const [gpu, wasm, wasmHeap] = await page.evaluate(() => {
+  const [gpu, wasm, wasmHeap, figures] = await page.evaluate(() => {
     const View = customElements.get('metaballs-view');
-    return [View.gpuBytes, View.wasmBytes, View.wasmHeapBytes];
+    // What each of the four at the top holds and draws, to say which one differs.
+    const figures = [...document.querySelectorAll('metaballs-view')].slice(0, 4).map((e) => {
+      const canvas = e.shadowRoot.getElementById('view');
+      return {
+        gpu: e.gpuBytes, canvas: `${canvas.width}×${canvas.height}`, scale: e.renderScale, paused: e.paused,
+        triangles: e.stats.triangles, attributes: Object.fromEntries([...e.attributes].filter((a) => a.name !== 'balls').map((a) => [a.name, a.value])),
+      };
+    });
+    return [View.gpuBytes, View.wasmBytes, View.wasmHeapBytes, figures];
   });
-  return { used: usedSize, ...(await heapParts(cdp)), nodes, listeners: jsEventListeners, gpu, wasm, wasmHeap };
+  return { used: usedSize, ...(await heapParts(cdp)), nodes, listeners: jsEventListeners, gpu, wasm, wasmHeap, figures };
 }
 
 // What the heap holds, from a CDP heap snapshot: the page's JavaScript objects, compiled code, the
@@ -228,6 +236,9 @@ test(`a page of 12 figures used for ${SECONDS} s stays within 10 % of its memory
   within("the page's JavaScript objects (bytes)", 'objects');
   within('DOM nodes', 'nodes');
   within('event listeners', 'listeners');
+  for (const [i, [a, b]] of start.figures.map((f, k) => [f, end.figures[k]]).entries()) {
+    if (JSON.stringify(a) !== JSON.stringify(b)) console.log(`figure ${i}: ${JSON.stringify(a)} → ${JSON.stringify(b)}`);
+  }
   within('GPU memory (bytes)', 'gpu');
   within('wasm heap (bytes)', 'wasmHeap');
   // The linear memory grows to the most the figures held at once, and stays there: over the last
