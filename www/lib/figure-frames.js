@@ -175,6 +175,7 @@ export class FigureFrames {
       return false;
     }
     f.look.forgetBackground();
+    f.guard.rendererStarted();
     this.apply();
     if (this.#savedSpheres) {
       try {
@@ -333,7 +334,7 @@ export class FigureFrames {
           if (!this.#near) this.release();
           return false;
         }
-        if (blocked > 100) this.#observeCost(blocked);
+        f.guard.frameDrawn(f.settings.applied, now, blocked);
         this.#framesDrawn += 1;
         f.hud.countFrame();
         f.topology().afterFrame(now);
@@ -346,12 +347,13 @@ export class FigureFrames {
       this.fail('The renderer stopped', error?.message ?? String(error));
       return false;
     }
+    const since = f.hud.since;
     const frameMs = f.hud.update(now, view);
     if (frameMs) {
       // Frame times measured while a picture for print was taken (on any figure: it waits for the
       // GPU) say nothing about the settings.
       const pictures = picturesTaken();
-      if (!state.paused && pictures === this.#picturesSeen) this.#observeCost(frameMs);
+      if (!state.paused && pictures === this.#picturesSeen) f.guard.framesTimed(f.settings.applied, since, frameMs);
       this.#picturesSeen = pictures;
       if (animating && this.#size.observe(frameMs)) this.resize();
     }
@@ -363,10 +365,6 @@ export class FigureFrames {
       return false;
     }
     return true;
-  }
-
-  #observeCost(ms) {
-    this.#f.guard.observe(this.#f.settings.applied, ms);
   }
 
   /** The render scale in effect: 1 while the figure is still. */

@@ -24,18 +24,36 @@ export function frameWork({ resolution, spheres, lod = false }) {
   return spheres * (n ** 3 / 64 + 4 * n ** 2);
 }
 
+/** A drawn frame that holds the page longer than this is measured even when the figure is still. */
+const SLOW_FRAME_MS = 100;
+
+/** Measurements the estimate takes the median of. */
+const RECENT = 5;
+
+/** A renderer's first frames build its pipelines and buffers (after a device loss, the device's
+ * shaders too): their times say nothing about the settings. */
+const WARM_FRAMES = 2;
+
 export class FrameCost {
+  // Milliseconds per unit of work of the newest measurements, oldest first.
+  #rates = [];
+
   /** `software`: a software adapter (or WebGL2), for the guess before any frame is measured. */
   constructor(software) {
     this.msPerWork = (software ? GUESS_MS.software : GUESS_MS.hardware) / frameWork(REFERENCE);
     this.measured = false;
   }
 
-  /** Takes in a measured frame time for `settings` (a moving average, so one slow frame does not rule). */
+  /**
+   * Takes in a measured frame time for `settings`. The rate is the median of the newest few (the
+   * higher middle one while they are even), so one slow frame, as when the page stalls, does not rule.
+   */
   observe(settings, ms) {
     if (!(ms > 0) || !Number.isFinite(ms)) return;
-    const rate = ms / frameWork(settings);
-    this.msPerWork = this.measured ? 0.7 * this.msPerWork + 0.3 * rate : rate;
+    this.#rates.push(ms / frameWork(settings));
+    if (this.#rates.length > RECENT) this.#rates.shift();
+    const sorted = [...this.#rates].sort((a, b) => a - b);
+    this.msPerWork = sorted[Math.floor(sorted.length / 2)];
     this.measured = true;
   }
 
@@ -73,9 +91,44 @@ export class CostGuard {
     this.cost ??= new FrameCost(software);
   }
 
-  /** Takes in a measured frame time for the settings in effect (level of detail's frames follow the
-   * screen, not the grid, so they do not teach the uniform grid's rate). */
-  observe({ resolution, spheres, lod }, ms) {
+  // Frames a new renderer draws before they are measured, and when the first measured one began.
+  #warmFrames = 0;
+  #measuredFrom = Infinity;
+  // The last frame drawn, when it held the page long: its work and milliseconds.
+  #lastSlow = null;
+
+  /** A renderer started: its first frames are not measured. */
+  rendererStarted() {
+    this.#warmFrames = WARM_FRAMES;
+    this.#measuredFrom = Infinity;
+  }
+
+  /**
+   * A frame at `settings`, drawn at `now`, held the page for `blockedMs`. A long hold is measured when
+   * the frame before, at the same settings, held it long too (the shorter of the two): a one-off, as
+   * when a shader is built on first use or the tab stalls, is not.
+   */
+  frameDrawn(settings, now, blockedMs) {
+    if (this.#warmFrames > 0) {
+      this.#warmFrames -= 1;
+      if (this.#warmFrames === 0) this.#measuredFrom = now;
+      this.#lastSlow = null;
+      return;
+    }
+    const slow = blockedMs > SLOW_FRAME_MS ? { work: frameWork(settings), ms: blockedMs } : null;
+    const before = this.#lastSlow;
+    this.#lastSlow = slow;
+    if (slow && before?.work === slow.work) this.#observe(settings, Math.min(before.ms, slow.ms));
+  }
+
+  /** The mean time of the frames at `settings` since `since`: measured unless they include the first. */
+  framesTimed(settings, since, ms) {
+    if (since >= this.#measuredFrom) this.#observe(settings, ms);
+  }
+
+  // Level of detail's frames follow the screen, not the grid, so they do not teach the uniform grid's
+  // rate.
+  #observe({ resolution, spheres, lod }, ms) {
     if (!lod) this.cost?.observe({ resolution, spheres }, ms);
   }
 
