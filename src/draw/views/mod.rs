@@ -59,7 +59,7 @@ pub fn needed(options: &ViewOptions, selected: bool) -> bool {
 /// True when the frame's mesh comes without the cell lists the teaching views read: level of detail
 /// and surface nets.
 pub fn mesh_only(options: &ViewOptions) -> bool {
-    options.lod || options.extractor == Method::SurfaceNets
+    options.lod || options.method == Method::SurfaceNets
 }
 
 /// The views `options` ask for that the frame's mesh can show: with level of detail there is no
@@ -69,7 +69,7 @@ pub fn mesh_only(options: &ViewOptions) -> bool {
 pub fn shown(options: &ViewOptions) -> ViewOptions {
     let options = &exact::mesh_side(options);
     if !options.lod {
-        if options.extractor != Method::SurfaceNets {
+        if options.method != Method::SurfaceNets {
             return *options;
         }
         let grid = if options.grid == GridView::Lattice { GridView::Lattice } else { GridView::None };
