@@ -176,10 +176,10 @@ fn make_triangles(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_in
     }
 }
 
-@group(0) @binding(12) var<storage, read_write> draw: DrawIndexedIndirect;
+@group(0) @binding(12) var<storage, read_write> draw_args: DrawIndexedIndirect;
 
 // One invocation: the draw covers the indices written, never more than the buffer holds.
 @compute @workgroup_size(1)
 fn finalize_draw() {
-    draw = indexed_draw(atomicLoad(&counters.indices));
+    draw_args = indexed_draw(atomicLoad(&counters.indices));
 }
