@@ -37,10 +37,10 @@ struct DispatchIndirect {
 const SQUARES_SCALE: f32 = 1048576.0;
 
 @group(0) @binding(2) var<storage, read_write> counters: CounterWords;
-@group(0) @binding(10) var<storage, read> vertices: array<f32>;
-@group(0) @binding(11) var<storage, read> indices: array<u32>;
-@group(0) @binding(24) var<uniform> measure_job: Job;
-@group(0) @binding(25) var<storage, read_write> measure_dispatch: DispatchIndirect;
+@group(0) @binding(11) var<storage, read> vertices: array<f32>;
+@group(0) @binding(12) var<storage, read> indices: array<u32>;
+@group(0) @binding(36) var<uniform> measure_job: Job;
+@group(0) @binding(37) var<storage, read_write> measure_dispatch: DispatchIndirect;
 
 fn vertex_count() -> u32 {
     if (measure_job.known == 1u) {

@@ -30,29 +30,29 @@ struct LodCounters {
 
 @group(0) @binding(2) var<storage, read_write> counters: LodCounters;
 // Kept blocks, as indices into the selection.
-@group(0) @binding(3) var<storage, read_write> kept_blocks: array<u32>;
+@group(0) @binding(24) var<storage, read_write> kept_blocks: array<u32>;
 // The tables, in one buffer (WebGPU lets a stage bind only 8 storage buffers): from CASES, per case
 // bits 0..11 the crossed edges and bits 16.. the triangle count; from TRIANGLES, per case 16 edge
 // numbers of the triangles (0xffffffff after the last); from TRANSITIONS, per transition case 13
 // words: the triangle count, then each triangle's three edges (a byte each, the edge's two samples as
 // nibbles), wound for a right-handed (u, v, w) frame.
-@group(0) @binding(6) var<storage, read> lod_tables: array<u32>;
+@group(0) @binding(25) var<storage, read> lod_tables: array<u32>;
 const CASES: u32 = 0u;
 const TRIANGLES: u32 = 256u;
 const TRANSITIONS: u32 = 4352u;
 // Per vertex, 6 floats: position, then outward normal.
-@group(0) @binding(10) var<storage, read_write> vertices: array<f32>;
-@group(0) @binding(11) var<storage, read_write> indices: array<u32>;
-@group(0) @binding(14) var<uniform> lod: Lod;
+@group(0) @binding(11) var<storage, read_write> vertices: array<f32>;
+@group(0) @binding(12) var<storage, read_write> indices: array<u32>;
+@group(0) @binding(20) var<uniform> lod: Lod;
 // The selection: origin in finest cells (xyz), then level | transition faces << 8.
-@group(0) @binding(15) var<storage, read> selection: array<vec4<u32>>;
+@group(0) @binding(21) var<storage, read> selection: array<vec4<u32>>;
 // The listed cells: kept block's slot, then cell | case << 10 (cells 0..511 regular, 512.. transition).
-@group(0) @binding(16) var<storage, read_write> cells: array<vec2<u32>>;
+@group(0) @binding(22) var<storage, read_write> cells: array<vec2<u32>>;
 // The hash table: per slot, the edge key (0 for an empty slot) and the vertex made for it.
-@group(0) @binding(17) var<storage, read_write> hash: array<atomic<u32>>;
+@group(0) @binding(23) var<storage, read_write> hash: array<atomic<u32>>;
 // Per triangle, its level (with TRANSITION added for a transition cell's); then from
 // lod.blocks_offset the kept blocks as the views draw them (grid=blocks), four words each.
-@group(0) @binding(20) var<storage, read_write> lod_data: array<u32>;
+@group(0) @binding(14) var<storage, read_write> lod_data: array<u32>;
 
 const LOD_CELLS: u32 = 8u;
 const LOD_POINTS: u32 = 9u;
@@ -124,7 +124,7 @@ struct DispatchIndirect {
 }
 
 // [0]: one workgroup per kept block; [1]: one invocation per listed cell.
-@group(0) @binding(5) var<storage, read_write> lod_dispatch: array<DispatchIndirect, 2>;
+@group(0) @binding(26) var<storage, read_write> lod_dispatch: array<DispatchIndirect, 2>;
 
 fn rows(count: u32) -> DispatchIndirect {
     return DispatchIndirect(min(count, DISPATCH_ROW), (count + DISPATCH_ROW - 1u) / DISPATCH_ROW, 1u);
@@ -435,7 +435,7 @@ fn make_triangles(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_in
     }
 }
 
-@group(0) @binding(12) var<storage, read_write> draw_args: DrawIndexedIndirect;
+@group(0) @binding(13) var<storage, read_write> draw_args: DrawIndexedIndirect;
 
 @compute @workgroup_size(1)
 fn finalize_draw() {
