@@ -244,6 +244,20 @@ pub fn parameters_json() -> String {
             row["description"] = json!(description(p));
             row["noun"] = json!(p.noun);
             row["expected"] = json!(expected(p));
+            if p.kind == Kind::Controls {
+                // The older spellings of the controls a list may name.
+                let aliases: serde_json::Map<String, Json> = PARAMETERS
+                    .iter()
+                    .filter(|q| q.group != crate::scene::params::Group::None)
+                    .flat_map(|q| q.aliases.iter().map(move |a| (a.to_string(), json!(q.name))))
+                    .chain(
+                        ACTIONS
+                            .iter()
+                            .flat_map(|a| a.aliases.iter().map(move |o| (o.to_string(), json!(a.name)))),
+                    )
+                    .collect();
+                row["wordAliases"] = Json::Object(aliases);
+            }
             row
         })
         .collect();
