@@ -11,7 +11,7 @@ use glam::{UVec3, Vec3};
 use metaballs::draw::slice;
 use metaballs::extract::reference::{self, Construction, Grid};
 use metaballs::offscreen::{Offscreen, write_png};
-use metaballs::scene::params::view::{Blend, Interpolation, Slice};
+use metaballs::scene::params::view::{Blend, Interpolation, Saddle, Slice};
 use metaballs::teach::case_classes::case_classes;
 use metaballs::{Scene, Settings};
 
@@ -206,6 +206,54 @@ fn oracle_crossed_cells(
     count
 }
 
+/// The same segments, in any order and either direction, to a ten-thousandth of a cell.
+fn assert_same_segments(mut actual: Vec<[Vec3; 2]>, expected: &mut [[Vec3; 2]], grid: Grid) {
+    assert_eq!(actual.len(), expected.len(), "segment count");
+    let key = |s: &[Vec3; 2]| {
+        let m = (s[0] + s[1]) * 0.5;
+        [m.x, m.y, m.z].map(|c| (c * 1e4).round() as i64)
+    };
+    actual.sort_by_key(key);
+    expected.sort_by_key(key);
+    let tolerance = 1e-4 * grid.cell_size();
+    for (a, e) in actual.iter().zip(expected.iter()) {
+        let same =
+            |x: [Vec3; 2], y: &[Vec3; 2]| x[0].distance(y[0]) < tolerance && x[1].distance(y[1]) < tolerance;
+        assert!(same(*a, e) || same([a[1], a[0]], e), "segment {a:?} vs {e:?}");
+    }
+}
+
+#[test]
+fn the_slice_joins_saddle_squares_by_its_rule_as_the_oracle_does() {
+    with_renderer(Settings { resolution: 12, ..teaching_settings() }, WIDTH, HEIGHT, |o| {
+        o.renderer.update(1.0).unwrap();
+        let spheres = o.renderer.scene().spheres().to_vec();
+        let grid = Grid { cells_per_axis: 12 };
+        let iso = o.renderer.settings().iso;
+        let rules = [Saddle::Table, Saddle::Center, Saddle::Decider];
+        let contour = |slice, rule| slice::contour(&spheres, iso, grid, slice, Construction::default(), rule);
+        // A plane of the grid on which the rules join some saddle square differently.
+        let plane = (0..=12)
+            .flat_map(|k| (0..3).map(move |axis| Slice { axis, position: k as f32 / 6.0 - 1.0 }))
+            .find(|&slice| {
+                let key = |s: &Vec<[Vec3; 2]>| format!("{s:?}");
+                let table = key(&contour(slice, Saddle::Table));
+                key(&contour(slice, Saddle::Center)) != table
+                    || key(&contour(slice, Saddle::Decider)) != table
+            })
+            .expect("a grid plane where the saddle rules differ");
+        for rule in rules {
+            let text = format!("{}:{}", ["x", "y", "z"][plane.axis as usize], plane.position);
+            let settings =
+                o.renderer.settings().with_parameters(&[("slice", &text), ("saddle", rule.word())]).unwrap();
+            o.renderer.set_settings(settings).unwrap();
+            o.render();
+            let readback = pollster::block_on(o.renderer.read_overlays()).expect("the views drew");
+            assert_same_segments(readback.segments.clone(), &mut contour(plane, rule), grid);
+        }
+    });
+}
+
 #[test]
 fn overlays_draw_what_the_oracle_finds() {
     with_renderer(Settings { resolution: 24, ..teaching_settings() }, WIDTH, HEIGHT, |o| {
@@ -224,23 +272,11 @@ fn overlays_draw_what_the_oracle_finds() {
 
         // The slice's contour: marching squares on the oracle's samples of the same plane.
         let plane = Slice { axis: 1, position: -0.2 };
-        let mut expected = slice::contour(&spheres, settings.iso, grid, plane, Construction::default());
-        let mut actual = readback.segments.clone();
-        assert_eq!(actual.len(), expected.len(), "segment count");
+        let mut expected =
+            slice::contour(&spheres, settings.iso, grid, plane, Construction::default(), Saddle::Table);
         assert!(expected.len() > 10);
-        let key = |s: &[Vec3; 2]| {
-            let m = (s[0] + s[1]) * 0.5;
-            (m.x * 1e4).round() as i64 * 1_000_000 + (m.z * 1e4).round() as i64
-        };
-        actual.sort_by_key(key);
-        expected.sort_by_key(key);
+        assert_same_segments(readback.segments.clone(), &mut expected, grid);
         let tolerance = 1e-4 * grid.cell_size();
-        for (a, e) in actual.iter().zip(&expected) {
-            let same = |x: [Vec3; 2], y: &[Vec3; 2]| {
-                x[0].distance(y[0]) < tolerance && x[1].distance(y[1]) < tolerance
-            };
-            assert!(same(*a, e) || same([a[1], a[0]], e), "segment {a:?} vs {e:?}");
-        }
         // On the plane, and on the surface: every endpoint is a vertex of the oracle's mesh.
         let y = grid.point(UVec3::new(0, plane.plane(24), 0)).y;
         for p in expected.iter().flatten() {

@@ -69,6 +69,8 @@ export declare class MetaballsView extends HTMLElement {
   interpolation: 'linear' | 'midpoint';
   /** Blend: sum, max. Attribute `blend`; default "sum". */
   blend: 'sum' | 'max';
+  /** Saddle: table, center, decider. Attribute `saddle`; default "table". */
+  saddle: 'table' | 'center' | 'decider';
   /** Light: all, none, or a comma list of point, directional, spot. Attribute `light`; default "point". */
   light: string;
   /** Spot cone angle (degrees): 2 to 80. Attribute `spot-angle`; default 15. */
@@ -99,7 +101,7 @@ export declare class MetaballsView extends HTMLElement {
   divider: number;
   /** Sphere-list: x,y,z,radius[,vx,vy,vz] per sphere joined by ; (a negative radius subtracts). Attribute `sphere-list`; default "". */
   sphereList: string;
-  /** Controls: all, none, or a comma list of spheres, iso, resolution, lod, lod-pixels, lod-freeze, mesh-on, method, speed, seed, paused, pause-on, step, view, display, compare, grid, color-by, ambiguous, color, theme, antialiasing, slice, interpolation, blend, inspector, error-plot, light, spot-angle, spot-softness, ambient, diffuse, specular, shininess, projection, fov, edit, scene, export. Attribute `controls`; default "none". */
+  /** Controls: all, none, or a comma list of spheres, iso, resolution, lod, lod-pixels, lod-freeze, mesh-on, method, speed, seed, paused, pause-on, step, view, display, compare, grid, color-by, ambiguous, color, theme, antialiasing, slice, interpolation, blend, saddle, inspector, error-plot, light, spot-angle, spot-softness, ambient, diffuse, specular, shininess, projection, fov, edit, scene, export. Attribute `controls`; default "none". */
   controls: string;
   /** Hud: on, off. Attribute `hud`; default "off". */
   hud: 'on' | 'off';

@@ -77,6 +77,26 @@ fn edge_point(square: vec2<u32>, e: u32) -> vec3<f32> {
     return pa + (pb - pa) * t;
 }
 
+// Whether a saddle square's inside corners join, by the rule `shading.saddle` (src/draw/slice.rs,
+// `saddle_joins`, is the same rule on the CPU).
+fn saddle_joins(square: vec2<u32>) -> bool {
+    let row = grid.cells_per_axis + 1u;
+    var f: array<f32, 4>;
+    for (var k = 0u; k < 4u; k++) {
+        let c = square + square_corner(k);
+        f[k] = slice_values[c.x + row * c.y];
+    }
+    if (shading.saddle == 1u) {
+        return (f[0] + f[1] + f[2] + f[3]) * 0.25 > grid.iso;
+    }
+    if (shading.saddle == 2u) {
+        // The bilinear interpolant's value at its saddle point; the diagonals differ in sign, so the
+        // denominator is never zero here.
+        return (f[0] * f[2] - f[1] * f[3]) / (f[0] + f[2] - f[1] - f[3]) > grid.iso;
+    }
+    return false;
+}
+
 @compute @workgroup_size(8, 8)
 fn contour_slice(@builtin(global_invocation_id) g: vec3<u32>) {
     let n = grid.cells_per_axis;
@@ -89,7 +109,13 @@ fn contour_slice(@builtin(global_invocation_id) g: vec3<u32>) {
         let c = g.xy + square_corner(k);
         case_index |= select(0u, 1u << k, slice_values[c.x + row * c.y] > grid.iso);
     }
-    let packed = square_segments[case_index / 4u][case_index % 4u];
+    // A saddle square (two inside corners on a diagonal) whose inside corners the rule joins takes the
+    // other diagonal's segments, which cut off the outside corners instead.
+    var segment_case = case_index;
+    if ((case_index == 5u || case_index == 10u) && saddle_joins(g.xy)) {
+        segment_case = 15u - case_index;
+    }
+    let packed = square_segments[segment_case / 4u][segment_case % 4u];
     for (var s = 0u; s < 2u; s++) {
         let pair = (packed >> (8u * s)) & 0xffu;
         if ((pair & 0xfu) == 0xfu) {

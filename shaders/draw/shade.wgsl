@@ -56,6 +56,9 @@ struct Shading {
     divider: f32,
     // Clip space to world: the exact view's rays.
     inverse_view_proj: mat4x4<f32>,
+    // How the slice's contour joins a saddle square: 0 the table's choice, 1 the centre value, 2 the
+    // asymptotic decider (shaders/draw/overlays.wgsl).
+    saddle: u32,
 }
 
 @group(0) @binding(30) var<uniform> shading: Shading;

@@ -5,7 +5,7 @@
 
 use crate::extract::reference::{Construction, Grid, blended_field_at};
 use crate::scene::Sphere;
-use crate::scene::params::view::{Blend, Slice};
+use crate::scene::params::view::{Blend, Saddle, Slice};
 use glam::{UVec2, UVec3, Vec3};
 
 /// Square corners: 0 (0,0), 1 (1,0), 2 (1,1), 3 (0,1). Edges: 0 bottom (0→1), 1 right (1→2),
@@ -78,13 +78,26 @@ pub fn samples(spheres: &[Sphere], grid: Grid, slice: Slice, blend: Blend) -> Ve
     values
 }
 
-/// The iso contour on the slice: segments, square by square, in the table's order.
+/// Whether a saddle square's inside corners join (the contour then cuts off its outside corners),
+/// from the values at its corners 0 to 3, by `rule`.
+pub fn saddle_joins(rule: Saddle, f: [f32; 4], iso: f32) -> bool {
+    match rule {
+        Saddle::Table => false,
+        Saddle::Center => (f[0] + f[1] + f[2] + f[3]) * 0.25 > iso,
+        // The bilinear interpolant's value at its saddle point.
+        Saddle::Decider => (f[0] * f[2] - f[1] * f[3]) / (f[0] + f[2] - f[1] - f[3]) > iso,
+    }
+}
+
+/// The iso contour on the slice: segments, square by square, in the table's order, saddle squares
+/// joined by `saddle`.
 pub fn contour(
     spheres: &[Sphere],
     iso: f32,
     grid: Grid,
     slice: Slice,
     construction: Construction,
+    saddle: Saddle,
 ) -> Vec<[Vec3; 2]> {
     let values = samples(spheres, grid, slice, construction.blend);
     let row = grid.points_per_axis();
@@ -103,7 +116,9 @@ pub fn contour(
                 let t = construction.edge_parameter(iso, value(a), value(b));
                 pa + (pb - pa) * t
             };
-            for pair in SQUARE_SEGMENTS[case] {
+            let corners = [0, 1, 2, 3].map(|k| value(square + corner(k)));
+            let joined = (case == 5 || case == 10) && saddle_joins(saddle, corners, iso);
+            for pair in SQUARE_SEGMENTS[if joined { 15 - case } else { case }] {
                 segments.push([point(pair[0]), point(pair[1])]);
             }
         }
@@ -131,11 +146,29 @@ mod tests {
     }
 
     #[test]
+    fn saddle_rules_decide_by_the_corners_the_centre_or_the_interpolants_saddle() {
+        // Corners 0 and 2 inside at iso 1. The centre's mean (0.8475) leaves them apart; the bilinear
+        // interpolant's saddle (1.44 / 1.41 ≈ 1.021) lies above the level, joining them.
+        let f = [1.2, 0.99, 1.2, 0.0];
+        assert!(!saddle_joins(Saddle::Table, f, 1.0));
+        assert!(!saddle_joins(Saddle::Center, f, 1.0));
+        assert!(saddle_joins(Saddle::Decider, f, 1.0));
+        // High inside corners: every rule but the table's joins them.
+        let f = [3.0, 0.0, 3.0, 0.5];
+        assert!(saddle_joins(Saddle::Center, f, 1.0) && saddle_joins(Saddle::Decider, f, 1.0));
+        // Case 10 (corners 1 and 3 inside): the same rules, the other diagonal.
+        let f = [0.99, 1.2, 0.0, 1.2];
+        assert!(saddle_joins(Saddle::Decider, f, 1.0) && !saddle_joins(Saddle::Center, f, 1.0));
+        // Joined, a saddle square takes the other diagonal's segments: they cut off the outside corners.
+        assert_eq!(SQUARE_SEGMENTS[15 - 5], &[[0, 1], [2, 3]]);
+    }
+
+    #[test]
     fn a_sphere_cut_through_its_centre_gives_a_closed_ring_on_its_circle() {
         let spheres = [Sphere { center: Vec3::ZERO, radius: 0.5, velocity: Vec3::ZERO, charge: 1.0 }];
         let grid = Grid { cells_per_axis: 32 };
         let slice = Slice { axis: 2, position: 0.0 };
-        let segments = contour(&spheres, 1.0, grid, slice, Construction::default());
+        let segments = contour(&spheres, 1.0, grid, slice, Construction::default(), Saddle::Table);
         assert!(segments.len() > 40);
         for s in &segments {
             for p in s {

@@ -76,5 +76,8 @@ pub struct ShadingUniform {
     pub divider: f32,
     /// Clip space to world, for the exact view's rays.
     pub inverse_view_proj: [[f32; 4]; 4],
+    /// `Saddle::index`: how the slice's contour joins a saddle square.
+    pub saddle: u32,
+    pub _padding: [u32; 3],
 }
-const _: () = assert!(std::mem::size_of::<ShadingUniform>() == 512);
+const _: () = assert!(std::mem::size_of::<ShadingUniform>() == 528);

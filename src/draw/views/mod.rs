@@ -346,6 +346,7 @@ pub fn view_fields(uniform: &mut ShadingUniform, options: &ViewOptions, grid: Gr
     uniform.divider = options.divider;
     uniform.color_by = options.color_by.index();
     uniform.grid_view = options.grid.index();
+    uniform.saddle = options.saddle.index();
     uniform.cells_per_axis = grid.cells_per_axis;
     uniform.cell_size = grid.cell_size();
     uniform.lattice_alpha = (4.0 / grid.cells_per_axis as f32).clamp(0.08, 0.25);

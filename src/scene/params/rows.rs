@@ -6,7 +6,7 @@
 use super::table::{Action, Field, Group, Kind, Parameter, Value, number, row};
 use super::view::{
     Blend, ColorBy, Compare, Display, GridView, Interpolation, LIGHT_KINDS, Lights, MeshOn, Method,
-    Projection, Slice, Theme,
+    Projection, Saddle, Slice, Theme,
 };
 use super::{MAX_RESOLUTION, MAX_SPHERES, MIN_RESOLUTION, linear_to_srgb_hex, srgb_hex_to_linear};
 use Group::{Camera, Display as Look, Light, Scene, Surface, Teaching};
@@ -139,6 +139,10 @@ pub const PARAMETERS: &[Parameter] = &[
         .group(Teaching)
         .renderer(word!(interpolation: Interpolation)),
     row("blend", "Blend", Kind::Choice(Blend::WORDS), "sum").group(Teaching).renderer(word!(blend: Blend)),
+    row("saddle", "Saddles", Kind::Choice(Saddle::WORDS), "table")
+        .group(Teaching)
+        .compute()
+        .renderer(word!(saddle: Saddle)),
     // Light
     row("light", "Lights", Kind::List(LIGHT_KINDS), "point").group(Light).renderer(Field::View {
         set: |o, v| o.lights = Lights::from_list(v.text()),

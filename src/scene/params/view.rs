@@ -146,6 +146,20 @@ choice!(
     }
 );
 
+choice!(
+    /// How marching squares joins a saddle square of the field slice: one whose two inside corners sit
+    /// on a diagonal (cases 5 and 10), which the corners alone cannot decide.
+    Saddle {
+        /// The table's fixed choice: each inside corner cut off on its own.
+        Table = "table",
+        /// The mean of the four corners decides: above the iso level, the inside corners join.
+        Center = "center",
+        /// The asymptotic decider: the bilinear interpolant's value at its saddle point decides, so the
+        /// contour has the interpolant's topology.
+        Decider = "decider",
+    }
+);
+
 /// Light kinds a scene can have at once (up to one of each).
 pub const LIGHT_KINDS: &[&str] = &["point", "directional", "spot"];
 
@@ -257,6 +271,8 @@ pub struct ViewOptions {
     pub ambiguous: bool,
     pub interpolation: Interpolation,
     pub blend: Blend,
+    /// How the field slice's contour joins its saddle squares.
+    pub saddle: Saddle,
     pub lights: Lights,
     /// The spot light's cone half-angle, degrees.
     pub spot_angle: f32,
@@ -296,6 +312,7 @@ impl ViewOptions {
             ambiguous: false,
             interpolation: Interpolation::Linear,
             blend: Blend::Sum,
+            saddle: Saddle::Table,
             lights: Lights { point: false, directional: false, spot: false },
             spot_angle: 0.0,
             spot_softness: 0.0,
