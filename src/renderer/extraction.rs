@@ -4,11 +4,10 @@
 use super::{FrameStats, Renderer, Sizing};
 use crate::draw::shade::DrawCount;
 use crate::draw::views;
-use crate::extract::lod::LodSummary;
 use crate::extract::lod::select::Eye;
 use crate::extract::reference::Construction;
 use crate::extract::uniforms::LEVEL_SLOTS;
-use crate::extract::{Capabilities, Extractor, Job, LodJob, MeshCount, Output, Viewpoint};
+use crate::extract::{Capabilities, Extractor, Job, LodJob, LodSummary, MeshCount, Output, Viewpoint};
 use crate::scene::BOX_HALF_EXTENT;
 use crate::scene::params::ParamError;
 use crate::scene::params::view::Mesher;
