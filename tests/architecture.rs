@@ -11,7 +11,7 @@ use std::path::{Path, PathBuf};
 
 /// The folders of `src/`, lowest first; a folder may import its own and those before it. Modules at
 /// the top of `src/` (the native tools, `lib.rs`, `main.rs`) and `web/` may import any.
-const LAYERS: &[&str] = &["scene", "device", "extract", "teach", "draw", "renderer"];
+const LAYERS: &[&str] = &["scene", "device", "extract", "teach", "view", "draw", "renderer"];
 const SHELLS: &[&str] = &["web"];
 /// The scene's modules, in the only order they may import each other.
 const SCENE_ORDER: &[&str] = &["checks", "sphere", "params", "motion", "file"];
@@ -129,6 +129,15 @@ fn extractors_do_not_know_each_other_and_the_scene_knows_no_gpu() {
             || ["extract/tables.rs", "extract/reference.rs", "extract/mesh.rs", "extract/cpu/mesher.rs"]
                 .contains(&file.as_str());
         if plain {
+            assert!(!code.contains("wgpu"), "{file} uses wgpu");
+        }
+    }
+}
+
+#[test]
+fn the_view_knows_no_gpu() {
+    for (file, code) in code() {
+        if file.starts_with("view/") {
             assert!(!code.contains("wgpu"), "{file} uses wgpu");
         }
     }

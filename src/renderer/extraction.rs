@@ -147,19 +147,12 @@ impl Renderer {
 
     /// The camera as level selection sees it.
     fn lod_eye(&self) -> Eye {
-        let camera = &self.settings.camera;
-        let half_fov = (camera.fov_y_degrees.to_radians() / 2.0).tan();
-        let orthographic = self.settings.view.projection == Projection::Orthographic;
-        let height = self.size.1 as f32;
+        let view = self.camera_view();
         Eye {
-            position: camera.eye(),
-            view_projection: self.view_projection(),
-            pixels_per_unit: if orthographic {
-                height / (2.0 * camera.distance * half_fov)
-            } else {
-                height / (2.0 * half_fov)
-            },
-            orthographic,
+            position: view.eye(),
+            view_projection: view.view_projection(),
+            pixels_per_unit: view.pixels_per_unit(),
+            orthographic: view.projection == Projection::Orthographic,
             lod_pixels: self.settings.view.lod_pixels,
         }
     }
