@@ -10,7 +10,7 @@ use crate::view::{CameraView, Picker, edit};
 impl Renderer {
     /// The camera as it frames this renderer's output.
     pub fn camera_view(&self) -> CameraView {
-        CameraView::new(&self.settings, self.size)
+        CameraView::new(&self.settings, self.target.size)
     }
 
     /// The current surface as the camera shows it, for picking.

@@ -33,13 +33,12 @@ impl Renderer {
 
     /// Shows `cell` in the inspector (highlighted in the view every frame), or nothing.
     pub fn select_cell(&mut self, cell: Option<UVec3>) {
-        let n = self.settings.resolution;
-        self.selected = cell.filter(|c| c.max_element() < n);
+        self.teaching.select(cell, self.settings.resolution);
     }
 
     /// The cell the inspector shows.
     pub fn selected_cell(&self) -> Option<UVec3> {
-        self.selected
+        self.teaching.selected
     }
 
     /// What marching cubes decides in `cell` now.

@@ -14,7 +14,7 @@ impl Renderer {
     pub(super) fn write_uniforms(&self) {
         let grid = self.grid();
         let spheres = self.scene.spheres();
-        let capacity = self.mesh.capacity;
+        let capacity = self.stage.buffers.capacity;
         let grid_uniform = GridUniform {
             box_min: [-BOX_HALF_EXTENT; 3],
             cell_size: grid.cell_size(),
@@ -46,13 +46,13 @@ impl Renderer {
             diffuse: s.material.diffuse,
             specular: s.material.specular,
             shininess: s.material.shininess,
-            encode_srgb: (!self.format.is_srgb()) as u32,
+            encode_srgb: self.target.encodes_srgb() as u32,
             box_half_extent: BOX_HALF_EXTENT,
-            viewport: [self.size.0 as f32, self.size.1 as f32],
+            viewport: self.target.viewport(),
             iso: s.iso,
-            selected: self.selected.is_some() as u32,
-            selected_cell: self.selected.unwrap_or(UVec3::ZERO).to_array(),
-            lod_blocks_offset: self.mesh.lod_blocks_offset(),
+            selected: self.teaching.selected.is_some() as u32,
+            selected_cell: self.teaching.selected.unwrap_or(UVec3::ZERO).to_array(),
+            lod_blocks_offset: self.stage.buffers.lod_blocks_offset(),
             lights: lights(&self.settings),
             background_top: s.view.background()[0],
             background_bottom: s.view.background()[1],
