@@ -8,6 +8,8 @@
 //! - [`extract`]: isosurface extraction behind one [`extract::Extractor`] interface: the tables, the
 //!   CPU oracle, the CPU mesher, and the GPU's compute passes (blocks → field → marching cubes).
 //! - [`teach`]: what the teaching views explain, computed on the CPU (case classes, the picked cell).
+//! - [`view`]: the camera on an output, on the CPU: pixels to rays and back, picking a cell or a
+//!   sphere, moving and adding spheres by pointer.
 //! - [`draw`]: shading the mesh into a view, the teaching views, the field slice.
 //! - [`renderer`]: one [`Renderer`] orders a frame (update the scene → extract → draw) into any
 //!   texture view; renderers on one device share a [`GpuContext`].
@@ -22,6 +24,8 @@ pub mod device;
 pub mod extract;
 
 pub mod teach;
+
+pub mod view;
 
 pub mod draw;
 

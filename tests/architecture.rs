@@ -1,14 +1,17 @@
 //! The layout's rules, checked on the source: each folder of `src/` imports only the folders below it
-//! (`docs/architecture.md`), the scene's modules import in one direction, the extractors do not know
-//! each other, and the scene and the tables know nothing of wgpu.
+//! (`docs/architecture.md`), no module imports itself through others, the scene's modules import in one
+//! direction, the extractors do not know each other, and the scene and the tables know nothing of wgpu.
 #![cfg(not(target_arch = "wasm32"))]
+
+#[path = "architecture/imports.rs"]
+mod imports;
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 /// The folders of `src/`, lowest first; a folder may import its own and those before it. Modules at
 /// the top of `src/` (the native tools, `lib.rs`, `main.rs`) and `web/` may import any.
-const LAYERS: &[&str] = &["scene", "device", "extract", "teach", "draw", "renderer"];
+const LAYERS: &[&str] = &["scene", "device", "extract", "teach", "view", "draw", "renderer"];
 const SHELLS: &[&str] = &["web"];
 /// The scene's modules, in the only order they may import each other.
 const SCENE_ORDER: &[&str] = &["checks", "sphere", "params", "motion", "file"];
@@ -132,6 +135,15 @@ fn extractors_do_not_know_each_other_and_the_scene_knows_no_gpu() {
 }
 
 #[test]
+fn the_view_knows_no_gpu() {
+    for (file, code) in code() {
+        if file.starts_with("view/") {
+            assert!(!code.contains("wgpu"), "{file} uses wgpu");
+        }
+    }
+}
+
+#[test]
 fn the_architecture_page_names_every_folder() {
     let page = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/architecture.md"))
         .expect("docs/architecture.md");
@@ -141,4 +153,37 @@ fn the_architecture_page_names_every_folder() {
     for folder in ["shaders/extract/", "shaders/draw/", "shaders/draw/views/"] {
         assert!(page.contains(folder), "docs/architecture.md does not name {folder}");
     }
+}
+
+#[test]
+fn the_rust_modules_import_without_cycles() {
+    let cycles = imports::cycles(&imports::import_graph(&code()));
+    let named: Vec<String> = cycles.iter().map(|cycle| cycle.join(" → ")).collect();
+    assert!(named.is_empty(), "modules of src/ that import themselves through others:\n{}", named.join("\n"));
+}
+
+#[test]
+fn the_import_graph_reads_use_trees_and_paths_and_names_a_cycle() {
+    let files = |list: &[(&str, &str)]| -> BTreeMap<String, String> {
+        list.iter().map(|(file, code)| (file.to_string(), code.to_string())).collect()
+    };
+    let layout = [
+        ("lib.rs", "pub mod a;\npub mod b;"),
+        ("a/mod.rs", "mod x;\nmod y;\npub use x::T;\nfn f() { y::g(); }"),
+        ("a/x.rs", "use super::T;\nuse crate::{b::{self, c::U as V}};\nmod tests { use super::*; }"),
+        ("a/y.rs", "pub fn g() {}"),
+        ("b/mod.rs", "pub mod c;"),
+        ("b/c.rs", "pub struct U;\nfn h() -> super::super::a::y::G { todo!() }"),
+    ];
+    let graph = imports::import_graph(&files(&layout));
+    let edges = |file: &str| graph[file].iter().cloned().collect::<Vec<_>>();
+    assert_eq!(edges("a/mod.rs"), ["a/x.rs", "a/y.rs"], "a parent's imports of its files count");
+    assert_eq!(edges("a/x.rs"), ["b/c.rs", "b/mod.rs"], "nor its parent nor itself");
+    assert_eq!(edges("b/c.rs"), ["a/y.rs"]);
+    assert!(imports::cycles(&graph).is_empty());
+
+    let mut looped = layout.to_vec();
+    looped[3] = ("a/y.rs", "use crate::b::c::U;");
+    let cycles = imports::cycles(&imports::import_graph(&files(&looped)));
+    assert_eq!(cycles, [["a/y.rs", "b/c.rs", "a/y.rs"]]);
 }

@@ -3,7 +3,6 @@
 
 use super::buffers::MeshBuffers;
 use super::gpu::scene_buffers::SceneBuffers;
-use super::lod::LodSummary;
 use super::lod::select::Eye;
 use super::mesh::IndexedMesh;
 use super::reference::{Construction, Grid};
@@ -47,6 +46,20 @@ pub struct LodJob {
     pub eye: Eye,
     /// Keep the selection of the last frame whatever the camera does (`lod_freeze`).
     pub freeze: bool,
+}
+
+/// What a LOD frame held, level by level (finest first), for the HUD and the statistics.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct LodSummary {
+    /// The finest level's cells per axis: the resolution of a uniform grid as fine.
+    pub resolution: u32,
+    /// Selected blocks per level.
+    pub blocks: Vec<u32>,
+    /// Triangles per level, where the extractor counts them on the CPU.
+    pub triangles: Option<Vec<u32>>,
+    /// Cells meshed: regular cells of the blocks the bounds kept and their transition cells, where
+    /// the extractor counts them on the CPU.
+    pub cells_processed: Option<u64>,
 }
 
 /// Where a frame's mesh goes: the shared buffers, the scene as the device reads it and the frame's

@@ -1,14 +1,14 @@
 //! Choosing the extractor for a frame and running it into the renderer's buffers. The renderer knows
 //! extractors by their capabilities; names appear only where the `mesher` setting picks one.
 
-use super::{FrameStats, Renderer, Sizing};
+use super::stage::Counted;
+use super::{FrameStats, Renderer};
 use crate::draw::shade::DrawCount;
 use crate::draw::views;
-use crate::extract::lod::LodSummary;
 use crate::extract::lod::select::Eye;
 use crate::extract::reference::Construction;
 use crate::extract::uniforms::LEVEL_SLOTS;
-use crate::extract::{Capabilities, Extractor, Job, LodJob, MeshCount, Output, Viewpoint};
+use crate::extract::{Capabilities, Extractor, Job, LodJob, LodSummary, MeshCount, Output, Viewpoint};
 use crate::scene::BOX_HALF_EXTENT;
 use crate::scene::params::ParamError;
 use crate::scene::params::view::MeshOn;
@@ -18,7 +18,7 @@ impl Renderer {
     /// Makes this frame's mesh with the chosen extractor: the room it reports is made first (a fixed
     /// triangle budget clamps instead, as on the device), then it writes into the buffers.
     pub(super) fn make_mesh(&mut self, encoder: &mut wgpu::CommandEncoder, timed: bool) -> DrawCount {
-        self.active = self.next_extractor();
+        self.stage.active = self.next_extractor();
         let view = &self.settings.view;
         let job = Job {
             spheres: self.scene.spheres(),
@@ -27,47 +27,53 @@ impl Renderer {
             construction: Construction { interpolation: view.interpolation, blend: view.blend },
             lod: view.lod.then(|| LodJob { eye: self.lod_eye(), freeze: view.lod_freeze }),
         };
-        if let Some(mut room) = self.extractors[self.active].prepare(&job) {
-            if let Sizing::FixedTriangles(n) = self.sizing {
-                room.indices = room.indices.min(3 * n);
-            }
-            if !self.mesh.capacity.holds(&room) {
-                self.reallocate(self.mesh.capacity.grown_for(&room));
+        let active = self.stage.active;
+        if let Some(room) = self.stage.extractors[active].prepare(&job) {
+            let room = self.stage.budgeted(room);
+            let capacity = self.stage.buffers.capacity;
+            if !capacity.holds(&room) {
+                self.reallocate(capacity.grown_for(&room));
             }
         }
         let front_faces = self.front_faces_from();
+        let stage = &mut self.stage;
         let output = Output {
             device: &self.device,
             queue: &self.queue,
             scene: &self.scene_buffers,
             encoder,
-            buffers: &self.mesh,
-            timing: self.timing.as_ref().filter(|_| timed),
+            buffers: &stage.buffers,
+            timing: self.stats.timing_for(timed),
             front_faces,
         };
-        self.counted_on_device = false;
-        self.mesh_closed = false;
-        self.drawn = None;
-        match self.extractors[self.active].write(output) {
+        stage.counted = Counted::default();
+        match stage.extractors[active].write(output) {
             MeshCount::OnDevice => {
-                self.counted_on_device = true;
+                stage.counted.on_device = true;
                 DrawCount::Indirect
             }
             MeshCount::Known { needed, indices, drawn } => {
-                let (grid, capacity, bytes) = (self.grid(), self.mesh.capacity, self.mesh.bytes());
+                let (capacity, bytes) = (stage.buffers.capacity, stage.buffers.bytes());
                 let overflowed = indices < needed.indices;
-                let made_by = self.extractors[self.active].capabilities();
-                self.mesh_closed = !overflowed && !made_by.lod && made_by.method == Method::MarchingCubes;
+                let made_by = stage.extractors[active].capabilities();
+                stage.counted.closed = !overflowed && !made_by.lod && made_by.method == Method::MarchingCubes;
+                stage.counted.drawn = Some(drawn);
                 let mut levels = [0; LEVEL_SLOTS];
                 if let Some(triangles) = self.lod_summary().and_then(|s| s.triangles) {
                     for (slot, n) in levels.iter_mut().zip(triangles) {
                         *slot = n;
                     }
                 }
-                self.latest_stats = Some(FrameStats::from_counts(
-                    self.frame, grid, capacity, needed, overflowed, bytes, levels,
+                let frame = self.stats.frame;
+                self.stats.latest = Some(FrameStats::from_counts(
+                    frame,
+                    self.grid(),
+                    capacity,
+                    needed,
+                    overflowed,
+                    bytes,
+                    levels,
                 ));
-                self.drawn = Some(drawn);
                 DrawCount::Direct(drawn)
             }
         }
@@ -77,7 +83,7 @@ impl Renderer {
     /// box (the grid's boundary reads 0, below any iso level), so from an eye outside the box every back
     /// face lies behind a front face. The margin keeps the near plane clear of the box.
     pub(super) fn back_faces_hidden(&self) -> bool {
-        self.mesh_closed && self.eye_outside_box()
+        self.stage.counted.closed && self.eye_outside_box()
     }
 
     fn eye_outside_box(&self) -> bool {
@@ -107,9 +113,12 @@ impl Renderer {
         let drawable = if mesh_only {
             self.context.has_compute()
         } else {
-            self.extractors.iter().any(|e| self.in_mode(e.capabilities()) && e.capabilities().cell_lists)
+            self.stage
+                .extractors
+                .iter()
+                .any(|e| self.in_mode(e.capabilities()) && e.capabilities().cell_lists)
         };
-        drawable && views::needed(&self.settings.view, self.selected.is_some() && !mesh_only)
+        drawable && views::needed(&self.settings.view, self.teaching.selected.is_some() && !mesh_only)
     }
 
     /// True for the extractors of the current mode: level of detail (marching cubes and its transition
@@ -125,14 +134,15 @@ impl Renderer {
     /// compute shaders on hardware; the first the device runs when the named one cannot.
     fn next_extractor(&self) -> usize {
         let find = |wanted: &dyn Fn(Capabilities, &'static str) -> bool| {
-            self.extractors
+            self.stage
+                .extractors
                 .iter()
                 .position(|e| self.in_mode(e.capabilities()) && wanted(e.capabilities(), e.name()))
         };
         let chosen = if self.views_shown() && !views::mesh_only(&self.settings.view) {
             find(&|c, _| c.cell_lists)
-        } else if self.pinned.is_some() {
-            self.pinned
+        } else if self.stage.pinned.is_some() {
+            self.stage.pinned
         } else {
             match self.settings.view.mesh_on {
                 MeshOn::Gpu => find(&|c, _| c.needs_compute),
@@ -148,72 +158,55 @@ impl Renderer {
 
     /// The camera as level selection sees it.
     fn lod_eye(&self) -> Eye {
-        let camera = &self.settings.camera;
-        let half_fov = (camera.fov_y_degrees.to_radians() / 2.0).tan();
-        let orthographic = self.settings.view.projection == Projection::Orthographic;
-        let height = self.size.1 as f32;
+        let view = self.camera_view();
         Eye {
-            position: camera.eye(),
-            view_projection: self.view_projection(),
-            pixels_per_unit: if orthographic {
-                height / (2.0 * camera.distance * half_fov)
-            } else {
-                height / (2.0 * half_fov)
-            },
-            orthographic,
+            position: view.eye(),
+            view_projection: view.view_projection(),
+            pixels_per_unit: view.pixels_per_unit(),
+            orthographic: view.projection == Projection::Orthographic,
             lod_pixels: self.settings.view.lod_pixels,
         }
     }
 
     /// The latest frame's level-of-detail selection and counts, when a LOD extractor made it.
     pub fn lod_summary(&self) -> Option<LodSummary> {
-        self.extractors[self.active].lod_summary()
+        self.stage.active().lod_summary()
     }
 
     /// What the extractor the next frame will use can do.
     pub fn next_capabilities(&self) -> Capabilities {
-        self.extractors[self.next_extractor()].capabilities()
+        self.stage.extractors[self.next_extractor()].capabilities()
     }
 
     /// Triangles the latest frame drew, where the CPU counted them: fewer than the mesh has where its
     /// back faces were left out.
     pub fn triangles_drawn(&self) -> Option<u32> {
-        self.drawn.map(|indices| indices / 3)
+        self.stage.counted.drawn.map(|indices| indices / 3)
     }
 
     /// The extractor that made the latest frame's mesh (`gpu`, `cpu`).
     pub fn mesh_source(&self) -> &'static str {
-        self.extractors[self.active].name()
+        self.stage.active().name()
     }
 
     /// What the extractor of the latest frame can do.
     pub fn mesh_capabilities(&self) -> Capabilities {
-        self.extractors[self.active].capabilities()
+        self.stage.active().capabilities()
     }
 
     /// The names of the extractors this renderer's device runs, in order of preference.
     pub fn extractor_names(&self) -> Vec<&'static str> {
-        self.extractors.iter().map(|e| e.name()).collect()
+        self.stage.names()
     }
 
     /// Makes every frame with the extractor called `name` whatever `mesher` says (`None` lets the setting
     /// choose again), except while a teaching view needs the active-cell lists. For tests and tools
     /// that compare extractors.
     pub fn pin_extractor(&mut self, name: Option<&str>) -> Result<(), ParamError> {
-        self.pinned = match name {
-            None => None,
-            Some(name) => Some(self.extractors.iter().position(|e| e.name() == name).ok_or_else(|| {
-                ParamError::Invalid {
-                    name: "extractor",
-                    value: name.to_string(),
-                    expected: format!("one of {}", self.extractor_names().join(", ")),
-                }
-            })?),
-        };
-        Ok(())
+        self.stage.pin(name)
     }
 
     pub(super) fn active_extractor(&self) -> &dyn Extractor {
-        self.extractors[self.active].as_ref()
+        self.stage.active()
     }
 }

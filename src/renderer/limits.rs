@@ -1,7 +1,8 @@
 //! What the device holds: the largest grid, buffer and output sizes, the checks that say so, and the
 //! capacity the mesh buffers start from (grown with the surface, or a fixed triangle budget).
 
-use super::{Renderer, Sizing};
+use super::Renderer;
+use super::stage::Sizing;
 use crate::device::has_compute;
 use crate::extract::buffers::{BLOCK_CELLS, Capacity};
 use crate::extract::reference::Grid;
@@ -16,6 +17,11 @@ pub(super) fn storage_limit(device: &wgpu::Device) -> u64 {
     } else {
         limits.max_buffer_size
     }
+}
+
+/// The largest buffers `device` binds for `grid`.
+pub(super) fn largest_capacity(device: &wgpu::Device, grid: Grid) -> Capacity {
+    Capacity::largest(grid, storage_limit(device))
 }
 
 /// Starting capacity for `grid` (uniform, or with `lod` the finest level's); without compute shaders
@@ -87,7 +93,7 @@ impl Renderer {
     /// Fixes the triangle budget (`None` returns to buffers that grow with the surface). Past a fixed
     /// budget, triangles are dropped and `stats` says so.
     pub fn set_max_triangles(&mut self, max_triangles: Option<u32>) -> Result<(), ParamError> {
-        self.sizing = match max_triangles {
+        self.stage.sizing = match max_triangles {
             Some(n) => {
                 let fits = Capacity::largest(self.grid(), storage_limit(&self.device)).indices / 3;
                 Sizing::FixedTriangles(params::check_u32("triangle budget", n, 1, fits)?)
@@ -101,7 +107,7 @@ impl Renderer {
     pub(super) fn starting_capacity(&self) -> Capacity {
         let lod = self.settings.view.lod;
         let automatic = automatic_capacity(&self.device, self.grid(), lod, self.context.has_compute());
-        match self.sizing {
+        match self.stage.sizing {
             Sizing::Automatic => automatic,
             // Everything but the index buffer holds the whole grid, so only triangles overflow.
             Sizing::FixedTriangles(n) => {

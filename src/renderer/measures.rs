@@ -17,24 +17,25 @@ impl Renderer {
     /// whether it ran.
     pub(super) fn encode_measures(&mut self, encoder: &mut wgpu::CommandEncoder, count: DrawCount) -> bool {
         if !self.measuring() {
-            self.latest_measures = None;
+            self.teaching.latest_measures = None;
             return false;
         }
         let known = match count {
             DrawCount::Indirect => None,
             DrawCount::Direct(indices) => {
-                let vertices = self.latest_stats.map_or(0, |s| s.vertices).min(self.mesh.capacity.vertices);
+                let capacity = self.stage.buffers.capacity;
+                let vertices = self.stats.latest.map_or(0, |s| s.vertices).min(capacity.vertices);
                 Some((vertices, indices / 3))
             }
         };
-        let pass = self.measures.get_or_insert_with(|| MeasurePass::new(&self.device));
-        pass.encode(&self.device, &self.queue, encoder, &self.scene_buffers, &self.mesh, known);
+        let pass = self.teaching.measures.get_or_insert_with(|| MeasurePass::new(&self.device));
+        pass.encode(&self.device, &self.queue, encoder, &self.scene_buffers, &self.stage.buffers, known);
         true
     }
 
     /// The newest measures of the mesh (RMS and largest distance to the exact surface in cells, the
     /// shape histogram), while `color_by` is `error` or `quality`.
     pub fn measures(&self) -> Option<MeshMeasures> {
-        self.latest_measures
+        self.teaching.latest_measures
     }
 }

@@ -10,36 +10,30 @@ mod limits;
 mod measures;
 mod readback;
 mod setters;
+mod stage;
 mod stats;
+mod target;
+mod teaching;
 mod uniforms;
 
 pub use limits::max_resolution;
 pub use readback::{MeshReadback, OverlayReadback};
 pub use stats::FrameStats;
 
-use crate::device::timing::{StageTimes, Timing};
-use crate::draw::measure::{MeasurePass, MeshMeasures};
+use crate::device::timing::StageTimes;
 use crate::draw::shade::{MULTISAMPLES, MeshDraw, ShadePass, ViewFrame};
 use crate::draw::views::{self, ViewState};
-use crate::extract::Extractor;
-use crate::extract::buffers::{BLOCK_CELLS, Capacity, MeshBuffers};
+use crate::extract::buffers::{BLOCK_CELLS, Capacity};
 use crate::extract::gpu::scene_buffers::SceneBuffers;
 use crate::extract::reference::Grid;
 use crate::scene::Scene;
 use crate::scene::params::{ParamError, Settings};
 use context::{GpuContext, RendererToken};
-use glam::UVec3;
-use limits::{automatic_capacity, check_resolution_fits, check_size};
-use stats::StatsRing;
-
-/// How the buffers are sized.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Sizing {
-    /// Start from `Capacity::for_grid` and grow when a frame reports it needed more.
-    Automatic,
-    /// A fixed triangle budget (tests and tools); overflow is reported, nothing grows.
-    FixedTriangles(u32),
-}
+use limits::{automatic_capacity, check_resolution_fits};
+use stage::MeshStage;
+use stats::Statistics;
+use target::Target;
+use teaching::Teaching;
 
 /// Draws merging spheres: block skipping, field and marching cubes (in GPU compute passes or on the
 /// CPU), then shading.
@@ -48,39 +42,15 @@ pub struct Renderer {
     _alive: RendererToken,
     device: wgpu::Device,
     queue: wgpu::Queue,
-    format: wgpu::TextureFormat,
-    size: (u32, u32),
+    target: Target,
     settings: Settings,
     scene: Scene,
     scene_buffers: SceneBuffers,
-    mesh: MeshBuffers,
-    /// Every extractor the device runs, in order of preference (`extract::EXTRACTORS`).
-    extractors: Vec<Box<dyn Extractor>>,
-    /// Which of them made the latest frame's mesh.
-    active: usize,
-    /// Which of them `pin_extractor` fixed, if any.
-    pinned: Option<usize>,
-    /// True when the latest frame's mesh was counted on the device (its statistics come back later).
-    counted_on_device: bool,
-    /// The latest mesh is known to be closed: whole, by marching cubes, counted on the CPU.
-    mesh_closed: bool,
-    /// Indices the latest frame drew, when counted on the CPU.
-    drawn: Option<u32>,
     shade: ShadePass,
-    sizing: Sizing,
-    /// Capacity a past frame asked for, applied before the next one.
-    pending_capacity: Option<Capacity>,
-    stats: StatsRing,
-    latest_stats: Option<FrameStats>,
-    frame: u64,
-    timing: Option<Timing>,
-    /// The teaching views' buffers, made when a view needs them.
-    views: Option<ViewState>,
-    /// The cell the inspector shows, if any.
-    selected: Option<UVec3>,
-    /// The measures pass, made when a view first asks for the mesh's error or shape.
-    measures: Option<MeasurePass>,
-    latest_measures: Option<MeshMeasures>,
+    /// The mesh buffers and the extractors that fill them.
+    stage: MeshStage,
+    stats: Statistics,
+    teaching: Teaching,
 }
 
 impl Renderer {
@@ -108,51 +78,34 @@ impl Renderer {
     ) -> Result<Self, ParamError> {
         let settings = settings.validated()?;
         let (device, queue) = (context.device().clone(), context.queue().clone());
-        check_size(&device, width, height)?;
+        let target = Target::new(&device, format, width, height)?;
         let lod = settings.view.lod;
         if !lod {
             check_resolution_fits(&device, settings.resolution)?;
         }
         let scene = Scene::new(settings.seed, settings.sphere_count)?;
 
-        let scene_buffers = SceneBuffers::new(&device);
         let grid = Grid { cells_per_axis: settings.resolution };
         let capacity = automatic_capacity(&device, grid, lod, context.has_compute());
         let buffer_grid = if lod { Grid { cells_per_axis: BLOCK_CELLS } } else { grid };
-        let mesh = MeshBuffers::new(&device, buffer_grid, capacity);
         Ok(Self {
-            extractors: context.extractors().iter().map(|e| e.fresh()).collect(),
-            active: 0,
-            pinned: None,
-            counted_on_device: false,
-            mesh_closed: false,
-            drawn: None,
+            stage: MeshStage::new(&device, context.extractors(), buffer_grid, capacity),
             shade: ShadePass::new(
                 &device,
                 context.shade_pipelines(format, sample_count(settings.antialiasing)),
                 width,
                 height,
             ),
-            stats: StatsRing::new(&device),
+            stats: Statistics::new(&device),
+            teaching: Teaching::default(),
+            scene_buffers: SceneBuffers::new(&device),
             _alive: context.renderer_token(),
             context: context.clone(),
             device,
             queue,
-            format,
-            size: (width, height),
+            target,
             settings,
             scene,
-            scene_buffers,
-            mesh,
-            sizing: Sizing::Automatic,
-            pending_capacity: None,
-            latest_stats: None,
-            frame: 0,
-            timing: None,
-            views: None,
-            measures: None,
-            latest_measures: None,
-            selected: None,
         })
     }
 
@@ -173,12 +126,12 @@ impl Renderer {
 
     /// The texture format this renderer draws.
     pub fn format(&self) -> wgpu::TextureFormat {
-        self.format
+        self.target.format
     }
 
     /// The output size in pixels.
     pub fn size(&self) -> (u32, u32) {
-        self.size
+        self.target.size
     }
 
     /// The largest resolution this device holds.
@@ -188,17 +141,17 @@ impl Renderer {
 
     /// What the mesh buffers hold now.
     pub fn capacity(&self) -> Capacity {
-        self.mesh.capacity
+        self.stage.buffers.capacity
     }
 
     /// GPU memory held by the mesh buffers, in bytes.
     pub fn mesh_bytes(&self) -> u64 {
-        self.mesh.bytes()
+        self.stage.buffers.bytes()
     }
 
     /// GPU memory held by this renderer's own buffers and targets (not the shared pipelines), in bytes.
     pub fn gpu_bytes(&self) -> u64 {
-        self.mesh.bytes() + self.shade.bytes() + self.views.as_ref().map_or(0, ViewState::bytes)
+        self.stage.buffers.bytes() + self.shade.bytes() + self.teaching.bytes()
     }
 
     /// The device context this renderer draws on.
@@ -209,17 +162,17 @@ impl Renderer {
     /// True when a past frame asked for larger buffers, so the next frame would differ from the last
     /// even with nothing else changed.
     pub fn needs_redraw(&self) -> bool {
-        self.pending_capacity.is_some()
+        self.stage.pending_capacity.is_some()
     }
 
     /// The newest statistics the GPU has reported, if any yet.
     pub fn stats(&self) -> Option<FrameStats> {
-        self.latest_stats
+        self.stats.latest
     }
 
     /// Frames rendered so far: the newest frame's statistics carry this number once read back.
     pub fn frames_rendered(&self) -> u64 {
-        self.frame
+        self.stats.frame
     }
 
     /// The first GPU error raised outside an error scope, if any (they are also logged).
@@ -229,10 +182,8 @@ impl Renderer {
 
     /// Follows a new output size.
     pub fn resize(&mut self, width: u32, height: u32) -> Result<(), ParamError> {
-        check_size(&self.device, width, height)?;
-        if (width, height) != self.size {
+        if self.target.resize(&self.device, width, height)? {
             self.shade.resize(&self.device, width, height);
-            self.size = (width, height);
         }
         Ok(())
     }
@@ -251,24 +202,19 @@ impl Renderer {
         let resolution_changed =
             settings.resolution != self.settings.resolution || settings.view.lod != self.settings.view.lod;
         if settings.antialiasing != self.settings.antialiasing {
-            let (width, height) = self.size;
-            let pipelines = self.context.shade_pipelines(self.format, sample_count(settings.antialiasing));
+            let (width, height) = self.target.size;
+            let pipelines =
+                self.context.shade_pipelines(self.target.format, sample_count(settings.antialiasing));
             self.shade.destroy();
             self.shade = ShadePass::new(&self.device, pipelines, width, height);
-            self.drop_views();
+            self.teaching.drop_views();
         }
         self.settings = settings;
         if resolution_changed {
-            self.selected = None;
+            self.teaching.selected = None;
             self.reallocate(self.starting_capacity());
         }
         Ok(())
-    }
-
-    fn drop_views(&mut self) {
-        if let Some(views) = self.views.take() {
-            views.destroy();
-        }
     }
 
     /// Advances the animation by `dt` seconds.
@@ -292,23 +238,11 @@ impl Renderer {
         if self.settings.view.lod { Grid { cells_per_axis: BLOCK_CELLS } } else { self.grid() }
     }
 
+    /// Makes the mesh buffers anew with `capacity`; what was bound to the old ones (the teaching views,
+    /// the measures pass, the extractors' passes) is bound again when next used.
     fn reallocate(&mut self, capacity: Capacity) {
-        self.mesh.destroy();
-        self.mesh = MeshBuffers::new(&self.device, self.buffer_grid(), capacity);
-        self.pending_capacity = None;
-        self.follow_new_buffers();
-    }
-
-    /// What was bound to the old buffers (the teaching views, the extractors' passes) is bound again
-    /// when next used.
-    fn follow_new_buffers(&mut self) {
-        self.drop_views();
-        if let Some(measures) = &mut self.measures {
-            measures.unbind();
-        }
-        for extractor in &mut self.extractors {
-            extractor.buffers_changed();
-        }
+        self.stage.reallocate(&self.device, self.buffer_grid(), capacity);
+        self.teaching.follow_new_buffers();
     }
 
     /// Draws one frame into `view` (a texture of this renderer's format and size). Never waits on the
@@ -319,41 +253,43 @@ impl Renderer {
 
     fn render_frame(&mut self, view: &wgpu::TextureView, timed: bool) {
         self.collect_stats();
-        if let Some(capacity) = self.pending_capacity.take() {
+        if let Some(capacity) = self.stage.pending_capacity.take() {
             self.reallocate(capacity);
         }
         self.write_uniforms();
-        self.frame += 1;
+        self.stats.frame += 1;
         let mut encoder = self
             .device
             .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("frame: encoder") });
         let count = self.make_mesh(&mut encoder, timed);
         let measured = self.encode_measures(&mut encoder, count);
         let show_views = self.views_shown();
-        if show_views && self.views.is_none() {
+        if show_views && self.teaching.views.is_none() {
             let pipelines = self.shade.pipelines().views(&self.device);
-            self.views = Some(ViewState::new(
+            self.teaching.views = Some(ViewState::new(
                 &self.device,
                 pipelines,
                 &self.scene_buffers,
-                &self.mesh,
+                &self.stage.buffers,
                 self.shade.uniform(),
             ));
         }
         let shown = views::shown(&self.settings.view);
-        let frame_views = match (&self.views, show_views) {
+        let selected = self.teaching.selected.is_some();
+        let frame_views = match (&self.teaching.views, show_views) {
             (Some(state), true) => {
                 let pipelines = self.shade.pipelines().views(&self.device);
                 state.encode(&mut encoder, pipelines, &shown);
-                Some(ViewFrame { state, pipelines, options: &shown, selected: self.selected.is_some() })
+                Some(ViewFrame { state, pipelines, options: &shown, selected })
             }
             _ => None,
         };
-        let timing = self.timing.as_ref().filter(|_| timed);
+        let timing = self.stats.timing_for(timed);
+        let buffers = &self.stage.buffers;
         let mesh = MeshDraw {
-            vertices: &self.mesh.vertices,
-            indices: &self.mesh.indices,
-            draw_args: &self.mesh.draw_args,
+            vertices: &buffers.vertices,
+            indices: &buffers.indices,
+            draw_args: &buffers.draw_args,
             count,
             light_slots: self.settings.view.lights.slots(),
             front_only: self.back_faces_hidden(),
@@ -362,30 +298,27 @@ impl Renderer {
         if let Some(timing) = timing {
             timing.resolve(&mut encoder);
         }
-        let counted = self.counted_on_device;
+        let counted = self.stage.counted.on_device;
         let slot =
-            if counted || measured { self.stats.record(&mut encoder, &self.mesh.counters) } else { None };
+            if counted || measured { self.stats.ring.record(&mut encoder, &buffers.counters) } else { None };
         self.queue.submit([encoder.finish()]);
         if let Some(slot) = slot {
-            self.stats.map(slot, self.frame, self.mesh.capacity, counted, measured);
+            self.stats.ring.map(slot, self.stats.frame, buffers.capacity, counted, measured);
         }
     }
 
     /// Asks the device for timestamp queries, if it has them, so that `render_timed` can report the
     /// GPU time of each stage. Returns whether it can.
     pub fn enable_timing(&mut self) -> bool {
-        if self.timing.is_none() {
-            self.timing = Timing::new(&self.device, &self.queue);
-        }
-        self.timing.is_some()
+        self.stats.enable_timing(&self.device, &self.queue)
     }
 
     /// Draws a frame like `render` and waits for the GPU time of each stage (tools and benchmarks; it
     /// stalls). `None` without timestamp queries (`enable_timing`).
     pub async fn render_timed(&mut self, view: &wgpu::TextureView) -> Option<StageTimes> {
-        self.timing.as_ref()?;
+        self.stats.timing.as_ref()?;
         self.render_frame(view, true);
-        let timing = self.timing.as_ref()?;
+        let timing = self.stats.timing.as_ref()?;
         Some(timing.read(&self.device, &self.queue).await)
     }
 
@@ -404,9 +337,9 @@ impl Renderer {
 impl Drop for Renderer {
     /// Frees the GPU memory at once: a view removed from a page gives its buffers back.
     fn drop(&mut self) {
-        self.mesh.destroy();
+        self.stage.destroy();
         self.shade.destroy();
-        self.drop_views();
+        self.teaching.drop_views();
     }
 }
 

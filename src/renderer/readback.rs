@@ -1,8 +1,8 @@
 //! Reading the mesh and the field back from the GPU: for tests and tools, never the frame loop.
 
 use super::Renderer;
-use super::Sizing;
 use super::limits::storage_limit;
+use super::stage::Sizing;
 use crate::device::{map_and_read, read_buffer};
 use crate::extract::buffers::{BLOCK_CELLS, Capacity, INDEX_BYTES, VERTEX_BYTES};
 use crate::extract::mesh::IndexedMesh;
@@ -12,7 +12,7 @@ use glam::{UVec3, Vec3};
 impl Renderer {
     async fn run_extraction(&mut self) -> Counters {
         self.extract();
-        let bytes = read_buffer(&self.device, &self.queue, &self.mesh.counters, 0, 16).await;
+        let bytes = read_buffer(&self.device, &self.queue, &self.stage.buffers.counters, 0, 16).await;
         bytemuck::pod_read_unaligned(&bytes)
     }
 
@@ -25,10 +25,10 @@ impl Renderer {
             return self.mesh_readback().finish_clamped().await.0;
         }
         let mut counters = self.run_extraction().await;
-        while self.sizing == Sizing::Automatic && !self.mesh.capacity.holds(&counters) {
+        while self.stage.sizing == Sizing::Automatic && !self.stage.buffers.capacity.holds(&counters) {
             let largest = Capacity::largest(self.grid(), storage_limit(&self.device));
-            let grown = self.mesh.capacity.grown_for(&counters).min(largest);
-            if grown == self.mesh.capacity {
+            let grown = self.stage.buffers.capacity.grown_for(&counters).min(largest);
+            if grown == self.stage.buffers.capacity {
                 break;
             }
             self.reallocate(grown);
@@ -41,9 +41,11 @@ impl Renderer {
     /// with its grid coordinates (a point on a face between blocks appears once per block).
     pub async fn extract_field(&mut self) -> Vec<(UVec3, f32)> {
         let counters = self.run_extraction().await;
-        let active = counters.active_blocks.min(self.mesh.capacity.blocks) as u64;
-        let blocks = read_buffer(&self.device, &self.queue, &self.mesh.active_blocks, 0, active * 4).await;
-        let values = read_buffer(&self.device, &self.queue, &self.mesh.block_values, 0, active * 500).await;
+        let active = counters.active_blocks.min(self.stage.buffers.capacity.blocks) as u64;
+        let blocks =
+            read_buffer(&self.device, &self.queue, &self.stage.buffers.active_blocks, 0, active * 4).await;
+        let values =
+            read_buffer(&self.device, &self.queue, &self.stage.buffers.block_values, 0, active * 500).await;
         let blocks: &[u32] = bytemuck::cast_slice(&blocks);
         let values: &[f32] = bytemuck::cast_slice(&values);
         let n = self.settings.resolution;
@@ -77,7 +79,7 @@ impl Renderer {
     /// Reads back what the overlay pass planned in the last frame (`None` when no teaching view was
     /// drawn). Waits for the GPU: for tests and tools.
     pub async fn read_overlays(&self) -> Option<OverlayReadback> {
-        let views = self.views.as_ref()?;
+        let views = self.teaching.views.as_ref()?;
         let (segments, overlays) = views.contour_buffers();
         let bytes = read_buffer(&self.device, &self.queue, overlays, 0, overlays.size()).await;
         let words: Vec<u32> = bytemuck::pod_collect_to_vec(&bytes);
@@ -161,14 +163,15 @@ impl Renderer {
             })
         };
         let counters = staging("mesh readback: counters", 16);
-        let vertices = staging("mesh readback: vertices", self.mesh.vertices.size());
-        let indices = staging("mesh readback: indices", self.mesh.indices.size());
+        let mesh = &self.stage.buffers;
+        let vertices = staging("mesh readback: vertices", mesh.vertices.size());
+        let indices = staging("mesh readback: indices", mesh.indices.size());
         let mut encoder = self
             .device
             .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("mesh readback: copy") });
-        encoder.copy_buffer_to_buffer(&self.mesh.counters, 0, &counters, 0, 16);
-        encoder.copy_buffer_to_buffer(&self.mesh.vertices, 0, &vertices, 0, self.mesh.vertices.size());
-        encoder.copy_buffer_to_buffer(&self.mesh.indices, 0, &indices, 0, self.mesh.indices.size());
+        encoder.copy_buffer_to_buffer(&mesh.counters, 0, &counters, 0, 16);
+        encoder.copy_buffer_to_buffer(&mesh.vertices, 0, &vertices, 0, mesh.vertices.size());
+        encoder.copy_buffer_to_buffer(&mesh.indices, 0, &indices, 0, mesh.indices.size());
         self.queue.submit([encoder.finish()]);
         MeshReadback::Queued { device: self.device.clone(), counters, vertices, indices }
     }

@@ -1,9 +1,9 @@
 //! Frame statistics: each frame copies the GPU's counters into a free staging buffer and maps it; later
 //! frames read whichever have arrived (nothing waits for them) and plan larger buffers after an overflow.
 
-use super::limits::storage_limit;
-use super::{Renderer, Sizing};
-use crate::draw::measure::MeshMeasures;
+use super::Renderer;
+use super::limits::largest_capacity;
+use crate::device::timing::Timing;
 use crate::extract::buffers::{BLOCK_CELLS, Capacity};
 use crate::extract::reference::Grid;
 use crate::extract::uniforms::{CounterBlock, Counters, LEVEL_SLOTS, Measures};
@@ -180,6 +180,44 @@ impl StatsRing {
     }
 }
 
+/// The frames rendered, the newest statistics and the ring they come back through, and the timestamp
+/// queries of timed frames.
+pub(super) struct Statistics {
+    pub ring: StatsRing,
+    /// The newest statistics reported, if any yet.
+    pub latest: Option<FrameStats>,
+    /// Frames rendered so far: the newest frame's statistics carry this number once read back.
+    pub frame: u64,
+    /// Timestamp queries, once asked for on a device that has them.
+    pub timing: Option<Timing>,
+}
+
+impl Statistics {
+    pub fn new(device: &wgpu::Device) -> Self {
+        Self { ring: StatsRing::new(device), latest: None, frame: 0, timing: None }
+    }
+
+    /// Takes `stats` unless newer ones are in.
+    pub fn offer(&mut self, stats: FrameStats) {
+        if self.latest.is_none_or(|s| s.frame < stats.frame) {
+            self.latest = Some(stats);
+        }
+    }
+
+    /// Asks for timestamp queries, if the device has them; returns whether it does.
+    pub fn enable_timing(&mut self, device: &wgpu::Device, queue: &wgpu::Queue) -> bool {
+        if self.timing.is_none() {
+            self.timing = Timing::new(device, queue);
+        }
+        self.timing.is_some()
+    }
+
+    /// The timestamp queries for a frame that is `timed`.
+    pub fn timing_for(&self, timed: bool) -> Option<&Timing> {
+        self.timing.as_ref().filter(|_| timed)
+    }
+}
+
 impl Renderer {
     /// Takes in the statistics that have arrived since the last frame, without drawing (a paused view
     /// calls this so its figures still come in).
@@ -194,38 +232,27 @@ impl Renderer {
         let _ = self.device.poll(wgpu::PollType::Poll);
         let grid = self.grid();
         for Reading { frame, capacity, counters, level_triangles, counted, measures } in
-            self.stats.take_ready()
+            self.stats.ring.take_ready()
         {
-            if let Some(sums) = measures
-                && self.latest_measures.is_none_or(|m| m.frame < frame)
-            {
-                self.latest_measures = Some(MeshMeasures::from_sums(frame, &sums));
+            if let Some(sums) = measures {
+                self.teaching.take_measures(frame, &sums);
             }
             if !counted {
                 continue;
             }
             let overflowed = !capacity.holds(&counters);
-            let bytes = self.mesh.bytes();
+            let bytes = self.stage.buffers.bytes();
             let stats =
                 FrameStats::from_counts(frame, grid, capacity, counters, overflowed, bytes, level_triangles);
-            if self.latest_stats.is_none_or(|s| s.frame < stats.frame) {
-                self.latest_stats = Some(stats);
-            }
+            self.stats.offer(stats);
             // Grow once per size: figures from frames drawn with smaller buffers than now are stale.
-            let current = self.pending_capacity.unwrap_or(self.mesh.capacity);
-            if stats.overflowed && self.sizing == Sizing::Automatic && capacity == self.mesh.capacity {
-                let largest = Capacity::largest(grid, storage_limit(&self.device));
-                let grown = current.grown_for(&counters).min(largest);
-                if grown != current {
-                    self.pending_capacity = Some(grown);
-                }
-            }
+            self.stage.plan_growth(capacity, &counters, largest_capacity(&self.device, grid));
         }
     }
 
     /// Waits until the statistics of every submitted frame are in (tests and tools).
     pub async fn flush_stats(&mut self) {
-        if self.stats.pending() {
+        if self.stats.ring.pending() {
             let (sender, receiver) = futures_channel::oneshot::channel::<()>();
             // Queue work done implies earlier map callbacks have run.
             self.queue.on_submitted_work_done(move || {

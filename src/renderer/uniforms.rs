@@ -14,7 +14,7 @@ impl Renderer {
     pub(super) fn write_uniforms(&self) {
         let grid = self.grid();
         let spheres = self.scene.spheres();
-        let capacity = self.mesh.capacity;
+        let capacity = self.stage.buffers.capacity;
         let grid_uniform = GridUniform {
             box_min: [-BOX_HALF_EXTENT; 3],
             cell_size: grid.cell_size(),
@@ -37,7 +37,7 @@ impl Renderer {
         let mut shading = ShadingUniform {
             view_proj: self.view_projection().to_cols_array_2d(),
             inverse_view_proj: self.view_projection().inverse().to_cols_array_2d(),
-            view: view_matrix(eye).to_cols_array_2d(),
+            view: self.camera_view().view().to_cols_array_2d(),
             camera_position: eye.to_array(),
             ambient: s.material.ambient,
             camera_forward: (-eye).normalize().to_array(),
@@ -46,13 +46,13 @@ impl Renderer {
             diffuse: s.material.diffuse,
             specular: s.material.specular,
             shininess: s.material.shininess,
-            encode_srgb: (!self.format.is_srgb()) as u32,
+            encode_srgb: self.target.encodes_srgb() as u32,
             box_half_extent: BOX_HALF_EXTENT,
-            viewport: [self.size.0 as f32, self.size.1 as f32],
+            viewport: self.target.viewport(),
             iso: s.iso,
-            selected: self.selected.is_some() as u32,
-            selected_cell: self.selected.unwrap_or(UVec3::ZERO).to_array(),
-            lod_blocks_offset: self.mesh.lod_blocks_offset(),
+            selected: self.teaching.selected.is_some() as u32,
+            selected_cell: self.teaching.selected.unwrap_or(UVec3::ZERO).to_array(),
+            lod_blocks_offset: self.stage.buffers.lod_blocks_offset(),
             lights: lights(&self.settings),
             background_top: s.view.background()[0],
             background_bottom: s.view.background()[1],
@@ -64,37 +64,14 @@ impl Renderer {
 
     /// Where world point `p` lands in the output, in pixels from the top left.
     pub fn project(&self, p: Vec3) -> glam::Vec2 {
-        let ndc = self.view_projection().project_point3(p);
-        glam::Vec2::new((ndc.x + 1.0) * 0.5 * self.size.0 as f32, (1.0 - ndc.y) * 0.5 * self.size.1 as f32)
+        self.camera_view().project(p)
     }
 
     /// The camera's projection times its view: perspective, or orthographic with the same framing at
     /// the box's centre.
     pub(super) fn view_projection(&self) -> Mat4 {
-        let camera = &self.settings.camera;
-        let aspect = self.size.0 as f32 / self.size.1 as f32;
-        let fov = camera.fov_y_degrees.to_radians();
-        let projection = match self.settings.view.projection {
-            Projection::Perspective => glam::camera::rh::proj::directx::perspective(fov, aspect, 0.05, 100.0),
-            Projection::Orthographic => {
-                let half_height = camera.distance * (fov / 2.0).tan();
-                let half_width = half_height * aspect;
-                glam::camera::rh::proj::directx::orthographic(
-                    -half_width,
-                    half_width,
-                    -half_height,
-                    half_height,
-                    0.05,
-                    100.0,
-                )
-            }
-        };
-        projection * view_matrix(camera.eye())
+        self.camera_view().view_projection()
     }
-}
-
-fn view_matrix(eye: Vec3) -> Mat4 {
-    glam::camera::rh::view::look_at_mat4(eye, Vec3::ZERO, Vec3::Y)
 }
 
 /// The lights `settings` turn on: the point light where the settings put it, in white; a cool

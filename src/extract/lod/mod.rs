@@ -14,25 +14,13 @@ pub mod transition;
 #[cfg(test)]
 mod tests;
 
+pub use super::extractor::LodSummary;
+
 use super::extractor::Job;
 use super::field::Spheres;
 use crate::scene::Sphere;
 use crate::scene::params::view::Blend;
 use select::{Eye, Selection};
-
-/// What a LOD frame held, level by level (finest first), for the HUD and the statistics.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct LodSummary {
-    /// The finest level's cells per axis: the resolution of a uniform grid as fine.
-    pub resolution: u32,
-    /// Selected blocks per level.
-    pub blocks: Vec<u32>,
-    /// Triangles per level, where the extractor counts them on the CPU.
-    pub triangles: Option<Vec<u32>>,
-    /// Cells meshed: regular cells of the blocks the bounds kept and their transition cells, where
-    /// the extractor counts them on the CPU.
-    pub cells_processed: Option<u64>,
-}
 
 /// The selection for `job`, or `None` to keep `current` (frozen, and made for the same resolution).
 /// Blocks are refined only where the field's exact bounds let the surface cross, as the meshers
