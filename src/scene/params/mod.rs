@@ -160,7 +160,7 @@ impl Settings {
     pub fn with_parameters(&self, pairs: &[(&str, &str)]) -> Result<Settings, ParamError> {
         let mut next = *self;
         for (name, text) in pairs {
-            let (p, given) = parameter_named(name).ok_or_else(|| table::unknown(name))?;
+            let (p, given) = parameter_named(name).ok_or_else(|| rows::unknown(name))?;
             let field = p.field.ok_or_else(|| ParamError::Invalid {
                 name: "parameter name",
                 value: name.to_string(),
@@ -245,10 +245,8 @@ mod rows;
 pub mod table;
 pub mod view;
 pub use parse::parse_parameter;
-pub use table::{
-    ACTIONS, Action, Field, Group, Kind, PARAMETERS, Parameter, Scope, Value, control, control_names,
-    parameter, parameter_named,
-};
+pub use rows::{ACTIONS, PARAMETERS, control, control_names, parameter, parameter_named};
+pub use table::{Action, Field, Group, Kind, Parameter, Scope, Value};
 pub use view::ViewOptions;
 
 #[cfg(test)]

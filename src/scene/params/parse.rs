@@ -1,7 +1,8 @@
 //! How a parameter's text is read: each kind of the table's parameters parsed and checked, with a
 //! message saying what is accepted when the text is refused.
 
-use super::table::{Kind, Parameter, Value, control, control_names, parameter_named, unknown};
+use super::rows::{control, control_names, parameter_named, unknown};
+use super::table::{Kind, Parameter, Value};
 use super::view::Slice;
 use super::{ParamError, check_f32, check_range};
 
@@ -120,7 +121,7 @@ pub fn parse_parameter(name: &str, text: &str) -> Result<Value, ParamError> {
 mod tests {
     use super::*;
     use crate::scene::params::Settings;
-    use crate::scene::params::table::{PARAMETERS, parameter};
+    use crate::scene::params::{PARAMETERS, parameter};
 
     #[test]
     fn every_default_in_the_table_parses() {

@@ -9,6 +9,7 @@ use super::view::{
     Projection, Saddle, Slice, Theme,
 };
 use super::{MAX_RESOLUTION, MAX_SPHERES, MIN_RESOLUTION, linear_to_srgb_hex, srgb_hex_to_linear};
+use super::{ParamError, ViewOptions};
 use Group::{Camera, Display as Look, Light, Scene, Surface, Teaching};
 
 /// A view option chosen among words.
@@ -222,3 +223,64 @@ pub const ACTIONS: &[Action] = &[
     Action { name: "scene", aliases: &[], label: "Scene file", group: Scene },
     Action { name: "export", aliases: &[], label: "Export", group: Scene },
 ];
+
+/// A parameter by its name, its short name in links or one of its aliases.
+pub fn parameter(name: &str) -> Option<&'static Parameter> {
+    parameter_named(name).map(|(p, _)| p)
+}
+
+/// A parameter and the spelling of it that `name` is (for messages that quote the name given).
+pub fn parameter_named(name: &str) -> Option<(&'static Parameter, &'static str)> {
+    PARAMETERS.iter().find_map(|p| p.names().find(|n| *n == name).map(|n| (p, n)))
+}
+
+/// Every control the `controls` attribute can list, in the panel's order: each group's settings in
+/// table order, then its actions.
+pub fn control_names() -> Vec<&'static str> {
+    let mut names = Vec::new();
+    for group in Group::PANEL {
+        names.extend(PARAMETERS.iter().filter(|p| p.group == group).map(|p| p.name));
+        names.extend(ACTIONS.iter().filter(|a| a.group == group).map(|a| a.name));
+    }
+    names
+}
+
+/// A control's canonical name from any of its names.
+pub fn control(name: &str) -> Option<&'static str> {
+    let setting = parameter(name).filter(|p| p.group != Group::None).map(|p| p.name);
+    setting.or_else(|| ACTIONS.iter().find(|a| a.name == name || a.aliases.contains(&name)).map(|a| a.name))
+}
+
+/// Refusal of a name that no row of the table answers to.
+pub(super) fn unknown(name: &str) -> ParamError {
+    ParamError::Invalid {
+        name: "parameter name",
+        value: name.to_string(),
+        expected: format!("one of {}", PARAMETERS.iter().map(|p| p.name).collect::<Vec<_>>().join(", ")),
+    }
+}
+
+impl Parameter {
+    /// The words it accepts (choices and lists).
+    pub fn words(&self) -> Vec<&'static str> {
+        match self.kind {
+            Kind::Choice(words) | Kind::List(words) => words.to_vec(),
+            Kind::Controls => control_names(),
+            _ => Vec::new(),
+        }
+    }
+}
+
+impl ViewOptions {
+    /// Sets the option `name` (any of its names in the parameter table) from a value, checked as its
+    /// row says; `Ok(false)` when `name` is not one of these options.
+    pub fn set(&mut self, name: &str, value: &Value) -> Result<bool, ParamError> {
+        match parameter(name).map(|p| (p, p.field)) {
+            Some((p, Some(Field::View { set, .. }))) => {
+                set(self, &p.check(value)?);
+                Ok(true)
+            }
+            _ => Ok(false),
+        }
+    }
+}

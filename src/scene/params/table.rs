@@ -1,12 +1,10 @@
-//! What a row of the parameter table says about a setting, and how rows are found by any of their
-//! names. The rows themselves are in `rows.rs`: each setting is declared there once, and everything
-//! else (the typed defaults, validation, dispatch by name, the panel's groups, the manifest, the
-//! element's table, the Python traits) is read from it. How each kind of text is read is in `parse.rs`.
+//! What a row of the parameter table says about a setting. The rows themselves, and finding a row by
+//! any of its names, are in `rows.rs`: each setting is declared there once, and everything else (the
+//! typed defaults, validation, dispatch by name, the panel's groups, the manifest, the element's table,
+//! the Python traits) is read from it. How each kind of text is read is in `parse.rs`.
 
+use super::Settings;
 use super::view::ViewOptions;
-use super::{ParamError, Settings};
-
-pub use super::rows::{ACTIONS, PARAMETERS};
 
 /// How a parameter's text is read.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -247,15 +245,6 @@ impl Parameter {
         let (name, url, aliases) = (self.name, self.url, self.aliases);
         [name, url].into_iter().chain(aliases.iter().copied())
     }
-
-    /// The words it accepts (choices and lists).
-    pub fn words(&self) -> Vec<&'static str> {
-        match self.kind {
-            Kind::Choice(words) | Kind::List(words) => words.to_vec(),
-            Kind::Controls => control_names(),
-            _ => Vec::new(),
-        }
-    }
 }
 
 /// A property's name from an attribute's: dashes become camel case (`max-pixel-ratio` → `maxPixelRatio`).
@@ -275,16 +264,6 @@ pub fn property_name(name: &str) -> String {
     out
 }
 
-/// A parameter by its name, its short name in links or one of its aliases.
-pub fn parameter(name: &str) -> Option<&'static Parameter> {
-    parameter_named(name).map(|(p, _)| p)
-}
-
-/// A parameter and the spelling of it that `name` is (for messages that quote the name given).
-pub fn parameter_named(name: &str) -> Option<(&'static Parameter, &'static str)> {
-    PARAMETERS.iter().find_map(|p| p.names().find(|n| *n == name).map(|n| (p, n)))
-}
-
 /// A control of the panel that is not a setting: a button or a view of its own.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Action {
@@ -292,23 +271,6 @@ pub struct Action {
     pub aliases: &'static [&'static str],
     pub label: &'static str,
     pub group: Group,
-}
-
-/// Every control the `controls` attribute can list, in the panel's order: each group's settings in
-/// table order, then its actions.
-pub fn control_names() -> Vec<&'static str> {
-    let mut names = Vec::new();
-    for group in Group::PANEL {
-        names.extend(PARAMETERS.iter().filter(|p| p.group == group).map(|p| p.name));
-        names.extend(ACTIONS.iter().filter(|a| a.group == group).map(|a| a.name));
-    }
-    names
-}
-
-/// A control's canonical name from any of its names.
-pub fn control(name: &str) -> Option<&'static str> {
-    let setting = parameter(name).filter(|p| p.group != Group::None).map(|p| p.name);
-    setting.or_else(|| ACTIONS.iter().find(|a| a.name == name || a.aliases.contains(&name)).map(|a| a.name))
 }
 
 /// A parameter's value, read from text.
@@ -367,14 +329,5 @@ impl Value {
             Value::Boolean(b) => b.to_string(),
             Value::Text(t) => t.clone(),
         }
-    }
-}
-
-/// Refusal of a name that no row of the table answers to.
-pub(super) fn unknown(name: &str) -> ParamError {
-    ParamError::Invalid {
-        name: "parameter name",
-        value: name.to_string(),
-        expected: format!("one of {}", PARAMETERS.iter().map(|p| p.name).collect::<Vec<_>>().join(", ")),
     }
 }

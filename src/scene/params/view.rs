@@ -1,8 +1,7 @@
 //! How the surface is shown and built, for teaching: display modes, grid overlays, a field slice,
 //! triangle colouring, lights, projection, and the two construction toggles (interpolation, blend).
 
-use super::table::{Field, parameter};
-use super::{ParamError, Settings, Value, check_f32};
+use super::{ParamError, Settings, check_f32};
 
 /// Declares a choice among words: the enum, its words in order, and the conversions.
 macro_rules! choice {
@@ -336,26 +335,12 @@ impl ViewOptions {
     pub fn background(&self) -> [[f32; 3]; 2] {
         self.background.unwrap_or_else(|| self.theme.background())
     }
-
-    /// Sets the option `name` (any of its names in the parameter table) from a value, checked as its
-    /// row says; `Ok(false)` when `name` is not one of these options.
-    pub fn set(&mut self, name: &str, value: &Value) -> Result<bool, ParamError> {
-        match parameter(name) {
-            Some(p) => match p.field {
-                Some(Field::View { set, .. }) => {
-                    set(self, &p.check(value)?);
-                    Ok(true)
-                }
-                _ => Ok(false),
-            },
-            None => Ok(false),
-        }
-    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::scene::params::Value;
 
     #[test]
     fn slices_read_an_axis_and_a_position_inside_the_box() {
