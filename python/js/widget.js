@@ -12,11 +12,14 @@
 // Those calls are made through `quietly`, so a host without them still gets a working figure.
 
 import '../../www/metaballs-view.js';
-import { TABLE } from '../../www/lib/attributes.js';
-import { propertyName } from '../../www/lib/engine.js';
+import { canonical, nameOfKind, propertyName, rowOf, TABLE } from '../../www/lib/core/table.js';
+import { spheresText } from '../../www/lib/features/scene-files.js';
+
+// The setting that holds spheres placed by hand, as text.
+const SPHERE_LIST = nameOfKind('spheres');
 
 // The trait of an attribute in Python (`max-pixel-ratio` → `max_pixel_ratio`).
-const traitName = (name) => name.replace(/-/g, '_');
+const traitName = (name) => rowOf(name)?.python ?? name.replace(/-/g, '_');
 // Where each build's WebAssembly sits in a folder laid out as dist/ (and in the wheel's static/ folder).
 const WASM_FILES = { webgpu: 'pkg/metaballs_bg.wasm', webgl2: 'pkg-webgl/metaballs_bg.wasm' };
 // How often the statistics (triangles, frame rate) are sent back, in ms.
@@ -59,12 +62,6 @@ function tellWasmSources(model) {
     return fromKernel(model, build).catch(() => beside(build));
   };
   View.wasmSources = { webgpu: source('webgpu'), webgl2: source('webgl2') };
-}
-
-/** The spheres (as `sphereList` gives them: center, radius, velocity, charge) as the `balls` attribute
- * writes them: a subtracting sphere (charge −1) with a negative radius. */
-export function ballsText(list) {
-  return list.map((s) => [...s.center, (s.charge ?? 1) < 0 ? -s.radius : s.radius, ...(s.velocity ?? [])].join(',')).join(';');
 }
 
 // What Python may ask the figure (`Metaballs.save_scene()` and the rest), by the element's method names.
@@ -140,7 +137,7 @@ function render({ model, el }) {
   let reporting = false;
   const spheresChanged = () => {
     const list = model.get('sphere_list');
-    if (!reporting && Array.isArray(list) && list.length) figure.setAttribute('balls', ballsText(list));
+    if (!reporting && Array.isArray(list) && list.length) figure.setAttribute(SPHERE_LIST, spheresText(list));
   };
   const reportSpheres = () => {
     reporting = true;
@@ -158,13 +155,13 @@ function render({ model, el }) {
     const name = TABLE.find((p) => propertyName(p.name) === event.detail.property)?.name;
     if (!name || model.get(traitName(name)) === event.detail.value) return;
     model.set(traitName(name), event.detail.value);
-    if (['spheres', 'seed', 'balls'].includes(name)) reportSpheres();
+    if (['spheres', 'seed', SPHERE_LIST].includes(name)) reportSpheres();
     quietly(() => model.save_changes());
   };
   figure.addEventListener('metaballs-change', changed);
   const refused = (event) => {
-    const name = event.detail?.attribute;
-    const kept = name && TABLE.some((p) => p.name === name) ? figure[propertyName(name)] : undefined;
+    const name = event.detail?.attribute && canonical(event.detail.attribute);
+    const kept = name && rowOf(name) ? figure[propertyName(name)] : undefined;
     if (kept === undefined || String(model.get(traitName(name))) === String(kept)) return;
     model.set(traitName(name), kept);
     quietly(() => model.save_changes());

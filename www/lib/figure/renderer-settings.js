@@ -1,7 +1,7 @@
 // How each parameter reaches the wasm view: one setter call per renderer setting. The others (speed,
 // paused, controls, hud, autoplay, max-pixel-ratio, alt, poster, sync) live in the element alone.
 
-import { resolvedTheme } from './figure-look.js';
+import { resolvedTheme } from './look.js';
 
 function hexToLinear(hex) {
   const channel = (i) => {
@@ -35,9 +35,6 @@ const SETTERS = {
   theme: (view, s) => view.set_parameter('theme', resolvedTheme(s.theme)),
   ...Object.fromEntries(BY_NAME.map((name) => [name, (view, s) => view.set_parameter(name, String(s[name]))])),
 };
-
-/** True when parameter `name` is a setting of the renderer (one `applySetting` passes on). */
-export const isRendererSetting = (name) => name in SETTERS;
 
 /** Gives `view` the value of `name` in `state`; throws with the renderer's message when it refuses. */
 export function applySetting(view, name, state) {
