@@ -7,7 +7,7 @@ use crate::extract::reference::{self, Grid};
 use crate::offscreen::Offscreen;
 use crate::scene::params::MAX_UNIFORM_RESOLUTION;
 use crate::scene::params::ViewOptions;
-use crate::scene::params::view::Mesher;
+use crate::scene::params::view::MeshOn;
 use crate::{ParamError, Settings};
 use serde::Serialize;
 use std::time::Instant;
@@ -60,7 +60,7 @@ pub struct Plan {
     /// the plain shaded surface alone.
     pub views: Vec<String>,
     /// Meshers to measure (`gpu`, `cpu`, `auto`).
-    pub meshers: Vec<Mesher>,
+    pub meshers: Vec<MeshOn>,
 }
 
 /// `base` with the view `spec` (`display=wireframe&grid=cells`) applied.
@@ -109,7 +109,7 @@ pub fn run(
                 for &spheres in &plan.sphere_counts {
                     let mut settings =
                         with_view(Settings { resolution, sphere_count: spheres, ..base }, view)?;
-                    settings.view.mesher = mesher;
+                    settings.view.mesh_on = mesher;
                     // Level of detail is measured next to the uniform grid as fine, where it fits.
                     let mut runs = vec![(settings, view.clone())];
                     if settings.view.lod && resolution <= offscreen.renderer.max_resolution() {

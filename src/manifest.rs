@@ -4,7 +4,11 @@
 //! and the TypeScript declarations (`www/metaballs-view.d.ts`). `metaballs manifest --out www` writes
 //! them; a test checks that the files in the repository are what it writes.
 
-use crate::scene::params::{Kind, PARAMETERS, ParamError, Parameter, Value};
+pub use crate::scene::params::table::property_name;
+use crate::scene::params::{
+    ACTIONS, Kind, PARAMETERS, ParamError, Parameter, Value, control_names, parameter,
+};
+use crate::scene::sphere::RADIUS_RANGE;
 use serde_json::{Value as Json, json};
 
 /// The element's methods: name, TypeScript signature after the name, what it does.
@@ -111,34 +115,17 @@ pub const CSS_PROPERTIES: &[(&str, &str, &str)] = &[
 /// The element's module inside the package.
 const MODULE: &str = "www/metaballs-view.js";
 
-/// A parameter's property name: dashes become camel case (`max-pixel-ratio` → `maxPixelRatio`).
-pub fn property_name(name: &str) -> String {
-    let mut out = String::new();
-    let mut upper = false;
-    for c in name.chars() {
-        if c == '-' {
-            upper = true;
-        } else if upper {
-            out.extend(c.to_uppercase());
-            upper = false;
-        } else {
-            out.push(c);
-        }
-    }
-    out
-}
-
-fn kind_word(kind: Kind) -> (&'static str, &'static [&'static str]) {
+fn kind_word(kind: Kind) -> &'static str {
     match kind {
-        Kind::Integer => ("integer", &[]),
-        Kind::Number => ("number", &[]),
-        Kind::Boolean => ("boolean", &[]),
-        Kind::Color => ("color", &[]),
-        Kind::Choice(words) => ("choice", words),
-        Kind::List(words) => ("list", words),
-        Kind::Slice => ("slice", &[]),
-        Kind::Spheres => ("spheres", &[]),
-        Kind::Text => ("text", &[]),
+        Kind::Integer => "integer",
+        Kind::Number => "number",
+        Kind::Boolean => "boolean",
+        Kind::Color => "color",
+        Kind::Choice(_) => "choice",
+        Kind::List(_) | Kind::Controls => "list",
+        Kind::Slice => "slice",
+        Kind::Spheres => "spheres",
+        Kind::Text => "text",
     }
 }
 
@@ -173,11 +160,14 @@ fn typed_default(p: &Parameter) -> Json {
 
 /// What a parameter is, in one sentence for editors.
 fn description(p: &Parameter) -> String {
-    let noun = p.noun[..1].to_uppercase() + &p.noun[1..];
+    let noun = if p.noun.is_empty() { p.name } else { p.noun };
+    let noun = noun[..1].to_uppercase() + &noun[1..];
     match p.kind {
         Kind::Integer | Kind::Number => format!("{noun}: {} to {}.", number(p.min), number(p.max)),
         Kind::Choice(words) => format!("{noun}: {}.", words.join(", ")),
-        Kind::List(words) => format!("{noun}: all, none, or a comma list of {}.", words.join(", ")),
+        Kind::List(_) | Kind::Controls => {
+            format!("{noun}: all, none, or a comma list of {}.", p.words().join(", "))
+        }
         Kind::Boolean => format!("{noun}: a boolean attribute."),
         Kind::Color => format!("{noun}: #rrggbb."),
         Kind::Slice => format!("{noun}: off, or an axis and a position in the box (z:0.25)."),
@@ -194,21 +184,42 @@ fn description(p: &Parameter) -> String {
     }
 }
 
-/// The parameter table's rows: name, short name in links, label, kind, accepted words, range, slider,
-/// default as text and as a value, and a sentence saying what it accepts.
+/// The parameter table's rows: the attribute, property and Python names, the short name in links,
+/// the older spellings still accepted, label, kind, accepted words, range, slider, default as text
+/// and as a value, panel group, who holds it, and whether its control needs compute shaders.
 fn rows() -> Vec<Json> {
     PARAMETERS
         .iter()
         .map(|p| {
-            let (kind, words) = kind_word(p.kind);
             json!({
-                "name": p.name, "url": p.url, "label": p.label, "kind": kind, "words": words,
+                "name": p.name, "property": p.property(), "python": p.python(), "url": p.url,
+                "aliases": p.aliases, "label": p.label, "kind": kind_word(p.kind), "words": p.words(),
                 "min": number(p.min), "max": number(p.max), "sliderMin": number(p.slider.0),
                 "sliderMax": number(p.slider.1), "step": number(p.slider.2), "default": p.default,
-                "value": typed_default(p),
+                "value": typed_default(p), "group": p.group.title(), "scope": p.scope.word(),
+                "compute": p.compute, "scene": p.in_scene,
             })
         })
         .collect()
+}
+
+/// The panel's controls in order: each setting with a group, and the actions.
+fn controls() -> Vec<Json> {
+    control_names()
+        .into_iter()
+        .map(|name| match parameter(name) {
+            Some(p) => json!({ "name": name, "label": p.label, "group": p.group.title(), "parameter": true }),
+            None => {
+                let a = ACTIONS.iter().find(|a| a.name == name).expect("a control is a setting or an action");
+                json!({ "name": name, "aliases": a.aliases, "label": a.label, "group": a.group.title(), "parameter": false })
+            }
+        })
+        .collect()
+}
+
+/// Ranges the page needs that are not settings: the sphere radii the scene accepts.
+fn limits() -> Json {
+    json!({ "radius": [number(RADIUS_RANGE.0.into()), number(RADIUS_RANGE.1.into())] })
 }
 
 /// What a parameter's errors call it and what they say it accepts (`None` where the accepted text has no
@@ -233,6 +244,20 @@ pub fn parameters_json() -> String {
             row["description"] = json!(description(p));
             row["noun"] = json!(p.noun);
             row["expected"] = json!(expected(p));
+            if p.kind == Kind::Controls {
+                // The older spellings of the controls a list may name.
+                let aliases: serde_json::Map<String, Json> = PARAMETERS
+                    .iter()
+                    .filter(|q| q.group != crate::scene::params::Group::None)
+                    .flat_map(|q| q.aliases.iter().map(move |a| (a.to_string(), json!(q.name))))
+                    .chain(
+                        ACTIONS
+                            .iter()
+                            .flat_map(|a| a.aliases.iter().map(move |o| (o.to_string(), json!(a.name)))),
+                    )
+                    .collect();
+                row["wordAliases"] = Json::Object(aliases);
+            }
             row
         })
         .collect();
@@ -241,13 +266,22 @@ pub fn parameters_json() -> String {
 
 /// `www/lib/attributes.js`: the parameter table as the element reads it before its wasm arrives.
 pub fn attributes_js() -> String {
-    let rows = rows();
-    let body = rows.iter().map(|row| format!("  {row},")).collect::<Vec<_>>().join("\n");
+    let lines =
+        |items: Vec<Json>| items.iter().map(|item| format!("  {item},")).collect::<Vec<_>>().join("\n");
     format!(
-        "// The parameter table (src/scene/params/table.rs), written by `metaballs manifest --out www`.\n\
-         // Each row: name, short name in links, label, kind, accepted words, range, slider, default as\n\
-         // text and as a value. Do not edit: change the table and run the command.\n\n\
-         export const TABLE = Object.freeze([\n{body}\n]);\n"
+        "// The parameter table (src/scene/params/rows.rs), written by `metaballs manifest --out www`.\n\
+         // Each row: attribute, property and Python names, short name in links, older spellings, label,\n\
+         // kind, accepted words, range, slider, default as text and as a value, panel group, who holds\n\
+         // it (creation, renderer, element), whether its control needs compute shaders, whether a scene\n\
+         // file holds it. Do not edit: change the table and run the command.\n\n\
+         export const TABLE = Object.freeze([\n{}\n]);\n\n\
+         // The panel's controls in order: the settings with a group, and the actions.\n\
+         export const CONTROLS = Object.freeze([\n{}\n]);\n\n\
+         // Ranges that are not settings, for gestures and the sphere editor.\n\
+         export const LIMITS = Object.freeze({});\n",
+        lines(rows()),
+        lines(controls()),
+        limits()
     )
 }
 
@@ -258,7 +292,7 @@ pub fn custom_elements_json() -> String {
         .iter()
         .map(|p| {
             json!({
-                "name": p.name, "fieldName": property_name(p.name), "type": { "text": ts_type(p) },
+                "name": p.name, "fieldName": p.property(), "type": { "text": ts_type(p) },
                 "default": json!(p.default).to_string(), "description": description(p),
             })
         })
@@ -267,7 +301,7 @@ pub fn custom_elements_json() -> String {
         .iter()
         .map(|p| {
             json!({
-                "kind": "field", "name": property_name(p.name), "type": { "text": ts_type(p) },
+                "kind": "field", "name": p.property(), "type": { "text": ts_type(p) },
                 "default": typed_default(p).to_string(), "attribute": p.name, "description": description(p),
             })
         })
@@ -332,7 +366,7 @@ pub fn declarations() -> String {
             description(p),
             p.name,
             default,
-            property_name(p.name),
+            p.property(),
             ts_type(p)
         );
     }

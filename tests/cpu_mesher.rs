@@ -9,7 +9,7 @@ use common::*;
 use metaballs::extract::cpu::mesher::CpuMesher;
 use metaballs::extract::reference::{self, Construction, Grid};
 use metaballs::offscreen::OFFSCREEN_FORMAT;
-use metaballs::scene::params::view::{Blend, Interpolation, Mesher};
+use metaballs::scene::params::view::{Blend, Interpolation, MeshOn};
 use metaballs::{GpuContext, Renderer, Scene, Settings, Sphere};
 use rand::{RngExt, SeedableRng};
 
@@ -92,9 +92,9 @@ fn the_mesh_is_closed_and_a_sphere_at_iso_one_is_its_own_sphere() {
     assert!(stats.active_blocks < stats.total_blocks / 2, "{stats:?}: empty space not skipped");
 }
 
-fn renderer_settings(mesher: Mesher) -> Settings {
+fn renderer_settings(mesher: MeshOn) -> Settings {
     let mut settings = Settings { seed: 3, sphere_count: 6, resolution: 48, ..Settings::default() };
-    settings.view.mesher = mesher;
+    settings.view.mesh_on = mesher;
     settings
 }
 
@@ -102,19 +102,19 @@ fn renderer_settings(mesher: Mesher) -> Settings {
 fn the_cpu_mesh_draws_the_gpu_mesh_picture_without_its_back_faces() {
     let (width, height) = (320, 240);
     let mut pictures = Vec::new();
-    for mesher in [Mesher::Gpu, Mesher::Cpu] {
+    for mesher in [MeshOn::Gpu, MeshOn::Cpu] {
         let pixels = with_renderer(renderer_settings(mesher), width, height, |o| {
             o.renderer.update(0.4).unwrap();
             let pixels = o.render_rgba();
             let expected = match mesher {
-                Mesher::Cpu => "cpu",
+                MeshOn::Cpu => "cpu",
                 _ => "gpu",
             };
             assert_eq!(o.renderer.mesh_source(), expected);
             pollster::block_on(o.renderer.flush_stats());
             let stats = o.renderer.stats().unwrap();
             assert!(stats.triangles > 1000 && !stats.overflowed, "{stats:?}");
-            if mesher == Mesher::Cpu {
+            if mesher == MeshOn::Cpu {
                 // The CPU's closed mesh, seen from outside the box, draws without its back faces.
                 let drawn = o.renderer.triangles_drawn().expect("the CPU counts what it draws");
                 let share = drawn as f32 / stats.triangles as f32;
@@ -142,7 +142,7 @@ fn auto_picks_the_cpu_on_software_adapters_and_views_take_the_gpu() {
         renderer.mesh_source()
     };
     let mut renderer =
-        Renderer::on_context(&context, OFFSCREEN_FORMAT, 64, 64, renderer_settings(Mesher::Auto)).unwrap();
+        Renderer::on_context(&context, OFFSCREEN_FORMAT, 64, 64, renderer_settings(MeshOn::Auto)).unwrap();
     assert_eq!(draw(&mut renderer), "gpu", "auto on a hardware adapter");
     context.set_software(true);
     assert_eq!(draw(&mut renderer), "cpu", "auto on a software adapter");
@@ -159,7 +159,7 @@ fn auto_picks_the_cpu_on_software_adapters_and_views_take_the_gpu() {
 #[test]
 fn five_thousand_frames_of_random_changes_and_switched_meshers() {
     let mut rng = rand_pcg::Pcg32::seed_from_u64(5000);
-    let base = Settings { antialiasing: false, ..renderer_settings(Mesher::Auto) };
+    let base = Settings { antialiasing: false, ..renderer_settings(MeshOn::Auto) };
     with_renderer(base, 48, 32, |o| {
         let memory = |o: &mut metaballs::offscreen::Offscreen| {
             let _ = o.device.poll(wgpu::PollType::wait_indefinitely());
@@ -167,7 +167,7 @@ fn five_thousand_frames_of_random_changes_and_switched_meshers() {
         };
         let reference_settings =
             |mesher| Settings { resolution: 32, sphere_count: 5, ..renderer_settings(mesher) };
-        o.renderer.set_settings(reference_settings(Mesher::Gpu)).unwrap();
+        o.renderer.set_settings(reference_settings(MeshOn::Gpu)).unwrap();
         o.render();
         let at_start = memory(o);
         let mut sources = [0u32; 2];
@@ -178,7 +178,7 @@ fn five_thousand_frames_of_random_changes_and_switched_meshers() {
                     0 => settings.sphere_count = rng.random_range(1..=64),
                     1 => settings.iso = 10f32.powf(rng.random_range(-1.0..1.0)),
                     2 => settings.resolution = rng.random_range(8..=40),
-                    _ => settings.view.mesher = [Mesher::Gpu, Mesher::Cpu][rng.random_range(0..2)],
+                    _ => settings.view.mesh_on = [MeshOn::Gpu, MeshOn::Cpu][rng.random_range(0..2)],
                 }
                 o.renderer.set_settings(settings).unwrap();
             }
@@ -190,13 +190,13 @@ fn five_thousand_frames_of_random_changes_and_switched_meshers() {
             }
         }
         assert!(sources.iter().all(|&n| n > 1000), "frames per mesher (gpu, cpu): {sources:?}");
-        for mesher in [Mesher::Cpu, Mesher::Gpu] {
+        for mesher in [MeshOn::Cpu, MeshOn::Gpu] {
             o.renderer.set_settings(reference_settings(mesher)).unwrap();
             o.render();
         }
         // The buffers grow for the largest surface seen; the same settings from a fresh start.
         o.renderer.set_resolution(33).unwrap();
-        o.renderer.set_settings(reference_settings(Mesher::Gpu)).unwrap();
+        o.renderer.set_settings(reference_settings(MeshOn::Gpu)).unwrap();
         o.render();
         assert_eq!(memory(o), at_start, "GPU memory for the same settings after the soak");
     });

@@ -43,7 +43,7 @@ fn surface_nets_make_one_vertex_per_crossed_cell_and_closed_surfaces() {
             let mut settings = Settings { resolution: scene.resolution, iso, ..Settings::default() };
             settings.view.interpolation = scene.construction.interpolation;
             settings.view.blend = scene.construction.blend;
-            settings.view.extractor = Method::SurfaceNets;
+            settings.view.method = Method::SurfaceNets;
             o.renderer.set_settings(settings).unwrap();
             o.renderer.set_scene(Scene::from_spheres(scene.spheres.clone()).unwrap());
             let nets = pollster::block_on(o.renderer.extract_mesh());
@@ -98,7 +98,7 @@ fn surface_nets_make_one_vertex_per_crossed_cell_and_closed_surfaces() {
 fn surface_nets_follow_the_setting_and_leave_level_of_detail_to_marching_cubes() {
     with_renderer(settings(3, 4, 32, 1.0), 32, 32, |o| {
         let mut settings = *o.renderer.settings();
-        settings.view.extractor = Method::SurfaceNets;
+        settings.view.method = Method::SurfaceNets;
         o.renderer.set_settings(settings).unwrap();
         o.render();
         assert_eq!(o.renderer.mesh_source(), "surface-nets");
@@ -107,7 +107,7 @@ fn surface_nets_follow_the_setting_and_leave_level_of_detail_to_marching_cubes()
         o.render();
         assert!(o.renderer.mesh_capabilities().lod, "lod=on meshes with transition cells");
         settings.view.lod = false;
-        settings.view.extractor = Method::MarchingCubes;
+        settings.view.method = Method::MarchingCubes;
         o.renderer.set_settings(settings).unwrap();
         o.render();
         assert_ne!(o.renderer.mesh_source(), "surface-nets");

@@ -29,82 +29,82 @@ export declare class MetaballsView extends HTMLElement {
   iso: number;
   /** Resolution (cells per axis): 8 to 2048. Attribute `resolution`; default 64. */
   resolution: number;
-  /** Layout seed: 0 to 4294967295. Attribute `seed`; default 1. */
-  seed: number;
+  /** Lod: a boolean attribute. Attribute `lod`; default false. */
+  lod: boolean;
+  /** LOD cell size (pixels): 0.25 to 32. Attribute `lod-pixels`; default 2. */
+  lodPixels: number;
+  /** Lod-freeze: a boolean attribute. Attribute `lod-freeze`; default false. */
+  lodFreeze: boolean;
+  /** Mesh-on: auto, gpu, cpu. Attribute `mesh-on`; default "auto". */
+  meshOn: 'auto' | 'gpu' | 'cpu';
+  /** Method: marching_cubes, surface_nets. Attribute `method`; default "marching_cubes". */
+  method: 'marching_cubes' | 'surface_nets';
   /** Animation speed: 0 to 3. Attribute `speed`; default 1. */
   speed: number;
+  /** Layout seed: 0 to 4294967295. Attribute `seed`; default 1. */
+  seed: number;
   /** Paused: a boolean attribute. Attribute `paused`; default false. */
   paused: boolean;
-  /** Camera yaw (degrees): -360 to 360. Attribute `yaw`; default 30. */
-  yaw: number;
-  /** Camera pitch (degrees): -89 to 89. Attribute `pitch`; default 20. */
-  pitch: number;
-  /** Camera distance: 1.5 to 20. Attribute `distance`; default 4.3. */
-  distance: number;
-  /** Shininess: 1 to 1024. Attribute `shininess`; default 64. */
-  shininess: number;
-  /** Color: #rrggbb. Attribute `color`; default "#e77661". */
-  color: string;
-  /** Antialiasing: a boolean attribute. Attribute `antialiasing`; default true. */
-  antialiasing: boolean;
+  /** Pause-on: none, merge. Attribute `pause-on`; default "none". */
+  pauseOn: 'none' | 'merge';
   /** Display: shaded, flat, wireframe, points, normals, exact. Attribute `display`; default "shaded". */
   display: 'shaded' | 'flat' | 'wireframe' | 'points' | 'normals' | 'exact';
   /** Compare: none, split, overlay. Attribute `compare`; default "none". */
   compare: 'none' | 'split' | 'overlay';
-  /** Divider position: 0.05 to 0.95. Attribute `divider`; default 0.5. */
-  divider: number;
   /** Grid: none, lattice, cells, blocks. Attribute `grid`; default "none". */
   grid: 'none' | 'lattice' | 'cells' | 'blocks';
-  /** Color_by: none, area, quality, case, level, error. Attribute `color_by`; default "none". */
-  color_by: 'none' | 'area' | 'quality' | 'case' | 'level' | 'error';
-  /** Slice: off, or an axis and a position in the box (z:0.25). Attribute `slice`; default "off". */
-  slice: string;
+  /** Color-by: none, area, quality, case, level, error. Attribute `color-by`; default "none". */
+  colorBy: 'none' | 'area' | 'quality' | 'case' | 'level' | 'error';
   /** Ambiguous: a boolean attribute. Attribute `ambiguous`; default false. */
   ambiguous: boolean;
+  /** Color: #rrggbb. Attribute `color`; default "#e77661". */
+  color: string;
+  /** Theme: dark, light, auto. Attribute `theme`; default "dark". */
+  theme: 'dark' | 'light' | 'auto';
+  /** Antialiasing: a boolean attribute. Attribute `antialiasing`; default true. */
+  antialiasing: boolean;
+  /** Slice: off, or an axis and a position in the box (z:0.25). Attribute `slice`; default "off". */
+  slice: string;
   /** Interpolation: linear, midpoint. Attribute `interpolation`; default "linear". */
   interpolation: 'linear' | 'midpoint';
   /** Blend: sum, max. Attribute `blend`; default "sum". */
   blend: 'sum' | 'max';
-  /** Mesher: auto, gpu, cpu. Attribute `mesher`; default "auto". */
-  mesher: 'auto' | 'gpu' | 'cpu';
-  /** Extractor: marching_cubes, surface_nets. Attribute `extractor`; default "marching_cubes". */
-  extractor: 'marching_cubes' | 'surface_nets';
-  /** Lod: a boolean attribute. Attribute `lod`; default false. */
-  lod: boolean;
-  /** LOD cell size (pixels): 0.25 to 32. Attribute `lod_pixels`; default 2. */
-  lod_pixels: number;
-  /** Lod_freeze: a boolean attribute. Attribute `lod_freeze`; default false. */
-  lod_freeze: boolean;
   /** Light: all, none, or a comma list of point, directional, spot. Attribute `light`; default "point". */
   light: string;
-  /** Spot cone angle (degrees): 2 to 80. Attribute `spot_angle`; default 15. */
-  spot_angle: number;
-  /** Spot softness: 0 to 1. Attribute `spot_softness`; default 0.3. */
-  spot_softness: number;
+  /** Spot cone angle (degrees): 2 to 80. Attribute `spot-angle`; default 15. */
+  spotAngle: number;
+  /** Spot softness: 0 to 1. Attribute `spot-softness`; default 0.3. */
+  spotSoftness: number;
   /** Ambient strength: 0 to 1. Attribute `ambient`; default 0.15. */
   ambient: number;
   /** Diffuse strength: 0 to 2. Attribute `diffuse`; default 0.85. */
   diffuse: number;
   /** Specular strength: 0 to 2. Attribute `specular`; default 0.6. */
   specular: number;
+  /** Shininess: 1 to 1024. Attribute `shininess`; default 64. */
+  shininess: number;
   /** Projection: perspective, orthographic. Attribute `projection`; default "perspective". */
   projection: 'perspective' | 'orthographic';
   /** Field of view (degrees): 10 to 120. Attribute `fov`; default 45. */
   fov: number;
-  /** Theme: dark, light, auto. Attribute `theme`; default "dark". */
-  theme: 'dark' | 'light' | 'auto';
   /** Edit: a boolean attribute. Attribute `edit`; default false. */
   edit: boolean;
-  /** Balls: x,y,z,radius[,vx,vy,vz] per sphere joined by ; (a negative radius subtracts). Attribute `balls`; default "". */
-  balls: string;
-  /** Controls: all, none, or a comma list of spheres, iso, resolution, speed, shininess, color, antialiasing, mesher, extractor, lod, lod_pixels, lod_freeze, paused, pause_on, seed, view, step, display, compare, grid, color_by, slice, ambiguous, interpolation, blend, inspector, error_plot, light, spot_angle, spot_softness, ambient, diffuse, specular, projection, fov, theme, edit, scene, export. Attribute `controls`; default "none". */
+  /** Camera yaw (degrees): -360 to 360. Attribute `yaw`; default 30. */
+  yaw: number;
+  /** Camera pitch (degrees): -89 to 89. Attribute `pitch`; default 20. */
+  pitch: number;
+  /** Camera distance: 1.5 to 20. Attribute `distance`; default 4.3. */
+  distance: number;
+  /** Divider position: 0.05 to 0.95. Attribute `divider`; default 0.5. */
+  divider: number;
+  /** Sphere-list: x,y,z,radius[,vx,vy,vz] per sphere joined by ; (a negative radius subtracts). Attribute `sphere-list`; default "". */
+  sphereList: string;
+  /** Controls: all, none, or a comma list of spheres, iso, resolution, lod, lod-pixels, lod-freeze, mesh-on, method, speed, seed, paused, pause-on, step, view, display, compare, grid, color-by, ambiguous, color, theme, antialiasing, slice, interpolation, blend, inspector, error-plot, light, spot-angle, spot-softness, ambient, diffuse, specular, shininess, projection, fov, edit, scene, export. Attribute `controls`; default "none". */
   controls: string;
   /** Hud: on, off. Attribute `hud`; default "off". */
   hud: 'on' | 'off';
   /** Autoplay: visible, off. Attribute `autoplay`; default "visible". */
   autoplay: 'visible' | 'off';
-  /** Pause_on: none, merge. Attribute `pause_on`; default "none". */
-  pause_on: 'none' | 'merge';
   /** Max-pixel-ratio: 0.25 to 4. Attribute `max-pixel-ratio`; default 2. */
   maxPixelRatio: number;
   /** Min-render-scale: 0.25 to 1. Attribute `min-render-scale`; default 0.5. */

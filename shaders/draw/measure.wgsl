@@ -36,33 +36,33 @@ struct DispatchIndirect {
 
 const SQUARES_SCALE: f32 = 1048576.0;
 
-@group(0) @binding(2) var<storage, read_write> words: CounterWords;
-@group(0) @binding(10) var<storage, read> vertices: array<f32>;
-@group(0) @binding(11) var<storage, read> indices: array<u32>;
-@group(0) @binding(24) var<uniform> job: Job;
-@group(0) @binding(25) var<storage, read_write> dispatch: DispatchIndirect;
+@group(0) @binding(2) var<storage, read_write> counters: CounterWords;
+@group(0) @binding(11) var<storage, read> vertices: array<f32>;
+@group(0) @binding(12) var<storage, read> indices: array<u32>;
+@group(0) @binding(36) var<uniform> measure_job: Job;
+@group(0) @binding(37) var<storage, read_write> measure_dispatch: DispatchIndirect;
 
 fn vertex_count() -> u32 {
-    if (job.known == 1u) {
-        return job.vertices;
+    if (measure_job.known == 1u) {
+        return measure_job.vertices;
     }
-    return min(words.vertices, grid.max_vertices);
+    return min(counters.vertices, grid.max_vertices);
 }
 
 fn triangle_count() -> u32 {
-    if (job.known == 1u) {
-        return job.triangles;
+    if (measure_job.known == 1u) {
+        return measure_job.triangles;
     }
-    return min(words.indices, grid.max_indices) / 3u;
+    return min(counters.indices, grid.max_indices) / 3u;
 }
 
 // One invocation: a workgroup per 64 vertices or triangles, whichever are more, in rows.
 @compute @workgroup_size(1)
 fn plan_measures() {
     let count = (max(vertex_count(), triangle_count()) + 63u) / 64u;
-    dispatch.x = min(count, DISPATCH_ROW);
-    dispatch.y = (count + DISPATCH_ROW - 1u) / DISPATCH_ROW;
-    dispatch.z = 1u;
+    measure_dispatch.x = min(count, DISPATCH_ROW);
+    measure_dispatch.y = (count + DISPATCH_ROW - 1u) / DISPATCH_ROW;
+    measure_dispatch.z = 1u;
 }
 
 fn position(i: u32) -> vec3<f32> {
@@ -71,9 +71,9 @@ fn position(i: u32) -> vec3<f32> {
 
 fn add_square(e: f32) {
     let units = u32(min(e * e, 4000.0) * SQUARES_SCALE);
-    let before = atomicAdd(&words.squares_low, units);
+    let before = atomicAdd(&counters.squares_low, units);
     if (before + units < before) {
-        atomicAdd(&words.squares_high, 1u);
+        atomicAdd(&counters.squares_high, 1u);
     }
 }
 
@@ -83,8 +83,8 @@ fn measure(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_invocatio
     if (i < vertex_count()) {
         let e = surface_distance(position(i));
         add_square(e);
-        atomicMax(&words.largest, bitcast<u32>(e));
-        atomicAdd(&words.measured, 1u);
+        atomicMax(&counters.largest, bitcast<u32>(e));
+        atomicAdd(&counters.measured, 1u);
     }
     if (i < triangle_count()) {
         let a = position(indices[3u * i]);
@@ -94,6 +94,6 @@ fn measure(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_invocatio
         let doubled = length(cross(b - a, c - a));
         let sum = dot(b - a, b - a) + dot(c - b, c - b) + dot(a - c, a - c);
         let q = select(0.0, 2.0 * sqrt(3.0) * doubled / sum, sum > 0.0);
-        atomicAdd(&words.quality[min(u32(q * 10.0), 9u)], 1u);
+        atomicAdd(&counters.quality[min(u32(q * 10.0), 9u)], 1u);
     }
 }

@@ -5,9 +5,9 @@
 
 @group(0) @binding(2) var<storage, read_write> counters: Counters;
 // (n + 1)² samples of the slice plane, first in-plane axis fastest.
-@group(0) @binding(21) var<storage, read_write> slice_values: array<f32>;
+@group(0) @binding(31) var<storage, read_write> slice_values: array<f32>;
 // Two points per contour segment.
-@group(0) @binding(22) var<storage, read_write> segments: array<vec4<f32>>;
+@group(0) @binding(32) var<storage, read_write> segments: array<vec4<f32>>;
 
 struct Overlays {
     segment_count: atomic<u32>,
@@ -18,10 +18,10 @@ struct Overlays {
     draws: array<u32, 32>,
 }
 
-@group(0) @binding(24) var<storage, read_write> overlays: Overlays;
+@group(0) @binding(34) var<storage, read_write> overlays: Overlays;
 // Per marching-squares case: its segments as pairs of square edges, 4 bits each, low pair first,
 // 0xf after the last (src/draw/slice.rs, SQUARE_SEGMENTS).
-@group(0) @binding(25) var<uniform> square_segments: array<vec4<u32>, 4>;
+@group(0) @binding(35) var<uniform> square_segments: array<vec4<u32>, 4>;
 
 // Grid point (i, j) of the slice plane.
 fn slice_id(i: u32, j: u32) -> vec3<u32> {

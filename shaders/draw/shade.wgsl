@@ -58,7 +58,7 @@ struct Shading {
     inverse_view_proj: mat4x4<f32>,
 }
 
-@group(0) @binding(20) var<uniform> shading: Shading;
+@group(0) @binding(30) var<uniform> shading: Shading;
 
 // The direction from `world` towards the eye.
 fn view_direction(world: vec3<f32>) -> vec3<f32> {

@@ -38,13 +38,13 @@ struct DispatchIndirect {
     z: u32,
 }
 
-@group(0) @binding(5) var<storage, read_write> dispatch: DispatchIndirect;
+@group(0) @binding(5) var<storage, read_write> block_dispatch: DispatchIndirect;
 
 // One invocation: one workgroup per active block (that fits), in rows of DISPATCH_ROW.
 @compute @workgroup_size(1)
 fn plan_dispatch() {
     let count = min(atomicLoad(&counters.active_blocks), grid.max_blocks);
-    dispatch.x = min(count, DISPATCH_ROW);
-    dispatch.y = (count + DISPATCH_ROW - 1u) / DISPATCH_ROW;
-    dispatch.z = 1u;
+    block_dispatch.x = min(count, DISPATCH_ROW);
+    block_dispatch.y = (count + DISPATCH_ROW - 1u) / DISPATCH_ROW;
+    block_dispatch.z = 1u;
 }

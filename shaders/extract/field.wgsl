@@ -7,11 +7,11 @@
 @group(0) @binding(2) var<storage, read_write> counters: Counters;
 @group(0) @binding(3) var<storage, read> active_blocks: array<u32>;
 // Slot s holds its block's points at s * 125, x fastest.
-@group(0) @binding(4) var<storage, read_write> block_values: array<f32>;
+@group(0) @binding(6) var<storage, read_write> block_values: array<f32>;
 // Slot s, cell c: the case at s * 64 + c.
-@group(0) @binding(5) var<storage, read_write> cell_cases: array<u32>;
+@group(0) @binding(7) var<storage, read_write> cell_cases: array<u32>;
 // The active cells, each as slot * 64 + cell.
-@group(0) @binding(6) var<storage, read_write> active_cells: array<u32>;
+@group(0) @binding(8) var<storage, read_write> active_cells: array<u32>;
 
 fn active_slot(workgroup: vec3<u32>) -> u32 {
     let slot = slot_of(workgroup);
@@ -70,7 +70,7 @@ struct DispatchIndirect {
     z: u32,
 }
 
-@group(0) @binding(7) var<storage, read_write> cell_dispatch: DispatchIndirect;
+@group(0) @binding(9) var<storage, read_write> cell_dispatch: DispatchIndirect;
 
 // One invocation: one workgroup per 64 active cells (that fit), in rows of DISPATCH_ROW.
 @compute @workgroup_size(1)

@@ -30,29 +30,29 @@ struct LodCounters {
 
 @group(0) @binding(2) var<storage, read_write> counters: LodCounters;
 // Kept blocks, as indices into the selection.
-@group(0) @binding(3) var<storage, read_write> active_blocks: array<u32>;
+@group(0) @binding(24) var<storage, read_write> kept_blocks: array<u32>;
 // The tables, in one buffer (WebGPU lets a stage bind only 8 storage buffers): from CASES, per case
 // bits 0..11 the crossed edges and bits 16.. the triangle count; from TRIANGLES, per case 16 edge
 // numbers of the triangles (0xffffffff after the last); from TRANSITIONS, per transition case 13
 // words: the triangle count, then each triangle's three edges (a byte each, the edge's two samples as
 // nibbles), wound for a right-handed (u, v, w) frame.
-@group(0) @binding(6) var<storage, read> tables: array<u32>;
+@group(0) @binding(25) var<storage, read> lod_tables: array<u32>;
 const CASES: u32 = 0u;
 const TRIANGLES: u32 = 256u;
 const TRANSITIONS: u32 = 4352u;
 // Per vertex, 6 floats: position, then outward normal.
-@group(0) @binding(10) var<storage, read_write> vertices: array<f32>;
-@group(0) @binding(11) var<storage, read_write> indices: array<u32>;
-@group(0) @binding(14) var<uniform> lod: Lod;
+@group(0) @binding(11) var<storage, read_write> vertices: array<f32>;
+@group(0) @binding(12) var<storage, read_write> indices: array<u32>;
+@group(0) @binding(20) var<uniform> lod: Lod;
 // The selection: origin in finest cells (xyz), then level | transition faces << 8.
-@group(0) @binding(15) var<storage, read> selection: array<vec4<u32>>;
+@group(0) @binding(21) var<storage, read> selection: array<vec4<u32>>;
 // The listed cells: kept block's slot, then cell | case << 10 (cells 0..511 regular, 512.. transition).
-@group(0) @binding(16) var<storage, read_write> cells: array<vec2<u32>>;
+@group(0) @binding(22) var<storage, read_write> cells: array<vec2<u32>>;
 // The hash table: per slot, the edge key (0 for an empty slot) and the vertex made for it.
-@group(0) @binding(17) var<storage, read_write> hash: array<atomic<u32>>;
+@group(0) @binding(23) var<storage, read_write> hash: array<atomic<u32>>;
 // Per triangle, its level (with TRANSITION added for a transition cell's); then from
 // lod.blocks_offset the kept blocks as the views draw them (grid=blocks), four words each.
-@group(0) @binding(20) var<storage, read_write> lod_data: array<u32>;
+@group(0) @binding(14) var<storage, read_write> lod_data: array<u32>;
 
 const LOD_CELLS: u32 = 8u;
 const LOD_POINTS: u32 = 9u;
@@ -106,7 +106,7 @@ fn classify(@builtin(global_invocation_id) id: vec3<u32>) {
     if (straddles(grid_point(b.origin), grid_point(far), walls)) {
         let s = atomicAdd(&counters.active_blocks, 1u);
         if (s < grid.max_blocks) {
-            active_blocks[s] = index;
+            kept_blocks[s] = index;
             let b = selection[index];
             let at = lod.blocks_offset + 4u * s;
             lod_data[at] = b.x;
@@ -124,7 +124,7 @@ struct DispatchIndirect {
 }
 
 // [0]: one workgroup per kept block; [1]: one invocation per listed cell.
-@group(0) @binding(5) var<storage, read_write> dispatch: array<DispatchIndirect, 2>;
+@group(0) @binding(26) var<storage, read_write> lod_dispatch: array<DispatchIndirect, 2>;
 
 fn rows(count: u32) -> DispatchIndirect {
     return DispatchIndirect(min(count, DISPATCH_ROW), (count + DISPATCH_ROW - 1u) / DISPATCH_ROW, 1u);
@@ -132,12 +132,12 @@ fn rows(count: u32) -> DispatchIndirect {
 
 @compute @workgroup_size(1)
 fn plan_blocks() {
-    dispatch[0] = rows(min(atomicLoad(&counters.active_blocks), grid.max_blocks));
+    lod_dispatch[0] = rows(min(atomicLoad(&counters.active_blocks), grid.max_blocks));
 }
 
 @compute @workgroup_size(1)
 fn plan_cells() {
-    dispatch[1] = rows((min(atomicLoad(&counters.active_cells), grid.max_cells) + 63u) / 64u);
+    lod_dispatch[1] = rows((min(atomicLoad(&counters.active_cells), grid.max_cells) + 63u) / 64u);
 }
 
 // The table slot holding `key` in its part; with `insert`, claims a free one for it (the claim
@@ -279,7 +279,7 @@ fn transition_edge(b: Block, face: u32, edge: u32, ci: u32, cj: u32) -> Transiti
 @compute @workgroup_size(64)
 fn find_cells(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_invocation_index) local: u32) {
     let slot = slot_of(workgroup);
-    let b = block_at(active_blocks[slot]);
+    let b = block_at(kept_blocks[slot]);
     let step = 1u << b.level;
     for (var i = local; i < LOD_POINTS * LOD_POINTS * LOD_POINTS; i += 64u) {
         let c = vec3<u32>(i % LOD_POINTS, (i / LOD_POINTS) % LOD_POINTS, i / (LOD_POINTS * LOD_POINTS));
@@ -303,7 +303,7 @@ fn find_cells(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_invoca
                 case_index |= 1u << c;
             }
         }
-        let crossed = tables[CASES + case_index] & 0xfffu;
+        let crossed = lod_tables[CASES + case_index] & 0xfffu;
         if (crossed == 0u) {
             continue;
         }
@@ -339,9 +339,9 @@ fn find_cells(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_invoca
             cells[listed] = vec2<u32>(slot, (REGULAR_CELLS + t) | (case_index << 10u));
         }
         let row = case_index * 13u;
-        let count = tables[TRANSITIONS + row];
+        let count = lod_tables[TRANSITIONS + row];
         for (var k = 0u; k < count; k++) {
-            let triangle = tables[TRANSITIONS + row + 1u + k];
+            let triangle = lod_tables[TRANSITIONS + row + 1u + k];
             for (var j = 0u; j < 3u; j++) {
                 let edge = (triangle >> (8u * j)) & 0xffu;
                 let e = transition_edge(b, face, edge, ci, cj);
@@ -387,12 +387,12 @@ fn make_triangles(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_in
         return;
     }
     let listed = cells[id];
-    let b = block_at(active_blocks[listed.x]);
+    let b = block_at(kept_blocks[listed.x]);
     let cell = listed.y & 0x3ffu;
     let case_index = listed.y >> 10u;
     let step = 1u << b.level;
     if (cell < REGULAR_CELLS) {
-        let count = tables[CASES + case_index] >> 16u;
+        let count = lod_tables[CASES + case_index] >> 16u;
         let first = atomicAdd(&counters.indices, count * 3u);
         atomicAdd(&counters.level_triangles[b.level], count);
         let at = vec3<u32>(cell % LOD_CELLS, (cell / LOD_CELLS) % LOD_CELLS, cell / (LOD_CELLS * LOD_CELLS));
@@ -402,7 +402,7 @@ fn make_triangles(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_in
             // The table winds clockwise seen from outside; emit counter-clockwise.
             let order = vec3<u32>(0u, 2u, 1u);
             for (var j = 0u; j < 3u; j++) {
-                let e = tables[TRIANGLES + row + 3u * k + order[j]];
+                let e = lod_tables[TRIANGLES + row + 3u * k + order[j]];
                 let ca = at + corner_offset(EDGE_CORNERS[e] & 15u);
                 let cb = at + corner_offset(EDGE_CORNERS[e] >> 4u);
                 let axis = select(select(2u, 1u, ca.y != cb.y), 0u, ca.x != cb.x);
@@ -417,11 +417,11 @@ fn make_triangles(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_in
     let ci = t % LOD_CELLS;
     let cj = (t / LOD_CELLS) % LOD_CELLS;
     let row = case_index * 13u;
-    let count = tables[TRANSITIONS + row];
+    let count = lod_tables[TRANSITIONS + row];
     let first = atomicAdd(&counters.indices, count * 3u);
     atomicAdd(&counters.level_triangles[b.level], count);
     for (var k = 0u; k < count; k++) {
-        let packed = tables[TRANSITIONS + row + 1u + k];
+        let packed = lod_tables[TRANSITIONS + row + 1u + k];
         var triangle = vec3<u32>(0u);
         for (var j = 0u; j < 3u; j++) {
             let e = transition_edge(b, face, (packed >> (8u * j)) & 0xffu, ci, cj);
@@ -435,9 +435,9 @@ fn make_triangles(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_in
     }
 }
 
-@group(0) @binding(12) var<storage, read_write> draw: DrawIndexedIndirect;
+@group(0) @binding(13) var<storage, read_write> draw_args: DrawIndexedIndirect;
 
 @compute @workgroup_size(1)
 fn finalize_draw() {
-    draw = indexed_draw(atomicLoad(&counters.indices));
+    draw_args = indexed_draw(atomicLoad(&counters.indices));
 }

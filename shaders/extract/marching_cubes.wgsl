@@ -12,20 +12,20 @@
 @group(0) @binding(3) var<storage, read> active_blocks: array<u32>;
 @group(0) @binding(4) var<storage, read> block_slots: array<u32>;
 // The active cells, each as slot * 64 + cell.
-@group(0) @binding(13) var<storage, read> active_cells: array<u32>;
-@group(0) @binding(5) var<storage, read> block_values: array<f32>;
+@group(0) @binding(8) var<storage, read> active_cells: array<u32>;
+@group(0) @binding(6) var<storage, read> block_values: array<f32>;
 // Per case: bits 0..11 the crossed edges, bits 16.. the triangle count.
-@group(0) @binding(6) var<storage, read> case_table: array<u32, 256>;
+@group(0) @binding(16) var<storage, read> case_table: array<u32, 256>;
 // Per case, 16 entries: edge numbers of the triangles, -1 after the last.
-@group(0) @binding(7) var<storage, read> triangle_table: array<i32, 4096>;
+@group(0) @binding(17) var<storage, read> triangle_table: array<i32, 4096>;
 // Slot s, cell c: the case at s * 64 + c.
-@group(0) @binding(8) var<storage, read> cell_cases: array<u32>;
+@group(0) @binding(7) var<storage, read> cell_cases: array<u32>;
 // Slot s, cell c, axis a: the vertex on the edge leaving the cell's lowest corner along a, at
 // (s * 64 + c) * 3 + a (INVALID where the budget was full).
-@group(0) @binding(9) var<storage, read_write> edge_vertices: array<u32>;
+@group(0) @binding(10) var<storage, read_write> edge_vertices: array<u32>;
 // Per vertex, 6 floats: position, then outward normal.
-@group(0) @binding(10) var<storage, read_write> vertices: array<f32>;
-@group(0) @binding(11) var<storage, read_write> indices: array<u32>;
+@group(0) @binding(11) var<storage, read_write> vertices: array<f32>;
+@group(0) @binding(12) var<storage, read_write> indices: array<u32>;
 
 // Edge e starts at the corner returned in xyz and runs along axis w (src/extract/tables.rs, EDGE_CORNERS).
 fn edge_start(e: u32) -> vec4<u32> {
@@ -176,10 +176,10 @@ fn make_triangles(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_in
     }
 }
 
-@group(0) @binding(12) var<storage, read_write> draw: DrawIndexedIndirect;
+@group(0) @binding(13) var<storage, read_write> draw_args: DrawIndexedIndirect;
 
 // One invocation: the draw covers the indices written, never more than the buffer holds.
 @compute @workgroup_size(1)
 fn finalize_draw() {
-    draw = indexed_draw(atomicLoad(&counters.indices));
+    draw_args = indexed_draw(atomicLoad(&counters.indices));
 }

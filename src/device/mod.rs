@@ -1,6 +1,8 @@
-//! Getting a device, building shader modules and pipelines every GPU stage uses, and reading buffers
-//! back outside the frame loop (tests and tools). Imports only `scene`.
+//! Getting a device, building shader modules and pipelines every GPU stage uses, the binding numbers
+//! their shaders share, and reading buffers back outside the frame loop (tests and tools). Imports only
+//! `scene`.
 
+pub mod bindings;
 pub mod timing;
 
 use std::fmt;

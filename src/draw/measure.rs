@@ -2,7 +2,7 @@
 //! triangle's shape, summed on the GPU into the counters buffer, which the frame statistics bring back.
 //! It reads the mesh, whichever extractor made it, and writes only the measures.
 
-use crate::device::{bind_buffers, compute_module, compute_pipeline};
+use crate::device::{bind_buffers, bindings, compute_module, compute_pipeline};
 use crate::extract::buffers::MeshBuffers;
 use crate::extract::gpu::scene_buffers::SceneBuffers;
 use crate::extract::uniforms::{MEASURES_OFFSET, Measures};
@@ -62,24 +62,25 @@ impl MeasurePass {
             bytemuck::cast_slice(&[known.is_some() as u32, vertices, triangles, 0]),
         );
         let groups = self.groups.get_or_insert_with(|| {
-            let (job, dispatch) = ((24, &self.job), (25, &self.dispatch));
+            let (job, dispatch) =
+                ((bindings::MEASURE_JOB, &self.job), (bindings::MEASURE_DISPATCH, &self.dispatch));
             [
                 bind_buffers(
                     device,
                     "measures: plan bind group",
                     &self.plan,
-                    &[(0, &scene.grid), (2, &mesh.counters), job, dispatch],
+                    &[(bindings::GRID, &scene.grid), (bindings::COUNTERS, &mesh.counters), job, dispatch],
                 ),
                 bind_buffers(
                     device,
                     "measures: bind group",
                     &self.measure,
                     &[
-                        (0, &scene.grid),
-                        (1, &scene.spheres),
-                        (2, &mesh.counters),
-                        (10, &mesh.vertices),
-                        (11, &mesh.indices),
+                        (bindings::GRID, &scene.grid),
+                        (bindings::SPHERES, &scene.spheres),
+                        (bindings::COUNTERS, &mesh.counters),
+                        (bindings::VERTICES, &mesh.vertices),
+                        (bindings::INDICES, &mesh.indices),
                         job,
                     ],
                 ),

@@ -1,6 +1,7 @@
 //! The shading pass (`shaders/draw/shade.wgsl`): background, the box's edges, then the surface with
 //! Blinn-Phong, depth-tested and (with antialiasing) multisampled and resolved into the caller's view.
 
+use crate::device::bindings;
 use crate::draw::uniforms::ShadingUniform;
 use crate::draw::views::{ViewPipelines, ViewState};
 use crate::extract::buffers::VERTEX_BYTES;
@@ -39,7 +40,7 @@ impl ShadePipelines {
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("shade: bind group layout"),
             entries: &[wgpu::BindGroupLayoutEntry {
-                binding: 20,
+                binding: bindings::SHADING,
                 visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
                 ty: wgpu::BindingType::Buffer {
                     ty: wgpu::BufferBindingType::Uniform,
@@ -221,7 +222,10 @@ impl ShadePass {
         let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("shade: bind group"),
             layout: &pipelines.layout,
-            entries: &[wgpu::BindGroupEntry { binding: 20, resource: uniform.as_entire_binding() }],
+            entries: &[wgpu::BindGroupEntry {
+                binding: bindings::SHADING,
+                resource: uniform.as_entire_binding(),
+            }],
         });
         let targets = Targets::new(device, &pipelines, width, height);
         Self { pipelines, uniform, bind_group, targets }

@@ -2,7 +2,7 @@
 //! as numbers. For tests and tools, never the frame loop.
 
 use super::Renderer;
-use crate::device::read_buffer;
+use crate::device::{bindings, read_buffer};
 use wgpu::util::DeviceExt;
 
 impl Renderer {
@@ -31,11 +31,11 @@ impl Renderer {
             mapped_at_creation: false,
         });
         let entries = [
-            (0, &self.scene_buffers.grid),
-            (1, &self.scene_buffers.spheres),
-            (20, self.shade.uniform()),
-            (27, &input),
-            (28, &hits),
+            (bindings::GRID, &self.scene_buffers.grid),
+            (bindings::SPHERES, &self.scene_buffers.spheres),
+            (bindings::SHADING, self.shade.uniform()),
+            (bindings::PROBE_PIXELS, &input),
+            (bindings::PROBE_HITS, &hits),
         ]
         .map(|(binding, buffer)| wgpu::BindGroupEntry { binding, resource: buffer.as_entire_binding() });
         let group = device.create_bind_group(&wgpu::BindGroupDescriptor {

@@ -11,7 +11,7 @@ use crate::extract::uniforms::LEVEL_SLOTS;
 use crate::extract::{Capabilities, Extractor, Job, LodJob, MeshCount, Output, Viewpoint};
 use crate::scene::BOX_HALF_EXTENT;
 use crate::scene::params::ParamError;
-use crate::scene::params::view::Mesher;
+use crate::scene::params::view::MeshOn;
 use crate::scene::params::view::{Method, Projection};
 
 impl Renderer {
@@ -116,7 +116,7 @@ impl Renderer {
     /// cells) or the uniform grid with the chosen method.
     fn in_mode(&self, c: Capabilities) -> bool {
         let view = &self.settings.view;
-        c.lod == view.lod && (view.lod || c.method == view.extractor)
+        c.lod == view.lod && (view.lod || c.method == view.method)
     }
 
     /// The extractor for the next frame, among those of the current mode (`lod`): one with the
@@ -134,10 +134,10 @@ impl Renderer {
         } else if self.pinned.is_some() {
             self.pinned
         } else {
-            match self.settings.view.mesher {
-                Mesher::Gpu => find(&|c, _| c.needs_compute),
-                Mesher::Cpu => find(&|c, _| !c.needs_compute),
-                Mesher::Auto => {
+            match self.settings.view.mesh_on {
+                MeshOn::Gpu => find(&|c, _| c.needs_compute),
+                MeshOn::Cpu => find(&|c, _| !c.needs_compute),
+                MeshOn::Auto => {
                     let software = self.context.is_software();
                     find(&|c, _| c.needs_compute != software)
                 }

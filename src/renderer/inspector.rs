@@ -8,10 +8,14 @@ use crate::teach::inspect::{self, CellReport, Target};
 use glam::UVec3;
 
 impl Renderer {
-    /// Sets parameter `name` (a view option, light strength or the field of view; see
-    /// `Settings::with_parameter`) from its text.
+    /// Sets renderer setting `name` (any of its names in the parameter table) from its text.
     pub fn set_parameter(&mut self, name: &str, text: &str) -> Result<(), ParamError> {
         self.set_settings(self.settings.with_parameter(name, text)?)
+    }
+
+    /// Sets several renderer settings from their text, checked together: all or nothing.
+    pub fn set_parameters(&mut self, pairs: &[(&str, &str)]) -> Result<(), ParamError> {
+        self.set_settings(self.settings.with_parameters(pairs)?)
     }
 
     /// How the surface is built (vertex placement and blend), as the oracle takes it.

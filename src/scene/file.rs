@@ -23,24 +23,6 @@ pub const FORMAT: &str = "metaballs-scene";
 pub const VERSION: u64 = 1;
 /// Largest document read, in bytes: 64 spheres take about 10 KB.
 pub const MAX_BYTES: usize = 1 << 20;
-/// Parameters that belong to the figure on its page rather than to the scene: a document neither
-/// saves nor restores them. The sphere count is the length of `spheres`.
-pub const NOT_IN_SCENE: &[&str] = &[
-    "spheres",
-    "balls",
-    "controls",
-    "hud",
-    "autoplay",
-    "pause_on",
-    "max-pixel-ratio",
-    "min-render-scale",
-    "edit",
-    "theme",
-    "alt",
-    "poster",
-    "sync",
-];
-
 /// A checked scene: the spheres, and settings by parameter name (only names a scene holds, each
 /// value checked by the parameter table).
 #[derive(Clone, Debug, PartialEq)]
@@ -63,7 +45,7 @@ pub fn check_size(bytes: u64) -> Result<(), SceneError> {
 
 /// The parameters a scene document holds, in table order.
 pub fn scene_parameters() -> impl Iterator<Item = &'static super::params::Parameter> {
-    super::params::PARAMETERS.iter().filter(|p| !NOT_IN_SCENE.contains(&p.name))
+    super::params::PARAMETERS.iter().filter(|p| p.in_scene)
 }
 
 /// Describes a JSON value for messages: short values whole, long ones by kind.
@@ -124,7 +106,7 @@ fn sphere(value: &serde_json::Value, field: &str) -> Result<Sphere, SceneError> 
 fn setting(name: &str, value: &serde_json::Value) -> Result<(&'static str, Value), SceneError> {
     let field = format!("settings.{}", cut(name));
     let spec = parameter(name)
-        .filter(|p| p.name == name && !NOT_IN_SCENE.contains(&p.name))
+        .filter(|p| p.in_scene)
         .ok_or_else(|| SceneError(format!("{field}: not a setting a scene holds")))?;
     let text = match value {
         // Whole numbers written with a fraction (`64.0`) read as whole numbers.
@@ -208,7 +190,7 @@ impl SceneFile {
         }
         let settings = settings
             .iter()
-            .filter(|(name, _)| !NOT_IN_SCENE.contains(&name.as_str()))
+            .filter(|(name, _)| parameter(name).is_none_or(|p| p.in_scene))
             .map(|(name, value)| setting(name, value))
             .collect::<Result<_, _>>()?;
         Ok(SceneFile { spheres, settings })
@@ -251,6 +233,7 @@ impl SceneFile {
 
     /// A setting's value, if the scene holds it.
     pub fn setting(&self, name: &str) -> Option<&Value> {
+        let name = parameter(name).map_or(name, |p| p.name);
         self.settings.iter().find(|(n, _)| *n == name).map(|(_, v)| v)
     }
 
@@ -261,16 +244,13 @@ impl SceneFile {
         // Level of detail first: it decides which resolutions are allowed.
         let lod_first = self.settings.iter().filter(|(n, _)| *n == "lod");
         for (name, value) in lod_first.chain(self.settings.iter().filter(|(n, _)| *n != "lod")) {
-            if matches!(*name, "speed" | "paused") {
+            // The animation's speed and pause belong to the page.
+            if parameter(name).is_some_and(|p| p.field.is_none()) {
                 continue;
             }
-            let text = match value {
-                Value::Number(n) => n.to_string(),
-                Value::Boolean(b) => b.to_string(),
-                Value::Text(t) => t.clone(),
-            };
-            settings =
-                settings.with_parameter(name, &text).map_err(|e| at(&format!("settings.{name}"), e))?;
+            settings = settings
+                .with_parameter(name, &value.to_text())
+                .map_err(|e| at(&format!("settings.{name}"), e))?;
         }
         Ok(settings)
     }

@@ -90,10 +90,21 @@ pub fn cube_geometry() -> js_sys::Object {
 
 #[wasm_bindgen]
 impl View {
-    /// Sets a view option, light strength or the field of view by its parameter name, from text;
-    /// throws with what is accepted and keeps the previous value.
+    /// Sets any renderer setting by its name in the parameter table (or an older spelling), from
+    /// text; throws with what is accepted and keeps the previous value.
     pub fn set_parameter(&mut self, name: &str, text: &str) -> Result<(), JsError> {
         self.renderer.set_parameter(name, text).map_err(js_error)
+    }
+
+    /// Sets several renderer settings at once (`names[i]` from `texts[i]`), checked together, as the
+    /// resolution and level of detail must be: all or nothing.
+    pub fn set_parameters(&mut self, names: Vec<String>, texts: Vec<String>) -> Result<(), JsError> {
+        if names.len() != texts.len() {
+            return Err(JsError::new("set_parameters takes as many texts as names"));
+        }
+        let pairs: Vec<(&str, &str)> =
+            names.iter().map(String::as_str).zip(texts.iter().map(String::as_str)).collect();
+        self.renderer.set_parameters(&pairs).map_err(js_error)
     }
 
     /// Sets the background's gradient from the page's colours (`#rrggbb` top and bottom, as the

@@ -19,6 +19,17 @@ def trait_name(name: str) -> str:
     return name.replace("-", "_")
 
 
+def older_names() -> dict:
+    """The older Python spellings still accepted (``balls`` → ``sphere_list``), from the table's aliases."""
+    names = {}
+    for row in TABLE:
+        for alias in row["aliases"] + [row["url"]]:
+            old = trait_name(alias)
+            if old.isidentifier() and old != row["python"] and not any(old == r["python"] for r in TABLE):
+                names[old] = row["python"]
+    return names
+
+
 def _f32(value: float) -> float:
     """`value` rounded to single precision, as the figure holds it (infinite beyond its range)."""
     try:
@@ -108,6 +119,11 @@ def check(row: dict, value):
         if word in ("0", "false", "off", "no"):
             return False
         raise _invalid(row, text)
+    if kind == "spheres" and isinstance(value, (list, tuple)):
+        # The sphere list as the figure reports it: dicts of center, radius, velocity and charge.
+        if all(isinstance(s, dict) and "center" in s and "radius" in s for s in value):
+            return list(value)
+        raise Refused(f"{row['noun'] or row['name']} must be spheres as dicts with center and radius, got {text}")
     if not isinstance(value, str):
         raise _invalid(row, text) if row["expected"] else Refused(f"{row['noun']} must be text, got {text}")
     if kind == "color":
@@ -124,7 +140,8 @@ def check(row: dict, value):
         words = value.strip().lower()
         if words in ("all", "none"):
             return words
-        items = [item.strip() for item in words.split(",") if item.strip()]
+        aliases = row.get("wordAliases", {})
+        items = [aliases.get(item.strip(), item.strip()) for item in words.split(",") if item.strip()]
         if not items or any(item not in row["words"] for item in items):
             raise _invalid(row, text)
         return ",".join(items)

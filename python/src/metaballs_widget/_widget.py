@@ -9,9 +9,10 @@ import itertools
 import anywidget
 import traitlets
 
-from ._parameters import STATIC, TABLE, Refused, check, shown, trait_name
+from ._parameters import STATIC, TABLE, Refused, check, older_names, shown, trait_name
 
 _ROWS = {trait_name(row["name"]): row for row in TABLE}
+_OLDER = older_names()
 _WASM = {"webgpu": "pkg/metaballs_bg.wasm", "webgl2": "pkg-webgl/metaballs_bg.wasm"}
 MESH_FORMATS = ("stl", "obj", "ply")
 
@@ -30,12 +31,10 @@ class _Figure(anywidget.AnyWidget):
     )
     fps = traitlets.Float(0.0, help="Frames drawn per second.").tag(sync=True)
     adapter = traitlets.Unicode("", help="What the figure draws with (WebGPU's adapter, or WebGL2).").tag(sync=True)
-    sphere_list = traitlets.List(
-        traitlets.Dict(),
-        help="The spheres as dicts (center, radius, velocity, charge: -1 subtracts); set it to place them by hand.",
-    ).tag(sync=True)
 
     def __init__(self, **kwargs):
+        # Older spellings (``balls=``, ``mesher=``) are the settings' current names.
+        kwargs = {_OLDER.get(name, name): value for name, value in kwargs.items()}
         super().__init__(**kwargs)
         self._calls = itertools.count(1)
         self._waiting: dict = {}
@@ -121,11 +120,17 @@ class _Figure(anywidget.AnyWidget):
                 answer.set_result((content, list(buffers or [])))
 
 
+def _older(new: str) -> property:
+    """An older spelling of a setting, read and set as the setting itself."""
+    return property(lambda self: getattr(self, new), lambda self, value: setattr(self, new, value))
+
+
 Metaballs = type(
     "Metaballs",
     (_Figure,),
     {
         **_settings(),
+        **{old: _older(new) for old, new in _OLDER.items()},
         "__doc__": "Merging spheres drawn with marching cubes, as a widget: "
         "``Metaballs(spheres=2, iso=1)``. Every setting of the figure is a trait, synced both ways.",
         "__module__": __name__,

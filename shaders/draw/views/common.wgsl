@@ -5,25 +5,25 @@
 
 @group(0) @binding(3) var<storage, read> active_blocks: array<u32>;
 @group(0) @binding(4) var<storage, read> block_slots: array<u32>;
-@group(0) @binding(8) var<storage, read> cell_cases: array<u32>;
-@group(0) @binding(10) var<storage, read> vertices: array<f32>;
-@group(0) @binding(11) var<storage, read> indices: array<u32>;
-@group(0) @binding(13) var<storage, read> active_cells: array<u32>;
+@group(0) @binding(7) var<storage, read> cell_cases: array<u32>;
+@group(0) @binding(11) var<storage, read> vertices: array<f32>;
+@group(0) @binding(12) var<storage, read> indices: array<u32>;
+@group(0) @binding(8) var<storage, read> active_cells: array<u32>;
 // With lod=on: each triangle's level of detail (TRANSITION, 128, added for a transition cell's), then
 // from shading.lod_blocks_offset the kept blocks, four words each: origin in finest cells, then
 // level | transition faces << 8.
-@group(0) @binding(26) var<storage, read> lod_data: array<u32>;
+@group(0) @binding(14) var<storage, read> lod_data: array<u32>;
 
 fn lod_block(i: u32) -> vec4<u32> {
     let at = shading.lod_blocks_offset + 4u * i;
     return vec4<u32>(lod_data[at], lod_data[at + 1u], lod_data[at + 2u], lod_data[at + 3u]);
 }
 // The slice's samples, (n + 1)² values, first in-plane axis fastest (shaders/draw/overlays.wgsl).
-@group(0) @binding(21) var<storage, read> slice_values: array<f32>;
+@group(0) @binding(31) var<storage, read> slice_values: array<f32>;
 // The slice's contour: two points per segment.
-@group(0) @binding(22) var<storage, read> segments: array<vec4<f32>>;
+@group(0) @binding(32) var<storage, read> segments: array<vec4<f32>>;
 // The class (0..14) of each case, four to an element (src/teach/case_classes.rs).
-@group(0) @binding(23) var<uniform> case_classes: array<vec4<u32>, 64>;
+@group(0) @binding(33) var<uniform> case_classes: array<vec4<u32>, 64>;
 
 fn class_of(case_index: u32) -> u32 {
     return case_classes[case_index / 4u][case_index % 4u];

@@ -194,8 +194,8 @@ fn exact_outline_fragment(in: ExactOut) -> @location(0) vec4<f32> {
     return vec4<f32>(to_output(vec3<f32>(0.25, 0.95, 1.0)).rgb, 1.0);
 }
 
-@group(0) @binding(27) var<storage, read> probe_pixels: array<vec2<f32>>;
-@group(0) @binding(28) var<storage, read_write> probe_hits: array<f32>;
+@group(0) @binding(38) var<storage, read> probe_pixels: array<vec2<f32>>;
+@group(0) @binding(39) var<storage, read_write> probe_hits: array<f32>;
 
 // For each pixel asked for: the hit's distance along the ray from the near plane, or -1.
 @compute @workgroup_size(64)

@@ -3,7 +3,7 @@
 //! and an axis gizmo. Everything is drawn from the buffers the compute passes fill, with indirect draws
 //! whose counts a one-invocation pass writes on the GPU: no readback.
 
-use crate::device::{bind_buffers, bind_buffers_to};
+use crate::device::{bind_buffers, bind_buffers_to, bindings};
 use crate::draw::uniforms::ShadingUniform;
 use crate::extract::buffers::MeshBuffers;
 use crate::extract::gpu::scene_buffers::SceneBuffers;
@@ -59,7 +59,7 @@ pub fn needed(options: &ViewOptions, selected: bool) -> bool {
 /// True when the frame's mesh comes without the cell lists the teaching views read: level of detail
 /// and surface nets.
 pub fn mesh_only(options: &ViewOptions) -> bool {
-    options.lod || options.extractor == Method::SurfaceNets
+    options.lod || options.method == Method::SurfaceNets
 }
 
 /// The views `options` ask for that the frame's mesh can show: with level of detail there is no
@@ -69,7 +69,7 @@ pub fn mesh_only(options: &ViewOptions) -> bool {
 pub fn shown(options: &ViewOptions) -> ViewOptions {
     let options = &exact::mesh_side(options);
     if !options.lod {
-        if options.extractor != Method::SurfaceNets {
+        if options.method != Method::SurfaceNets {
             return *options;
         }
         let grid = if options.grid == GridView::Lattice { GridView::Lattice } else { GridView::None };
@@ -123,45 +123,54 @@ impl ViewState {
                 "views: bind group",
                 &p.layout,
                 &[
-                    (0, &scene.grid),
-                    (1, &scene.spheres),
-                    (3, &mesh.active_blocks),
-                    (4, &mesh.block_slots),
-                    (8, &mesh.cell_cases),
-                    (10, &mesh.vertices),
-                    (11, &mesh.indices),
-                    (13, &mesh.active_cells),
-                    (20, shading),
-                    (26, &mesh.lod_data),
-                    (21, &slice_values),
-                    (22, &segments),
-                    (23, &p.case_classes),
+                    (bindings::GRID, &scene.grid),
+                    (bindings::SPHERES, &scene.spheres),
+                    (bindings::ACTIVE_BLOCKS, &mesh.active_blocks),
+                    (bindings::BLOCK_SLOTS, &mesh.block_slots),
+                    (bindings::CELL_CASES, &mesh.cell_cases),
+                    (bindings::VERTICES, &mesh.vertices),
+                    (bindings::INDICES, &mesh.indices),
+                    (bindings::ACTIVE_CELLS, &mesh.active_cells),
+                    (bindings::SHADING, shading),
+                    (bindings::LOD_DATA, &mesh.lod_data),
+                    (bindings::SLICE_VALUES, &slice_values),
+                    (bindings::SEGMENTS, &segments),
+                    (bindings::CASE_CLASSES, &p.case_classes),
                 ],
             ),
             sample_group: bind_buffers(
                 device,
                 "overlays: slice sample bind group",
                 &p.sample_slice,
-                &[(0, &scene.grid), (1, &scene.spheres), (20, shading), (21, &slice_values)],
+                &[
+                    (bindings::GRID, &scene.grid),
+                    (bindings::SPHERES, &scene.spheres),
+                    (bindings::SHADING, shading),
+                    (bindings::SLICE_VALUES, &slice_values),
+                ],
             ),
             contour_group: bind_buffers(
                 device,
                 "overlays: slice contour bind group",
                 &p.contour_slice,
                 &[
-                    (0, &scene.grid),
-                    (20, shading),
-                    (21, &slice_values),
-                    (22, &segments),
-                    (24, &overlays),
-                    (25, &p.square_segments),
+                    (bindings::GRID, &scene.grid),
+                    (bindings::SHADING, shading),
+                    (bindings::SLICE_VALUES, &slice_values),
+                    (bindings::SEGMENTS, &segments),
+                    (bindings::OVERLAYS, &overlays),
+                    (bindings::SQUARE_SEGMENTS, &p.square_segments),
                 ],
             ),
             plan_group: bind_buffers(
                 device,
                 "overlays: plan bind group",
                 &p.plan,
-                &[(0, &scene.grid), (2, &mesh.counters), (24, &overlays)],
+                &[
+                    (bindings::GRID, &scene.grid),
+                    (bindings::COUNTERS, &mesh.counters),
+                    (bindings::OVERLAYS, &overlays),
+                ],
             ),
             grid,
             slice_values,

@@ -2,7 +2,7 @@
 //! every drawing entry of `shaders/draw/views/`, and the overlay pass's compute pipelines
 //! (`shaders/draw/overlays.wgsl`) with the tables they read.
 
-use crate::device::shader_module;
+use crate::device::{bindings, shader_module};
 use crate::draw::slice::packed_square_segments;
 use crate::teach::case_classes::case_classes;
 use wgpu::util::DeviceExt;
@@ -80,13 +80,24 @@ impl ViewPipelines {
         };
         let both = S::VERTEX_FRAGMENT;
         let mut entries = vec![
-            entry(0, both, uniform),
-            entry(1, both, uniform),
-            entry(20, both, uniform),
-            entry(23, both, uniform),
-            entry(21, S::FRAGMENT, storage),
+            entry(bindings::GRID, both, uniform),
+            entry(bindings::SPHERES, both, uniform),
+            entry(bindings::SHADING, both, uniform),
+            entry(bindings::CASE_CLASSES, both, uniform),
+            entry(bindings::SLICE_VALUES, S::FRAGMENT, storage),
         ];
-        entries.extend([3, 4, 8, 10, 11, 13, 22, 26].map(|b| entry(b, S::VERTEX, storage)));
+        // What only the vertex stages read.
+        let vertex_reads = [
+            bindings::ACTIVE_BLOCKS,
+            bindings::BLOCK_SLOTS,
+            bindings::CELL_CASES,
+            bindings::VERTICES,
+            bindings::INDICES,
+            bindings::ACTIVE_CELLS,
+            bindings::LOD_DATA,
+            bindings::SEGMENTS,
+        ];
+        entries.extend(vertex_reads.map(|b| entry(b, S::VERTEX, storage)));
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("views: bind group layout"),
             entries: &entries,

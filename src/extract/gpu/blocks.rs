@@ -1,7 +1,7 @@
 //! The block pass (`shaders/extract/blocks.wgsl`): bound the field over blocks of 4³ cells, keep the blocks the
 //! surface may cross, and size the per-block passes' indirect dispatch to them.
 
-use crate::device::{bind_buffers, compute_module, compute_pipeline};
+use crate::device::{bind_buffers, bindings, compute_module, compute_pipeline};
 use crate::extract::buffers::{BLOCK_CELLS, MeshBuffers};
 use crate::extract::gpu::scene_buffers::SceneBuffers;
 
@@ -32,18 +32,22 @@ impl BlockPass {
                 "blocks: classify bind group",
                 &self.classify,
                 &[
-                    (0, &scene.grid),
-                    (1, &scene.spheres),
-                    (2, &mesh.counters),
-                    (3, &mesh.active_blocks),
-                    (4, &mesh.block_slots),
+                    (bindings::GRID, &scene.grid),
+                    (bindings::SPHERES, &scene.spheres),
+                    (bindings::COUNTERS, &mesh.counters),
+                    (bindings::ACTIVE_BLOCKS, &mesh.active_blocks),
+                    (bindings::BLOCK_SLOTS, &mesh.block_slots),
                 ],
             ),
             bind_buffers(
                 device,
                 "blocks: plan bind group",
                 &self.plan,
-                &[(0, &scene.grid), (2, &mesh.counters), (5, &mesh.dispatch)],
+                &[
+                    (bindings::GRID, &scene.grid),
+                    (bindings::COUNTERS, &mesh.counters),
+                    (bindings::BLOCK_DISPATCH, &mesh.dispatch),
+                ],
             ),
         ]);
     }

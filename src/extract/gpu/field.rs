@@ -1,7 +1,7 @@
 //! The field pass (`shaders/extract/field.wgsl`): f at the 5³ grid points of every active block, then the cells
 //! the surface crosses, compacted into a list with its indirect dispatch.
 
-use crate::device::{bind_buffers, compute_module, compute_pipeline};
+use crate::device::{bind_buffers, bindings, compute_module, compute_pipeline};
 use crate::extract::buffers::MeshBuffers;
 use crate::extract::gpu::scene_buffers::SceneBuffers;
 
@@ -34,11 +34,11 @@ impl FieldPass {
                 "field: bind group",
                 &self.pipeline,
                 &[
-                    (0, &scene.grid),
-                    (1, &scene.spheres),
-                    (2, &mesh.counters),
-                    (3, &mesh.active_blocks),
-                    (4, &mesh.block_values),
+                    (bindings::GRID, &scene.grid),
+                    (bindings::SPHERES, &scene.spheres),
+                    (bindings::COUNTERS, &mesh.counters),
+                    (bindings::ACTIVE_BLOCKS, &mesh.active_blocks),
+                    (bindings::BLOCK_VALUES, &mesh.block_values),
                 ],
             ),
             bind_buffers(
@@ -46,19 +46,23 @@ impl FieldPass {
                 "field: classify bind group",
                 &self.classify,
                 &[
-                    (0, &scene.grid),
-                    (2, &mesh.counters),
-                    (3, &mesh.active_blocks),
-                    (4, &mesh.block_values),
-                    (5, &mesh.cell_cases),
-                    (6, &mesh.active_cells),
+                    (bindings::GRID, &scene.grid),
+                    (bindings::COUNTERS, &mesh.counters),
+                    (bindings::ACTIVE_BLOCKS, &mesh.active_blocks),
+                    (bindings::BLOCK_VALUES, &mesh.block_values),
+                    (bindings::CELL_CASES, &mesh.cell_cases),
+                    (bindings::ACTIVE_CELLS, &mesh.active_cells),
                 ],
             ),
             bind_buffers(
                 device,
                 "field: plan bind group",
                 &self.plan,
-                &[(0, &scene.grid), (2, &mesh.counters), (7, &mesh.cell_dispatch)],
+                &[
+                    (bindings::GRID, &scene.grid),
+                    (bindings::COUNTERS, &mesh.counters),
+                    (bindings::CELL_DISPATCH, &mesh.cell_dispatch),
+                ],
             ),
         ]);
     }

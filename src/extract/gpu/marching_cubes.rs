@@ -1,7 +1,7 @@
 //! The marching-cubes passes (`shaders/extract/marching_cubes.wgsl`), over the active cells: vertices on the
 //! edges each cell owns, then triangles as indices into them, then the indexed indirect draw's arguments.
 
-use crate::device::{bind_buffers, compute_module, compute_pipeline};
+use crate::device::{bind_buffers, bindings, compute_module, compute_pipeline};
 use crate::extract::buffers::MeshBuffers;
 use crate::extract::gpu::scene_buffers::SceneBuffers;
 use crate::extract::tables::{flat_triangle_table, packed_case_table};
@@ -56,14 +56,14 @@ impl MarchingCubesPass {
                 "marching cubes: vertex bind group",
                 &self.vertices,
                 &[
-                    (0, &scene.grid),
-                    (1, &scene.spheres),
-                    (2, &mesh.counters),
-                    (3, &mesh.active_blocks),
-                    (5, &mesh.block_values),
-                    (9, &mesh.edge_vertices),
-                    (10, &mesh.vertices),
-                    (13, &mesh.active_cells),
+                    (bindings::GRID, &scene.grid),
+                    (bindings::SPHERES, &scene.spheres),
+                    (bindings::COUNTERS, &mesh.counters),
+                    (bindings::ACTIVE_BLOCKS, &mesh.active_blocks),
+                    (bindings::BLOCK_VALUES, &mesh.block_values),
+                    (bindings::EDGE_VERTICES, &mesh.edge_vertices),
+                    (bindings::VERTICES, &mesh.vertices),
+                    (bindings::ACTIVE_CELLS, &mesh.active_cells),
                 ],
             ),
             bind_buffers(
@@ -71,23 +71,27 @@ impl MarchingCubesPass {
                 "marching cubes: triangle bind group",
                 &self.triangles,
                 &[
-                    (0, &scene.grid),
-                    (2, &mesh.counters),
-                    (3, &mesh.active_blocks),
-                    (4, &mesh.block_slots),
-                    (6, &self.case_table),
-                    (7, &self.triangle_table),
-                    (8, &mesh.cell_cases),
-                    (9, &mesh.edge_vertices),
-                    (11, &mesh.indices),
-                    (13, &mesh.active_cells),
+                    (bindings::GRID, &scene.grid),
+                    (bindings::COUNTERS, &mesh.counters),
+                    (bindings::ACTIVE_BLOCKS, &mesh.active_blocks),
+                    (bindings::BLOCK_SLOTS, &mesh.block_slots),
+                    (bindings::CASE_TABLE, &self.case_table),
+                    (bindings::TRIANGLE_TABLE, &self.triangle_table),
+                    (bindings::CELL_CASES, &mesh.cell_cases),
+                    (bindings::EDGE_VERTICES, &mesh.edge_vertices),
+                    (bindings::INDICES, &mesh.indices),
+                    (bindings::ACTIVE_CELLS, &mesh.active_cells),
                 ],
             ),
             bind_buffers(
                 device,
                 "marching cubes: finalize bind group",
                 &self.finalize,
-                &[(0, &scene.grid), (2, &mesh.counters), (12, &mesh.draw_args)],
+                &[
+                    (bindings::GRID, &scene.grid),
+                    (bindings::COUNTERS, &mesh.counters),
+                    (bindings::DRAW_ARGS, &mesh.draw_args),
+                ],
             ),
         ]);
     }

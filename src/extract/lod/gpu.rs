@@ -5,7 +5,7 @@
 use super::select::{Block, Selection};
 use super::transition;
 use super::{LodSummary, next_selection};
-use crate::device::{bind_buffers, compute_module, compute_pipeline, has_compute};
+use crate::device::{bind_buffers, bindings, compute_module, compute_pipeline, has_compute};
 use crate::extract::buffers::MeshBuffers;
 use crate::extract::extractor::{Capabilities, Extractor, Job, MeshCount, Output};
 use crate::extract::gpu::scene_buffers::SceneBuffers;
@@ -127,57 +127,73 @@ impl Bound {
                 "lod: classify",
                 &p.classify,
                 &[
-                    (0, &scene.grid),
-                    (1, &scene.spheres),
-                    (2, &mesh.counters),
-                    (3, &active),
-                    (14, &uniform),
-                    (15, &selection),
-                    (20, &mesh.lod_data),
+                    (bindings::GRID, &scene.grid),
+                    (bindings::SPHERES, &scene.spheres),
+                    (bindings::COUNTERS, &mesh.counters),
+                    (bindings::KEPT_BLOCKS, &active),
+                    (bindings::LOD, &uniform),
+                    (bindings::SELECTION, &selection),
+                    (bindings::LOD_DATA, &mesh.lod_data),
                 ],
             ),
             group(
                 "lod: plan blocks",
                 &p.plan_blocks,
-                &[(0, &scene.grid), (2, &mesh.counters), (5, &dispatch)],
+                &[
+                    (bindings::GRID, &scene.grid),
+                    (bindings::COUNTERS, &mesh.counters),
+                    (bindings::LOD_DISPATCH, &dispatch),
+                ],
             ),
             group(
                 "lod: find cells",
                 &p.find_cells,
                 &[
-                    (0, &scene.grid),
-                    (1, &scene.spheres),
-                    (2, &mesh.counters),
-                    (3, &active),
-                    (6, &p.tables),
-                    (10, &mesh.vertices),
-                    (14, &uniform),
-                    (15, &selection),
-                    (16, &cells),
-                    (17, &hash),
+                    (bindings::GRID, &scene.grid),
+                    (bindings::SPHERES, &scene.spheres),
+                    (bindings::COUNTERS, &mesh.counters),
+                    (bindings::KEPT_BLOCKS, &active),
+                    (bindings::LOD_TABLES, &p.tables),
+                    (bindings::VERTICES, &mesh.vertices),
+                    (bindings::LOD, &uniform),
+                    (bindings::SELECTION, &selection),
+                    (bindings::CELLS, &cells),
+                    (bindings::HASH, &hash),
                 ],
             ),
-            group("lod: plan cells", &p.plan_cells, &[(0, &scene.grid), (2, &mesh.counters), (5, &dispatch)]),
+            group(
+                "lod: plan cells",
+                &p.plan_cells,
+                &[
+                    (bindings::GRID, &scene.grid),
+                    (bindings::COUNTERS, &mesh.counters),
+                    (bindings::LOD_DISPATCH, &dispatch),
+                ],
+            ),
             group(
                 "lod: triangles",
                 &p.triangles,
                 &[
-                    (0, &scene.grid),
-                    (2, &mesh.counters),
-                    (3, &active),
-                    (6, &p.tables),
-                    (11, &mesh.indices),
-                    (14, &uniform),
-                    (15, &selection),
-                    (16, &cells),
-                    (17, &hash),
-                    (20, &mesh.lod_data),
+                    (bindings::GRID, &scene.grid),
+                    (bindings::COUNTERS, &mesh.counters),
+                    (bindings::KEPT_BLOCKS, &active),
+                    (bindings::LOD_TABLES, &p.tables),
+                    (bindings::INDICES, &mesh.indices),
+                    (bindings::LOD, &uniform),
+                    (bindings::SELECTION, &selection),
+                    (bindings::CELLS, &cells),
+                    (bindings::HASH, &hash),
+                    (bindings::LOD_DATA, &mesh.lod_data),
                 ],
             ),
             group(
                 "lod: finalize",
                 &p.finalize,
-                &[(0, &scene.grid), (2, &mesh.counters), (12, &mesh.draw_args)],
+                &[
+                    (bindings::GRID, &scene.grid),
+                    (bindings::COUNTERS, &mesh.counters),
+                    (bindings::DRAW_ARGS, &mesh.draw_args),
+                ],
             ),
         ];
         Self { uniform, selection, selection_capacity, hash, dispatch, groups }

@@ -4,6 +4,7 @@
 //! accepted range; a refused value leaves the previous one in place.
 
 use glam::Vec3;
+use std::sync::OnceLock;
 
 pub use super::checks::{ParamError, check_f32, check_u32};
 pub(crate) use super::checks::{check_range, check_vec3};
@@ -17,17 +18,6 @@ pub const MAX_RESOLUTION: u32 = 2048;
 pub const LOD_BLOCK_CELLS: u32 = 8;
 /// The finest uniform grid: past it, only level of detail (`lod=on`) holds the grid.
 pub const MAX_UNIFORM_RESOLUTION: u32 = 512;
-/// Iso levels accepted: below the lower end the surface fills the box, above the upper end it vanishes.
-pub const ISO_RANGE: (f32, f32) = (0.05, 20.0);
-/// Camera yaw accepted, degrees.
-pub const YAW_RANGE: (f32, f32) = (-360.0, 360.0);
-/// Camera pitch accepted, degrees (short of the poles, where the orbit's up vector flips).
-pub const PITCH_RANGE: (f32, f32) = (-89.0, 89.0);
-/// Camera distance accepted, in box half-widths.
-pub const DISTANCE_RANGE: (f32, f32) = (1.5, 20.0);
-/// Specular exponents accepted.
-pub const SHININESS_RANGE: (f32, f32) = (1.0, 1024.0);
-
 /// Surface material for Blinn-Phong shading.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Material {
@@ -45,25 +35,14 @@ pub struct Material {
 
 impl Default for Material {
     fn default() -> Self {
-        Self {
-            base_color: Vec3::new(0.80, 0.18, 0.12),
-            ambient: 0.15,
-            diffuse: 0.85,
-            specular: 0.6,
-            shininess: 64.0,
-        }
+        Settings::default().material
     }
 }
 
 impl Material {
     /// Returns the material if every field is in range.
     pub fn validated(self) -> Result<Self, ParamError> {
-        check_vec3("base colour", self.base_color, 0.0, 1.0)?;
-        check_f32("ambient strength", self.ambient, 0.0, 1.0)?;
-        check_f32("diffuse strength", self.diffuse, 0.0, 2.0)?;
-        check_f32("specular strength", self.specular, 0.0, 2.0)?;
-        check_f32("shininess", self.shininess, SHININESS_RANGE.0, SHININESS_RANGE.1)?;
-        Ok(self)
+        Settings { material: self, ..Settings::default() }.validated().map(|_| self)
     }
 }
 
@@ -82,18 +61,14 @@ pub struct Camera {
 
 impl Default for Camera {
     fn default() -> Self {
-        Self { yaw_degrees: 30.0, pitch_degrees: 20.0, distance: 4.3, fov_y_degrees: 45.0 }
+        Settings::default().camera
     }
 }
 
 impl Camera {
     /// Returns the camera if every field is in range.
     pub fn validated(self) -> Result<Self, ParamError> {
-        check_f32("camera yaw (degrees)", self.yaw_degrees, YAW_RANGE.0, YAW_RANGE.1)?;
-        check_f32("camera pitch (degrees)", self.pitch_degrees, PITCH_RANGE.0, PITCH_RANGE.1)?;
-        check_f32("camera distance", self.distance, DISTANCE_RANGE.0, DISTANCE_RANGE.1)?;
-        check_f32("field of view (degrees)", self.fov_y_degrees, 10.0, 120.0)?;
-        Ok(self)
+        Settings { camera: self, ..Settings::default() }.validated().map(|_| self)
     }
 
     /// The eye position in world space, for a box centred on the origin.
@@ -127,82 +102,78 @@ pub struct Settings {
 }
 
 impl Default for Settings {
+    /// The table's defaults (`rows.rs`), with the light where the shading expects it.
     fn default() -> Self {
-        Self {
-            sphere_count: 5,
-            iso: 1.0,
-            resolution: 64,
-            seed: 1,
-            material: Material::default(),
-            light_position: Vec3::new(3.0, 4.0, 3.5),
-            camera: Camera::default(),
-            antialiasing: true,
-            view: ViewOptions::default(),
-        }
+        static DEFAULTS: OnceLock<Settings> = OnceLock::new();
+        *DEFAULTS.get_or_init(|| {
+            let mut settings = Settings {
+                sphere_count: 0,
+                iso: 0.0,
+                resolution: 0,
+                seed: 0,
+                material: Material {
+                    base_color: Vec3::ZERO,
+                    ambient: 0.0,
+                    diffuse: 0.0,
+                    specular: 0.0,
+                    shininess: 0.0,
+                },
+                light_position: Vec3::new(3.0, 4.0, 3.5),
+                camera: Camera { yaw_degrees: 0.0, pitch_degrees: 0.0, distance: 0.0, fov_y_degrees: 0.0 },
+                antialiasing: false,
+                view: ViewOptions::unset(),
+            };
+            for p in PARAMETERS {
+                if let Some(field) = p.field {
+                    field.set(&mut settings, &p.parse(p.default).expect("every default in the table parses"));
+                }
+            }
+            settings
+        })
     }
 }
 
 impl Settings {
-    /// Returns the settings if every field is in range (device limits are checked by the renderer).
+    /// Returns the settings if every field is in range (device limits are checked by the renderer):
+    /// each renderer setting by its row of the table, then the rules that join two of them.
     pub fn validated(self) -> Result<Self, ParamError> {
-        check_sphere_count(self.sphere_count)?;
-        check_iso(self.iso)?;
-        check_resolution(self.resolution)?;
-        check_resolution_for_lod(self.resolution, self.view.lod)?;
-        self.material.validated()?;
+        check_vec3("base colour", self.material.base_color, 0.0, 1.0)?;
         check_light_position(self.light_position)?;
-        self.camera.validated()?;
-        self.view.validated()?;
+        for p in PARAMETERS {
+            if let Some(field) = p.field {
+                p.check(&field.get(&self))?;
+            }
+        }
+        check_resolution_for_lod(self.resolution, self.view.lod)?;
         Ok(self)
     }
 
-    /// These settings with parameter `name` (a table name or short name) read from `text`: any setting
-    /// of the renderer (not the page's animation speed, pause or layout of the figure). The error says
-    /// what is accepted.
+    /// These settings with parameter `name` (any of its names) read from `text`: any setting of the
+    /// renderer (not the page's animation speed, pause or layout of the figure). The error says what
+    /// is accepted.
     pub fn with_parameter(&self, name: &str, text: &str) -> Result<Settings, ParamError> {
-        let value = parse_parameter(name, text)?;
-        let name = parameter(name).map_or(name, |p| p.name);
+        self.with_parameters(&[(name, text)])
+    }
+
+    /// These settings with several parameters read from text, checked together (the resolution and
+    /// level of detail allow each other's values): all or nothing.
+    pub fn with_parameters(&self, pairs: &[(&str, &str)]) -> Result<Settings, ParamError> {
         let mut next = *self;
-        let number = match value {
-            Value::Number(n) => n as f32,
-            _ => f32::NAN,
-        };
-        let whole = number as u32;
-        match name {
-            "spheres" => next.sphere_count = whole,
-            "iso" => next.iso = number,
-            "resolution" => next.resolution = whole,
-            "seed" => {
-                next.seed = match value {
-                    Value::Number(n) => n as u64,
-                    _ => 0,
-                }
-            }
-            "yaw" => next.camera.yaw_degrees = number,
-            "pitch" => next.camera.pitch_degrees = number,
-            "distance" => next.camera.distance = number,
-            "shininess" => next.material.shininess = number,
-            "antialiasing" => next.antialiasing = value == Value::Boolean(true),
-            "color" => {
-                if let Value::Text(hex) = &value {
-                    next.material.base_color = srgb_hex_to_linear(hex);
-                }
-            }
-            "ambient" => next.material.ambient = number,
-            "diffuse" => next.material.diffuse = number,
-            "specular" => next.material.specular = number,
-            "fov" => next.camera.fov_y_degrees = number,
-            _ => {
-                if !next.view.set(name, &value)? {
-                    return Err(ParamError::Invalid {
-                        name: "parameter name",
-                        value: name.to_string(),
-                        expected: "a setting of the renderer".into(),
-                    });
-                }
-            }
+        for (name, text) in pairs {
+            let (p, given) = parameter_named(name).ok_or_else(|| table::unknown(name))?;
+            let field = p.field.ok_or_else(|| ParamError::Invalid {
+                name: "parameter name",
+                value: name.to_string(),
+                expected: "a setting of the renderer".into(),
+            })?;
+            field.set(&mut next, &p.parse_as(given, text)?);
         }
         next.validated()
+    }
+
+    /// The value of renderer setting `name` (any of its names), as the table reads it.
+    pub fn parameter(&self, name: &str) -> Option<Value> {
+        parameter(name).and_then(|p| p.field).map(|field| field.get(self))
     }
 }
 
@@ -216,14 +187,29 @@ pub fn srgb_hex_to_linear(hex: &str) -> Vec3 {
     Vec3::new(channel(0), channel(1), channel(2))
 }
 
+/// A linear RGB colour as the `#rrggbb` (sRGB) text that reads back as it.
+pub fn linear_to_srgb_hex(color: Vec3) -> String {
+    let channel = |c: f32| {
+        let c = c.clamp(0.0, 1.0);
+        let s = if c <= 0.0031308 { c * 12.92 } else { 1.055 * c.powf(1.0 / 2.4) - 0.055 };
+        (s * 255.0).round() as u8
+    };
+    format!("#{:02x}{:02x}{:02x}", channel(color.x), channel(color.y), channel(color.z))
+}
+
 /// Checks an iso level.
 pub fn check_iso(iso: f32) -> Result<f32, ParamError> {
-    check_f32("iso level", iso, ISO_RANGE.0, ISO_RANGE.1)
+    row("iso").check(&Value::Number(iso.into())).map(|_| iso)
 }
 
 /// Checks a resolution against the crate's bounds (not yet the device's).
 pub fn check_resolution(cells_per_axis: u32) -> Result<u32, ParamError> {
-    check_u32("resolution (cells per axis)", cells_per_axis, MIN_RESOLUTION, MAX_RESOLUTION)
+    row("resolution").check(&Value::Number(cells_per_axis.into())).map(|_| cells_per_axis)
+}
+
+/// The table's row called `name`.
+fn row(name: &str) -> &'static Parameter {
+    parameter(name).expect("a row of the table")
 }
 
 /// Checks that a resolution suits the grid it is for: up to [`MAX_UNIFORM_RESOLUTION`] uniform, and
@@ -255,10 +241,14 @@ pub fn check_light_position(position: Vec3) -> Result<Vec3, ParamError> {
 }
 
 mod parse;
-mod table;
+mod rows;
+pub mod table;
 pub mod view;
 pub use parse::parse_parameter;
-pub use table::{CONTROLS, Kind, PARAMETERS, Parameter, Value, parameter};
+pub use table::{
+    ACTIONS, Action, Field, Group, Kind, PARAMETERS, Parameter, Scope, Value, control, control_names,
+    parameter, parameter_named,
+};
 pub use view::ViewOptions;
 
 #[cfg(test)]

@@ -1,16 +1,37 @@
 //! How a parameter's text is read: each kind of the table's parameters parsed and checked, with a
 //! message saying what is accepted when the text is refused.
 
-use super::table::{Kind, PARAMETERS, Parameter, Value, parameter};
+use super::table::{Kind, Parameter, Value, control, control_names, parameter_named, unknown};
 use super::view::Slice;
 use super::{ParamError, check_f32, check_range};
 
 impl Parameter {
     /// Reads `text` as this parameter's value and checks it; the error says what is accepted.
     pub fn parse(&self, text: &str) -> Result<Value, ParamError> {
+        self.parse_as(self.name, text)
+    }
+
+    /// Checks a value given as a value (not as text), as `parse` checks text; returns it as the table
+    /// holds it.
+    pub fn check(&self, value: &Value) -> Result<Value, ParamError> {
+        match (self.kind, value) {
+            (Kind::Number, Value::Number(n)) => {
+                check_f32(self.noun, *n as f32, self.min as f32, self.max as f32).map(Value::of_f32)
+            }
+            (Kind::Integer, Value::Number(n)) => {
+                check_range(self.noun, *n, self.min, self.max).map(Value::Number)
+            }
+            _ => self.parse(&value.to_text()),
+        }
+    }
+
+    /// `parse`, with messages that call the parameter by `given` (one of its names) where its row
+    /// has no noun of its own.
+    pub fn parse_as(&self, given: &'static str, text: &str) -> Result<Value, ParamError> {
         let trimmed = text.trim();
+        let noun = if self.noun.is_empty() { given } else { self.noun };
         let invalid =
-            |expected: String| ParamError::Invalid { name: self.noun, value: text.to_string(), expected };
+            |expected: String| ParamError::Invalid { name: noun, value: text.to_string(), expected };
         match self.kind {
             Kind::Integer => {
                 let range = format!("a whole number from {} to {}", self.min, self.max);
@@ -18,7 +39,7 @@ impl Parameter {
                     return Err(invalid(range));
                 }
                 let value: f64 = trimmed.parse().map_err(|_| invalid(range))?;
-                check_range(self.noun, value, self.min, self.max).map(Value::Number)
+                check_range(noun, value, self.min, self.max).map(Value::Number)
             }
             Kind::Number => {
                 let (min, max) = (self.min as f32, self.max as f32);
@@ -26,7 +47,7 @@ impl Parameter {
                 // Read as the f32 the renderer keeps, and held as that f32's shortest decimal: the
                 // value checked is the value used, and it reads back as itself.
                 let value: f32 = trimmed.parse().map_err(|_| invalid(expected.clone()))?;
-                check_f32(self.noun, value, min, max)?;
+                check_f32(noun, value, min, max)?;
                 Ok(Value::Number(value.to_string().parse().unwrap_or(f64::from(value))))
             }
             Kind::Boolean => match trimmed.to_ascii_lowercase().as_str() {
@@ -61,13 +82,27 @@ impl Parameter {
                 }
                 Ok(Value::Text(items.join(",")))
             }
+            Kind::Controls => {
+                let list = trimmed.to_ascii_lowercase();
+                if list == "all" || list == "none" {
+                    return Ok(Value::Text(list));
+                }
+                let items: Option<Vec<&str>> =
+                    list.split(',').map(str::trim).filter(|s| !s.is_empty()).map(control).collect();
+                match items {
+                    Some(items) if !items.is_empty() => Ok(Value::Text(items.join(","))),
+                    _ => {
+                        Err(invalid(format!("all, none, or a comma list of {}", control_names().join(", "))))
+                    }
+                }
+            }
             Kind::Slice => Slice::parse(trimmed).map(|slice| Value::Text(Slice::text(slice))),
             Kind::Text => Ok(Value::Text(text.to_string())),
             Kind::Spheres if trimmed.is_empty() => Ok(Value::Text(String::new())),
             Kind::Spheres => crate::scene::sphere::parse_spheres_text(trimmed)
                 .map(|spheres| Value::Text(crate::scene::sphere::spheres_text(&spheres)))
                 .map_err(|e| ParamError::Invalid {
-                    name: self.noun,
+                    name: noun,
                     value: text.to_string(),
                     expected: format!("x,y,z,radius[,vx,vy,vz] per sphere joined by ; ({e})"),
                 }),
@@ -75,21 +110,17 @@ impl Parameter {
     }
 }
 
-/// Reads `text` as the value of the parameter called `name` (or its short name in links).
+/// Reads `text` as the value of the parameter called `name` (any of its names).
 pub fn parse_parameter(name: &str, text: &str) -> Result<Value, ParamError> {
-    parameter(name)
-        .ok_or_else(|| ParamError::Invalid {
-            name: "parameter name",
-            value: name.to_string(),
-            expected: format!("one of {}", PARAMETERS.iter().map(|p| p.name).collect::<Vec<_>>().join(", ")),
-        })?
-        .parse(text)
+    let (p, given) = parameter_named(name).ok_or_else(|| unknown(name))?;
+    p.parse_as(given, text)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::scene::params::Settings;
+    use crate::scene::params::table::{PARAMETERS, parameter};
 
     #[test]
     fn every_default_in_the_table_parses() {

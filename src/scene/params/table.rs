@@ -1,15 +1,12 @@
-//! The table of parameters a person can set (from a link, an element attribute or a control): names,
-//! ranges and defaults live here once, and the page and the element read them from the wasm. How each
-//! kind of text is read is in `parse.rs`.
+//! What a row of the parameter table says about a setting, and how rows are found by any of their
+//! names. The rows themselves are in `rows.rs`: each setting is declared there once, and everything
+//! else (the typed defaults, validation, dispatch by name, the panel's groups, the manifest, the
+//! element's table, the Python traits) is read from it. How each kind of text is read is in `parse.rs`.
 
-use super::view::{
-    Blend, ColorBy, Compare, DIVIDER_RANGE, Display, GridView, Interpolation, LIGHT_KINDS, LOD_PIXELS_RANGE,
-    Mesher, Method, Projection, SPOT_ANGLE_RANGE, Theme,
-};
-use super::{
-    DISTANCE_RANGE, ISO_RANGE, MAX_RESOLUTION, MAX_SPHERES, MIN_RESOLUTION, PITCH_RANGE, SHININESS_RANGE,
-    YAW_RANGE,
-};
+use super::view::ViewOptions;
+use super::{ParamError, Settings};
+
+pub use super::rows::{ACTIONS, PARAMETERS};
 
 /// How a parameter's text is read.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -26,6 +23,8 @@ pub enum Kind {
     Choice(&'static [&'static str]),
     /// `all`, `none`, or a comma list of words from a fixed list.
     List(&'static [&'static str]),
+    /// `all`, `none`, or a comma list of the panel's controls ([`control_names`]), by any of their names.
+    Controls,
     /// `off`, or an axis and a position in the box: `z:0.25`.
     Slice,
     /// Empty (the seeded layout), or spheres written `x,y,z,radius[,vx,vy,vz]` joined by `;` (a negative
@@ -35,17 +34,111 @@ pub enum Kind {
     Text,
 }
 
-/// One parameter a person can set: from a link, an element attribute or a control. This table is the
-/// one place that names, bounds and defaults them; the page and the element read it from the wasm.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// The panel's folding groups, in the panel's order.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Group {
+    /// Not a control of the panel (set by attribute, link or gesture).
+    None,
+    Surface,
+    Display,
+    Teaching,
+    Light,
+    Camera,
+    Scene,
+}
+
+impl Group {
+    /// The groups that hold controls, in the panel's order.
+    pub const PANEL: [Group; 6] =
+        [Group::Surface, Group::Display, Group::Teaching, Group::Light, Group::Camera, Group::Scene];
+
+    /// The group's heading in the panel (empty for `None`).
+    pub fn title(self) -> &'static str {
+        match self {
+            Group::None => "",
+            Group::Surface => "Surface",
+            Group::Display => "Display",
+            Group::Teaching => "Teaching",
+            Group::Light => "Light",
+            Group::Camera => "Camera",
+            Group::Scene => "Scene",
+        }
+    }
+}
+
+/// Who holds a parameter's value.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Scope {
+    /// A setting of the renderer that it takes when it is made.
+    Creation,
+    /// A setting of the renderer, changed on a running one.
+    Renderer,
+    /// The element alone (its animation, its layout on the page, its description).
+    Element,
+}
+
+impl Scope {
+    /// Its word in the element's table.
+    pub fn word(self) -> &'static str {
+        match self {
+            Scope::Creation => "creation",
+            Scope::Renderer => "renderer",
+            Scope::Element => "element",
+        }
+    }
+}
+
+/// Where a renderer setting lives in [`Settings`]: how a checked value is put there and read back.
+#[derive(Clone, Copy)]
+pub enum Field {
+    /// A field of the settings themselves (the grid, the material, the camera).
+    Settings { set: fn(&mut Settings, &Value), get: fn(&Settings) -> Value },
+    /// One of the [`ViewOptions`] (display, overlays, lights, construction).
+    View { set: fn(&mut ViewOptions, &Value), get: fn(&ViewOptions) -> Value },
+}
+
+impl std::fmt::Debug for Field {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Field::Settings { .. } => "Field::Settings",
+            Field::View { .. } => "Field::View",
+        })
+    }
+}
+
+impl Field {
+    /// Puts `value` (already checked) into `settings`.
+    pub fn set(&self, settings: &mut Settings, value: &Value) {
+        match self {
+            Field::Settings { set, .. } => set(settings, value),
+            Field::View { set, .. } => set(&mut settings.view, value),
+        }
+    }
+
+    /// The value `settings` hold.
+    pub fn get(&self, settings: &Settings) -> Value {
+        match self {
+            Field::Settings { get, .. } => get(settings),
+            Field::View { get, .. } => get(&settings.view),
+        }
+    }
+}
+
+/// One parameter a person can set: from a link, an element attribute, a control, a scene file or a
+/// notebook. This row is the one place that names, bounds and defaults it.
+#[derive(Clone, Copy, Debug)]
 pub struct Parameter {
-    /// Attribute and property name (`resolution`).
+    /// The attribute (kebab-case, as HTML names attributes): `color-by`. Its property is the same in
+    /// camel case (`colorBy`, [`Parameter::property`]), its Python trait in snake case.
     pub name: &'static str,
+    /// Other spellings accepted wherever the name is (links, attributes, scene files): the names
+    /// pages and saved links already use.
+    pub aliases: &'static [&'static str],
     /// Short name in a link's query string (`res`); the long name works there too.
     pub url: &'static str,
     /// Label in the panel.
     pub label: &'static str,
-    /// Name in messages ("resolution (cells per axis)").
+    /// Name in messages ("resolution (cells per axis)"); empty: the name the value was given by.
     pub noun: &'static str,
     pub kind: Kind,
     /// Accepted range (numbers only).
@@ -55,250 +148,167 @@ pub struct Parameter {
     pub slider: (f64, f64, f64),
     /// Value when not given, as text.
     pub default: &'static str,
+    /// The panel's group its control sits in.
+    pub group: Group,
+    pub scope: Scope,
+    /// Its control needs compute shaders (a view drawn from the compute passes' buffers, or the
+    /// choice of where to mesh): shown disabled where the browser has only WebGL2.
+    pub compute: bool,
+    /// A scene document saves and restores it (not the page's layout of the figure).
+    pub in_scene: bool,
+    /// Where the renderer keeps it (renderer settings only).
+    pub field: Option<Field>,
 }
 
-/// The controls an element's `controls` attribute can list; `view` is the reset-view button.
-pub const CONTROLS: &[&str] = &[
-    "spheres",
-    "iso",
-    "resolution",
-    "speed",
-    "shininess",
-    "color",
-    "antialiasing",
-    "mesher",
-    "extractor",
-    "lod",
-    "lod_pixels",
-    "lod_freeze",
-    "paused",
-    "pause_on",
-    "seed",
-    "view",
-    "step",
-    "display",
-    "compare",
-    "grid",
-    "color_by",
-    "slice",
-    "ambiguous",
-    "interpolation",
-    "blend",
-    "inspector",
-    "error_plot",
-    "light",
-    "spot_angle",
-    "spot_softness",
-    "ambient",
-    "diffuse",
-    "specular",
-    "projection",
-    "fov",
-    "theme",
-    "edit",
-    "scene",
-    "export",
-];
-
-#[allow(clippy::too_many_arguments)] // one row of the table
-const fn number(
-    name: &'static str,
-    url: &'static str,
-    label: &'static str,
-    noun: &'static str,
-    integer: bool,
-    range: (f64, f64),
-    slider: (f64, f64, f64),
-    default: &'static str,
-) -> Parameter {
-    let kind = if integer { Kind::Integer } else { Kind::Number };
-    Parameter { name, url, label, noun, kind, min: range.0, max: range.1, slider, default }
+impl PartialEq for Parameter {
+    fn eq(&self, other: &Self) -> bool {
+        self.name == other.name
+    }
 }
 
-const fn other(
+/// A row that holds text in the element alone; the builder methods below add the rest.
+pub(super) const fn row(
     name: &'static str,
-    url: &'static str,
     label: &'static str,
     kind: Kind,
     default: &'static str,
 ) -> Parameter {
-    Parameter { name, url, label, noun: name, kind, min: 0.0, max: 0.0, slider: (0.0, 0.0, 0.0), default }
+    Parameter {
+        name,
+        aliases: &[],
+        url: name,
+        label,
+        noun: "",
+        kind,
+        min: 0.0,
+        max: 0.0,
+        slider: (0.0, 0.0, 0.0),
+        default,
+        group: Group::None,
+        scope: Scope::Element,
+        compute: false,
+        in_scene: true,
+        field: None,
+    }
 }
 
-const fn wide((min, max): (f32, f32)) -> (f64, f64) {
-    (min as f64, max as f64)
+/// A number's row: its noun in messages and its accepted range (the slider spans it unless told).
+pub(super) const fn number(
+    name: &'static str,
+    label: &'static str,
+    noun: &'static str,
+    (min, max): (f64, f64),
+    default: &'static str,
+) -> Parameter {
+    Parameter { noun, min, max, slider: (min, max, 0.01), ..row(name, label, Kind::Number, default) }
 }
 
-/// Every parameter, in panel order.
-pub const PARAMETERS: &[Parameter] = &[
-    number(
-        "spheres",
-        "spheres",
-        "Spheres",
-        "sphere count",
-        true,
-        (1.0, MAX_SPHERES as f64),
-        (1.0, MAX_SPHERES as f64, 1.0),
-        "5",
-    ),
-    number("iso", "iso", "Iso level", "iso level", false, wide(ISO_RANGE), (0.1, 4.0, 0.01), "1"),
-    number(
-        "resolution",
-        "res",
-        "Resolution",
-        "resolution (cells per axis)",
-        true,
-        (MIN_RESOLUTION as f64, MAX_RESOLUTION as f64),
-        (MIN_RESOLUTION as f64, MAX_RESOLUTION as f64, 1.0),
-        "64",
-    ),
-    number("seed", "seed", "Layout", "layout seed", true, (0.0, u32::MAX as f64), (0.0, 0.0, 0.0), "1"),
-    number("speed", "speed", "Speed", "animation speed", false, (0.0, 3.0), (0.0, 3.0, 0.05), "1"),
-    other("paused", "paused", "Paused", Kind::Boolean, "false"),
-    number("yaw", "yaw", "Yaw", "camera yaw (degrees)", false, wide(YAW_RANGE), (-180.0, 180.0, 1.0), "30"),
-    number(
-        "pitch",
-        "pitch",
-        "Pitch",
-        "camera pitch (degrees)",
-        false,
-        wide(PITCH_RANGE),
-        (-89.0, 89.0, 1.0),
-        "20",
-    ),
-    number(
-        "distance",
-        "dist",
-        "Distance",
-        "camera distance",
-        false,
-        wide(DISTANCE_RANGE),
-        (1.5, 20.0, 0.1),
-        "4.3",
-    ),
-    number(
-        "shininess",
-        "shine",
-        "Shininess",
-        "shininess",
-        false,
-        wide(SHININESS_RANGE),
-        (1.0, 256.0, 1.0),
-        "64",
-    ),
-    other("color", "color", "Colour", Kind::Color, "#e77661"),
-    other("antialiasing", "aa", "Antialiasing", Kind::Boolean, "true"),
-    other("display", "display", "Display", Kind::Choice(Display::WORDS), "shaded"),
-    other("compare", "compare", "Exact surface", Kind::Choice(Compare::WORDS), "none"),
-    number(
-        "divider",
-        "divider",
-        "Divider",
-        "divider position",
-        false,
-        wide(DIVIDER_RANGE),
-        (0.05, 0.95, 0.01),
-        "0.5",
-    ),
-    other("grid", "grid", "Grid", Kind::Choice(GridView::WORDS), "none"),
-    other("color_by", "color_by", "Colour by", Kind::Choice(ColorBy::WORDS), "none"),
-    other("slice", "slice", "Field slice", Kind::Slice, "off"),
-    other("ambiguous", "ambiguous", "Ambiguous", Kind::Boolean, "false"),
-    other("interpolation", "interp", "Vertices", Kind::Choice(Interpolation::WORDS), "linear"),
-    other("blend", "blend", "Blend", Kind::Choice(Blend::WORDS), "sum"),
-    other("mesher", "mesher", "Meshing", Kind::Choice(Mesher::WORDS), "auto"),
-    other("extractor", "extractor", "Extractor", Kind::Choice(Method::WORDS), "marching_cubes"),
-    other("lod", "lod", "Level of detail", Kind::Boolean, "false"),
-    number(
-        "lod_pixels",
-        "lod_px",
-        "LOD cell size",
-        "LOD cell size (pixels)",
-        false,
-        wide(LOD_PIXELS_RANGE),
-        (0.5, 8.0, 0.25),
-        "2",
-    ),
-    other("lod_freeze", "lod_freeze", "Freeze LOD", Kind::Boolean, "false"),
-    other("light", "light", "Lights", Kind::List(LIGHT_KINDS), "point"),
-    number(
-        "spot_angle",
-        "spot_angle",
-        "Spot cone",
-        "spot cone angle (degrees)",
-        false,
-        wide(SPOT_ANGLE_RANGE),
-        (5.0, 60.0, 1.0),
-        "15",
-    ),
-    number(
-        "spot_softness",
-        "spot_soft",
-        "Spot edge",
-        "spot softness",
-        false,
-        (0.0, 1.0),
-        (0.0, 1.0, 0.05),
-        "0.3",
-    ),
-    number("ambient", "ambient", "Ambient", "ambient strength", false, (0.0, 1.0), (0.0, 1.0, 0.01), "0.15"),
-    number("diffuse", "diffuse", "Diffuse", "diffuse strength", false, (0.0, 2.0), (0.0, 2.0, 0.01), "0.85"),
-    number(
-        "specular",
-        "specular",
-        "Specular",
-        "specular strength",
-        false,
-        (0.0, 2.0),
-        (0.0, 2.0, 0.01),
-        "0.6",
-    ),
-    other("projection", "proj", "Projection", Kind::Choice(Projection::WORDS), "perspective"),
-    number(
-        "fov",
-        "fov",
-        "Field of view",
-        "field of view (degrees)",
-        false,
-        (10.0, 120.0),
-        (20.0, 100.0, 1.0),
-        "45",
-    ),
-    other("theme", "theme", "Theme", Kind::Choice(Theme::WORDS), "dark"),
-    other("edit", "edit", "Edit spheres", Kind::Boolean, "false"),
-    other("balls", "balls", "Spheres", Kind::Spheres, ""),
-    other("controls", "controls", "Controls", Kind::List(CONTROLS), "none"),
-    other("hud", "hud", "Statistics", Kind::Choice(&["on", "off"]), "off"),
-    other("autoplay", "autoplay", "Autoplay", Kind::Choice(&["visible", "off"]), "visible"),
-    other("pause_on", "pause_on", "Pause on", Kind::Choice(&["none", "merge"]), "none"),
-    number(
-        "max-pixel-ratio",
-        "max_pixel_ratio",
-        "Pixel ratio",
-        "max-pixel-ratio",
-        false,
-        (0.25, 4.0),
-        (0.25, 4.0, 0.25),
-        "2",
-    ),
-    number(
-        "min-render-scale",
-        "min_render_scale",
-        "Lowest render scale",
-        "min-render-scale",
-        false,
-        (0.25, 1.0),
-        (0.25, 1.0, 0.05),
-        "0.5",
-    ),
-    other("alt", "alt", "Description", Kind::Text, ""),
-    other("poster", "poster", "Poster", Kind::Text, ""),
-    other("sync", "sync", "Sync group", Kind::Text, ""),
-];
+impl Parameter {
+    pub(super) const fn whole(self) -> Self {
+        Parameter { kind: Kind::Integer, slider: (self.slider.0, self.slider.1, 1.0), ..self }
+    }
+    pub(super) const fn url(self, url: &'static str) -> Self {
+        Parameter { url, ..self }
+    }
+    pub(super) const fn aliases(self, aliases: &'static [&'static str]) -> Self {
+        Parameter { aliases, ..self }
+    }
+    pub(super) const fn slider(self, min: f64, max: f64, step: f64) -> Self {
+        Parameter { slider: (min, max, step), ..self }
+    }
+    pub(super) const fn group(self, group: Group) -> Self {
+        Parameter { group, ..self }
+    }
+    pub(super) const fn compute(self) -> Self {
+        Parameter { compute: true, ..self }
+    }
+    pub(super) const fn page_only(self) -> Self {
+        Parameter { in_scene: false, ..self }
+    }
+    pub(super) const fn renderer(self, field: Field) -> Self {
+        Parameter { scope: Scope::Renderer, field: Some(field), ..self }
+    }
+    pub(super) const fn creation(self, field: Field) -> Self {
+        Parameter { scope: Scope::Creation, field: Some(field), ..self }
+    }
 
-/// A parameter by its name or its short name in links.
+    /// The property's name: dashes become camel case (`max-pixel-ratio` → `maxPixelRatio`).
+    pub fn property(&self) -> String {
+        property_name(self.name)
+    }
+
+    /// The Python trait's name: dashes become underscores (`color-by` → `color_by`).
+    pub fn python(&self) -> String {
+        self.name.replace('-', "_")
+    }
+
+    /// Every name it answers to: its name, its short name in links and its aliases.
+    pub fn names(&self) -> impl Iterator<Item = &'static str> + use<> {
+        let (name, url, aliases) = (self.name, self.url, self.aliases);
+        [name, url].into_iter().chain(aliases.iter().copied())
+    }
+
+    /// The words it accepts (choices and lists).
+    pub fn words(&self) -> Vec<&'static str> {
+        match self.kind {
+            Kind::Choice(words) | Kind::List(words) => words.to_vec(),
+            Kind::Controls => control_names(),
+            _ => Vec::new(),
+        }
+    }
+}
+
+/// A property's name from an attribute's: dashes become camel case (`max-pixel-ratio` → `maxPixelRatio`).
+pub fn property_name(name: &str) -> String {
+    let mut out = String::new();
+    let mut upper = false;
+    for c in name.chars() {
+        if c == '-' {
+            upper = true;
+        } else if upper {
+            out.extend(c.to_uppercase());
+            upper = false;
+        } else {
+            out.push(c);
+        }
+    }
+    out
+}
+
+/// A parameter by its name, its short name in links or one of its aliases.
 pub fn parameter(name: &str) -> Option<&'static Parameter> {
-    PARAMETERS.iter().find(|p| p.name == name || p.url == name)
+    parameter_named(name).map(|(p, _)| p)
+}
+
+/// A parameter and the spelling of it that `name` is (for messages that quote the name given).
+pub fn parameter_named(name: &str) -> Option<(&'static Parameter, &'static str)> {
+    PARAMETERS.iter().find_map(|p| p.names().find(|n| *n == name).map(|n| (p, n)))
+}
+
+/// A control of the panel that is not a setting: a button or a view of its own.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Action {
+    pub name: &'static str,
+    pub aliases: &'static [&'static str],
+    pub label: &'static str,
+    pub group: Group,
+}
+
+/// Every control the `controls` attribute can list, in the panel's order: each group's settings in
+/// table order, then its actions.
+pub fn control_names() -> Vec<&'static str> {
+    let mut names = Vec::new();
+    for group in Group::PANEL {
+        names.extend(PARAMETERS.iter().filter(|p| p.group == group).map(|p| p.name));
+        names.extend(ACTIONS.iter().filter(|a| a.group == group).map(|a| a.name));
+    }
+    names
+}
+
+/// A control's canonical name from any of its names.
+pub fn control(name: &str) -> Option<&'static str> {
+    let setting = parameter(name).filter(|p| p.group != Group::None).map(|p| p.name);
+    setting.or_else(|| ACTIONS.iter().find(|a| a.name == name || a.aliases.contains(&name)).map(|a| a.name))
 }
 
 /// A parameter's value, read from text.
@@ -308,4 +318,63 @@ pub enum Value {
     Boolean(bool),
     /// A colour as `#rrggbb` (lower case), a choice, or a normalised list (`all`, `none` or names).
     Text(String),
+}
+
+impl Value {
+    /// An f32 as the table holds numbers: its shortest decimal, so that it reads back as itself.
+    pub fn of_f32(x: f32) -> Value {
+        Value::Number(x.to_string().parse().unwrap_or(f64::from(x)))
+    }
+
+    /// A word or other text.
+    pub fn word(word: &str) -> Value {
+        Value::Text(word.to_string())
+    }
+
+    /// The number (NaN for other kinds).
+    pub fn number(&self) -> f32 {
+        match self {
+            Value::Number(n) => *n as f32,
+            _ => f32::NAN,
+        }
+    }
+
+    /// The whole number (0 for other kinds).
+    pub fn whole(&self) -> u64 {
+        match self {
+            Value::Number(n) => *n as u64,
+            _ => 0,
+        }
+    }
+
+    /// True for `Boolean(true)`.
+    pub fn flag(&self) -> bool {
+        matches!(self, Value::Boolean(true))
+    }
+
+    /// The text (empty for other kinds).
+    pub fn text(&self) -> &str {
+        match self {
+            Value::Text(t) => t,
+            _ => "",
+        }
+    }
+
+    /// The value as a link or an attribute writes it.
+    pub fn to_text(&self) -> String {
+        match self {
+            Value::Number(n) => n.to_string(),
+            Value::Boolean(b) => b.to_string(),
+            Value::Text(t) => t.clone(),
+        }
+    }
+}
+
+/// Refusal of a name that no row of the table answers to.
+pub(super) fn unknown(name: &str) -> ParamError {
+    ParamError::Invalid {
+        name: "parameter name",
+        value: name.to_string(),
+        expected: format!("one of {}", PARAMETERS.iter().map(|p| p.name).collect::<Vec<_>>().join(", ")),
+    }
 }

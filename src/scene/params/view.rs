@@ -1,7 +1,8 @@
 //! How the surface is shown and built, for teaching: display modes, grid overlays, a field slice,
 //! triangle colouring, lights, projection, and the two construction toggles (interpolation, blend).
 
-use super::{ParamError, Value, check_f32};
+use super::table::{Field, parameter};
+use super::{ParamError, Settings, Value, check_f32};
 
 /// Declares a choice among words: the enum, its words in order, and the conversions.
 macro_rules! choice {
@@ -127,7 +128,7 @@ choice!(
 choice!(
     /// Where the mesh is made: the GPU's compute passes or the CPU mesher (faster on software
     /// adapters, and the only one without compute shaders).
-    Mesher {
+    MeshOn {
         /// The CPU on software adapters and without compute shaders, else the GPU.
         Auto = "auto",
         Gpu = "gpu",
@@ -198,12 +199,6 @@ pub struct Lights {
     pub spot: bool,
 }
 
-impl Default for Lights {
-    fn default() -> Self {
-        Self { point: true, directional: false, spot: false }
-    }
-}
-
 impl Lights {
     /// From a normalised list value (`all`, `none` or kinds).
     pub fn from_list(list: &str) -> Self {
@@ -268,9 +263,9 @@ pub struct ViewOptions {
     /// The spot light's soft edge, as a fraction of the cone (0 hard, 1 all soft).
     pub spot_softness: f32,
     pub projection: Projection,
-    pub mesher: Mesher,
+    pub mesh_on: MeshOn,
     /// Marching cubes or surface nets (with `lod`, always marching cubes and its transition cells).
-    pub extractor: Method,
+    pub method: Method,
     /// Level of detail: fine cells near the camera, coarse far away (`resolution` is the finest).
     pub lod: bool,
     /// With `lod`, the largest a cell may look on screen, in pixels.
@@ -284,51 +279,40 @@ pub struct ViewOptions {
 
 impl Default for ViewOptions {
     fn default() -> Self {
+        Settings::default().view
+    }
+}
+
+impl ViewOptions {
+    /// Options before the table's defaults are put in (see `Settings::default`).
+    pub(super) const fn unset() -> Self {
         Self {
             display: Display::Shaded,
             compare: Compare::None,
-            divider: 0.5,
+            divider: 0.0,
             grid: GridView::None,
             color_by: ColorBy::None,
             slice: None,
             ambiguous: false,
             interpolation: Interpolation::Linear,
             blend: Blend::Sum,
-            lights: Lights::default(),
-            spot_angle: 15.0,
-            spot_softness: 0.3,
+            lights: Lights { point: false, directional: false, spot: false },
+            spot_angle: 0.0,
+            spot_softness: 0.0,
             projection: Projection::Perspective,
-            mesher: Mesher::Auto,
-            extractor: Method::MarchingCubes,
+            mesh_on: MeshOn::Auto,
+            method: Method::MarchingCubes,
             lod: false,
-            lod_pixels: 2.0,
+            lod_pixels: 0.0,
             lod_freeze: false,
             theme: Theme::Dark,
             background: None,
         }
     }
-}
 
-/// LOD cell sizes on screen accepted, pixels.
-pub const LOD_PIXELS_RANGE: (f32, f32) = (0.25, 32.0);
-
-/// Where the split view's divider may sit, as a fraction of the width.
-pub const DIVIDER_RANGE: (f32, f32) = (0.05, 0.95);
-
-/// Spot cone half-angles accepted, degrees.
-pub const SPOT_ANGLE_RANGE: (f32, f32) = (2.0, 80.0);
-
-impl ViewOptions {
-    /// Returns the options if every number is in range.
+    /// Returns the options if every one is in range.
     pub fn validated(self) -> Result<Self, ParamError> {
-        check_f32("spot cone angle (degrees)", self.spot_angle, SPOT_ANGLE_RANGE.0, SPOT_ANGLE_RANGE.1)?;
-        check_f32("spot softness", self.spot_softness, 0.0, 1.0)?;
-        check_f32("LOD cell size (pixels)", self.lod_pixels, LOD_PIXELS_RANGE.0, LOD_PIXELS_RANGE.1)?;
-        check_f32("divider position", self.divider, DIVIDER_RANGE.0, DIVIDER_RANGE.1)?;
-        if let Some(slice) = self.slice {
-            check_f32("slice position", slice.position, -1.0, 1.0)?;
-        }
-        Ok(self)
+        Settings { view: self, ..Settings::default() }.validated().map(|_| self)
     }
 
     /// The background's gradient (top, bottom; linear RGB): the page's, else the theme's.
@@ -336,58 +320,19 @@ impl ViewOptions {
         self.background.unwrap_or_else(|| self.theme.background())
     }
 
-    /// Sets the option `name` (a parameter table name) from its parsed value; `Ok(false)` when `name`
-    /// is not one of these options.
+    /// Sets the option `name` (any of its names in the parameter table) from a value, checked as its
+    /// row says; `Ok(false)` when `name` is not one of these options.
     pub fn set(&mut self, name: &str, value: &Value) -> Result<bool, ParamError> {
-        let text = || match value {
-            Value::Text(t) => t.as_str(),
-            _ => "",
-        };
-        let number = || match value {
-            Value::Number(n) => *n as f32,
-            _ => f32::NAN,
-        };
-        let wrong = |expected: &[&str]| ParamError::Invalid {
-            name: "option",
-            value: format!("{value:?}"),
-            expected: format!("one of {}", expected.join(", ")),
-        };
-        macro_rules! pick {
-            ($field:ident, $ty:ty) => {
-                self.$field = <$ty>::from_word(text()).ok_or_else(|| wrong(<$ty>::WORDS))?
-            };
+        match parameter(name) {
+            Some(p) => match p.field {
+                Some(Field::View { set, .. }) => {
+                    set(self, &p.check(value)?);
+                    Ok(true)
+                }
+                _ => Ok(false),
+            },
+            None => Ok(false),
         }
-        match name {
-            "display" => pick!(display, Display),
-            "compare" => pick!(compare, Compare),
-            "divider" => {
-                self.divider = check_f32("divider position", number(), DIVIDER_RANGE.0, DIVIDER_RANGE.1)?
-            }
-            "grid" => pick!(grid, GridView),
-            "color_by" => pick!(color_by, ColorBy),
-            "interpolation" => pick!(interpolation, Interpolation),
-            "blend" => pick!(blend, Blend),
-            "projection" => pick!(projection, Projection),
-            "mesher" => pick!(mesher, Mesher),
-            "extractor" => pick!(extractor, Method),
-            "theme" => pick!(theme, Theme),
-            "slice" => self.slice = Slice::parse(text())?,
-            "light" => self.lights = Lights::from_list(text()),
-            "ambiguous" => self.ambiguous = matches!(value, Value::Boolean(true)),
-            "lod" => self.lod = matches!(value, Value::Boolean(true)),
-            "lod_freeze" => self.lod_freeze = matches!(value, Value::Boolean(true)),
-            "lod_pixels" => {
-                self.lod_pixels =
-                    check_f32("LOD cell size (pixels)", number(), LOD_PIXELS_RANGE.0, LOD_PIXELS_RANGE.1)?
-            }
-            "spot_angle" => {
-                self.spot_angle =
-                    check_f32("spot cone angle (degrees)", number(), SPOT_ANGLE_RANGE.0, SPOT_ANGLE_RANGE.1)?
-            }
-            "spot_softness" => self.spot_softness = check_f32("spot softness", number(), 0.0, 1.0)?,
-            _ => return Ok(false),
-        }
-        Ok(true)
     }
 }
 
