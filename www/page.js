@@ -4,7 +4,7 @@
 // figure and replaced by defaults.
 
 import { backendName, loadWasm, parseParameter } from './lib/engine/wasm.js';
-import { propertyName, TABLE as table } from './lib/core/table.js';
+import { propertyName, spellingsOf, TABLE as table } from './lib/core/table.js';
 import { runBenchmark } from './bench.js';
 
 // The key a link gives a parameter under: its short name, its name, or an old spelling.
@@ -52,7 +52,10 @@ function start() {
     urlTimer = setTimeout(() => {
       const next = new URLSearchParams();
       for (const spec of table.filter(inLinks)) {
-        const value = element[propertyName(spec.name)];
+        // Spheres placed by hand are read as the text their attribute holds (`sphereList` is a list).
+        const value = spec.kind === 'spheres'
+          ? spellingsOf(spec.name).map((n) => element.getAttribute(n)).find((v) => v !== null) ?? ''
+          : element[propertyName(spec.name)];
         if (value === parseParameter(spec.name, spec.default)) continue;
         // Hand-placed spheres ride in the link for small scenes; larger ones go in a scene file.
         if (spec.kind === 'spheres' && value.split(';').length > MAX_LINK_SPHERES) continue;

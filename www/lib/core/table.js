@@ -10,12 +10,15 @@ export { CONTROLS, LIMITS, TABLE };
 /** Canonical attribute names, in panel order. */
 export const NAMES = TABLE.map((p) => p.name);
 
+// Each spelling of a parameter: its name, its short name in links and its older spellings.
+const spellings = (row) => [...new Set([row.name, row.url, ...(row.aliases ?? [])])];
+
 const ROWS = new Map();
 for (const row of TABLE) {
-  for (const spelling of [row.name, ...(row.aliases ?? [])]) ROWS.set(spelling, row);
+  for (const spelling of spellings(row)) ROWS.set(spelling, row);
 }
 
-/** Every spelling an attribute may be given under: the names and their aliases. */
+/** Every spelling an attribute may be given under: the names, short names and older spellings. */
 export const SPELLINGS = [...ROWS.keys()];
 
 /** The table's row for a name or any of its aliases, or undefined. */
@@ -24,10 +27,10 @@ export const rowOf = (spelling) => ROWS.get(spelling);
 /** The canonical name of a name or alias (itself when unknown). */
 export const canonical = (spelling) => ROWS.get(spelling)?.name ?? spelling;
 
-/** The spellings of one parameter: its name first, then its aliases. */
+/** The spellings of one parameter: its name first, then its short name and older spellings. */
 export const spellingsOf = (name) => {
   const row = ROWS.get(name);
-  return row ? [row.name, ...(row.aliases ?? [])] : [name];
+  return row ? spellings(row) : [name];
 };
 
 const camel = (text) => text.replace(/[-_]([a-z])/g, (_, c) => c.toUpperCase());
@@ -36,13 +39,14 @@ const camel = (text) => text.replace(/[-_]([a-z])/g, (_, c) => c.toUpperCase());
 export const propertyName = (spelling) => ROWS.get(spelling)?.property ?? camel(spelling);
 
 /**
- * Property spellings kept from earlier versions (`color_by`, `balls`): each alias as it was read as a
- * property, where it differs from the row's own property. Maps the old property to the canonical name.
+ * Property spellings kept from earlier versions (`color_by`, `spot_angle`, `balls`): each spelling of a
+ * parameter and its Python name, read as a property as earlier versions did, where it differs from the
+ * row's own property. Maps the old property to the canonical name.
  */
 export const OLD_PROPERTIES = new Map();
 for (const row of TABLE) {
-  for (const alias of row.aliases ?? []) {
-    const property = alias.replace(/-([a-z])/g, (_, c) => c.toUpperCase());
+  for (const spelling of [...spellings(row), row.python]) {
+    const property = spelling.replace(/-([a-z])/g, (_, c) => c.toUpperCase());
     if (property !== row.property) OLD_PROPERTIES.set(property, row.name);
   }
 }
@@ -84,13 +88,15 @@ export const clampTo = (name, value) => {
 };
 
 /**
- * The id of a parameter's control in the panel: the spelling it was first given under (its Python
- * name where that is one of its aliases, else its first alias, else its name), so that styles and
- * scripts written against earlier panels still find it.
+ * The id of a parameter's control in the panel: the name it had in earlier versions (its Python name
+ * where that is an older spelling or its short name, else its first older spelling, else its name), so
+ * that styles and scripts written against earlier panels still find it.
  */
 export function controlId(name) {
   const row = ROWS.get(name);
   if (!row) return name;
   const aliases = row.aliases ?? [];
-  return aliases.includes(row.python) ? row.python : aliases[0] ?? row.name;
+  if (aliases.includes(row.python)) return row.python;
+  if (aliases.length) return aliases[0];
+  return row.url === row.python ? row.python : row.name;
 }

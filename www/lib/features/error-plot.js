@@ -94,7 +94,7 @@ export class ErrorPlot {
   }
 
   controls() {
-    return { error_plot: (panel) => this.#control(panel) };
+    return { 'error-plot': (panel) => this.#control(panel) };
   }
 
   #control({ element, makeButton }) {

@@ -10,7 +10,7 @@ const FORMATS = {
   resolution: (v) => `${v}³`,
   speed: (v) => `${v.toFixed(2)}×`,
   shininess: (v) => String(Math.round(v)),
-  spot_angle: (v) => `${Math.round(v)}°`,
+  'spot-angle': (v) => `${Math.round(v)}°`,
   fov: (v) => `${Math.round(v)}°`,
 };
 const formatNumber = (name, v) => (FORMATS[name] ?? ((x) => x.toFixed(2)))(v);

@@ -102,7 +102,7 @@ export class Panel {
           control.classList.add('unavailable');
         }
         section.append(control);
-        if (name === 'color_by') {
+        if (name === 'color-by') {
           const key = element('div', { className: 'key' });
           const classNames = helpers.gallery.classes.map((k) => k.name);
           this.#updates.push((s) => key.replaceChildren(...[colorKey(s, classNames)].filter(Boolean)));

@@ -250,12 +250,12 @@ export class FigureFrames {
     const { settings } = ctx;
     const s = settings.state;
     for (const name of settings.changed) {
-      if (!RENDERER.has(name)) continue;
       if (name === SPHERES) {
         settings.applied[name] = s[name];
         ctx.each('spheresGiven', s[name]);
         continue;
       }
+      if (!RENDERER.has(name)) continue;
       try {
         within(ctx.element, () => applySetting(view, name, s));
         settings.applied[name] = s[name];
@@ -394,7 +394,7 @@ export class FigureFrames {
       return await f(this.#view);
     } finally {
       this.#held = false;
-      for (const name of RENDERER) this.#ctx.settings.changed.add(name);
+      for (const name of [...RENDERER, SPHERES]) this.#ctx.settings.changed.add(name);
       this.#dirty = SETTLE_FRAMES;
       hub.requestFrame();
     }

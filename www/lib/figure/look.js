@@ -3,8 +3,11 @@
 // control did, and the background colours a page gives through CSS custom properties. `Look` is the
 // feature that keeps them up to date as the settings change and frames are drawn.
 
-import { rowOf } from '../core/table.js';
+import { nameOfKind, rowOf } from '../core/table.js';
 import { ONE_FRAME, PICTURE_FRAMES } from '../core/redraw.js';
+
+// The setting that holds spheres placed by hand, as text (`;` between spheres).
+const SPHERE_LIST = nameOfKind('spheres');
 
 // A figure refreshes its print picture at most this often while it animates (taking one waits for the
 // GPU to finish the frame); a still figure takes one once it has settled.
@@ -66,7 +69,7 @@ export class FigureLook {
   /** The accessible name: the author's `alt`, else what the figure shows. */
   name(state) {
     const cells = `${state.resolution}³ cells`;
-    const spheres = state.balls ? state.balls.split(';').length : state.spheres;
+    const spheres = state[SPHERE_LIST] ? state[SPHERE_LIST].split(';').length : state.spheres;
     const derived = `${spheres} sphere${spheres === 1 ? '' : 's'}, iso ${Number(state.iso.toFixed(2))}, `
       + `${cells}${state.display !== 'shaded' ? `, ${state.display}` : ''}`
       + `${state.paused ? ', paused' : ''}`;

@@ -33,6 +33,7 @@ export function makeView(ctx, gpu, software) {
   }
   // Every renderer setting not given at creation is applied to the new view.
   settings.applied = { ...s };
-  settings.changed = new Set([...RENDERER].filter((name) => !CREATION.has(name) && (name !== SPHERES || s[name])));
+  settings.changed = new Set([...RENDERER].filter((name) => !CREATION.has(name)));
+  if (s[SPHERES]) settings.changed.add(SPHERES);
   return view;
 }
