@@ -1,6 +1,6 @@
 // The figure's statistics: frames per second, frame time, triangles, adapter and mesher (GPU or CPU
 // meshing), with level of detail the effective resolution and each level's blocks and triangles, with
-// color_by=error or quality the mesh's distance to the exact surface and its shape histogram, and a
+// color-by=error or quality the mesh's distance to the exact surface and its shape histogram, and a
 // warning when the triangle budget stays full. Figures update twice a second from the GPU's
 // asynchronous reports.
 
@@ -136,7 +136,7 @@ export class Hud {
   }
 
   /**
-   * The mesh's error and shape (with color_by=error or quality): `[frame, rms, max, vertices, bins…]`
+   * The mesh's error and shape (with color-by=error or quality): `[frame, rms, max, vertices, bins…]`
    * from the view, or empty.
    */
   #showMeasures(m) {

@@ -28,8 +28,6 @@ export class FigureFrames {
   #onScreen = false;
   #failed = false;
   #software = false;
-  // The sync leader's frame whose spheres this figure last took.
-  #ledFrame = -1;
   #savedSpheres = null;
   #dirty = 0;
   #stepRequested = false;
@@ -352,7 +350,6 @@ export class FigureFrames {
     }
     this.redraw(PICTURE_FRAMES);
   }
-
 
   /**
    * Resolves after a frame of the current settings has been drawn: the renderer is started and a frame
