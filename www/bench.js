@@ -47,9 +47,9 @@ export async function runBenchmark(view, container, { hasCompute = true } = {}) 
     for (const spheres of sphereCounts) {
       for (const mesher of meshers) {
         showTable(container, records, `Running ${resolution}³ cells × ${spheres} spheres, ${mesher} mesher…`);
-        view.set_parameter('mesher', mesher);
-        view.set_resolution(resolution);
-        view.set_sphere_count(spheres);
+        view.set_parameter('mesh-on', mesher);
+        view.set_parameter('resolution', String(resolution));
+        view.set_parameter('spheres', String(spheres));
         // Warm up: pipelines compile and the buffers grow to the surface.
         await timeFrames(view, 3, () => view.frame(1 / 60));
         const frame_ms = await timeFrames(view, frames, () => view.frame(1 / 60));
@@ -76,9 +76,9 @@ export async function runBenchmark(view, container, { hasCompute = true } = {}) 
   const lodResolution = listParam(query, 'bench_lod', [1024])[0];
   for (const mesher of lodResolution ? meshers : []) {
     showTable(container, records, `Running ${lodResolution}³ cells with level of detail × 16 spheres, ${mesher} mesher…`);
-    view.set_parameter('mesher', mesher);
-    view.set_sphere_count(16);
-    view.set_grid(lodResolution, true);
+    view.set_parameter('mesh-on', mesher);
+    view.set_parameter('spheres', '16');
+    view.set_parameters(['resolution', 'lod'], [String(lodResolution), 'true']);
     await timeFrames(view, 3, () => view.frame(1 / 60));
     const frame_ms = await timeFrames(view, frames, () => view.frame(1 / 60));
     const mesh_ms = await timeFrames(view, frames, () => view.extract());
@@ -99,9 +99,9 @@ export async function runBenchmark(view, container, { hasCompute = true } = {}) 
       blocks_per_level: levels.slice(1).filter((_, i) => i % 2 === 0),
     });
     stats?.free();
-    view.set_grid(resolutions.at(-1) ?? 64, false);
+    view.set_parameters(['resolution', 'lod'], [String(resolutions.at(-1) ?? 64), 'false']);
   }
-  view.set_parameter('mesher', 'auto');
+  view.set_parameter('mesh-on', 'auto');
   await timeFrames(view, 1, () => view.frame(0));
   const auto = view.mesh_source();
   showTable(container, records, `${frames} frames per row, medians; the GPU queue is synchronised after each frame. `

@@ -5,10 +5,10 @@
 # notebook widget's module, for anywidget hosts such as MyST's {anywidget} directive). Every path inside
 # is relative, so the folder works under any sub-path of any host.
 #
-# The element's two dozen modules are bundled (esbuild, pinned in www/tools/) into two entry files and
-# one shared file, so a visitor's browser fetches three scripts at once instead of discovering the
-# modules import by import. The shared file sits in www/lib/, where the modules were, so the relative
-# paths to the WebAssembly stay as they are in the sources.
+# The element's modules are bundled (esbuild, pinned in www/tools/) into two entry files and one
+# shared file, so a visitor's browser fetches three scripts at once instead of discovering the modules
+# import by import. The shared file sits in www/lib/engine/, where the module that loads the
+# WebAssembly was, so the relative paths to it stay as they are in the sources.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source www/need-deb.sh
@@ -20,10 +20,10 @@ rm -rf dist
 mkdir -p dist/www dist/pkg dist/pkg-webgl
 cp index.html embed.html dist/
 "$esbuild" www/metaballs-view.js www/page.js --bundle --splitting --format=esm --minify --sourcemap \
-    --target=es2022 --outbase=www --outdir=dist/www --chunk-names='lib/[name]-[hash]' \
-    --external:'../../pkg/*' --external:'../../pkg-webgl/*' --log-level=warning
+    --target=es2022 --outbase=www --outdir=dist/www --chunk-names='lib/engine/[name]-[hash]' \
+    --external:'../../../pkg/*' --external:'../../../pkg-webgl/*' --log-level=warning
 if grep -l 'pkg/metaballs' dist/www/*.js; then
-    echo "dist.sh: the code that loads the WebAssembly was bundled outside www/lib/, where its paths hold" >&2
+    echo "dist.sh: the code that loads the WebAssembly was bundled outside www/lib/engine/, where its paths hold" >&2
     exit 1
 fi
 cp -r www/examples www/metaballs-view.css www/style.css dist/www/

@@ -4,24 +4,42 @@
 // the viewport, draws only while on screen, takes keys only while focused, and survives a lost GPU.
 // Importing it does nothing but define the element, and only where `customElements` exists (a
 // server-side build imports it safely); the wasm loads when the first figure is connected.
+//
+// The element is a figure context (lib/core/context.js) with its features (lib/features/ and the
+// look, lib/figure/look.js), each owning its settings, its reaction to their changes, its part of each
+// frame and its methods; the renderer and its frames are lib/figure/frames.js.
 
-import { makeFigureParts } from './lib/figure-parts.js';
-import { caseGallery, hub, loadWarning, loadWasm, propertyName, wasmLoaded } from './lib/engine.js';
-import { FigureBase } from './lib/figure-base.js';
-import { wireFigureGestures } from './lib/figure-gestures.js';
-import { buildPanel, listedControls } from './lib/panel.js';
-import { elementStyle, flasher, TEMPLATE } from './lib/element-dom.js';
-import { Hud } from './lib/hud.js';
-import { CostGuard } from './lib/frame-cost.js';
-import { wireDrop } from './lib/scene-files.js';
-import { sweepErrors } from './lib/error-plot.js';
-import { CAMERA, joinSync, leaderOf, leaveSync, shareCamera, syncMember } from './lib/sync.js';
 import {
-  CONTROL_NAMES, defaultOf, defaults, FigureState, NAMES, TABLE, TEXT_NAMES,
-} from './lib/figure-state.js';
-import { FigureFrames } from './lib/figure-frames.js';
-import { FigureLook } from './lib/figure-look.js';
-import { pageWatch, unwatch } from './lib/page-watch.js';
+  canonical, nameOfKind, NAMES, OLD_PROPERTIES, propertyName, rowOf, TABLE, TEXT_NAMES,
+} from './lib/core/table.js';
+import { FigureState } from './lib/core/state.js';
+import { FigureContext } from './lib/core/context.js';
+import { hub } from './lib/engine/hub.js';
+import { loadWarning, loadWasm, parseParameter, wasmLoaded } from './lib/engine/wasm.js';
+import { FigureBase } from './lib/engine/element-base.js';
+import { pageWatch, unwatch } from './lib/engine/page-watch.js';
+import { elementStyle, flasher, TEMPLATE } from './lib/figure/dom.js';
+import { FigureFrames } from './lib/figure/frames.js';
+import { FigureSize } from './lib/figure/size.js';
+import { Look } from './lib/figure/look.js';
+import { Camera } from './lib/features/camera.js';
+import { ErrorPlot } from './lib/features/error-plot.js';
+import { Guard } from './lib/features/guard.js';
+import { Hud } from './lib/features/hud.js';
+import { Inspector } from './lib/features/inspector.js';
+import { Panel } from './lib/features/panel.js';
+import { Playback } from './lib/features/playback.js';
+import { SceneFiles, spheresText } from './lib/features/scene-files.js';
+import { SphereEditor } from './lib/features/editor.js';
+import { Sync } from './lib/features/sync.js';
+import { TopologyWatch } from './lib/features/topology.js';
+
+// The setting that holds spheres placed by hand, as text.
+const SPHERE_LIST = nameOfKind('spheres');
+
+// The features every figure has, in the order they hear of changes and frames.
+const FEATURES = [FigureSize, Look, Guard, Hud, Playback, Camera, Inspector, SphereEditor, SceneFiles,
+  TopologyWatch, Sync, ErrorPlot, Panel];
 
 export class MetaballsView extends FigureBase {
   /** GPU memory held by every element's buffers and targets, in bytes. */
@@ -31,115 +49,43 @@ export class MetaballsView extends FigureBase {
     return bytes;
   }
 
-  // Values in effect, held by the renderer, changed, and given (attribute reflection).
-  #settings = new FigureState(this);
-  #state = this.#settings.state;
-  // The renderer from start to end, and its frames.
+  #ctx;
   #frames;
-  // Frame time per resolution and sphere count on this adapter, and changes waiting for confirmation.
-  #guard;
-  #hud;
-  #showPanel = () => {};
-  // Shows a message in one of the shadow root's boxes for a while: flash(id, text, ms).
-  #flash;
-  #root;
-  #canvas;
-  #inspector;
-  #editor;
-  #io;
-  // What the panel's buttons and the keys do.
-  #actions = {
-    togglePause: () => (this.#state.paused ? this.play() : this.pause()),
-    reseed: () => this.#set('seed', 1 + Math.floor(Math.random() * 1e6)),
-    resetView: () => this.resetView(),
-    step: () => this.step(),
-    saveScene: () => this.#run(() => this.downloadScene()),
-    loadScene: () => this.#root.getElementById('scene-file').click(),
-    exportMesh: (format) => this.#run(() => this.downloadMesh(format)),
-    picture: (scale) => this.#run(() => this.downloadPicture(scale)),
-    errorSweep: (status) => sweepErrors(() => this.#frames.view, status),
-  };
   #started = false;
-  #look;
-  #topology;
-  // This figure in its `sync` group: camera changes from the others arrive here.
-  #sync = syncMember(() => this.#state.sync, (name, value) => this.#set(name, value, false));
   // Resolves once the wasm is in and the attributes given so far are read.
   #loaded = null;
 
   constructor() {
     super();
-    this.#root = this.attachShadow({ mode: 'open', delegatesFocus: true });
-    this.#root.adoptedStyleSheets = [elementStyle()];
-    this.#root.innerHTML = TEMPLATE;
-    this.#canvas = this.#root.getElementById('view');
-    this.#look = new FigureLook(this, this.#root, this.#canvas);
-    this.#look.name(this.#state);
-    this.#hud = new Hud(this.#root);
-    const $ = (id) => this.#root.getElementById(id);
-    $('play').addEventListener('click', () => { this.play(); this.#canvas.focus(); });
-    $('retry').addEventListener('click', () => hub.retry());
-    this.#guard = new CostGuard(this.#root, (name, value) => this.#set(name, value));
-    this.#flash = flasher(this.#root);
-    this.#frames = new FigureFrames({
-      element: this,
-      root: this.#root,
-      canvas: this.#canvas,
-      settings: this.#settings,
-      guard: this.#guard,
-      hud: this.#hud,
-      look: this.#look,
-      loaded: () => this.#load(),
-      editor: () => this.#editor,
-      io: () => this.#io,
-      inspector: () => this.#inspector,
-      notice: (text, ms) => this.#notice(text, ms),
-      showPanel: () => this.#showPanel(this.#state),
-      buildPanel: () => this.#buildPanel(),
-      emit: (type, detail) => this.#emit(type, detail),
-      topology: () => this.#topology,
-      leader: () => leaderOf(this.#sync)?.frames ?? null,
-    });
-    this.#sync.frames = this.#frames;
-    ({ topology: this.#topology, inspector: this.#inspector, editor: this.#editor, io: this.#io } = makeFigureParts({
-      root: this.#root,
-      canvas: this.#canvas,
-      frames: this.#frames,
-      hud: this.#hud,
-      look: this.#look,
-      state: () => this.#state,
-      set: (name, value) => this.#set(name, value),
-      adopt: (name, value) => this.#adopt(name, value),
-      pause: () => this.pause(),
-      showPanel: (k) => this.#showPanel(this.#state, k),
-      notice: (text, ms) => this.#notice(text, ms),
-      emit: (type, detail) => this.#emit(type, detail),
-    }));
-    wireFigureGestures(this, this.#canvas, {
-      state: this.#state,
-      set: (name, value) => this.#set(name, value),
-      actions: this.#actions,
-      flash: this.#flash,
-      editor: this.#editor,
-      inspector: this.#inspector,
-      view: () => this.#frames.view,
-    });
-    const file = this.#root.getElementById('scene-file');
-    file.addEventListener('change', () => {
-      if (file.files[0]) this.#io.loadFile(file.files[0]);
-      file.value = '';
-    });
-    wireDrop(this, () => this.#state.edit || listedControls(this.#state.controls, CONTROL_NAMES).includes('scene'),
-      (dropped) => this.#io.loadFile(dropped));
-    new ResizeObserver(([entry]) => this.#frames.resize(entry)).observe(this.#canvas);
+    const root = this.attachShadow({ mode: 'open', delegatesFocus: true });
+    root.adoptedStyleSheets = [elementStyle()];
+    root.innerHTML = TEMPLATE;
+    const ctx = new FigureContext(this, root, new FigureState(this, parseParameter));
+    this.#ctx = ctx;
+    ctx.flash = flasher(root);
+    for (const Feature of FEATURES) ctx.use(Feature);
+    this.#frames = new FigureFrames(ctx, ctx.get(FigureSize), () => this.#load());
+    ctx.frames = this.#frames;
+    ctx.get(Camera).wire();
+    ctx.$('retry').addEventListener('click', () => hub.retry());
+    new ResizeObserver(([entry]) => this.#frames.resize(entry)).observe(ctx.canvas);
   }
 
-  // Properties mirror the attributes (camelCase for dashed names): reading gives the value in effect,
-  // writing goes through the same checks as the attribute.
+  // Properties mirror the attributes (the table's `property`): reading gives the value in effect,
+  // writing goes through the same checks as the attribute. The spellings of earlier versions
+  // (`color_by`, `balls`) are kept as properties that forward to the same setting.
   static {
     for (const name of NAMES) {
+      if (Object.hasOwn(this.prototype, propertyName(name))) continue;
       Object.defineProperty(this.prototype, propertyName(name), {
-        get() { return this.#state[name]; },
+        get() { return this.#ctx.state[name]; },
+        set(value) { this.setAttribute(name, String(value)); },
+      });
+    }
+    for (const [property, name] of OLD_PROPERTIES) {
+      if (Object.hasOwn(this.prototype, property)) continue;
+      Object.defineProperty(this.prototype, property, {
+        get() { return this.#ctx.state[name]; },
         set(value) { this.setAttribute(name, String(value)); },
       });
     }
@@ -148,25 +94,16 @@ export class MetaballsView extends FigureBase {
   // ---------------------------------------------------------------- lifecycle
 
   connectedCallback() {
-    joinSync(this.#sync);
     const watch = pageWatch();
+    this.#ctx.each('connected');
     this.#load().then(() => {
       if (!this.isConnected) return;
       if (!this.#started) {
         this.#started = true;
-        if (this.#state.autoplay === 'off' || watch.reducedMotion.matches) this.#set('paused', true);
-        if (loadWarning()) this.#notice(loadWarning());
-        // Very small figures start with their statistics folded, like the panel.
-        this.#root.querySelector('#hud details').open = !(this.clientWidth > 0 && this.clientWidth < 300);
-        // A figure without a poster is drawn once while the page is idle, so it prints as a picture.
-        if (!this.#state.poster) {
-          const later = globalThis.requestIdleCallback ?? ((f) => setTimeout(f, 1000));
-          later(() => this.isConnected && this.#frames.drawForPrint(), { timeout: 4000 });
-        }
+        if (loadWarning()) this.#ctx.notice(loadWarning());
+        this.#ctx.each('firstStart');
       }
-      // A figure about to start builds its panel once it knows its device (after its first frame).
-      if (!this.#frames.starting) this.#buildPanel();
-      this.#root.getElementById('hud').hidden = this.#state.hud !== 'on';
+      this.#ctx.each('loaded');
     }, (error) => this.fail(error?.title ?? 'The figure could not load', `${error?.message ?? error}`));
     hub.register(this);
     watch.near.observe(this);
@@ -174,7 +111,7 @@ export class MetaballsView extends FigureBase {
   }
 
   disconnectedCallback() {
-    leaveSync(this.#sync);
+    this.#ctx.each('disconnected');
     unwatch(this);
     hub.unregister(this);
     this.#frames.detach();
@@ -183,102 +120,43 @@ export class MetaballsView extends FigureBase {
   // Loads the wasm (once per page) and reads the attributes given before it arrived.
   #load() {
     this.#loaded ??= loadWasm().then(() => {
-      for (const name of NAMES) {
-        if (this.hasAttribute(name)) this.attributeChangedCallback(name, null, this.getAttribute(name));
+      for (const row of TABLE) {
+        const [spelling] = this.#ctx.settings.present(row.name);
+        if (spelling) this.attributeChangedCallback(spelling, null, this.getAttribute(spelling));
       }
     });
     return this.#loaded;
   }
 
   /** The reader's colour scheme changed: a figure with `theme="auto"` follows it. */
-  schemeChanged() {
-    if (this.#state.theme !== 'auto') return;
-    this.#settings.changed.add('theme');
-    hub.requestFrame();
-  }
+  schemeChanged() { this.#ctx.get(Look).schemeChanged(); }
 
-  #emit(type, detail) {
-    this.dispatchEvent(new CustomEvent(type, { detail, bubbles: true, composed: true }));
-  }
-
-  attributeChangedCallback(name, _old, text) {
-    if (this.#settings.reflecting) return;
+  attributeChangedCallback(spelling, _old, text) {
+    const settings = this.#ctx.settings;
+    if (settings.reflecting) return;
+    const name = canonical(spelling);
     // Before the wasm arrives only plain text is taken; the rest is read when it loads.
     if (!wasmLoaded() && !TEXT_NAMES.has(name)) return;
     if (text === null) {
-      this.#settings.given.delete(name);
-      this.#accept(name, defaultOf(name));
+      // Removed: another spelling still given holds, else the default.
+      const [other] = settings.present(name);
+      if (other) {
+        this.attributeChangedCallback(other, null, this.getAttribute(other));
+        return;
+      }
+      settings.given.delete(name);
+      this.#ctx.accept(name, rowOf(name).value);
       return;
     }
-    const { value, message } = this.#settings.parse(name, text);
+    const { value, message } = settings.parse(name, text, spelling);
     if (message) {
       console.warn(`<metaballs-view> ${message}`);
-      this.#notice(message);
-      this.#emit('metaballs-error', { message, attribute: name });
+      this.#ctx.notice(message);
+      this.#ctx.emit('metaballs-error', { message, attribute: spelling });
       return;
     }
-    this.#settings.given.add(name);
-    this.#accept(name, value);
-  }
-
-  // Takes a valid value: records it, applies it to the renderer on the next frame, tells listeners.
-  #accept(name, value) {
-    if (this.#state[name] === value) return;
-    if (this.#guard.tooSlow(this.#state, { ...this.#state, [name]: value })) {
-      this.#guard.ask(this.#state, { [name]: value });
-      this.#settings.reflect(name);
-      this.#showPanel(this.#state);
-      return;
-    }
-    this.#state[name] = value;
-    this.#settings.changed.add(name);
-    // Spheres kept from before the renderer was let go give way to spheres the attributes now set.
-    if (name === 'balls' || name === 'spheres' || name === 'seed') this.#frames.savedSpheres = null;
-    // The panel is first built when the figure starts (after the attributes are read).
-    if (name === 'controls' && this.#started) this.#buildPanel();
-    if (name === 'hud') this.#root.getElementById('hud').hidden = value !== 'on';
-    // A still figure draws at full scale; an animating one at its render scale.
-    if (['max-pixel-ratio', 'min-render-scale', 'paused', 'speed'].includes(name)) this.#frames.resize();
-    if (name === 'paused') this.#root.getElementById('play').hidden = !this.#showsPlayButton();
-    if (name === 'edit') {
-      this.#editor.reset();
-      this.#inspector.deselect();
-      this.#canvas.classList.toggle('editing', value);
-    }
-    if (name === 'poster') this.#look.setPoster(value, this.#frames.framesDrawn > 0);
-    this.#look.name(this.#state);
-    this.#showPanel(this.#state);
-    this.#emit('metaballs-change', { property: propertyName(name), value });
-    hub.requestFrame();
-  }
-
-  // A change from inside (gestures, panel, methods): reflected to the attribute, then accepted.
-  #set(name, value, share = true) {
-    // A new count or layout replaces hand-placed spheres with the seeded ones.
-    if ((name === 'spheres' || name === 'seed') && this.#state.balls) this.#adopt('balls', '');
-    this.#settings.reflect(name, value);
-    this.#settings.given.add(name);
-    const before = this.#state[name];
-    this.#accept(name, value);
-    if (this.#state[name] !== before) this.#look.announceChange(name, this.#state[name]);
-    if (share && CAMERA.includes(name)) shareCamera(this.#sync, name, this.#state[name]);
-  }
-
-  #showsPlayButton() {
-    return this.#state.paused && !listedControls(this.#state.controls, CONTROL_NAMES).includes('paused');
-  }
-
-  #buildPanel() {
-    const names = listedControls(this.#state.controls, CONTROL_NAMES);
-    const maxResolution = hub.gpu?.max_resolution() ?? 512;
-    this.#showPanel = buildPanel(this.#root.getElementById('panel'), names, TABLE, this.#state,
-      (name, value) => this.#set(name, value), this.#actions, {
-        maxResolution: this.#frames.software ? Math.min(256, maxResolution) : maxResolution,
-        withoutCompute: Boolean(this.#frames.gpu && !this.#frames.gpu.has_compute()),
-        small: this.clientWidth > 0 && this.clientWidth < 560,
-        gallery: caseGallery(),
-      });
-    this.#root.getElementById('play').hidden = !this.#showsPlayButton();
+    settings.given.add(name);
+    this.#ctx.accept(name, value);
   }
 
   // ---------------------------------------------------------------- the renderer and its frames
@@ -307,97 +185,77 @@ export class MetaballsView extends FigureBase {
   // ---------------------------------------------------------------- costly settings
 
   /** The change waiting for the person's confirmation (a slow frame), or null. */
-  get pendingChange() { return this.#guard.pending ? { ...this.#guard.pending } : null; }
+  get pendingChange() { return this.#ctx.get(Guard).pending; }
 
   // ---------------------------------------------------------------- the cell inspector
 
   /** Selects cell (x, y, z) for the inspector; returns its report (null outside the grid). */
-  inspectCell(x, y, z) { return this.#inspector.select(x, y, z); }
+  inspectCell(x, y, z) { return this.#ctx.get(Inspector).select(x, y, z); }
 
   /** Lets go of the inspected cell or the selected sphere (also Esc, the × button, or a click on the background). */
   deselect() {
-    if (!this.#editor.deselect()) this.#inspector.deselect();
+    if (!this.#ctx.get(SphereEditor).deselect()) this.#ctx.get(Inspector).deselect();
   }
 
   /** What marching cubes decided in the inspected cell, as last shown; null when none is selected. */
-  get inspected() { return this.#inspector.report; }
+  get inspected() { return this.#ctx.get(Inspector).report; }
 
   // ---------------------------------------------------------------- hands on the scene
 
-  // Takes a value that already holds in the renderer (the spheres after an edit): no setter runs.
-  #adopt(name, value) {
-    if (this.#state[name] === value) return;
-    this.#state[name] = value;
-    this.#settings.applied[name] = value;
-    this.#settings.reflect(name);
-    this.#look.name(this.#state);
-    this.#showPanel(this.#state);
-    this.#emit('metaballs-change', { property: propertyName(name), value });
-  }
+  /**
+   * The spheres in play: [{ center: [x, y, z], radius, velocity: [x, y, z], charge }]. Set to such a
+   * list (or to their text) to place them by hand.
+   */
+  get sphereList() { return this.#ctx.get(SceneFiles).list(this.#frames.savedSpheres); }
 
-  // Runs an action of the panel; a failure becomes a notice.
-  #run(f) {
-    Promise.resolve().then(f).catch((error) => this.#notice(error?.message ?? String(error)));
+  set sphereList(value) {
+    this.setAttribute(this.#ctx.settings.present(SPHERE_LIST)[0] ?? SPHERE_LIST,
+      Array.isArray(value) ? spheresText(value) : String(value));
   }
-
-  /** The spheres in play: [{ center: [x, y, z], radius, velocity: [x, y, z] }]. */
-  get sphereList() { return this.#io.list(this.#frames.savedSpheres); }
 
   /** Where sphere `index` is drawn: { x, y, radius } in CSS pixels from the figure's top left, or null. */
-  sphereOnScreen(index) { return this.#io.onScreen(index); }
+  sphereOnScreen(index) { return this.#ctx.get(SceneFiles).onScreen(index); }
 
   /** The selected sphere's index in edit mode, or -1. */
-  get selectedSphere() { return this.#editor.selected; }
+  get selectedSphere() { return this.#ctx.get(SphereEditor).selected; }
 
   /** The scene (spheres and every setting of the picture) as a JSON document. */
-  saveScene() { return this.#io.save(); }
+  saveScene() { return this.#ctx.get(SceneFiles).save(); }
 
   /** Loads a scene document; throws with what is wrong, leaving the scene as it was. */
-  loadScene(text) { this.#io.load(text); }
+  loadScene(text) { this.#ctx.get(SceneFiles).load(text); }
 
-  downloadScene() { this.#io.downloadScene(); }
+  downloadScene() { this.#ctx.get(SceneFiles).downloadScene(); }
 
   /** The mesh of the current settings as `stl`, `obj` or `ply` bytes (one readback from the GPU). */
-  exportMesh(format = 'stl') { return this.#io.exportMesh(format); }
+  exportMesh(format = 'stl') { return this.#ctx.get(SceneFiles).exportMesh(format); }
 
-  downloadMesh(format = 'stl') { return this.#io.downloadMesh(format); }
+  downloadMesh(format = 'stl') { return this.#ctx.get(SceneFiles).downloadMesh(format); }
 
   /** A PNG blob of the view at the canvas size times `scale` (1 or 2). */
-  picture(scale = 1) { return this.#io.picture(scale); }
+  picture(scale = 1) { return this.#ctx.get(SceneFiles).picture(scale); }
 
-  downloadPicture(scale = 1) { return this.#io.downloadPicture(scale); }
+  downloadPicture(scale = 1) { return this.#ctx.get(SceneFiles).downloadPicture(scale); }
 
   // ---------------------------------------------------------------- notices
 
-  #notice(text, ms = 8000) {
-    this.#flash('notice', text, ms);
-  }
-
   /** Shows a short message inside the figure (pages use it for problems with their links). */
-  showNotice(text, ms = 8000) {
-    this.#notice(text, ms);
-  }
+  showNotice(text, ms = 8000) { this.#ctx.notice(text, ms); }
 
   // ---------------------------------------------------------------- API for authors
 
-  play() { this.#set('paused', false); }
+  play() { this.#ctx.get(Playback).play(); }
 
-  pause() { this.#set('paused', true); }
+  pause() { this.#ctx.get(Playback).pause(); }
 
   /** Back to the default camera. */
-  resetView() {
-    const d = defaults();
-    for (const name of ['yaw', 'pitch', 'distance']) this.#set(name, d[name]);
-  }
+  resetView() { this.#ctx.get(Camera).resetView(); }
 
   /** Draws one frame of animation (1/60 s) and stays paused. */
-  step() {
-    if (!this.#state.paused) this.pause();
-    this.#frames.stepOnce();
-  }
+  step() { this.#ctx.get(Playback).step(); }
 
   /** Figures of the newest frames: triangles, fps, frame time (ms), adapter, overflowed. */
-  get stats() { return { ...this.#hud.stats }; }
+  get stats() { return { ...this.#ctx.get(Hud).stats }; }
 
   /** GPU memory this figure's renderer holds, in bytes (0 while it has none, as when long off screen). */
   get gpuBytes() { return this.#frames.view?.gpu_bytes() ?? 0; }
@@ -421,11 +279,12 @@ export class MetaballsView extends FigureBase {
   }
 
   /** Resolves once the figure has a picture for print (its poster, or one of a drawn frame). */
-  printable() { return this.#look.printable(); }
+  printable() { return this.#ctx.get(Look).printable(); }
+
   /** The surface's shape now: resolves to { components, genus, closed, manifold }. */
   async topology() {
     await this.ready();
-    return this.#topology.check();
+    return this.#ctx.get(TopologyWatch).check();
   }
 
   /**

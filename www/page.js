@@ -3,16 +3,19 @@
 // person changes them, plus the benchmark mode (`?bench`). Bad values in a link are reported inside the
 // figure and replaced by defaults.
 
-import { backendName, loadWasm, parseParameter, propertyName } from './lib/engine.js';
-import { TABLE as table } from './lib/attributes.js';
+import { backendName, loadWasm, parseParameter } from './lib/engine/wasm.js';
+import { propertyName, spellingsOf, TABLE as table } from './lib/core/table.js';
 import { runBenchmark } from './bench.js';
+
+// The key a link gives a parameter under: its short name, its name, or an old spelling.
+const keyIn = (query, spec) => [spec.url, spec.name, ...(spec.aliases ?? [])].find((key) => query.has(key)) ?? null;
 
 const element = document.querySelector('metaballs-view');
 // Plain text (the poster, the description) is taken at once, so the poster shows while the wasm loads.
 const early = new URLSearchParams(location.search);
 for (const spec of table.filter((p) => p.kind === 'text')) {
-  const value = early.get(spec.url) ?? early.get(spec.name);
-  if (value !== null) element.setAttribute(spec.name, value);
+  const key = keyIn(early, spec);
+  if (key !== null) element.setAttribute(spec.name, early.get(key));
 }
 loadWasm().then(start, () => { /* the figure says why */ });
 
@@ -25,7 +28,7 @@ function start() {
 
   const problems = [];
   for (const spec of table.filter(inLinks)) {
-    const key = query.has(spec.url) ? spec.url : query.has(spec.name) ? spec.name : null;
+    const key = keyIn(query, spec);
     if (key === null) continue;
     const raw = query.get(key);
     try {
@@ -49,10 +52,13 @@ function start() {
     urlTimer = setTimeout(() => {
       const next = new URLSearchParams();
       for (const spec of table.filter(inLinks)) {
-        const value = element[propertyName(spec.name)];
+        // Spheres placed by hand are read as the text their attribute holds (`sphereList` is a list).
+        const value = spec.kind === 'spheres'
+          ? spellingsOf(spec.name).map((n) => element.getAttribute(n)).find((v) => v !== null) ?? ''
+          : element[propertyName(spec.name)];
         if (value === parseParameter(spec.name, spec.default)) continue;
         // Hand-placed spheres ride in the link for small scenes; larger ones go in a scene file.
-        if (spec.name === 'balls' && value.split(';').length > MAX_LINK_SPHERES) continue;
+        if (spec.kind === 'spheres' && value.split(';').length > MAX_LINK_SPHERES) continue;
         const text = typeof value === 'boolean' ? (value ? '1' : '0') : String(value);
         next.set(spec.url, text);
       }

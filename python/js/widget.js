@@ -12,11 +12,14 @@
 // Those calls are made through `quietly`, so a host without them still gets a working figure.
 
 import '../../www/metaballs-view.js';
-import { TABLE } from '../../www/lib/attributes.js';
-import { propertyName } from '../../www/lib/engine.js';
+import { canonical, nameOfKind, propertyName, rowOf, TABLE } from '../../www/lib/core/table.js';
+import { spheresText } from '../../www/lib/features/scene-files.js';
+
+// The setting that holds spheres placed by hand, as text.
+const SPHERE_LIST = nameOfKind('spheres');
 
 // The trait of an attribute in Python (`max-pixel-ratio` → `max_pixel_ratio`).
-const traitName = (name) => name.replace(/-/g, '_');
+const traitName = (name) => rowOf(name)?.python ?? name.replace(/-/g, '_');
 // Where each build's WebAssembly sits in a folder laid out as dist/ (and in the wheel's static/ folder).
 const WASM_FILES = { webgpu: 'pkg/metaballs_bg.wasm', webgl2: 'pkg-webgl/metaballs_bg.wasm' };
 // How often the statistics (triangles, frame rate) are sent back, in ms.
@@ -59,12 +62,6 @@ function tellWasmSources(model) {
     return fromKernel(model, build).catch(() => beside(build));
   };
   View.wasmSources = { webgpu: source('webgpu'), webgl2: source('webgl2') };
-}
-
-/** The spheres (as `sphereList` gives them: center, radius, velocity, charge) as the `balls` attribute
- * writes them: a subtracting sphere (charge −1) with a negative radius. */
-export function ballsText(list) {
-  return list.map((s) => [...s.center, (s.charge ?? 1) < 0 ? -s.radius : s.radius, ...(s.velocity ?? [])].join(',')).join(';');
 }
 
 // What Python may ask the figure (`Metaballs.save_scene()` and the rest), by the element's method names.
@@ -130,41 +127,40 @@ function render({ model, el }) {
   // Python → figure: a changed trait becomes the attribute. A value the figure refuses (it says why in
   // the figure; it reads attributes once its WebAssembly is there) goes back to the one it keeps, so that
   // Python reads what is drawn.
+  // The spheres go to Python as the list the figure gives (`sphereList`); a list set by Python places
+  // them by hand, while one the figure reports does not.
+  let reporting = false;
   const listeners = TABLE.map(({ name }) => {
     const event = `change:${traitName(name)}`;
-    const listener = () => write(figure, name, model.get(traitName(name)));
+    const listener = () => {
+      const value = model.get(traitName(name));
+      if (name === SPHERE_LIST && (reporting || (Array.isArray(value) && !value.length))) return;
+      write(figure, name, value);
+    };
     model.on(event, listener);
     return [event, listener];
   });
-  // Set by Python (not sent back from the figure): the spheres are placed by hand.
-  let reporting = false;
-  const spheresChanged = () => {
-    const list = model.get('sphere_list');
-    if (!reporting && Array.isArray(list) && list.length) figure.setAttribute('balls', ballsText(list));
-  };
   const reportSpheres = () => {
     reporting = true;
     try {
-      model.set('sphere_list', figure.sphereList);
+      model.set(traitName(SPHERE_LIST), figure.sphereList);
     } finally {
       reporting = false;
     }
   };
-  model.on('change:sphere_list', spheresChanged);
-  listeners.push(['change:sphere_list', spheresChanged]);
 
   // Figure → Python: every setting changed inside it (controls, gestures), and the spheres.
   const changed = (event) => {
     const name = TABLE.find((p) => propertyName(p.name) === event.detail.property)?.name;
     if (!name || model.get(traitName(name)) === event.detail.value) return;
-    model.set(traitName(name), event.detail.value);
-    if (['spheres', 'seed', 'balls'].includes(name)) reportSpheres();
+    if (name !== SPHERE_LIST) model.set(traitName(name), event.detail.value);
+    if (['spheres', 'seed', SPHERE_LIST].includes(name)) reportSpheres();
     quietly(() => model.save_changes());
   };
   figure.addEventListener('metaballs-change', changed);
   const refused = (event) => {
-    const name = event.detail?.attribute;
-    const kept = name && TABLE.some((p) => p.name === name) ? figure[propertyName(name)] : undefined;
+    const name = event.detail?.attribute && canonical(event.detail.attribute);
+    const kept = name && rowOf(name) ? figure[propertyName(name)] : undefined;
     if (kept === undefined || String(model.get(traitName(name))) === String(kept)) return;
     model.set(traitName(name), kept);
     quietly(() => model.save_changes());
@@ -181,7 +177,7 @@ function render({ model, el }) {
     const sent = { triangles: stats.triangles ?? 0, fps: Math.round((stats.fps ?? 0) * 10) / 10, adapter: stats.adapter ?? '' };
     if (Object.entries(sent).every(([k, v]) => model.get(k) === v)) return;
     for (const [k, v] of Object.entries(sent)) model.set(k, v);
-    if (!(model.get('sphere_list')?.length)) reportSpheres();
+    if (!(model.get(traitName(SPHERE_LIST))?.length)) reportSpheres();
     quietly(() => model.save_changes());
   }, STATS_EVERY_MS);
 
@@ -196,9 +192,10 @@ function render({ model, el }) {
   };
 }
 
-// Writes a trait's value as its attribute (`true`/`false` for switches, which the table accepts).
+// Writes a trait's value as its attribute (`true`/`false` for switches, which the table accepts; a
+// list of spheres as their text).
 function write(figure, name, value) {
-  figure.setAttribute(name, String(value));
+  figure.setAttribute(name, Array.isArray(value) ? spheresText(value) : String(value));
 }
 
 export default { initialize, render };

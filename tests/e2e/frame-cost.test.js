@@ -1,10 +1,10 @@
-// The guard's estimate of a frame's time (www/lib/frame-cost.js), in Node: it follows frames that are
+// The guard's estimate of a frame's time (www/lib/features/frame-cost.js), in Node: it follows frames that are
 // slow for a while, and is not ruled by one slow frame, by a stalled half second, or by the first frames
 // of a renderer (which build its pipelines and buffers).
 
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { CostGuard, FrameCost, frameWork } from '../../www/lib/frame-cost.js';
+import { CostGuard, FrameCost, frameWork } from '../../www/lib/features/frame-cost.js';
 
 // The parts of a figure's shadow root the guard writes to.
 function fakeRoot() {

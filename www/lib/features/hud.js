@@ -1,9 +1,10 @@
 // The figure's statistics: frames per second, frame time, triangles, adapter and mesher (GPU or CPU
 // meshing), with level of detail the effective resolution and each level's blocks and triangles, with
-// color_by=error or quality the mesh's distance to the exact surface and its shape histogram, and a
+// color-by=error or quality the mesh's distance to the exact surface and its shape histogram, and a
 // warning when the triangle budget stays full. Figures update twice a second from the GPU's
 // asynchronous reports.
 
+import { hub } from '../engine/hub.js';
 import { levelColor } from './legends.js';
 
 // Made on first use: a number format costs tens of milliseconds to set up, not to be paid at import.
@@ -11,15 +12,47 @@ let numberFormat = null;
 const formatNumber = (n) => (numberFormat ??= new Intl.NumberFormat('en')).format(n);
 
 export class Hud {
-  /** Writes into the readouts of `root` (the element's shadow root). */
-  constructor(root) {
-    this.root = root;
+  static attributes = ['hud'];
+  #ctx;
+
+  /** Writes into the readouts of the figure's shadow root. */
+  constructor(ctx) {
+    this.#ctx = ctx;
+    this.root = ctx.root;
     this.frames = 0;
     this.since = 0;
     this.overflows = 0;
     this.stats = { triangles: 0, fps: 0, frameTime: 0, adapter: '', mesher: '', overflowed: false, lod: null, error: null, quality: null, topology: null, renderScale: 1 };
     this.adapterLabel = '';
   }
+
+  changed(name, value) { this.root.getElementById('hud').hidden = value !== 'on'; }
+
+  loaded() { this.root.getElementById('hud').hidden = this.#ctx.state.hud !== 'on'; }
+
+  /** Very small figures start with their statistics folded, like the panel. */
+  firstStart() {
+    const width = this.#ctx.element.clientWidth;
+    this.root.querySelector('#hud details').open = !(width > 0 && width < 300);
+  }
+
+  started() { this.setAdapter(hub.adapter?.label ?? 'WebGPU'); }
+
+  scaled(scale, width, height) { this.setScale(scale, width, height); }
+
+  frameDrawn() { this.countFrame(); }
+
+  /** Every animation frame: the readouts, and the frame times measured for the features that use them. */
+  afterTick(now, view, { animating }) {
+    const since = this.since;
+    const frameMs = this.update(now, view);
+    if (frameMs) this.#ctx.each('timed', { since, frameMs, animating });
+  }
+
+  /** True once the statistics read back are of frame `frame` or later. */
+  statsOf(view, frame) { return this.readStats(view) >= frame; }
+
+  shape(shape) { this.showTopology(shape); }
 
   /** The adapter's name (`WebGPU · google swiftshader`, `WebGL2`); the mesher in use follows it. */
   setAdapter(label) {
@@ -103,7 +136,7 @@ export class Hud {
   }
 
   /**
-   * The mesh's error and shape (with color_by=error or quality): `[frame, rms, max, vertices, bins…]`
+   * The mesh's error and shape (with color-by=error or quality): `[frame, rms, max, vertices, bins…]`
    * from the view, or empty.
    */
   #showMeasures(m) {

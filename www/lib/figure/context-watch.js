@@ -5,7 +5,7 @@
 // minute with "Try again". The events only ever fire on a canvas drawn with WebGL, so every figure
 // watches its canvas.
 
-import { LossCount } from './losses.js';
+import { LossCount } from '../engine/losses.js';
 
 export class ContextWatch {
   #losses = new LossCount();

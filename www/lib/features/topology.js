@@ -1,20 +1,19 @@
 // The surface's shape, live: how many blobs, their genus, closed and manifold. The view works it out
 // from the CPU mesher's mesh, or from one readback of the GPU's mesh, only when asked: every second
-// while the statistics show, and after every frame while `pause_on=merge` waits for two blobs to touch
+// while the statistics show, and after every frame while `pause-on=merge` waits for two blobs to touch
 // (the animation holds still until each answer is in, so it stops at the very frame they merge).
 // Merges and splits are announced in the figure's live region.
 
 const HUD_EVERY_MS = 1000;
 
 export class TopologyWatch {
-  #hooks;
+  #ctx;
   #pending = null;
   #last = null;
   #askedAt = -Infinity;
 
-  /** `hooks`: view(), state(), hud, announce(text), pause(). */
-  constructor(hooks) {
-    this.#hooks = hooks;
+  constructor(ctx) {
+    this.#ctx = ctx;
   }
 
   /** The newest answer: { components, genus, closed, manifold }, or null. */
@@ -22,9 +21,11 @@ export class TopologyWatch {
     return this.#last;
   }
 
-  /** True while the animation must wait for an answer (`pause_on=merge` with a check in flight). */
+  /** True while the animation must wait for an answer (`pause-on=merge` with a check in flight). */
+  holds() { return this.holding; }
+
   get holding() {
-    return this.#pending !== null && this.#hooks.state().pause_on === 'merge';
+    return this.#pending !== null && this.#ctx.state['pause-on'] === 'merge';
   }
 
   /** The view changed (rebuilt, new spheres): the next answer starts a new count. */
@@ -32,10 +33,10 @@ export class TopologyWatch {
     this.#last = null;
   }
 
-  /** Called after each frame drawn: asks when `pause_on` or the statistics want an answer. */
-  afterFrame(now) {
-    const state = this.#hooks.state();
-    const watching = state.pause_on === 'merge' && !state.paused;
+  /** Called after each frame drawn: asks when `pause-on` or the statistics want an answer. */
+  frameDrawn(now) {
+    const state = this.#ctx.state;
+    const watching = state['pause-on'] === 'merge' && !state.paused;
     const showing = state.hud === 'on' && now - this.#askedAt >= HUD_EVERY_MS;
     if (this.#pending || !(watching || showing)) return;
     this.#askedAt = now;
@@ -44,7 +45,7 @@ export class TopologyWatch {
 
   /** Asks the view now; resolves to the answer. */
   check() {
-    const view = this.#hooks.view();
+    const view = this.#ctx.view;
     if (!view) return Promise.reject(new Error('the figure is not drawing'));
     this.#pending ??= view.topology().then((a) => this.#take(a)).finally(() => {
       this.#pending = null;
@@ -56,13 +57,13 @@ export class TopologyWatch {
     const shape = { components, genus, closed: closed === 1, manifold: manifold === 1 };
     const before = this.#last;
     this.#last = shape;
-    this.#hooks.hud.showTopology(shape);
+    this.#ctx.each('shape', shape);
     if (before && before.components !== components) {
       const blobs = (n) => `${n} blob${n === 1 ? '' : 's'}`;
-      const stop = components < before.components && this.#hooks.state().pause_on === 'merge';
+      const stop = components < before.components && this.#ctx.state['pause-on'] === 'merge';
       // Paused first, so that the merge is what the live region says last.
-      if (stop) this.#hooks.pause();
-      this.#hooks.announce(`${blobs(before.components)} → ${components}${stop ? ', paused where they touch' : ''}`);
+      if (stop) this.#ctx.set('paused', true);
+      this.#ctx.each('announce', `${blobs(before.components)} → ${components}${stop ? ', paused where they touch' : ''}`);
     }
     return shape;
   }

@@ -1,19 +1,25 @@
 // A figure's renderer from start to end: made when the figure first comes near the viewport (on the
 // page's shared WebGPU device, or a WebGL2 device of its own), fed the changed settings before each
 // frame, drawn only while on screen, sized with its canvas, let go of when the GPU is lost and made
-// again from the figure's own state.
+// again from the figure's own state. Each frame is drawn here; what comes before and after it
+// (background, sync, statistics, print pictures, overlays) is the features' (see core/context.js).
 
-import { hub, wasmModule, within, WEBGL_WAIT } from './engine.js';
-import { applySetting, isRendererSetting } from './view-settings.js';
-import { picturesTaken } from './figure-look.js';
+import { nameOfKind, RENDERER } from '../core/table.js';
+import { ONE_FRAME, PICTURE_FRAMES, SETTLE_FRAMES } from '../core/redraw.js';
+import { hub, WEBGL_WAIT } from '../engine/hub.js';
+import { wasmModule, within } from '../engine/wasm.js';
+import { releaseDelay } from '../engine/page-watch.js';
+import { applySetting } from './renderer-settings.js';
 import { ContextWatch } from './context-watch.js';
-import { messageBox } from './element-dom.js';
-import { FigureSize } from './figure-size.js';
-import { makeView } from './view-start.js';
-import { releaseDelay } from './page-watch.js';
+import { messageBox } from './dom.js';
+import { makeView } from './start.js';
+
+// The setting that holds spheres placed by hand (the scene's feature places them).
+const SPHERES = nameOfKind('spheres');
 
 export class FigureFrames {
-  #f;
+  #ctx;
+  #loaded;
   #view = null;
   // The device this figure draws with: the hub's shared WebGPU one, or a WebGL2 one of its own.
   #gpu = null;
@@ -22,8 +28,6 @@ export class FigureFrames {
   #onScreen = false;
   #failed = false;
   #software = false;
-  // The sync leader's frame whose spheres this figure last took.
-  #ledFrame = -1;
   #savedSpheres = null;
   #dirty = 0;
   #stepRequested = false;
@@ -34,24 +38,23 @@ export class FigureFrames {
   #printOnce = false;
   // Callers waiting for the next frame (`nextFrame()`): it is drawn even off screen or when still.
   #frameWaiters = [];
-  #picturesSeen = 0;
   // The canvas's WebGL2 context, lost and given back.
   #context;
-  // The canvas's size, with the render scale that follows the frame times.
+  // The canvas's size, with the render scale that follows the frame times (a FigureSize).
   #size;
   #restTimer = 0;
   #message;
 
   /**
-   * `figure`: { element, root, canvas, settings (a FigureState), guard, hud, look (a FigureLook),
-   * editor(), io(), inspector(), notice(text, ms), showPanel(), buildPanel(), emit(type, detail),
-   * leader() (the sync group's leading FigureFrames, or null), loaded() (resolves once the element has read its attributes) }.
+   * `ctx`: the figure's context; `size`: its FigureSize; `loaded()` resolves once the element has
+   * read its attributes.
    */
-  constructor(figure) {
-    this.#f = figure;
-    this.#message = messageBox(figure.root);
-    this.#size = new FigureSize(figure.canvas, () => figure.settings.state, figure.hud);
-    this.#context = new ContextWatch(figure.canvas, {
+  constructor(ctx, size, loaded) {
+    this.#ctx = ctx;
+    this.#loaded = loaded;
+    this.#size = size;
+    this.#message = messageBox(ctx.root);
+    this.#context = new ContextWatch(ctx.canvas, {
       lost: (reason) => this.suspend(reason, 'The drawing context was lost; starting again…'),
       restored: () => this.resume(),
       stop: (count) => this.fail('The drawing context keeps failing',
@@ -71,7 +74,7 @@ export class FigureFrames {
   get savedSpheres() { return this.#savedSpheres; }
   set savedSpheres(packed) { this.#savedSpheres = packed; }
 
-  /** Asks for at least `frames` more frames even while paused. */
+  /** Asks for at least `frames` more frames even while paused (0: the next animation frame only). */
   redraw(frames) {
     this.#dirty = Math.max(this.#dirty, frames);
     hub.requestFrame();
@@ -134,11 +137,11 @@ export class FigureFrames {
 
   start(forPrint = false) {
     if (this.#view || this.#starting || this.#failed || this.#context.lost || !(this.#near || forPrint)) return;
-    if (!this.#f.element.isConnected) return;
+    if (!this.#ctx.element.isConnected) return;
     // The panel follows what the device allows (its largest grid, compute shaders): a figure that
     // starts builds it just after its first frame, one that cannot start as soon as it knows.
     this.#starting = this.#create().then((started) => {
-      if (!started && this.#f.element.isConnected && wasmModule()) this.#f.buildPanel();
+      if (!started && this.#ctx.element.isConnected && wasmModule()) this.#ctx.each('deviceKnown');
     }).finally(() => { this.#starting = null; });
   }
 
@@ -146,11 +149,11 @@ export class FigureFrames {
   get starting() { return this.#starting !== null; }
 
   async #create() {
-    const f = this.#f;
+    const ctx = this.#ctx;
     let gpu;
     try {
-      await f.loaded();
-      gpu = await hub.deviceFor(f.element, f.canvas);
+      await this.#loaded();
+      gpu = await hub.deviceFor(ctx.element, ctx.canvas);
     } catch (error) {
       this.fail(error.title, error.message, { retry: Boolean(hub.stopped) });
       return false;
@@ -160,22 +163,19 @@ export class FigureFrames {
       this.#message.show('Paused', WEBGL_WAIT);
       return false;
     }
-    if (!f.element.isConnected || this.#view) {
-      hub.giveBack(f.element, gpu);
+    if (!ctx.element.isConnected || this.#view) {
+      hub.giveBack(ctx.element, gpu);
       return false;
     }
     this.#gpu = gpu;
     this.#software = Boolean(hub.adapter?.software || gpu.is_fallback());
-    this.#size.software = this.#software;
-    this.#size.fit();
     try {
-      this.#view = makeView(f, gpu, this.#software);
+      this.#view = makeView(ctx, gpu, this.#software);
     } catch (error) {
       this.fail('The figure could not start', error.message);
       return false;
     }
-    f.look.forgetBackground();
-    f.guard.rendererStarted();
+    ctx.each('started', this.#view);
     this.apply();
     if (this.#savedSpheres) {
       try {
@@ -185,14 +185,14 @@ export class FigureFrames {
       }
       this.#savedSpheres = null;
     }
-    f.editor().reset();
+    ctx.each('restored', this.#view);
     this.#message.hide();
-    this.#dirty = 3;
+    this.#dirty = SETTLE_FRAMES;
     this.#last = 0;
     // Started near the screen but not on it: it lets go again unless it comes on screen.
     if (!this.#onScreen) this.setOnScreen(false);
     hub.requestFrame();
-    requestAnimationFrame(() => setTimeout(() => f.element.isConnected && f.buildPanel()));
+    requestAnimationFrame(() => setTimeout(() => ctx.element.isConnected && ctx.each('deviceKnown')));
     return true;
   }
 
@@ -203,10 +203,10 @@ export class FigureFrames {
       this.#view.free();
       this.#view = null;
       try {
-        this.#f.canvas.getContext('webgpu')?.unconfigure();
+        this.#ctx.canvas.getContext('webgpu')?.unconfigure();
       } catch { /* the context is gone with the device, or the canvas draws with WebGL2 */ }
     }
-    hub.giveBack(this.#f.element, this.#gpu);
+    hub.giveBack(this.#ctx.element, this.#gpu);
     this.#gpu = null;
   }
 
@@ -218,7 +218,7 @@ export class FigureFrames {
       } catch { /* keep what was saved before */ }
     }
     this.release();
-    if (this.#near) this.#f.notice(text, 4000);
+    if (this.#near) this.#ctx.notice(text, 4000);
   }
 
   /** A new device is ready (or a retry was asked for): start again with the current state. */
@@ -236,7 +236,7 @@ export class FigureFrames {
     this.#failed = true;
     this.release();
     this.#message.show(title, text, retry);
-    this.#f.emit('metaballs-error', { message: `${title}: ${text}` });
+    this.#ctx.emit('metaballs-error', { message: `${title}: ${text}` });
   }
 
   // Pushes the changed values into the renderer. A value it refuses (a resolution beyond the device)
@@ -244,36 +244,27 @@ export class FigureFrames {
   apply() {
     const view = this.#view;
     if (!view) return;
-    const settings = this.#f.settings;
+    const ctx = this.#ctx;
+    const { settings } = ctx;
     const s = settings.state;
     for (const name of settings.changed) {
-      if (name === 'balls') {
-        settings.applied.balls = s.balls;
-        this.#f.io().applyBalls(s.balls);
+      if (name === SPHERES) {
+        settings.applied[name] = s[name];
+        ctx.each('spheresGiven', s[name]);
         continue;
       }
-      if (!isRendererSetting(name)) continue;
+      if (!RENDERER.has(name)) continue;
       try {
-        within(this.#f.element, () => applySetting(view, name, s));
+        within(ctx.element, () => applySetting(view, name, s));
         settings.applied[name] = s[name];
       } catch (error) {
-        this.#f.notice(`${name} ${s[name]}: ${error.message}`);
-        s[name] = settings.applied[name];
-        settings.reflect(name);
-        this.#f.showPanel();
+        ctx.notice(`${name} ${s[name]}: ${error.message}`);
+        ctx.revert(name);
       }
     }
-    if (settings.changed.has('display') || settings.changed.has('compare')) this.#exactChanged();
-    if (settings.changed.size) this.#dirty = Math.max(this.#dirty, 3);
+    if (settings.changed.size) this.#dirty = Math.max(this.#dirty, SETTLE_FRAMES);
     settings.changed.clear();
   }
-
-  // The exact surface is ray cast per pixel: on a software adapter at a lower pixel ratio, said once.
-  #exactChanged() {
-    this.resize();
-    this.#size.exactChanged((text) => this.#f.notice(text, 4000));
-  }
-
 
   /**
    * One animation frame of the page: draws if the figure is on screen and has something to show.
@@ -281,7 +272,7 @@ export class FigureFrames {
    */
   tick(now) {
     const view = this.#view;
-    const f = this.#f;
+    const ctx = this.#ctx;
     const asked = this.#frameWaiters.length > 0;
     const drawing = this.#onScreen || this.#printOnce || asked;
     if (!view || this.#failed || this.#held || !drawing || document.visibilityState === 'hidden') {
@@ -289,44 +280,35 @@ export class FigureFrames {
     }
     // On screen but not shown (a slide of a deck that is not the current one, `visibility: hidden`):
     // nothing is drawn, and the figure keeps watching for its turn.
-    if (!this.#printOnce && !asked && !f.element.checkVisibility({ visibilityProperty: true, opacityProperty: true })) {
+    if (!this.#printOnce && !asked && !ctx.element.checkVisibility({ visibilityProperty: true, opacityProperty: true })) {
       return true;
     }
-    const state = f.settings.state;
+    const state = ctx.state;
     let animating = false;
     try {
       this.apply();
-      const background = f.look.backgroundChange(now);
-      if (background) {
-        view.set_background(...background);
-        this.#dirty = Math.max(this.#dirty, 2);
-      }
+      // The page's colours, a sync leader's spheres: what changes the picture before the frame.
+      ctx.each('beforeFrame', now, view);
       const forPrint = this.#printOnce;
       if (forPrint) {
         this.#printOnce = false;
-        this.#dirty = Math.max(this.#dirty, 1);
+        this.#dirty = Math.max(this.#dirty, ONE_FRAME);
       }
       const elapsed = this.#last ? Math.min(Math.max(now - this.#last, 0) / 1000, 0.1) : 0;
       this.#last = now;
-      // A figure in a sync group that does not lead takes the leader's spheres instead of animating.
-      const leader = f.leader();
-      if (leader?.view && leader.framesDrawn !== this.#ledFrame) {
-        this.#ledFrame = leader.framesDrawn;
-        view.set_spheres(leader.view.spheres());
-        this.#dirty = Math.max(this.#dirty, 1);
-      }
-      // A sphere being dragged holds the animation still.
-      // So does a shape check that pause_on=merge waits for.
-      animating = !leader && !state.paused && state.speed > 0 && !f.editor().dragging && !f.topology().holding;
+      // A sphere being dragged, a shape check that pause-on waits for, or a sync leader holds the
+      // animation still.
+      animating = !state.paused && state.speed > 0 && !ctx.some('holds');
       if (animating || this.#dirty > 0 || this.#stepRequested || view.needs_redraw()) {
         const dt = animating ? elapsed * state.speed : this.#stepRequested ? 1 / 60 : 0;
         this.#stepRequested = false;
         const started = performance.now();
-        within(f.element, () => view.frame(dt));
-        const blocked = performance.now() - started;
+        within(ctx.element, () => view.frame(dt));
+        const blockedMs = performance.now() - started;
         this.#dirty = Math.max(0, this.#dirty - 1);
-        // The picture for print, taken in this task while the canvas holds the frame.
-        f.look.drawn(now, animating, this.#dirty === 0, forPrint);
+        const frame = { animating, settled: this.#dirty === 0, forPrint, blockedMs };
+        // The picture for print is taken in this task, while the canvas holds the frame.
+        ctx.each('drawn', now, frame);
         for (const resolve of this.#frameWaiters.splice(0)) resolve();
         if (forPrint && !this.#onScreen) {
           // Not a frame anyone saw: only the picture counts. A figure not near the viewport lets go
@@ -334,31 +316,18 @@ export class FigureFrames {
           if (!this.#near) this.release();
           return false;
         }
-        f.guard.frameDrawn(f.settings.applied, now, blocked);
         this.#framesDrawn += 1;
-        f.hud.countFrame();
-        f.topology().afterFrame(now);
+        ctx.each('frameDrawn', now, frame);
       } else {
         view.poll();
-        // The picture for print is older than the frame on screen: draw once more and take it.
-        if (f.look.printStale) this.#dirty = 1;
+        ctx.each('idle', now, view);
       }
     } catch (error) {
       this.fail('The renderer stopped', error?.message ?? String(error));
       return false;
     }
-    const since = f.hud.since;
-    const frameMs = f.hud.update(now, view);
-    if (frameMs) {
-      // Frame times measured while a picture for print was taken (on any figure: it waits for the
-      // GPU) say nothing about the settings.
-      const pictures = picturesTaken();
-      if (!state.paused && pictures === this.#picturesSeen) f.guard.framesTimed(f.settings.applied, since, frameMs);
-      this.#picturesSeen = pictures;
-      if (animating && this.#size.observe(frameMs)) this.resize();
-    }
-    f.inspector().follow(now);
-    if (state.edit) f.editor().draw();
+    // Statistics, timings, the inspector and the editor's rings follow the frame.
+    ctx.each('afterTick', now, view, { animating });
     const error = view.gpu_error();
     if (error) {
       this.fail('The GPU reported an error', error);
@@ -377,11 +346,10 @@ export class FigureFrames {
     try {
       this.#view.resize(...size);
     } catch (error) {
-      this.#f.notice(error.message);
+      this.#ctx.notice(error.message);
     }
-    this.redraw(2);
+    this.redraw(PICTURE_FRAMES);
   }
-
 
   /**
    * Resolves after a frame of the current settings has been drawn: the renderer is started and a frame
@@ -393,7 +361,7 @@ export class FigureFrames {
     await this.ready();
     await new Promise((resolve) => {
       this.#frameWaiters.push(resolve);
-      this.#dirty = Math.max(this.#dirty, 1);
+      this.#dirty = Math.max(this.#dirty, ONE_FRAME);
       hub.requestFrame();
     });
     // Its figures (the triangle count) come back from the GPU once it has finished the frame.
@@ -401,7 +369,7 @@ export class FigureFrames {
     const frame = view?.frames_rendered() ?? 0;
     for (let tries = 0; view && view === this.#view && tries < 50; tries += 1) {
       view.poll();
-      if (this.#f.hud.readStats(view) >= frame) return;
+      if (this.#ctx.some('statsOf', view, frame)) return;
       await view.work_done();
       await new Promise((r) => setTimeout(r, 10));
     }
@@ -423,8 +391,8 @@ export class FigureFrames {
       return await f(this.#view);
     } finally {
       this.#held = false;
-      for (const name of ['spheres', 'resolution', 'iso', 'seed', 'mesher']) this.#f.settings.changed.add(name);
-      this.#dirty = 3;
+      for (const name of [...RENDERER, SPHERES]) this.#ctx.settings.changed.add(name);
+      this.#dirty = SETTLE_FRAMES;
       hub.requestFrame();
     }
   }

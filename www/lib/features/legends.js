@@ -58,7 +58,7 @@ function classes(names) {
 
 /** The key for the view `state` shows, or null: triangle colouring first, then the cells' classes. */
 export function colorKey(state, classNames) {
-  switch (state.color_by) {
+  switch (state['color-by']) {
     case 'area': return ramp('0', '½ cell face');
     case 'quality': return ramp('sliver', 'equilateral');
     case 'case': return classes(classNames);

@@ -5,7 +5,11 @@
 // it, and on empty space adds one.
 // Everything is computed by the wasm view on the CPU from the sphere list: no mesh is read back.
 
-const RADIUS = { min: 0.05, max: 0.9, step: 0.01 };
+import { LIMITS, rowOf } from '../core/table.js';
+import { ONE_FRAME } from '../core/redraw.js';
+
+// The radii the scene accepts, and the slider's step.
+const RADIUS = { min: LIMITS.radius[0], max: LIMITS.radius[1], step: 0.01 };
 
 function make(tag, properties = {}, ...children) {
   const node = Object.assign(document.createElement(tag), properties);
@@ -14,6 +18,8 @@ function make(tag, properties = {}, ...children) {
 }
 
 export class SphereEditor {
+  static attributes = ['edit'];
+  #ctx;
   #root;
   #hooks;
   #hovered = -1;
@@ -24,15 +30,46 @@ export class SphereEditor {
   #box;
   #rings;
 
-  /**
-   * `hooks`: view() → the wasm view or null; scale() → device pixels per CSS pixel; edited() after
-   * every change to the spheres; redraw() for a frame without a change; notice(text).
-   */
-  constructor(root, hooks) {
-    this.#root = root;
-    this.#hooks = hooks;
-    this.#rings = root.getElementById('edit-overlay');
-    this.#box = root.getElementById('sphere-box');
+  constructor(ctx) {
+    this.#ctx = ctx;
+    this.#root = ctx.root;
+    // What the editor reaches: the wasm view, device pixels per CSS pixel, the figure after every
+    // change to the spheres (the scene's feature adopts them), a frame without a change, a notice.
+    this.#hooks = {
+      view: () => ctx.view,
+      scale: () => ctx.canvas.width / Math.max(1, ctx.canvas.clientWidth),
+      edited: () => ctx.each('spheresEdited'),
+      redraw: () => ctx.redraw(ONE_FRAME),
+      notice: (text) => ctx.notice(text),
+    };
+    this.#rings = ctx.$('edit-overlay');
+    this.#box = ctx.$('sphere-box');
+  }
+
+  changed(name, value) {
+    this.reset();
+    this.#ctx.canvas.classList.toggle('editing', value);
+  }
+
+  /** A sphere being dragged holds the animation still. */
+  holds() { return this.#dragging; }
+
+  afterTick() {
+    if (this.#ctx.state.edit) this.draw();
+  }
+
+  /** A new renderer, or spheres replaced: nothing stays selected. */
+  restored() { this.reset(); }
+
+  spheresReplaced() { this.reset(); }
+
+  controls() {
+    return {
+      edit: ({ element, builders }) => [builders.boolean('edit', rowOf('edit')), element('p', {
+        className: 'hint',
+        textContent: 'Drag a sphere to move it · Shift-click to add one · Delete removes · wheel: radius',
+      })],
+    };
   }
 
   /** The selected sphere's index, or -1. */

@@ -6,18 +6,11 @@
 // between frames is the figures' work together, and each lowers its own scale while that is over
 // budget. A still figure (paused, or at speed 0) draws at full scale.
 
+import { frameBudget } from '../engine/page-watch.js';
+
 /** The scales a figure steps through, from full down. */
 const STEPS = [1, 0.85, 0.7, 0.6, 0.5, 0.42, 0.35, 0.3, 0.25];
 
-/** Time between the page's frames the figures aim for, in milliseconds (about 33 fps). */
-export const FRAME_BUDGET_MS = 30;
-let budget = FRAME_BUDGET_MS;
-
-/** The page's frame budget now (tests force it slow or fast). */
-export const frameBudget = () => budget;
-export function setFrameBudget(ms) {
-  budget = Number.isFinite(ms) && ms > 0 ? ms : FRAME_BUDGET_MS;
-}
 
 export class RenderScale {
   #step = 0;
@@ -42,6 +35,7 @@ export class RenderScale {
       return false;
     }
     const before = this.value(floor);
+    const budget = frameBudget();
     if (frameMs > budget * 1.15 && before > floor) {
       const wanted = before * Math.sqrt(budget / frameMs);
       do this.#step += 1;

@@ -2,7 +2,7 @@
 // figure), the mesh as STL, OBJ or PLY, and PNG pictures at the canvas size or twice it. Checking and
 // encoding happen in the wasm; this module moves bytes between it and the browser.
 
-import { wasmModule } from './engine.js';
+import { wasmModule } from '../engine/wasm.js';
 
 /** Offers `blob` as a download called `name`. */
 export function download(blob, name) {

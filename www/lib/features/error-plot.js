@@ -3,7 +3,7 @@
 // drawing), then RMS and largest distance to the exact surface and the triangle count against cells
 // per axis, log-log, with the fitted slopes. Linear placement falls about as h², midpoints as h.
 
-import { wasmModule } from './engine.js';
+import { wasmModule } from '../engine/wasm.js';
 
 const RESOLUTIONS = [8, 12, 16, 24, 32, 48, 64];
 const PLACEMENTS = [
@@ -83,4 +83,39 @@ export function plotErrors(result) {
   const description = `Error against cells per axis, log-log. ${lines.join('; ')}; triangles grow with slope ${result.slopes.triangles?.toFixed(2)}.`;
   svg.setAttribute('aria-label', description);
   return { svg, description, lines };
+}
+
+/** The feature: the panel's "Error vs resolution" button and its plot. */
+export class ErrorPlot {
+  #ctx;
+
+  constructor(ctx) {
+    this.#ctx = ctx;
+  }
+
+  controls() {
+    return { 'error-plot': (panel) => this.#control(panel) };
+  }
+
+  #control({ element, makeButton }) {
+    const status = element('p', { className: 'hint', role: 'status' });
+    const plot = element('figure', { className: 'error-plot' });
+    const button = makeButton('error-plot', 'Error vs resolution',
+      'Mesh these spheres at 8³ to 64³ on the CPU and plot the distance to the exact surface', async () => {
+        button.disabled = true;
+        try {
+          const result = await sweepErrors(() => this.#ctx.view, (text) => { status.textContent = text; });
+          const { svg, lines } = plotErrors(result);
+          const caption = element('figcaption', {});
+          caption.innerHTML = '<span style="color:#4aa3ff">■</span> linear · <span style="color:#ff9f43">■</span> midpoint · solid RMS, dashed max<br>';
+          caption.append(lines.join(' · '), ` · triangles ∝ n^${result.slopes.triangles?.toFixed(2)}`);
+          plot.replaceChildren(svg, caption);
+        } catch (error) {
+          status.textContent = `The plot stopped: ${error?.message ?? error}`;
+        } finally {
+          button.disabled = false;
+        }
+      });
+    return [element('div', { className: 'buttons' }, button), status, plot];
+  }
 }

@@ -3,14 +3,12 @@
 // wheel zooms only while the figure has focus or with Ctrl held; otherwise it scrolls the page and a
 // one-line hint says how to zoom. Where `actions.grab` takes a press (a sphere under it, in edit
 // mode), the drag moves what it grabbed instead of the camera; on touch, a long press grabs (or, on
-// empty space, holds: the editor adds a sphere there).
-
-const PITCH_LIMIT = 89;
-const DISTANCE_RANGE = [1.5, 20];
+// empty space, holds: the editor adds a sphere there). The camera keeps its settings within their
+// ranges (the parameter table's).
 
 /**
  * Wires gestures on `surface` (the canvas) and keys on `host`. `camera` has get() → {yaw, pitch,
- * distance} and set(partial); `actions` has togglePause, reseed, resetView, step, hint(text),
+ * distance} and set(partial), which keeps each within its range; `actions` has togglePause, reseed, resetView, step, hint(text),
  * pick(x, y, event) (CSS pixels from the canvas's top left) and deselect, and for editing grab(x, y)
  * → a drag {move(x, y), end()} or null, hold(x, y) (a long touch on empty space) → true when it did
  * something, hover(x, y), leave(), wheel(deltaY) → true when it used the wheel, remove(), freeze() and charge().
@@ -21,12 +19,12 @@ export function wireCameraInput(host, surface, camera, actions) {
     const { yaw, pitch } = camera.get();
     camera.set({
       yaw: ((((yaw + dYaw + 180) % 360) + 360) % 360) - 180,
-      pitch: Math.max(-PITCH_LIMIT, Math.min(PITCH_LIMIT, pitch + dPitch)),
+      pitch: pitch + dPitch,
     });
   };
   const zoom = (factor) => {
     const { distance } = camera.get();
-    camera.set({ distance: Math.max(DISTANCE_RANGE[0], Math.min(DISTANCE_RANGE[1], distance * factor)) });
+    camera.set({ distance: distance * factor });
   };
 
   // One-finger vertical swipes scroll the page unless the figure has focus.

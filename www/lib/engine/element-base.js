@@ -1,17 +1,19 @@
 // What every <metaballs-view> on a page shares, as static members of the element's base class: the one
 // GPU device and what it holds, where the WebAssembly comes from, and the attributes the element
-// watches. Where the DOM is missing (a server-side build), the class still loads and is never defined.
+// watches (every parameter, under its name and its old spellings). Where the DOM is missing (a
+// server-side build), the class still loads and is never defined.
 
-import { hub, setWasmSources, wasmBytes, wasmHeapBytes } from './engine.js';
-import { NAMES } from './figure-state.js';
-import { frameBudget, setFrameBudget } from './render-scale.js';
-import { releaseDelay, setReleaseDelay } from './page-watch.js';
+import { SPELLINGS } from '../core/table.js';
+import { hub } from './hub.js';
+import { setWasmSources, wasmBytes, wasmHeapBytes } from './wasm.js';
+import { frameBudget, releaseDelay, setFrameBudget, setReleaseDelay } from './page-watch.js';
 
 const Base = globalThis.HTMLElement ?? class {};
 
 export class FigureBase extends Base {
+  /** Every parameter's name and the old spellings still accepted. */
   static get observedAttributes() {
-    return NAMES;
+    return SPELLINGS;
   }
 
   /** GPU devices alive on this page (all elements share one). */

@@ -1,9 +1,9 @@
 // What every figure on the page shares, made when the first one is connected (never at import): a
 // pair of observers (one starts elements as they come near the viewport, the other tells whether each
-// is on screen at all), the page's visibility and colour-scheme listeners, and how long a figure
-// off screen keeps its GPU memory.
+// is on screen at all), the page's visibility and colour-scheme listeners, how long a figure off
+// screen keeps its GPU memory, and the time between frames the figures aim for.
 
-import { hub } from './engine.js';
+import { hub } from './hub.js';
 
 let page = null;
 
@@ -13,6 +13,16 @@ let releaseAfter = RELEASE_AFTER_MS;
 export const releaseDelay = () => releaseAfter;
 export function setReleaseDelay(ms) {
   releaseAfter = Number.isFinite(ms) && ms >= 0 ? ms : RELEASE_AFTER_MS;
+}
+
+/** Time between the page's frames the figures aim for, in milliseconds (about 33 fps). */
+export const FRAME_BUDGET_MS = 30;
+let budget = FRAME_BUDGET_MS;
+
+/** The page's frame budget now (tests force it slow or fast). */
+export const frameBudget = () => budget;
+export function setFrameBudget(ms) {
+  budget = Number.isFinite(ms) && ms > 0 ? ms : FRAME_BUDGET_MS;
 }
 
 /** The page's shared observers and listeners (made on the first call). */

@@ -1,8 +1,13 @@
 // What a figure shows besides its frames: the poster before the first frame, a picture of its latest
 // frame for print (a WebGPU canvas prints blank), its accessible name, a polite announcement of what a
-// control did, and the background colours a page gives through CSS custom properties.
+// control did, and the background colours a page gives through CSS custom properties. `Look` is the
+// feature that keeps them up to date as the settings change and frames are drawn.
 
-import { TABLE } from './attributes.js';
+import { nameOfKind, rowOf } from '../core/table.js';
+import { ONE_FRAME, PICTURE_FRAMES } from '../core/redraw.js';
+
+// The setting that holds spheres placed by hand, as text (`;` between spheres).
+const SPHERE_LIST = nameOfKind('spheres');
 
 // A figure refreshes its print picture at most this often while it animates (taking one waits for the
 // GPU to finish the frame); a still figure takes one once it has settled.
@@ -64,7 +69,7 @@ export class FigureLook {
   /** The accessible name: the author's `alt`, else what the figure shows. */
   name(state) {
     const cells = `${state.resolution}³ cells`;
-    const spheres = state.balls ? state.balls.split(';').length : state.spheres;
+    const spheres = state[SPHERE_LIST] ? state[SPHERE_LIST].split(';').length : state.spheres;
     const derived = `${spheres} sphere${spheres === 1 ? '' : 's'}, iso ${Number(state.iso.toFixed(2))}, `
       + `${cells}${state.display !== 'shaded' ? `, ${state.display}` : ''}`
       + `${state.paused ? ', paused' : ''}`;
@@ -77,7 +82,7 @@ export class FigureLook {
       this.announce(value ? 'paused' : 'playing');
       return;
     }
-    const label = (TABLE.find((p) => p.name === name)?.label ?? name).toLowerCase();
+    const label = (rowOf(name)?.label ?? name).toLowerCase();
     this.announce(typeof value === 'boolean' ? `${label} ${value ? 'on' : 'off'}` : `${label} ${value}`);
   }
 
@@ -143,5 +148,55 @@ export class FigureLook {
   forgetBackground() {
     this.#background = null;
     this.#styleAt = -Infinity;
+  }
+}
+
+/** The feature: the poster, the print picture, the accessible name and the page's colours. */
+export class Look extends FigureLook {
+  static attributes = ['poster', 'theme'];
+  #ctx;
+
+  constructor(ctx) {
+    super(ctx.element, ctx.root, ctx.canvas);
+    this.#ctx = ctx;
+    this.name(ctx.state);
+  }
+
+  changed(name, value) {
+    if (name === 'poster') this.setPoster(value, this.#ctx.frames.framesDrawn > 0);
+  }
+
+  refresh(state) { this.name(state); }
+
+  madeInside(name, value) { this.announceChange(name, value); }
+
+  /** The first start: a figure without a poster is drawn once while the page is idle, so it prints as a picture. */
+  firstStart() {
+    if (this.#ctx.state.poster) return;
+    const later = globalThis.requestIdleCallback ?? ((f) => setTimeout(f, 1000));
+    later(() => this.#ctx.element.isConnected && this.#ctx.frames.drawForPrint(), { timeout: 4000 });
+  }
+
+  /** The reader's colour scheme changed: a figure with `theme="auto"` follows it. */
+  schemeChanged() {
+    if (this.#ctx.state.theme !== 'auto') return;
+    this.#ctx.settings.changed.add('theme');
+    this.#ctx.redraw(0);
+  }
+
+  started() { this.forgetBackground(); }
+
+  beforeFrame(now, view) {
+    const background = this.backgroundChange(now);
+    if (!background) return;
+    view.set_background(...background);
+    this.#ctx.redraw(PICTURE_FRAMES);
+  }
+
+  drawn(now, frame) { super.drawn(now, frame.animating, frame.settled, frame.forPrint); }
+
+  // The picture for print is older than the frame on screen: draw once more and take it.
+  idle() {
+    if (this.printStale) this.#ctx.redraw(ONE_FRAME);
   }
 }

@@ -1,0 +1,67 @@
+// A figure's settings as the parameter table defines them, by canonical name: the values in effect,
+// the ones the renderer holds, the ones changed since the last frame, and which the author gave.
+// Attributes are read through the table's parser (`parse`, the wasm's, handed in by the element) and
+// written back, under the spelling the author used, without being taken in again.
+
+import { defaults, spellingsOf, TEXT_NAMES } from './table.js';
+
+export class FigureState {
+  /** The values in effect. */
+  state = defaults();
+  /** The values the renderer holds. */
+  applied = { ...this.state };
+  /** Names changed since the renderer last took them. */
+  changed = new Set();
+  /** Names the author or the person set (the others follow the adapter's defaults). */
+  given = new Set();
+  #element;
+  #parser;
+  #reflecting = false;
+
+  /** `parser(name, text)` reads a value or throws an Error saying what is accepted. */
+  constructor(element, parser) {
+    this.#element = element;
+    this.#parser = parser;
+  }
+
+  /** True while a value is being written back to its attribute (its callback must not take it in). */
+  get reflecting() { return this.#reflecting; }
+
+  /**
+   * Reads an attribute's text given under `spelling` (a name or an alias): `{ value }`, or
+   * `{ message }` saying what is wrong and what is kept.
+   */
+  parse(name, text, spelling = name) {
+    if (TEXT_NAMES.has(name)) return { value: text };
+    try {
+      return { value: this.#parser(name, text) };
+    } catch (error) {
+      return { message: `${spelling}="${text}": ${error.message}; keeping ${this.format(name)}` };
+    }
+  }
+
+  /** The value in effect, as an attribute would show it. */
+  format(name) {
+    const value = this.state[name];
+    return typeof value === 'string' ? `"${value}"` : String(value);
+  }
+
+  /** The spellings of `name` the element carries as attributes now. */
+  present(name) {
+    return spellingsOf(name).filter((spelling) => this.#element.hasAttribute(spelling));
+  }
+
+  /**
+   * Writes a value to its attribute without taking it in again: under each spelling the element
+   * carries, or the canonical name where it carries none.
+   */
+  reflect(name, value = this.state[name]) {
+    this.#reflecting = true;
+    try {
+      const spellings = this.present(name);
+      for (const spelling of spellings.length ? spellings : [name]) this.#element.setAttribute(spelling, String(value));
+    } finally {
+      this.#reflecting = false;
+    }
+  }
+}

@@ -1,0 +1,102 @@
+// The parameter table as the element reads it: every setting's canonical name, the old spellings still
+// accepted (aliases), its property, default, range, panel group and scope. The table itself
+// (attributes.js) is written from Rust by `metaballs manifest`, so the element knows its attributes,
+// defaults and ranges before the wasm arrives; nothing here names a setting.
+
+import { CONTROLS, LIMITS, TABLE } from '../attributes.js';
+
+export { CONTROLS, LIMITS, TABLE };
+
+/** Canonical attribute names, in panel order. */
+export const NAMES = TABLE.map((p) => p.name);
+
+// Each spelling of a parameter: its name, its short name in links and its older spellings.
+const spellings = (row) => [...new Set([row.name, row.url, ...(row.aliases ?? [])])];
+
+const ROWS = new Map();
+for (const row of TABLE) {
+  for (const spelling of spellings(row)) ROWS.set(spelling, row);
+}
+
+/** Every spelling an attribute may be given under: the names, short names and older spellings. */
+export const SPELLINGS = [...ROWS.keys()];
+
+/** The table's row for a name or any of its aliases, or undefined. */
+export const rowOf = (spelling) => ROWS.get(spelling);
+
+/** The canonical name of a name or alias (itself when unknown). */
+export const canonical = (spelling) => ROWS.get(spelling)?.name ?? spelling;
+
+/** The spellings of one parameter: its name first, then its short name and older spellings. */
+export const spellingsOf = (name) => {
+  const row = ROWS.get(name);
+  return row ? spellings(row) : [name];
+};
+
+const camel = (text) => text.replace(/[-_]([a-z])/g, (_, c) => c.toUpperCase());
+
+/** The element's property for a parameter (`max-pixel-ratio` → `maxPixelRatio`). */
+export const propertyName = (spelling) => ROWS.get(spelling)?.property ?? camel(spelling);
+
+/**
+ * Property spellings kept from earlier versions (`color_by`, `spot_angle`, `balls`): each spelling of a
+ * parameter and its Python name, read as a property as earlier versions did, where it differs from the
+ * row's own property. Maps the old property to the canonical name.
+ */
+export const OLD_PROPERTIES = new Map();
+for (const row of TABLE) {
+  for (const spelling of [...spellings(row), row.python]) {
+    const property = spelling.replace(/-([a-z])/g, (_, c) => c.toUpperCase());
+    if (property !== row.property) OLD_PROPERTIES.set(property, row.name);
+  }
+}
+for (const row of TABLE) OLD_PROPERTIES.delete(row.property);
+
+/** Attributes of plain text (a description, a URL): taken as written, even before the wasm arrives. */
+export const TEXT_NAMES = new Set(TABLE.filter((p) => p.kind === 'text').map((p) => p.name));
+
+/** Settings a renderer takes when it is made. */
+export const CREATION = new Set(TABLE.filter((p) => p.scope === 'creation').map((p) => p.name));
+
+/** Settings of the renderer: given when it is made, or applied after. */
+export const RENDERER = new Set(TABLE.filter((p) => p.scope === 'creation' || p.scope === 'renderer').map((p) => p.name));
+
+/** The name of the row of `kind` (the one setting of that kind: `spheres` for the sphere list). */
+export const nameOfKind = (kind) => TABLE.find((p) => p.kind === kind)?.name;
+
+/** The names the `controls` attribute can list, in panel order. */
+export const CONTROL_NAMES = CONTROLS.map((c) => c.name);
+
+/** The default values of every parameter, typed. */
+export function defaults() {
+  return Object.fromEntries(TABLE.map((p) => [p.name, p.value]));
+}
+
+/** The default value of one parameter, typed. */
+export const defaultOf = (name) => ROWS.get(name).value;
+
+/** The range a parameter accepts: [min, max]. */
+export const rangeOf = (name) => {
+  const row = ROWS.get(name);
+  return [row.min, row.max];
+};
+
+/** Keeps `value` within parameter `name`'s range. */
+export const clampTo = (name, value) => {
+  const [min, max] = rangeOf(name);
+  return Math.min(max, Math.max(min, value));
+};
+
+/**
+ * The id of a parameter's control in the panel: the name it had in earlier versions (its Python name
+ * where that is an older spelling or its short name, else its first older spelling, else its name), so
+ * that styles and scripts written against earlier panels still find it.
+ */
+export function controlId(name) {
+  const row = ROWS.get(name);
+  if (!row) return name;
+  const aliases = row.aliases ?? [];
+  if (aliases.includes(row.python)) return row.python;
+  if (aliases.length) return aliases[0];
+  return row.url === row.python ? row.python : row.name;
+}

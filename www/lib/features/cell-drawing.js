@@ -1,0 +1,73 @@
+// Small drawings of a cell (corners inside filled, triangles where the case puts them), for the cell
+// inspector's box and the gallery of the 15 case classes.
+
+import { classColor } from './legends.js';
+
+const SVG = 'http://www.w3.org/2000/svg';
+
+// An oblique view of the unit cube, `size` pixels square.
+function project([x, y, z], size) {
+  const s = size / 64;
+  return [s * (10 + 34 * x + 16 * z), s * (54 - 34 * y - 12 * z)];
+}
+
+/**
+ * A drawing of a cell: its edges, the triangles (edge-number triples) with vertex `t` along each edge
+ * (`t(e)`, 0.5 for the gallery), and its corners filled when inside.
+ */
+export function cellDrawing(cube, inside, triangles, t, { size = 64, color = '#e77661', label = '' } = {}) {
+  const svg = document.createElementNS(SVG, 'svg');
+  svg.setAttribute('viewBox', `0 0 ${size} ${size}`);
+  svg.setAttribute('width', String(size));
+  svg.setAttribute('height', String(size));
+  svg.setAttribute('role', 'img');
+  if (label) svg.setAttribute('aria-label', label);
+  const add = (name, attributes) => {
+    const node = document.createElementNS(SVG, name);
+    for (const [key, value] of Object.entries(attributes)) node.setAttribute(key, String(value));
+    svg.append(node);
+    return node;
+  };
+  const corner = (c) => project(cube.corners[c], size);
+  for (const [a, b] of cube.edges) {
+    const [p, q] = [corner(a), corner(b)];
+    add('line', { x1: p[0], y1: p[1], x2: q[0], y2: q[1], class: 'edge' });
+  }
+  const vertex = (e) => {
+    const [a, b] = cube.edges[e];
+    const [p, q] = [cube.corners[a], cube.corners[b]];
+    const f = t(e);
+    return project(p.map((v, i) => v + (q[i] - v) * f), size);
+  };
+  for (const triangle of triangles) {
+    const points = triangle.map((e) => vertex(e).map((v) => v.toFixed(1)).join(',')).join(' ');
+    add('polygon', { points, fill: color, class: 'triangle' });
+  }
+  for (let c = 0; c < 8; c += 1) {
+    const [x, y] = corner(c);
+    add('circle', { cx: x, cy: y, r: size / 18, class: inside.includes(c) ? 'inside' : 'outside' });
+    if (size >= 90) add('text', { x: x + 5, y: y - 4, class: 'corner-number' }).textContent = String(c);
+  }
+  return svg;
+}
+
+/** The gallery: one drawing per class, with its number, name and how many of the 256 cases it holds. */
+export function buildGallery({ classes, cube }) {
+  const list = document.createElement('div');
+  list.className = 'gallery';
+  for (const k of classes) {
+    const figure = document.createElement('figure');
+    figure.dataset.class = String(k.class);
+    const caption = document.createElement('figcaption');
+    caption.textContent = `${k.class} · ${k.name} (${k.cases} cases, ${k.triangleCount} △)`;
+    figure.append(
+      cellDrawing(cube, k.inside, k.triangles, () => 0.5, {
+        color: classColor(k.class), label: `class ${k.class}: ${k.name}`,
+      }),
+      caption,
+    );
+    list.append(figure);
+  }
+  return list;
+}
+

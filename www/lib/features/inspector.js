@@ -1,0 +1,151 @@
+// The cell inspector's box: what marching cubes decided in the selected cell, live as the spheres
+// move, with a drawing of the cell; and the gallery of the 15 case classes in the panel.
+
+import { PICTURE_FRAMES } from '../core/redraw.js';
+import { caseGallery } from '../engine/wasm.js';
+import { buildGallery, cellDrawing } from './cell-drawing.js';
+import { classColor } from './legends.js';
+
+// How often the inspector's figures are refreshed while the spheres move, in ms.
+const REFRESH_MS = 200;
+
+const format = (v, digits = 3) => (Math.abs(v) >= 1000 ? v.toExponential(2) : v.toFixed(digits));
+
+/**
+ * The cell inspector of one figure: selects cells in its wasm view and shows their reports in the box
+ * `#inspector`, with the gallery of case classes in the panel marking the inspected one.
+ */
+export class Inspector {
+  static attributes = ['edit'];
+  #ctx;
+  #box;
+  #report = null;
+  #shownAt = 0;
+  #gallery = null;
+  #shownClass = null;
+
+  constructor(ctx) {
+    this.#ctx = ctx;
+    this.#box = ctx.$('inspector');
+    this.#box.addEventListener('click', (e) => {
+      if (e.target.closest('.close')) this.deselect();
+    });
+  }
+
+  #cube() { return caseGallery().cube; }
+
+  // Entering or leaving edit mode lets go of the cell.
+  changed() { this.deselect(); }
+
+  afterTick(now) { this.follow(now); }
+
+  panelBuilt() { this.#gallery = null; }
+
+  controls() {
+    return { inspector: (panel) => this.#control(panel) };
+  }
+
+  // The hint, and the gallery of the 15 cases, drawn while the page is idle (or when opened first),
+  // not before the figure's first frame.
+  #control({ element, gallery }) {
+    const hint = element('p', { className: 'hint', textContent: 'Click the surface to inspect a cell (Esc to let go).' });
+    const cases = element('details', { className: 'cases' }, element('summary', { textContent: 'The 15 cases' }));
+    const fill = () => {
+      if (this.#gallery || !cases.isConnected) return;
+      this.#gallery = buildGallery(gallery);
+      cases.append(this.#gallery);
+      this.#markClass();
+    };
+    cases.addEventListener('toggle', fill, { once: true });
+    (globalThis.requestIdleCallback ?? setTimeout)(fill);
+    return [hint, cases];
+  }
+
+  #markClass() {
+    for (const figure of this.#gallery?.children ?? []) {
+      figure.classList.toggle('current', figure.dataset.class === String(this.#shownClass));
+    }
+  }
+
+  #onClass(k) {
+    this.#shownClass = k;
+    this.#markClass();
+  }
+
+  /** Selects the cell under canvas pixel (x, y) (device pixels), or nothing over the background. */
+  pick(x, y) {
+    const view = this.#ctx.view;
+    if (view) this.#update(view.pick_cell(x, y));
+  }
+
+  /** Selects cell (x, y, z); returns its report (null outside the grid or before the view starts). */
+  select(x, y, z) {
+    const view = this.#ctx.view;
+    if (view) this.#update(view.select_cell(x, y, z));
+    return this.#report;
+  }
+
+  /** Lets go of the cell. */
+  deselect() {
+    this.#ctx.view?.clear_selection();
+    if (this.#report) this.#update(null);
+  }
+
+  /** Refreshes the shown figures while the spheres move (a few times a second). */
+  follow(now) {
+    const view = this.#ctx.view;
+    if (view && this.#report !== null && now - this.#shownAt > REFRESH_MS) this.#update(view.inspect());
+  }
+
+  #update(report) {
+    this.show(report ?? null, this.#ctx.state.iso);
+    this.#ctx.redraw(PICTURE_FRAMES);
+    this.#ctx.emit('metaballs-inspect', { cell: this.#report });
+  }
+
+  /** The report shown, or null. */
+  get report() {
+    return this.#report;
+  }
+
+  /** Shows `report` (from `View.inspect`), or hides the box for null. */
+  show(report, iso) {
+    this.#report = report;
+    this.#shownAt = performance.now();
+    if (!report) {
+      this.#box.hidden = true;
+      this.#onClass(null);
+      return;
+    }
+    const [x, y, z] = report.cell;
+    const inside = [...report.corners.keys()].filter((c) => report.corners[c] > iso);
+    const t = new Map(report.edges.map((e) => [e.edge, e.t]));
+    const rows = report.corners.map((v, c) => {
+      const sign = v > iso ? '<b class="in">in</b>' : '<span class="out">out</span>';
+      return `<tr><td>${c}</td><td>${format(v)}</td><td>${sign}</td></tr>`;
+    }).join('');
+    const edges = report.edges.map((e) => {
+      const [a, b] = this.#cube().edges[e.edge];
+      const p = e.vertex.map((v) => v.toFixed(3)).join(', ');
+      return `<tr><td>${e.edge} (${a}–${b})</td><td>${e.t.toFixed(3)}</td><td>(${p})</td></tr>`;
+    }).join('');
+    const triangles = report.triangles.map((tri) => tri.join('–')).join(', ') || 'none';
+    this.#box.innerHTML = `
+      <header><h3>Cell (${x}, ${y}, ${z})</h3>
+        <button type="button" class="close" aria-label="Deselect the cell (Esc)">×</button></header>
+      <p>Case <b id="inspector-case">${report.case}</b> = <code>${report.bits}</code> (bit c: corner c inside)
+        · class <b id="inspector-class">${report.class}</b>, ${report.className}</p>
+      <div class="inspector-body">
+        <table class="corners"><thead><tr><th>corner</th><th>f</th><th>f &gt; ${format(iso, 2)}?</th></tr></thead>
+          <tbody>${rows}</tbody></table>
+        <div class="drawing"></div>
+      </div>
+      <p>Triangles (edges): ${triangles}</p>
+      <table class="crossings"><thead><tr><th>edge</th><th>t</th><th>vertex</th></tr></thead>
+        <tbody>${edges}</tbody></table>`;
+    this.#box.querySelector('.drawing').append(cellDrawing(this.#cube(), inside, report.triangles,
+      (e) => t.get(e) ?? 0.5, { size: 96, color: classColor(report.class), label: `case ${report.case}` }));
+    this.#box.hidden = false;
+    this.#onClass(report.class);
+  }
+}

@@ -1,0 +1,122 @@
+// The element's control panel, built from the parameter table for the controls an author lists
+// (`controls="iso,resolution"`, `all` or `none`), in the table's groups (Surface, Display, Teaching,
+// Light, Camera, Scene) that fold. A parameter gets the control of its kind (panel-controls.js); the
+// actions and the inspector, editor and plot are built by the features that own them (their
+// `controls()`). Compact and collapsible: small figures start with it folded, and it never takes more
+// than a third of the figure's width.
+
+import { CONTROL_NAMES, CONTROLS, rowOf } from '../core/table.js';
+import { hub } from '../engine/hub.js';
+import { colorKey } from './legends.js';
+import { caseGallery } from '../engine/wasm.js';
+import { controlBuilders, element, makeButton } from './panel-controls.js';
+
+const WITHOUT_COMPUTE = 'Needs WebGPU (compute shaders); this browser draws with WebGL2 and meshes on the CPU';
+
+/** The control names `list` (the `controls` value) asks for, in the table's order. */
+export function listedControls(list) {
+  if (list === 'all') return CONTROL_NAMES;
+  if (list === 'none' || !list) return [];
+  const wanted = new Set(list.split(','));
+  return CONTROL_NAMES.filter((name) => wanted.has(name));
+}
+
+export class Panel {
+  static attributes = ['controls'];
+  #ctx;
+  #built = false;
+  #updates = [];
+
+  constructor(ctx) {
+    this.#ctx = ctx;
+  }
+
+  /** True when the panel lists control `name`. */
+  lists(name) { return listedControls(this.#ctx.state.controls).includes(name); }
+
+  // The panel is first built when the figure starts (after the attributes are read).
+  changed() {
+    if (this.#built) this.build();
+  }
+
+  // A figure about to start builds its panel once it knows its device (after its first frame).
+  loaded() {
+    if (!this.#ctx.frames.starting) this.build();
+  }
+
+  deviceKnown() { this.build(); }
+
+  refresh(state) {
+    for (const update of this.#updates) update(state);
+  }
+
+  /** Builds the panel (emptied first) for the listed controls. */
+  build() {
+    const ctx = this.#ctx;
+    const { frames, state } = ctx;
+    const container = ctx.$('panel');
+    const names = new Set(listedControls(state.controls));
+    this.#built = true;
+    this.#updates = [];
+    container.replaceChildren();
+    container.hidden = names.size === 0;
+    ctx.each('panelBuilt');
+    if (!names.size) return;
+    const width = ctx.element.clientWidth;
+    const body = element('div', { className: 'controls' });
+    const details = element('details', { open: !(width > 0 && width < 560) },
+      element('summary', { textContent: 'Controls' }), body);
+    container.append(details);
+
+    const maxResolution = hub.gpu?.max_resolution() ?? 512;
+    const withoutCompute = Boolean(frames.gpu && !frames.gpu.has_compute());
+    const builders = controlBuilders((name, value) => ctx.set(name, value), this.#updates, {
+      maxResolution: frames.software ? Math.min(256, maxResolution) : maxResolution,
+    });
+    const own = Object.assign({}, ...ctx.collect('controls'));
+    const helpers = { element, makeButton, builders, updates: this.#updates, gallery: caseGallery() };
+
+    const groups = new Map();
+    for (const control of CONTROLS.filter((c) => names.has(c.name))) {
+      if (!groups.has(control.group)) groups.set(control.group, []);
+      groups.get(control.group).push(control.name);
+    }
+    for (const [title, members] of groups) {
+      const section = element('div', { className: 'group-body' });
+      const group = element('details', { className: 'group', open: title === CONTROLS[0].group },
+        element('summary', { textContent: title || 'More' }), section);
+      const buttons = element('div', { className: 'buttons' });
+      for (const name of members) {
+        if (own[name]) {
+          for (const node of [own[name](helpers)].flat()) {
+            const isButton = node.tagName === 'BUTTON' || (node.tagName === 'SPAN' && node.classList.contains('buttons'));
+            (isButton ? buttons : section).append(node);
+          }
+          continue;
+        }
+        const spec = rowOf(name);
+        const control = builders[spec.kind](name, spec);
+        if (withoutCompute && spec.compute) {
+          for (const input of control.querySelectorAll('input, select')) input.disabled = true;
+          control.title = WITHOUT_COMPUTE;
+          control.classList.add('unavailable');
+        }
+        section.append(control);
+        if (name === 'color-by') {
+          const key = element('div', { className: 'key' });
+          const classNames = helpers.gallery.classes.map((k) => k.name);
+          this.#updates.push((s) => key.replaceChildren(...[colorKey(s, classNames)].filter(Boolean)));
+          section.append(key);
+        }
+      }
+      if (buttons.childElementCount) section.append(buttons);
+      body.append(group);
+    }
+    body.append(element('slot', { name: 'panel-footer' }));
+    body.append(element('p', {
+      className: 'hint',
+      textContent: 'Drag to orbit · click, then wheel to zoom · arrows to turn · double-click to reset',
+    }));
+    this.refresh(state);
+  }
+}
