@@ -65,7 +65,6 @@ pub const READ_ONLY: &[(&str, &str, &str)] = &[
     ("stats", "MetaballsStats", "Figures of the newest frames."),
     ("framesDrawn", "number", "Frames this element has drawn (none while off screen)."),
     ("inspected", "MetaballsCellReport | null", "What marching cubes decided in the inspected cell."),
-    ("sphereList", "MetaballsSphere[]", "The spheres in play."),
     ("selectedSphere", "number", "The selected sphere's index in edit mode, or -1."),
     ("pendingChange", "Record<string, unknown> | null", "A costly change waiting for confirmation."),
 ];
@@ -135,6 +134,7 @@ fn ts_type(p: &Parameter) -> String {
         Kind::Integer | Kind::Number => "number".into(),
         Kind::Boolean => "boolean".into(),
         Kind::Choice(words) => words.iter().map(|w| format!("'{w}'")).collect::<Vec<_>>().join(" | "),
+        Kind::Spheres => "string | MetaballsSphere[]".into(),
         _ => "string".into(),
     }
 }
@@ -192,7 +192,7 @@ fn rows() -> Vec<Json> {
         .iter()
         .map(|p| {
             json!({
-                "name": p.name, "property": p.property(), "python": p.python(), "url": p.url,
+                "name": p.name, "property": p.property(), "python": p.python(), "url": p.link_name(),
                 "aliases": p.aliases, "label": p.label, "kind": kind_word(p.kind), "words": p.words(),
                 "min": number(p.min), "max": number(p.max), "sliderMin": number(p.slider.0),
                 "sliderMax": number(p.slider.1), "step": number(p.slider.2), "default": p.default,
@@ -266,8 +266,10 @@ pub fn parameters_json() -> String {
 
 /// `www/lib/attributes.js`: the parameter table as the element reads it before its wasm arrives.
 pub fn attributes_js() -> String {
-    let lines =
-        |items: Vec<Json>| items.iter().map(|item| format!("  {item},")).collect::<Vec<_>>().join("\n");
+    // Table rows on lines of their own, two spaces in; the controls four, so the two read apart.
+    let lines = |items: Vec<Json>, indent: &str| {
+        items.iter().map(|item| format!("{indent}{item},")).collect::<Vec<_>>().join("\n")
+    };
     format!(
         "// The parameter table (src/scene/params/rows.rs), written by `metaballs manifest --out www`.\n\
          // Each row: attribute, property and Python names, short name in links, older spellings, label,\n\
@@ -279,8 +281,8 @@ pub fn attributes_js() -> String {
          export const CONTROLS = Object.freeze([\n{}\n]);\n\n\
          // Ranges that are not settings, for gestures and the sphere editor.\n\
          export const LIMITS = Object.freeze({});\n",
-        lines(rows()),
-        lines(controls()),
+        lines(rows(), "  "),
+        lines(controls(), "    "),
         limits()
     )
 }
@@ -361,14 +363,17 @@ pub fn declarations() -> String {
     out += "export declare class MetaballsView extends HTMLElement {\n";
     for p in PARAMETERS {
         let default = typed_default(p);
-        out += &format!(
-            "  /** {} Attribute `{}`; default {}. */\n  {}: {};\n",
-            description(p),
-            p.name,
-            default,
-            p.property(),
-            ts_type(p)
-        );
+        let doc = format!("  /** {} Attribute `{}`; default {}. */\n", description(p), p.name, default);
+        if p.kind == Kind::Spheres {
+            // Read as the spheres in play; set from the attribute's text or from such a list.
+            let name = p.property();
+            out += &format!(
+                "{doc}  get {name}(): MetaballsSphere[];\n{doc}  set {name}(value: {});\n",
+                ts_type(p)
+            );
+        } else {
+            out += &format!("{doc}  {}: {};\n", p.property(), ts_type(p));
+        }
     }
     for (name, ty, text) in READ_ONLY {
         out += &format!("  /** {text} */\n  readonly {name}: {ty};\n");

@@ -245,7 +245,7 @@ proptest! {
     #[test]
     fn links_are_taken_whole_or_refused(
         pairs in prop::collection::vec(
-            (prop_oneof![prop::sample::select(PARAMETERS.iter().map(|p| p.url).collect::<Vec<_>>()).prop_map(String::from), "[a-z_=&]{0,8}"],
+            (prop_oneof![prop::sample::select(PARAMETERS.iter().map(|p| p.link_name()).collect::<Vec<_>>()).prop_map(String::from), "[a-z_=&]{0,8}"],
              prop_oneof![number_text(), any_text()]),
             0..8),
         raw in any_text(),

@@ -100,7 +100,9 @@ export declare class MetaballsView extends HTMLElement {
   /** Divider position: 0.05 to 0.95. Attribute `divider`; default 0.5. */
   divider: number;
   /** Sphere-list: x,y,z,radius[,vx,vy,vz] per sphere joined by ; (a negative radius subtracts). Attribute `sphere-list`; default "". */
-  sphereList: string;
+  get sphereList(): MetaballsSphere[];
+  /** Sphere-list: x,y,z,radius[,vx,vy,vz] per sphere joined by ; (a negative radius subtracts). Attribute `sphere-list`; default "". */
+  set sphereList(value: string | MetaballsSphere[]);
   /** Controls: all, none, or a comma list of spheres, iso, resolution, lod, lod-pixels, lod-freeze, mesh-on, method, speed, seed, paused, pause-on, step, view, display, compare, grid, color-by, ambiguous, color, theme, antialiasing, slice, interpolation, blend, saddle, inspector, error-plot, light, spot-angle, spot-softness, ambient, diffuse, specular, shininess, projection, fov, edit, scene, export. Attribute `controls`; default "none". */
   controls: string;
   /** Hud: on, off. Attribute `hud`; default "off". */
@@ -123,8 +125,6 @@ export declare class MetaballsView extends HTMLElement {
   readonly framesDrawn: number;
   /** What marching cubes decided in the inspected cell. */
   readonly inspected: MetaballsCellReport | null;
-  /** The spheres in play. */
-  readonly sphereList: MetaballsSphere[];
   /** The selected sphere's index in edit mode, or -1. */
   readonly selectedSphere: number;
   /** A costly change waiting for confirmation. */

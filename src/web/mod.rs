@@ -5,7 +5,6 @@
 use crate::renderer::{FrameStats, Renderer};
 use crate::scene::Scene;
 use crate::scene::Sphere;
-use crate::scene::params::Camera;
 use crate::scene::params::Settings;
 use glam::Vec3;
 use std::cell::RefCell;
@@ -229,55 +228,6 @@ impl View {
             self.surface.configure(&self.device, &self.config);
         }
         Ok(())
-    }
-
-    pub fn set_sphere_count(&mut self, count: u32) -> Result<(), JsError> {
-        self.renderer.set_sphere_count(count).map_err(js_error)
-    }
-
-    pub fn set_iso(&mut self, iso: f32) -> Result<(), JsError> {
-        self.renderer.set_iso(iso).map_err(js_error)
-    }
-
-    pub fn set_resolution(&mut self, cells_per_axis: u32) -> Result<(), JsError> {
-        self.renderer.set_resolution(cells_per_axis).map_err(js_error)
-    }
-
-    /// The resolution and level of detail together, as the resolutions each allows differ (a uniform
-    /// grid up to 512, LOD up to 2048 in multiples of 8): all or nothing.
-    pub fn set_grid(&mut self, cells_per_axis: u32, lod: bool) -> Result<(), JsError> {
-        let mut next = *self.renderer.settings();
-        next.resolution = cells_per_axis;
-        next.view.lod = lod;
-        self.renderer.set_settings(next).map_err(js_error)
-    }
-
-    pub fn set_seed(&mut self, seed: u32) -> Result<(), JsError> {
-        self.renderer.set_seed(seed as u64).map_err(js_error)
-    }
-
-    /// Orbit angles in degrees and distance in box half-widths.
-    pub fn set_camera(&mut self, yaw: f32, pitch: f32, distance: f32) -> Result<(), JsError> {
-        let camera =
-            Camera { yaw_degrees: yaw, pitch_degrees: pitch, distance, ..self.renderer.settings().camera };
-        self.renderer.set_camera(camera).map_err(js_error)
-    }
-
-    pub fn set_shininess(&mut self, shininess: f32) -> Result<(), JsError> {
-        let material = crate::Material { shininess, ..self.renderer.settings().material };
-        self.renderer.set_material(material).map_err(js_error)
-    }
-
-    /// Base colour as linear RGB in [0, 1].
-    pub fn set_color(&mut self, r: f32, g: f32, b: f32) -> Result<(), JsError> {
-        let material =
-            crate::Material { base_color: Vec3::new(r, g, b), ..self.renderer.settings().material };
-        self.renderer.set_material(material).map_err(js_error)
-    }
-
-    /// 4× multisampling on or off (software adapters draw much faster without it).
-    pub fn set_antialiasing(&mut self, on: bool) -> Result<(), JsError> {
-        self.renderer.set_antialiasing(on).map_err(js_error)
     }
 
     /// The spheres as they are now, 7 numbers each (centre, radius, velocity), so a view rebuilt on a

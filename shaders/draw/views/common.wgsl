@@ -40,13 +40,13 @@ const COLOR_ERROR: u32 = 5u;
 const ERROR_TOP: f32 = 0.5;
 
 // Colour of an error of `cells`: the ramp over the square root of its share of ERROR_TOP, so that the
-// hundredths of a cell linear placement leaves stay apart (www/lib/legends.js draws the same key).
+// hundredths of a cell linear placement leaves stay apart (www/lib/features/legends.js draws the same key).
 fn error_color(cells: f32) -> vec3<f32> {
     return ramp(sqrt(clamp(cells / ERROR_TOP, 0.0, 1.0)));
 }
 
 // Colour of level of detail k (0 the finest): the case classes' hues, 96° apart from level to level
-// so that neighbouring levels differ most (www/lib/legends.js draws the same key).
+// so that neighbouring levels differ most (www/lib/features/legends.js draws the same key).
 fn level_color(k: u32) -> vec3<f32> {
     return class_color((9u + 4u * k) % 15u);
 }
@@ -57,7 +57,7 @@ fn srgb_to_linear(c: vec3<f32>) -> vec3<f32> {
     return pow(c, vec3<f32>(2.2));
 }
 
-// A perceptual ramp from dark violet (0) through teal to yellow (1); www/lib/legends.js draws the same.
+// A perceptual ramp from dark violet (0) through teal to yellow (1); www/lib/features/legends.js draws the same.
 fn ramp(t: f32) -> vec3<f32> {
     var stops = array<vec3<f32>, 5>(
         vec3<f32>(0.267, 0.005, 0.329),
@@ -71,7 +71,7 @@ fn ramp(t: f32) -> vec3<f32> {
     return srgb_to_linear(mix(stops[i], stops[i + 1u], x - f32(i)));
 }
 
-// Colour of case class k (0..14): hues a 24° step apart (www/lib/legends.js draws the same).
+// Colour of case class k (0..14): hues a 24° step apart (www/lib/features/legends.js draws the same).
 fn class_color(k: u32) -> vec3<f32> {
     let h = f32(k) / 15.0 * 6.0;
     let x = 1.0 - abs(h % 2.0 - 1.0);

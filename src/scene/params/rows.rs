@@ -151,7 +151,7 @@ pub const PARAMETERS: &[Parameter] = &[
     }),
     number("spot-angle", "Spot cone", "spot cone angle (degrees)", (2.0, 80.0), "15")
         .slider(5.0, 60.0, 1.0)
-        .url("spot_angle")
+        .aliases(&["spot_angle"])
         .group(Light)
         .renderer(real!(view: spot_angle)),
     number("spot-softness", "Spot edge", "spot softness", (0.0, 1.0), "0.3")
@@ -197,7 +197,7 @@ pub const PARAMETERS: &[Parameter] = &[
         .url("dist")
         .renderer(real!(camera.distance)),
     number("divider", "Divider", "divider position", (0.05, 0.95), "0.5").renderer(real!(view: divider)),
-    row("sphere-list", "Spheres", Kind::Spheres, "").url("balls").page_only(),
+    row("sphere-list", "Spheres", Kind::Spheres, "").aliases(&["balls"]).page_only(),
     row("controls", "Controls", Kind::Controls, "none").page_only(),
     row("hud", "Statistics", Kind::Choice(&["on", "off"]), "off").page_only(),
     row("autoplay", "Autoplay", Kind::Choice(&["visible", "off"]), "visible").page_only(),

@@ -132,7 +132,8 @@ pub struct Parameter {
     /// Other spellings accepted wherever the name is (links, attributes, scene files): the names
     /// pages and saved links already use.
     pub aliases: &'static [&'static str],
-    /// Short name in a link's query string (`res`); the long name works there too.
+    /// Short name in a link's query string (`res`) where it is not an older spelling; empty: links
+    /// use the first older spelling, else the name ([`Parameter::link_name`]). Every name works there.
     pub url: &'static str,
     /// Label in the panel.
     pub label: &'static str,
@@ -174,7 +175,7 @@ pub(super) const fn row(
     Parameter {
         name,
         aliases: &[],
-        url: name,
+        url: "",
         label,
         noun: "",
         kind,
@@ -242,8 +243,17 @@ impl Parameter {
 
     /// Every name it answers to: its name, its short name in links and its aliases.
     pub fn names(&self) -> impl Iterator<Item = &'static str> + use<> {
-        let (name, url, aliases) = (self.name, self.url, self.aliases);
-        [name, url].into_iter().chain(aliases.iter().copied())
+        [self.name, self.url].into_iter().filter(|n| !n.is_empty()).chain(self.aliases.iter().copied())
+    }
+
+    /// The name links write: the short name, else the first older spelling (so links read as they
+    /// always have), else the name.
+    pub fn link_name(&self) -> &'static str {
+        match (self.url, self.aliases.first()) {
+            ("", Some(old)) => old,
+            ("", None) => self.name,
+            (url, _) => url,
+        }
     }
 }
 
