@@ -242,7 +242,7 @@ pub fn parameters_json() -> String {
         .zip(PARAMETERS)
         .map(|(mut row, p)| {
             row["description"] = json!(description(p));
-            row["noun"] = json!(p.noun);
+            row["noun"] = json!(if p.noun.is_empty() { p.name } else { p.noun });
             row["expected"] = json!(expected(p));
             if p.kind == Kind::Controls {
                 // The older spellings of the controls a list may name.

@@ -22,7 +22,7 @@ BAD = [
     ("spheres", 0), ("spheres", 65), ("spheres", 2.5), ("spheres", -3), ("spheres", "many"), ("resolution", 4),
     ("iso", 30), ("iso", 0.01), ("iso", "high"), ("iso", float("nan")), ("speed", 1e39), ("yaw", 400),
     ("paused", "maybe"), ("color", "red"), ("color", "#12345"), ("display", "sketch"), ("theme", "sepia"),
-    ("controls", "iso,volume"), ("hud", 3), ("max-pixel-ratio", 9), ("spot_angle", 0),
+    ("controls", "iso,volume"), ("hud", 3), ("max-pixel-ratio", 9), ("spot-angle", 0),
 ]
 
 

@@ -161,12 +161,14 @@ impl Settings {
         let mut next = *self;
         for (name, text) in pairs {
             let (p, given) = parameter_named(name).ok_or_else(|| rows::unknown(name))?;
+            // The value first: a refused value is named as such whoever holds the setting.
+            let value = p.parse_as(given, text)?;
             let field = p.field.ok_or_else(|| ParamError::Invalid {
                 name: "parameter name",
                 value: name.to_string(),
                 expected: "a setting of the renderer".into(),
             })?;
-            field.set(&mut next, &p.parse_as(given, text)?);
+            field.set(&mut next, &value);
         }
         next.validated()
     }
