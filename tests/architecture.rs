@@ -3,11 +3,12 @@
 //! direction, the extractors do not know each other, and the scene and the tables know nothing of wgpu.
 #![cfg(not(target_arch = "wasm32"))]
 
+mod common;
 #[path = "architecture/imports.rs"]
 mod imports;
 
 use std::collections::BTreeMap;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 /// The folders of `src/`, lowest first; a folder may import its own and those before it. Modules at
 /// the top of `src/` (the native tools, `lib.rs`, `main.rs`) and `web/` may import any.
@@ -16,22 +17,10 @@ const SHELLS: &[&str] = &["web"];
 /// The scene's modules, in the only order they may import each other.
 const SCENE_ORDER: &[&str] = &["checks", "sphere", "params", "motion", "file"];
 
-fn sources(dir: &Path, found: &mut Vec<PathBuf>) {
-    for entry in std::fs::read_dir(dir).unwrap() {
-        let path = entry.unwrap().path();
-        if path.is_dir() {
-            sources(&path, found);
-        } else if path.extension().is_some_and(|e| e == "rs") {
-            found.push(path);
-        }
-    }
-}
-
 /// Every source file under `src/`, relative to it, with its code (line comments removed).
 fn code() -> BTreeMap<String, String> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
-    let mut files = Vec::new();
-    sources(&root, &mut files);
+    let files = common::files_under(&root, "rs");
     files
         .into_iter()
         .map(|path| {

@@ -3,9 +3,11 @@
 //! `src/device/bindings.rs`, which the Rust side binds with.
 #![cfg(not(target_arch = "wasm32"))]
 
+mod common;
+
 use metaballs::device::bindings::ALL;
 use std::collections::BTreeMap;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 /// A `@group(g) @binding(n) var… name` declaration and the file it is in.
 #[derive(Debug)]
@@ -14,17 +16,6 @@ struct Declaration {
     group: u32,
     binding: u32,
     name: String,
-}
-
-fn wgsl_files(dir: &Path, found: &mut Vec<PathBuf>) {
-    for entry in std::fs::read_dir(dir).unwrap() {
-        let path = entry.unwrap().path();
-        if path.is_dir() {
-            wgsl_files(&path, found);
-        } else if path.extension().is_some_and(|e| e == "wgsl") {
-            found.push(path);
-        }
-    }
 }
 
 /// The number in `(n)` at the start of `text`, and what follows it.
@@ -48,8 +39,7 @@ fn declaration(text: &str) -> Option<(u32, u32, String)> {
 /// Every binding declared in `shaders/`, failing on an `@group` it cannot read.
 fn declarations() -> Vec<Declaration> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let mut files = Vec::new();
-    wgsl_files(&root.join("shaders"), &mut files);
+    let mut files = common::files_under(&root.join("shaders"), "wgsl");
     files.sort();
     let mut found = Vec::new();
     for path in files {

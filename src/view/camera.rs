@@ -110,11 +110,12 @@ impl CameraView {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::scene::params::view::ViewOptions;
 
-    fn view(projection: Projection) -> CameraView {
+    /// A 320 × 240 view from the default camera with `projection`.
+    pub(crate) fn view(projection: Projection) -> CameraView {
         let settings =
             Settings { view: ViewOptions { projection, ..ViewOptions::default() }, ..Settings::default() };
         CameraView::new(&settings, (320, 240))

@@ -37,15 +37,10 @@ pub fn on_screen(view: &CameraView, sphere: &Sphere) -> Option<[f32; 3]> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scene::params::view::{Projection, ViewOptions};
-    use crate::scene::params::{Camera, Settings};
+    use crate::scene::params::Camera;
+    use crate::scene::params::view::Projection;
+    use crate::view::camera::tests::view;
     use glam::Vec2;
-
-    fn view(projection: Projection) -> CameraView {
-        let settings =
-            Settings { view: ViewOptions { projection, ..ViewOptions::default() }, ..Settings::default() };
-        CameraView::new(&settings, (320, 240))
-    }
 
     fn ball(center: [f32; 3], radius: f32) -> Sphere {
         Sphere { center: Vec3::from_array(center), radius, velocity: Vec3::new(0.1, 0.0, 0.0), charge: 1.0 }

@@ -14,6 +14,20 @@ use metaballs::{Settings, Sphere};
 #[allow(unused_imports)]
 pub use pictures::*;
 
+/// Every file under `dir` (in its folders too) whose name ends in `.{extension}`.
+pub fn files_under(dir: &std::path::Path, extension: &str) -> Vec<std::path::PathBuf> {
+    let mut found = Vec::new();
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let path = entry.unwrap().path();
+        if path.is_dir() {
+            found.extend(files_under(&path, extension));
+        } else if path.extension().is_some_and(|e| e == extension) {
+            found.push(path);
+        }
+    }
+    found
+}
+
 /// A device from the adapter at hand (lavapipe in CI). Fails, never skips, when there is none.
 pub fn device() -> (wgpu::Adapter, wgpu::Device, wgpu::Queue) {
     let instance = metaballs::device::native_instance();
