@@ -309,7 +309,7 @@ mod cli {
                 .mesher
                 .iter()
                 .map(|m| -> Result<_, metaballs::ParamError> {
-                    Ok(metaballs::Settings::default().with_parameter("mesher", m)?.view.mesh_on)
+                    Ok(metaballs::Settings::default().with_parameter("mesh-on", m)?.view.mesh_on)
                 })
                 .collect::<Result<_, _>>()?,
         };

@@ -124,6 +124,14 @@ fn every_row_a_scene_holds_is_saved_and_read_back_by_each_of_its_names() {
 }
 
 #[test]
+fn a_scene_file_that_gives_a_setting_under_two_of_its_names_is_refused() {
+    let text = r#"{ "format": "metaballs-scene", "version": 1, "spheres": [{ "center": [0, 0, 0], "radius": 0.3 }],
+        "settings": { "color_by": "area", "color-by": "case" } }"#;
+    let message = SceneFile::parse(text).unwrap_err().to_string();
+    assert!(message.contains("settings.color-by is given twice"), "{message}");
+}
+
+#[test]
 fn every_row_reaches_the_elements_table_the_manifest_and_the_notebooks_traits() {
     let attributes = manifest::attributes_js();
     let traits: Json = serde_json::from_str(&manifest::parameters_json()).unwrap();

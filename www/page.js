@@ -32,7 +32,7 @@ function start() {
     if (key === null) continue;
     const raw = query.get(key);
     try {
-      parseParameter(spec.name, raw);
+      parseParameter(key, raw);
       element.setAttribute(spec.name, raw);
     } catch (error) {
       problems.push(`${key}=${raw}: ${error.message}`);

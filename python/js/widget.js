@@ -120,6 +120,9 @@ function render({ model, el }) {
   figure.style.aspectRatio = '16 / 9';
   for (const { name } of TABLE) {
     const value = model.get(traitName(name));
+    // A list of spheres the model holds was reported by a figure: shown again, this one keeps its
+    // seeded layout (a list Python sets later places them by hand).
+    if (name === SPHERE_LIST && Array.isArray(value)) continue;
     if (value !== undefined && value !== null && value !== '') write(figure, name, value);
   }
   el.replaceChildren(figure);

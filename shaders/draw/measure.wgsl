@@ -1,6 +1,6 @@
 // Measures pass: how good the mesh is, measured on the GPU every frame that asks, with nothing read back
 // in the frame. Each vertex's distance to the exact surface (surface_distance in shaders/common.wgsl) is
-// summed in squares and kept at its largest; each triangle's shape (as color_by=quality shows it) is
+// summed in squares and kept at its largest; each triangle's shape (as color-by=quality shows it) is
 // counted in ten bins. The sums land in the counters buffer from byte 512 (`Measures` in
 // src/extract/uniforms.rs) and come back with the frame statistics.
 

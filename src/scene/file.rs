@@ -126,6 +126,16 @@ fn setting(name: &str, value: &serde_json::Value) -> Result<(&'static str, Value
     spec.parse(&text).map(|v| (spec.name, v)).map_err(|e| at(&field, e))
 }
 
+/// Refuses a setting given twice (under two of its names, `color_by` and `color-by`).
+fn once_each(settings: Vec<(&'static str, Value)>) -> Result<Vec<(&'static str, Value)>, SceneError> {
+    for (i, (name, _)) in settings.iter().enumerate() {
+        if settings[..i].iter().any(|(earlier, _)| earlier == name) {
+            return Err(SceneError(format!("settings.{name} is given twice (under two of its names)")));
+        }
+    }
+    Ok(settings)
+}
+
 impl SceneFile {
     /// Reads and checks a scene document.
     pub fn parse(text: &str) -> Result<SceneFile, SceneError> {
@@ -170,7 +180,7 @@ impl SceneFile {
         let settings = match object.get("settings") {
             None => Vec::new(),
             Some(serde_json::Value::Object(map)) => {
-                map.iter().map(|(name, value)| setting(name, value)).collect::<Result<_, _>>()?
+                once_each(map.iter().map(|(name, value)| setting(name, value)).collect::<Result<_, _>>()?)?
             }
             Some(other) => {
                 return Err(SceneError(format!("settings must be an object, got {}", describe(other))));
@@ -193,7 +203,7 @@ impl SceneFile {
             .filter(|(name, _)| parameter(name).is_none_or(|p| p.in_scene))
             .map(|(name, value)| setting(name, value))
             .collect::<Result<_, _>>()?;
-        Ok(SceneFile { spheres, settings })
+        Ok(SceneFile { spheres, settings: once_each(settings)? })
     }
 
     /// The document, indented, with numbers written as short as they read back exactly.

@@ -74,7 +74,7 @@ impl Gpu {
     }
 
     /// Tells the renderers the adapter is a software one (the page reads it from the adapter's info):
-    /// `mesher=auto` then meshes on the CPU.
+    /// `mesh-on=auto` then meshes on the CPU.
     pub fn set_software(&self, software: bool) {
         self.context.set_software(software);
     }

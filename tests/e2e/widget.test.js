@@ -35,6 +35,7 @@ test('under a plain anywidget host the figure draws, follows its traits and repo
   assert.match(await page.evaluate(() => window.host.get('adapter')), /WebGPU|WebGL2/);
   assert.equal(await page.evaluate(() => window.host.get('sphere_list').length), 2);
   assert.ok(!(await figure.getAttribute('balls')), 'reporting the spheres placed them by hand');
+  assert.ok(!(await figure.getAttribute('sphere-list')), 'reporting the spheres placed them by hand');
   const shot = await figure.screenshot();
 
   // Python sets iso: the figure takes it, draws a different surface and reports a new count.

@@ -23,7 +23,7 @@ def older_names() -> dict:
     """The older Python spellings still accepted (``balls`` → ``sphere_list``), from the table's aliases."""
     names = {}
     for row in TABLE:
-        for alias in row["aliases"] + [row["url"]]:
+        for alias in row["aliases"]:
             old = trait_name(alias)
             if old.isidentifier() and old != row["python"] and not any(old == r["python"] for r in TABLE):
                 names[old] = row["python"]

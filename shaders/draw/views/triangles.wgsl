@@ -1,4 +1,4 @@
-// The mesh one triangle at a time (display=flat, wireframe; color_by=area, quality, case, level, error).
+// The mesh one triangle at a time (display=flat, wireframe; color-by=area, quality, case, level, error).
 
 struct TriangleOut {
     @builtin(position) clip: vec4<f32>,
@@ -7,7 +7,7 @@ struct TriangleOut {
     @location(2) @interpolate(flat) face_normal: vec3<f32>,
     @location(3) barycentric: vec3<f32>,
     @location(4) @interpolate(flat) albedo: vec3<f32>,
-    // With color_by=error, this vertex's distance to the exact surface in cells.
+    // With color-by=error, this vertex's distance to the exact surface in cells.
     @location(5) error: f32,
 }
 

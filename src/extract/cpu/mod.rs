@@ -59,9 +59,9 @@ macro_rules! cpu_meshing {
 cpu_meshing!(CpuMesher, "cpu", Method::MarchingCubes);
 cpu_meshing!(SurfaceNetsMesher, "surface-nets", Method::SurfaceNets);
 
-/// Marching cubes on the CPU (`mesher=cpu`, and everything on WebGL2).
+/// Marching cubes on the CPU (`mesh-on=cpu`, and everything on WebGL2).
 pub type CpuExtractor = CpuMeshExtractor<CpuMesher>;
-/// Surface nets on the CPU (`extractor=surface_nets`).
+/// Surface nets on the CPU (`method=surface_nets`).
 pub type SurfaceNetsExtractor = CpuMeshExtractor<SurfaceNetsMesher>;
 
 /// A CPU mesher and what it last uploaded.

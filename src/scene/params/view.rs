@@ -194,7 +194,8 @@ impl Slice {
     pub fn text(slice: Option<Slice>) -> String {
         match slice {
             None => "off".into(),
-            Some(s) => format!("{}:{}", ["x", "y", "z"][s.axis as usize], s.position),
+            // An axis past z (a slice made in code) reads back as one the parser refuses.
+            Some(s) => format!("{}:{}", ["x", "y", "z"].get(s.axis as usize).unwrap_or(&"?"), s.position),
         }
     }
 

@@ -122,6 +122,6 @@ export class FigureContext {
 
   #changed(name, value) {
     this.each('refresh', this.state);
-    this.emit('metaballs-change', { property: propertyName(name), value });
+    this.emit('metaballs-change', { property: propertyName(name), attribute: name, value });
   }
 }

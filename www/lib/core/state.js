@@ -34,7 +34,7 @@ export class FigureState {
   parse(name, text, spelling = name) {
     if (TEXT_NAMES.has(name)) return { value: text };
     try {
-      return { value: this.#parser(name, text) };
+      return { value: this.#parser(spelling, text) };
     } catch (error) {
       return { message: `${spelling}="${text}": ${error.message}; keeping ${this.format(name)}` };
     }

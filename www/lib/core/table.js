@@ -45,7 +45,8 @@ export const propertyName = (spelling) => ROWS.get(spelling)?.property ?? camel(
  */
 export const OLD_PROPERTIES = new Map();
 for (const row of TABLE) {
-  for (const spelling of [...spellings(row), row.python]) {
+  // Not the short names of links (`res`, `aa`): they were never properties.
+  for (const spelling of [row.name, ...(row.aliases ?? []), row.python]) {
     const property = spelling.replace(/-([a-z])/g, (_, c) => c.toUpperCase());
     if (property !== row.property) OLD_PROPERTIES.set(property, row.name);
   }

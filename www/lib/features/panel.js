@@ -31,9 +31,6 @@ export class Panel {
     this.#ctx = ctx;
   }
 
-  /** True when the panel lists control `name`. */
-  lists(name) { return listedControls(this.#ctx.state.controls).includes(name); }
-
   // The panel is first built when the figure starts (after the attributes are read).
   changed() {
     if (this.#built) this.build();
