@@ -141,12 +141,16 @@ impl View {
     pub fn create(
         gpu: &Gpu,
         canvas: HtmlCanvasElement,
-        spheres: u32,
-        iso: f32,
-        resolution: u32,
-        seed: u32,
-        antialiasing: bool,
+        names: Vec<String>,
+        texts: Vec<String>,
     ) -> Result<View, JsError> {
+        // The settings it starts with, by name (those the table takes at creation), over the defaults.
+        if names.len() != texts.len() {
+            return Err(JsError::new("View.create takes as many texts as names"));
+        }
+        let pairs: Vec<(&str, &str)> =
+            names.iter().map(String::as_str).zip(texts.iter().map(String::as_str)).collect();
+        let settings = Settings::default().with_parameters(&pairs).map_err(js_error)?;
         let (width, height) = (canvas.width().max(1), canvas.height().max(1));
         let surface = gpu.surface_for(canvas)?;
         let capabilities = surface.get_capabilities(&gpu.adapter);
@@ -163,14 +167,6 @@ impl View {
             alpha_mode: wgpu::CompositeAlphaMode::Opaque,
             view_formats: vec![],
             color_space: wgpu::SurfaceColorSpace::Auto,
-        };
-        let settings = Settings {
-            sphere_count: spheres,
-            iso,
-            resolution,
-            seed: seed as u64,
-            antialiasing,
-            ..Settings::default()
         };
         let renderer =
             Renderer::on_context(&gpu.context, format, width, height, settings).map_err(js_error)?;

@@ -17,8 +17,12 @@ export function makeView(ctx, gpu, software) {
   const s = settings.state;
   if (software && !settings.given.has('antialiasing')) s.antialiasing = false;
   ctx.each('starting', { software, compute: gpu.has_compute() });
-  const create = (resolution) => within(ctx.element, () => wasmModule().View.create(
-    gpu, ctx.canvas, s.spheres, s.iso, resolution, s.seed, s.antialiasing));
+  // The settings the table gives the renderer when it is made, by name and as text.
+  const create = (resolution) => {
+    const names = [...CREATION];
+    const texts = names.map((name) => String(name === 'resolution' ? resolution : s[name]));
+    return within(ctx.element, () => wasmModule().View.create(gpu, ctx.canvas, names, texts));
+  };
   let view;
   try {
     // With level of detail the resolution may be beyond a uniform grid's: the view starts uniform and
