@@ -9,9 +9,9 @@ import itertools
 import anywidget
 import traitlets
 
-from ._parameters import STATIC, TABLE, Refused, check, older_names, shown, trait_name
+from ._parameters import STATIC, TABLE, Refused, check, older_names, shown
 
-_ROWS = {trait_name(row["name"]): row for row in TABLE}
+_ROWS = {row["python"]: row for row in TABLE}
 _OLDER = older_names()
 _WASM = {"webgpu": "pkg/metaballs_bg.wasm", "webgl2": "pkg-webgl/metaballs_bg.wasm"}
 MESH_FORMATS = ("stl", "obj", "ply")

@@ -11,7 +11,6 @@ import { frameBudget } from '../engine/page-watch.js';
 /** The scales a figure steps through, from full down. */
 const STEPS = [1, 0.85, 0.7, 0.6, 0.5, 0.42, 0.35, 0.3, 0.25];
 
-
 export class RenderScale {
   #step = 0;
   #fastWindows = 0;
