@@ -64,6 +64,18 @@ test('five figures: one device, the visible ones draw, the ones below the fold s
   assert.equal(await frames(page, 'd'), stopped, 'a figure scrolled away kept drawing');
   assert.equal(await frames(page, 'e'), 0);
   assert.equal(await page.evaluate(() => customElements.get('metaballs-view').devicesCreated), 1);
+
+  // Asked for a frame before it is on the page, then put far below the fold (a notebook's question can
+  // come before its output is attached): it starts and answers all the same.
+  const asked = await page.evaluate(async () => {
+    const figure = document.createElement('metaballs-view');
+    figure.setAttribute('resolution', '24');
+    const answer = figure.nextFrame();
+    await new Promise((r) => setTimeout(r, 100));
+    document.body.append(figure);
+    return (await answer).triangles;
+  });
+  assert.ok(asked > 0, `the figure asked before it was attached answered with ${asked} triangles`);
   assert.deepEqual(errors, []);
   await close();
 });

@@ -357,7 +357,6 @@ export class FigureFrames {
    * or still. What is asked of the figure's mesh and pictures waits for it.
    */
   async nextFrame() {
-    this.start(true);
     await this.ready();
     await new Promise((resolve) => {
       this.#frameWaiters.push(resolve);
@@ -375,10 +374,14 @@ export class FigureFrames {
     }
   }
 
-  /** Resolves once the renderer has started (or rejects with why it could not). */
+  /**
+   * Resolves once the renderer has started (or rejects with why it could not), starting it once the
+   * figure is connected: a notebook's question can come before its output is attached or in view.
+   */
   async ready() {
     while (!this.#view) {
       if (this.#failed) throw new Error(this.#message.text);
+      this.start(true);
       await new Promise((r) => setTimeout(r, 50));
     }
   }
