@@ -110,32 +110,55 @@ pub fn render_target(
 /// Copies a 4-byte-per-texel 2D texture (COPY_SRC) into a mappable buffer and returns its texels, rows
 /// top to bottom without padding. Waits for the GPU: for tests and tools.
 pub async fn read_texture(device: &wgpu::Device, queue: &wgpu::Queue, texture: &wgpu::Texture) -> Vec<u8> {
-    let (width, height) = (texture.width(), texture.height());
-    let row_bytes = width * 4;
-    let padded = row_bytes.div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
-    let buffer = device.create_buffer(&wgpu::BufferDescriptor {
-        label: Some("readback: texels"),
-        size: padded as u64 * height as u64,
-        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-        mapped_at_creation: false,
-    });
-    let mut encoder = device
-        .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("readback: texture copy") });
-    encoder.copy_texture_to_buffer(
-        texture.as_image_copy(),
-        wgpu::TexelCopyBufferInfo {
-            buffer: &buffer,
-            layout: wgpu::TexelCopyBufferLayout {
-                offset: 0,
-                bytes_per_row: Some(padded),
-                rows_per_image: None,
+    TextureCopy::submit(device, queue, texture).texels(device).await
+}
+
+/// A texture's texels copied into a mappable buffer: the copy is submitted at once (while the texture
+/// still holds what is wanted, a canvas's frame before it is presented), the texels read later.
+pub struct TextureCopy {
+    buffer: wgpu::Buffer,
+    row_bytes: u32,
+    padded: u32,
+}
+
+impl TextureCopy {
+    /// Submits the copy of `texture` (4 bytes per texel, COPY_SRC).
+    pub fn submit(device: &wgpu::Device, queue: &wgpu::Queue, texture: &wgpu::Texture) -> TextureCopy {
+        let (width, height) = (texture.width(), texture.height());
+        let row_bytes = width * 4;
+        let padded =
+            row_bytes.div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
+        let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("readback: texels"),
+            size: padded as u64 * height as u64,
+            usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
+            label: Some("readback: texture copy"),
+        });
+        encoder.copy_texture_to_buffer(
+            texture.as_image_copy(),
+            wgpu::TexelCopyBufferInfo {
+                buffer: &buffer,
+                layout: wgpu::TexelCopyBufferLayout {
+                    offset: 0,
+                    bytes_per_row: Some(padded),
+                    rows_per_image: None,
+                },
             },
-        },
-        wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
-    );
-    queue.submit([encoder.finish()]);
-    let bytes = map_and_read(device, &buffer).await;
-    bytes.chunks(padded as usize).flat_map(|row| &row[..row_bytes as usize]).copied().collect()
+            wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
+        );
+        queue.submit([encoder.finish()]);
+        TextureCopy { buffer, row_bytes, padded }
+    }
+
+    /// The texels, rows top to bottom without padding, once the GPU has made the copy.
+    pub async fn texels(self, device: &wgpu::Device) -> Vec<u8> {
+        let bytes = map_and_read(device, &self.buffer).await;
+        let (padded, row_bytes) = (self.padded as usize, self.row_bytes as usize);
+        bytes.chunks(padded).flat_map(|row| &row[..row_bytes]).copied().collect()
+    }
 }
 
 /// Maps a MAP_READ buffer and returns its bytes.

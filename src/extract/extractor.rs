@@ -40,6 +40,25 @@ pub struct Job<'a> {
     pub lod: Option<LodJob>,
 }
 
+/// A mesh made elsewhere (the page's mesher worker) from a packed job (`cpu::elsewhere::pack`): vertices (position, then outward normal) and indices as the CPU
+/// meshers make them, with what the mesher counted.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct GivenMesh {
+    /// The packed job it was made for.
+    pub job: Vec<f32>,
+    pub vertices: Vec<f32>,
+    pub indices: Vec<u32>,
+    /// Blocks the bounds kept and cells the surface crosses.
+    pub counts: [u32; 2],
+}
+
+impl GivenMesh {
+    /// The grid the mesh was made on.
+    pub fn grid(&self) -> Grid {
+        Grid { cells_per_axis: self.job.get(2).map_or(1, |&n| n as u32) }
+    }
+}
+
 /// What level-of-detail extraction needs beyond the uniform grid's problem.
 #[derive(Clone, Copy, Debug)]
 pub struct LodJob {
@@ -134,6 +153,10 @@ pub trait Extractor {
     /// Puts this frame's mesh into the buffers: records compute passes into the encoder, or uploads
     /// what `prepare` made. Never writes past the buffers' capacity.
     fn write(&mut self, output: Output) -> MeshCount;
+
+    /// A mesh made elsewhere for the next frame's job (a CPU mesher takes it in place of meshing when
+    /// the job is still the frame's; others make their own).
+    fn give_mesh(&mut self, _mesh: GivenMesh) {}
 
     /// The latest mesh as written (clamped as the buffers held it), where it is kept on the CPU.
     fn cpu_mesh(&self) -> Option<IndexedMesh> {

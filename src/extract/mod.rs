@@ -25,7 +25,9 @@ pub mod reference;
 pub mod tables;
 pub mod uniforms;
 
-pub use extractor::{Capabilities, Extractor, Job, LodJob, LodSummary, MeshCount, Output, Viewpoint};
+pub use extractor::{
+    Capabilities, Extractor, GivenMesh, Job, LodJob, LodSummary, MeshCount, Output, Viewpoint,
+};
 
 /// Builds an extractor on a device, compiling what every renderer on that device shares (its
 /// pipelines); `None` where it cannot run there.

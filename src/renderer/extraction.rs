@@ -5,28 +5,24 @@ use super::stage::Counted;
 use super::{FrameStats, Renderer};
 use crate::draw::shade::DrawCount;
 use crate::draw::views;
+use crate::extract::cpu::elsewhere;
 use crate::extract::lod::select::Eye;
 use crate::extract::reference::Construction;
 use crate::extract::uniforms::LEVEL_SLOTS;
-use crate::extract::{Capabilities, Extractor, Job, LodJob, LodSummary, MeshCount, Output, Viewpoint};
-use crate::scene::BOX_HALF_EXTENT;
+use crate::extract::{
+    Capabilities, Extractor, GivenMesh, Job, LodJob, LodSummary, MeshCount, Output, Viewpoint,
+};
 use crate::scene::params::ParamError;
 use crate::scene::params::view::MeshOn;
 use crate::scene::params::view::{Method, Projection};
+use crate::scene::{BOX_HALF_EXTENT, Sphere};
 
 impl Renderer {
     /// Makes this frame's mesh with the chosen extractor: the room it reports is made first (a fixed
     /// triangle budget clamps instead, as on the device), then it writes into the buffers.
     pub(super) fn make_mesh(&mut self, encoder: &mut wgpu::CommandEncoder, timed: bool) -> DrawCount {
         self.stage.active = self.next_extractor();
-        let view = &self.settings.view;
-        let job = Job {
-            spheres: self.scene.spheres(),
-            iso: self.settings.iso,
-            grid: self.grid(),
-            construction: Construction { interpolation: view.interpolation, blend: view.blend },
-            lod: view.lod.then(|| LodJob { eye: self.lod_eye(), freeze: view.lod_freeze }),
-        };
+        let job = self.job_of(self.scene.spheres());
         let active = self.stage.active;
         if let Some(room) = self.stage.extractors[active].prepare(&job) {
             let room = self.stage.budgeted(room);
@@ -77,6 +73,33 @@ impl Renderer {
                 DrawCount::Direct(drawn)
             }
         }
+    }
+
+    /// What the frame's mesh is made of: `spheres` (the scene's) and the settings.
+    fn job_of<'a>(&self, spheres: &'a [Sphere]) -> Job<'a> {
+        let view = &self.settings.view;
+        Job {
+            spheres,
+            iso: self.settings.iso,
+            grid: self.grid(),
+            construction: Construction { interpolation: view.interpolation, blend: view.blend },
+            lod: view.lod.then(|| LodJob { eye: self.lod_eye(), freeze: view.lod_freeze }),
+        }
+    }
+
+    /// The next frame's mesh job, packed for a mesher elsewhere (the page's mesher worker), when a
+    /// mesher on the CPU makes it; `None` when compute passes do.
+    pub fn cpu_job(&self) -> Option<Vec<f32>> {
+        let capabilities = self.stage.extractors[self.next_extractor()].capabilities();
+        (!capabilities.needs_compute && !capabilities.lod)
+            .then(|| elsewhere::pack(capabilities.method, &self.job_of(self.scene.spheres())))
+    }
+
+    /// A mesh made elsewhere for the job `cpu_job` gave: the next frame draws it where its job is still
+    /// the frame's (else that frame meshes on its own).
+    pub fn give_mesh(&mut self, mesh: GivenMesh) {
+        let next = self.next_extractor();
+        self.stage.extractors[next].give_mesh(mesh);
     }
 
     /// True when no back face of the mesh can show: marching cubes gives a closed surface inside the

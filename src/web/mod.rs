@@ -15,7 +15,9 @@ use web_sys::HtmlCanvasElement;
 mod editing;
 mod gpu;
 mod memory;
+mod meshing;
 mod parameters;
+mod picture;
 mod teaching;
 
 pub use gpu::Gpu;
@@ -132,6 +134,8 @@ pub struct View {
     device: wgpu::Device,
     /// The first GPU error this view's frames raised (caught in error scopes around each frame).
     error: Rc<RefCell<Option<String>>>,
+    /// A copy of a frame asked for, for the picture in print.
+    picture: picture::FramePicture,
 }
 
 #[wasm_bindgen]
@@ -157,8 +161,13 @@ impl View {
         let format =
             *capabilities.formats.first().ok_or_else(|| js_error("the canvas offers no texture format"))?;
         let device = gpu.context.device().clone();
+        // Frames are copied for print where the canvas allows it: every WebGPU canvas does (wgpu
+        // reports only what all its backends' surfaces allow).
+        let copyable = gpu.adapter.get_info().backend == wgpu::Backend::BrowserWebGpu
+            || capabilities.usages.contains(wgpu::TextureUsages::COPY_SRC);
+        let picture = picture::FramePicture::new(copyable);
         let config = wgpu::SurfaceConfiguration {
-            usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
+            usage: wgpu::TextureUsages::RENDER_ATTACHMENT | picture.usage(),
             format,
             width,
             height,
@@ -171,7 +180,7 @@ impl View {
         let renderer =
             Renderer::on_context(&gpu.context, format, width, height, settings).map_err(js_error)?;
         surface.configure(&device, &config);
-        Ok(View { renderer, surface, config, device, error: Rc::default() })
+        Ok(View { renderer, surface, config, device, error: Rc::default(), picture })
     }
 
     /// Advances the animation by `dt` seconds and draws a frame on the canvas.
@@ -189,6 +198,7 @@ impl View {
         let memory = self.device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
         let view = texture.texture.create_view(&wgpu::TextureViewDescriptor::default());
         self.renderer.render(&view);
+        self.picture.frame_drawn(&self.device, self.renderer.queue(), &texture.texture);
         self.renderer.queue().present(texture);
         let (memory, validation) = (memory.pop(), validation.pop());
         let sink = self.error.clone();

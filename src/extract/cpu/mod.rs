@@ -3,6 +3,7 @@
 //! fill (`Queue::write_buffer`), and the mesh is drawn the same way. On a software adapter it beats
 //! compute passes emulated on the CPU; on WebGL2 it is the only extractor.
 
+pub mod elsewhere;
 pub mod facing;
 pub mod mesher;
 pub mod surface_nets;
@@ -10,7 +11,7 @@ pub mod surface_nets;
 pub use mesher::CpuMesher;
 pub use surface_nets::SurfaceNetsMesher;
 
-use super::extractor::{Capabilities, Extractor, Job, MeshCount, Output};
+use super::extractor::{Capabilities, Extractor, GivenMesh, Job, MeshCount, Output};
 use super::mesh::IndexedMesh;
 use super::uniforms::Counters;
 use crate::scene::params::view::Method;
@@ -29,6 +30,8 @@ pub trait CpuMeshing: Default + 'static {
     /// Blocks the bounds kept and cells the surface crosses, in the last mesh.
     fn blocks_and_cells(&self) -> (u32, u32);
     fn to_indexed(&self) -> IndexedMesh;
+    /// Takes a mesh another mesher of its kind made (the page's mesher worker) as its last mesh.
+    fn install(&mut self, mesh: GivenMesh);
 }
 
 /// Both meshers keep their mesh in `vertices` and `indices` and count blocks and cells in `stats()`.
@@ -52,6 +55,10 @@ macro_rules! cpu_meshing {
             fn to_indexed(&self) -> IndexedMesh {
                 <$mesher>::to_indexed(self)
             }
+            fn install(&mut self, mesh: GivenMesh) {
+                let grid = mesh.grid();
+                <$mesher>::install(self, mesh.vertices, mesh.indices, mesh.counts, grid);
+            }
         }
     };
 }
@@ -72,6 +79,8 @@ pub struct CpuMeshExtractor<M> {
     written: u32,
     /// The indices of the triangles facing the viewer, when only those are drawn.
     front: Vec<u32>,
+    /// A mesh made elsewhere for a frame not drawn yet.
+    given: Option<GivenMesh>,
 }
 
 impl<M: CpuMeshing> CpuMeshExtractor<M> {
@@ -114,7 +123,10 @@ impl<M: CpuMeshing> Extractor for CpuMeshExtractor<M> {
     /// Meshes the frame; the buffers need room for its vertices and indices only (it fills no block or
     /// cell lists, and asking for room in them would grow them for nothing).
     fn prepare(&mut self, job: &Job) -> Option<Counters> {
-        self.mesher.mesh_job(job);
+        match self.given.take() {
+            Some(given) if given.job == elsewhere::pack(M::METHOD, job) => self.mesher.install(given),
+            _ => self.mesher.mesh_job(job),
+        }
         let Counters { vertices, indices, .. } = self.counters();
         Some(Counters { active_blocks: 0, vertices, indices, active_cells: 0 })
     }
@@ -136,6 +148,10 @@ impl<M: CpuMeshing> Extractor for CpuMeshExtractor<M> {
         };
         self.written = written;
         MeshCount::Known { needed, indices: written, drawn }
+    }
+
+    fn give_mesh(&mut self, mesh: GivenMesh) {
+        self.given = Some(mesh);
     }
 
     fn cpu_mesh(&self) -> Option<IndexedMesh> {

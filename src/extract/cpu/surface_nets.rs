@@ -60,6 +60,14 @@ impl SurfaceNetsMesher {
         IndexedMesh::from_interleaved(&self.vertices, &self.indices)
     }
 
+    /// Takes a mesh made by another mesher of its kind as its last one, with what that one counted.
+    pub fn install(&mut self, vertices: Vec<f32>, indices: Vec<u32>, counts: [u32; 2], _grid: Grid) {
+        let [active_blocks, active_cells] = counts;
+        self.vertices = vertices;
+        self.indices = indices;
+        self.stats = SurfaceNetsStats { active_blocks, active_cells };
+    }
+
     /// Meshes the surface f = `iso` of `spheres` on `grid`.
     pub fn mesh(&mut self, spheres: &[Sphere], iso: f32, grid: Grid, construction: Construction) {
         let n = grid.cells_per_axis;

@@ -23,17 +23,6 @@ export async function readSceneFile(file) {
   return file.text();
 }
 
-/** A PNG blob of RGBA8 `pixels` of `width` × `height`. */
-export async function pngOf(pixels, width, height) {
-  const canvas = document.createElement('canvas');
-  canvas.width = width;
-  canvas.height = height;
-  canvas.getContext('2d').putImageData(new ImageData(new Uint8ClampedArray(pixels.buffer, pixels.byteOffset, pixels.byteLength), width, height), 0, 0);
-  return new Promise((resolve, reject) => {
-    canvas.toBlob((blob) => (blob ? resolve(blob) : reject(new Error('the browser could not encode the PNG'))), 'image/png');
-  });
-}
-
 /** A blob of mesh file `bytes` in `format`. */
 export const meshBlob = (bytes, format) => new Blob([bytes], { type: MESH_TYPES[format] });
 

@@ -12,6 +12,7 @@ import { releaseDelay } from '../engine/page-watch.js';
 import { applySetting } from './renderer-settings.js';
 import { ContextWatch } from './context-watch.js';
 import { messageBox } from './dom.js';
+import { MeshElsewhere } from './mesh-elsewhere.js';
 import { makeView } from './start.js';
 
 // The setting that holds spheres placed by hand (the scene's feature places them).
@@ -38,6 +39,8 @@ export class FigureFrames {
   #printOnce = false;
   // Callers waiting for the next frame (`nextFrame()`): it is drawn even off screen or when still.
   #frameWaiters = [];
+  // Meshes made by the page's mesher worker.
+  #elsewhere;
   // The canvas's WebGL2 context, lost and given back.
   #context;
   // The canvas's size, with the render scale that follows the frame times (a FigureSize).
@@ -54,6 +57,7 @@ export class FigureFrames {
     this.#loaded = loaded;
     this.#size = size;
     this.#message = messageBox(ctx.root);
+    this.#elsewhere = new MeshElsewhere(ctx.element, () => hub.requestFrame());
     this.#context = new ContextWatch(ctx.canvas, {
       lost: (reason) => this.suspend(reason, 'The drawing context was lost; starting again…'),
       restored: () => this.resume(),
@@ -199,6 +203,7 @@ export class FigureFrames {
   // Frees the renderer's GPU memory and leaves the canvas unconfigured (a WebGL2 figure gives its
   // device back, so a waiting figure can start).
   release() {
+    this.#elsewhere.forget();
     if (this.#view) {
       this.#view.free();
       this.#view = null;
@@ -290,24 +295,24 @@ export class FigureFrames {
       // The page's colours, a sync leader's spheres: what changes the picture before the frame.
       ctx.each('beforeFrame', now, view);
       const forPrint = this.#printOnce;
-      if (forPrint) {
-        this.#printOnce = false;
-        this.#dirty = Math.max(this.#dirty, ONE_FRAME);
-      }
+      if (forPrint) this.#dirty = Math.max(this.#dirty, ONE_FRAME);
       const elapsed = this.#last ? Math.min(Math.max(now - this.#last, 0) / 1000, 0.1) : 0;
       this.#last = now;
       // A sphere being dragged, a shape check that pause-on waits for, or a sync leader holds the
       // animation still.
       animating = !state.paused && state.speed > 0 && !ctx.some('holds');
       if (animating || this.#dirty > 0 || this.#stepRequested || view.needs_redraw()) {
-        const dt = animating ? elapsed * state.speed : this.#stepRequested ? 1 / 60 : 0;
+        const step = this.#elsewhere.step(view, animating ? elapsed * state.speed : this.#stepRequested ? 1 / 60 : 0);
+        if (step === null) return true;
+        this.#printOnce = false;
         this.#stepRequested = false;
-        const started = performance.now();
-        within(ctx.element, () => view.frame(dt));
-        const blockedMs = performance.now() - started;
         this.#dirty = Math.max(0, this.#dirty - 1);
-        const frame = { animating, settled: this.#dirty === 0, forPrint, blockedMs };
-        // The picture for print is taken in this task, while the canvas holds the frame.
+        // What the frame will be: a picture for print of it is asked for before it is drawn.
+        const frame = { animating, settled: this.#dirty === 0, forPrint, blockedMs: 0, view };
+        ctx.each('beforeDraw', now, frame);
+        const started = performance.now();
+        within(ctx.element, () => view.frame(step));
+        frame.blockedMs = performance.now() - started;
         ctx.each('drawn', now, frame);
         for (const resolve of this.#frameWaiters.splice(0)) resolve();
         if (forPrint && !this.#onScreen) {

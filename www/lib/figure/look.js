@@ -27,6 +27,26 @@ export const picturesTaken = () => pictures;
 export const resolvedTheme = (theme) => (theme === 'auto'
   ? (matchMedia('(prefers-color-scheme: light)').matches ? 'light' : 'dark') : theme);
 
+/**
+ * A PNG blob of RGBA8 `pixels` of `width` × `height`, encoded off the page's thread where the browser
+ * has OffscreenCanvas.
+ */
+export async function pngOf(pixels, width, height) {
+  const image = new ImageData(new Uint8ClampedArray(pixels.buffer, pixels.byteOffset, pixels.byteLength), width, height);
+  // A canvas kept in memory (`willReadFrequently`): one drawn on the GPU would wait for it.
+  const options = { willReadFrequently: true };
+  if (globalThis.OffscreenCanvas) {
+    const canvas = new OffscreenCanvas(width, height);
+    canvas.getContext('2d', options).putImageData(image, 0, 0);
+    return canvas.convertToBlob({ type: 'image/png' });
+  }
+  const canvas = Object.assign(document.createElement('canvas'), { width, height });
+  canvas.getContext('2d', options).putImageData(image, 0, 0);
+  return new Promise((resolve, reject) => {
+    canvas.toBlob((blob) => (blob ? resolve(blob) : reject(new Error('the browser could not encode the PNG'))), 'image/png');
+  });
+}
+
 export class FigureLook {
   #element;
   #root;
@@ -38,6 +58,9 @@ export class FigureLook {
   #firstPictureAt = Infinity;
   #printStale = true;
   #encoding = false;
+  // The view keeps a copy of the frame being drawn, of this size.
+  #copying = false;
+  #copySize = [0, 0];
   #styleAt = -Infinity;
   #background = '|';
   #printable = null;
@@ -111,16 +134,38 @@ export class FigureLook {
   }
 
   /**
-   * A frame was just drawn (this task): hides the poster, and takes a picture of it for print when due:
-   * every few seconds while animating, else once no more frames are due (`settled`); at once for a
-   * frame drawn only for print (`forPrint`), else not in the first second after the first frame.
+   * Whether the picture for print is taken of the frame about to be drawn: every few seconds while
+   * animating, else once no more frames are due (`settled`); at once for a frame drawn only for print
+   * (`forPrint`), else not in the first second after the first frame.
    */
-  drawn(now, animating, settled, forPrint = false) {
-    this.#poster.hidden = true;
+  #due(now, { animating, settled, forPrint }) {
     if (this.#firstPictureAt === Infinity) this.#firstPictureAt = forPrint ? now : now + FIRST_PICTURE_MS;
-    const due = forPrint || (now >= this.#firstPictureAt
-      && (animating ? now - this.#printedAt >= PRINT_EVERY_MS : settled));
-    if (!due || this.#encoding) {
+    return !this.#encoding && (forPrint || (now >= this.#firstPictureAt
+      && (animating ? now - this.#printedAt >= PRINT_EVERY_MS : settled)));
+  }
+
+  /** A frame is about to be drawn by `frame.view`: when its picture is due, the view keeps a copy. */
+  beforeDraw(now, frame) {
+    this.#copying = this.#due(now, frame) && frame.view.keep_picture();
+    if (this.#copying) this.#copySize = [this.#canvas.width, this.#canvas.height];
+  }
+
+  /**
+   * A frame was just drawn (this task): hides the poster, and takes its picture for print when due. The
+   * view's copy of the frame is read back and encoded without waiting on the page's thread; a canvas
+   * that cannot be copied from (WebGL2) gives its own, while it still holds the frame.
+   */
+  drawn(now, frame) {
+    this.#poster.hidden = true;
+    if (!this.#due(now, frame)) {
+      this.#printStale = true;
+      return;
+    }
+    const copied = this.#copying;
+    this.#copying = false;
+    const copy = copied ? frame.view.kept_picture() : null;
+    if (copied && !copy) {
+      // The canvas was not ready for the frame (it is configured again): the next one is taken.
       this.#printStale = true;
       return;
     }
@@ -128,8 +173,11 @@ export class FigureLook {
     this.#printStale = false;
     this.#encoding = true;
     pictures += 1;
-    // The canvas holds the frame only until this task ends: the copy is taken now, encoded later.
-    this.#canvas.toBlob((blob) => {
+    const [width, height] = this.#copySize;
+    const picture = copy
+      ? copy.then((pixels) => pngOf(pixels, width, height))
+      : new Promise((resolve) => this.#canvas.toBlob(resolve));
+    picture.catch(() => null).then((blob) => {
       this.#encoding = false;
       if (!blob) return;
       if (this.#printUrl) URL.revokeObjectURL(this.#printUrl);
@@ -193,7 +241,6 @@ export class Look extends FigureLook {
     this.#ctx.redraw(PICTURE_FRAMES);
   }
 
-  drawn(now, frame) { super.drawn(now, frame.animating, frame.settled, frame.forPrint); }
 
   // The picture for print is older than the frame on screen: draw once more and take it.
   idle() {

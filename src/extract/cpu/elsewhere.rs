@@ -1,0 +1,150 @@
+//! Meshing a frame somewhere else than where it is drawn (the page's mesher worker): the frame's job
+//! packed as numbers, meshed from them by the same CPU meshers, and the mesh handed back to the
+//! extractor that draws it, which takes it in place of meshing when the job is still the frame's.
+
+use super::{CpuMesher, CpuMeshing, SurfaceNetsMesher};
+use crate::extract::extractor::{GivenMesh, Job};
+use crate::extract::reference::{Construction, Grid};
+use crate::scene::Sphere;
+use crate::scene::params::view::{Blend, Interpolation, Method};
+use glam::Vec3;
+
+/// Numbers before the spheres: method, iso level, cells per axis, interpolation, blend.
+const HEAD: usize = 5;
+/// Numbers per sphere: centre, radius, charge.
+const PER_SPHERE: usize = 5;
+/// The finest grid a job may ask for (the largest a device holds without level of detail is smaller).
+const MAX_CELLS: f32 = 1024.0;
+
+/// `job` meshed by a mesher of `method`, as numbers: method, iso, cells per axis, interpolation,
+/// blend, then centre, radius and charge of each sphere.
+pub fn pack(method: Method, job: &Job) -> Vec<f32> {
+    let construction = job.construction;
+    let mut packed = Vec::with_capacity(HEAD + PER_SPHERE * job.spheres.len());
+    packed.extend([
+        method.index() as f32,
+        job.iso,
+        job.grid.cells_per_axis as f32,
+        construction.interpolation.index() as f32,
+        construction.blend.index() as f32,
+    ]);
+    for s in job.spheres {
+        packed.extend([s.center.x, s.center.y, s.center.z, s.radius, s.charge]);
+    }
+    packed
+}
+
+/// The CPU meshers of one thread, kept between jobs so that their buffers are reused.
+#[derive(Default)]
+pub struct Meshers {
+    marching_cubes: CpuMesher,
+    surface_nets: SurfaceNetsMesher,
+}
+
+impl Meshers {
+    /// Meshes a packed job; says what is wrong with one that is not a job.
+    pub fn mesh(&mut self, packed: &[f32]) -> Result<GivenMesh, String> {
+        let (method, spheres, iso, grid, construction) = unpack(packed)?;
+        let job = Job { spheres: &spheres, iso, grid, construction, lod: None };
+        let mesher: &mut dyn CpuMeshed = match method {
+            Method::MarchingCubes => &mut self.marching_cubes,
+            Method::SurfaceNets => &mut self.surface_nets,
+        };
+        mesher.mesh_it(&job);
+        Ok(mesher.given(packed.to_vec()))
+    }
+}
+
+/// A CPU mesher as the job runner sees it.
+trait CpuMeshed {
+    fn mesh_it(&mut self, job: &Job);
+    fn given(&self, job: Vec<f32>) -> GivenMesh;
+}
+
+impl<M: CpuMeshing> CpuMeshed for M {
+    fn mesh_it(&mut self, job: &Job) {
+        self.mesh_job(job);
+    }
+
+    fn given(&self, job: Vec<f32>) -> GivenMesh {
+        let (blocks, cells) = self.blocks_and_cells();
+        GivenMesh {
+            job,
+            vertices: self.vertices().to_vec(),
+            indices: self.indices().to_vec(),
+            counts: [blocks, cells],
+        }
+    }
+}
+
+type Unpacked = (Method, Vec<Sphere>, f32, Grid, Construction);
+
+fn unpack(packed: &[f32]) -> Result<Unpacked, String> {
+    let word = |at: usize, words: &[&str]| -> Result<usize, String> {
+        let value = packed[at];
+        (value >= 0.0 && (value as usize) < words.len() && value.fract() == 0.0)
+            .then_some(value as usize)
+            .ok_or_else(|| {
+                format!("a packed mesh job has {value} where a choice of {} belongs", words.join(", "))
+            })
+    };
+    if packed.len() < HEAD || !(packed.len() - HEAD).is_multiple_of(PER_SPHERE) {
+        return Err(format!("a packed mesh job has {} numbers: 5 and then 5 per sphere", packed.len()));
+    }
+    let method = [Method::MarchingCubes, Method::SurfaceNets][word(0, Method::WORDS)?];
+    let interpolation = [Interpolation::Linear, Interpolation::Midpoint][word(3, Interpolation::WORDS)?];
+    let blend = [Blend::Sum, Blend::Max][word(4, Blend::WORDS)?];
+    let cells = packed[2];
+    if !((1.0..=MAX_CELLS).contains(&cells) && cells.fract() == 0.0) {
+        return Err(format!("a packed mesh job has {cells} cells per axis"));
+    }
+    let spheres = packed[HEAD..]
+        .chunks_exact(PER_SPHERE)
+        .map(|s| Sphere {
+            center: Vec3::new(s[0], s[1], s[2]),
+            radius: s[3],
+            velocity: Vec3::ZERO,
+            charge: s[4],
+        })
+        .collect();
+    let grid = Grid { cells_per_axis: cells as u32 };
+    Ok((method, spheres, packed[1], grid, Construction { interpolation, blend }))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::Scene;
+
+    #[test]
+    fn a_job_meshed_from_its_numbers_is_the_mesh_of_the_job() {
+        let scene = Scene::new(7, 5).unwrap();
+        let construction = Construction { interpolation: Interpolation::Linear, blend: Blend::Sum };
+        let job = Job {
+            spheres: scene.spheres(),
+            iso: 0.9,
+            grid: Grid { cells_per_axis: 24 },
+            construction,
+            lod: None,
+        };
+        for method in [Method::MarchingCubes, Method::SurfaceNets] {
+            let packed = pack(method, &job);
+            let given = Meshers::default().mesh(&packed).unwrap();
+            let mut direct: Box<dyn CpuMeshed> = match method {
+                Method::MarchingCubes => Box::<CpuMesher>::default(),
+                Method::SurfaceNets => Box::<SurfaceNetsMesher>::default(),
+            };
+            direct.mesh_it(&job);
+            assert_eq!(given, direct.given(packed.clone()), "{method:?}");
+            assert!(!given.indices.is_empty());
+        }
+    }
+
+    #[test]
+    fn numbers_that_are_not_a_job_are_refused_with_what_is_wrong() {
+        let mut meshers = Meshers::default();
+        assert!(meshers.mesh(&[0.0, 1.0]).unwrap_err().contains("2 numbers"));
+        assert!(meshers.mesh(&[7.0, 1.0, 8.0, 0.0, 0.0]).unwrap_err().contains("marching_cubes"));
+        assert!(meshers.mesh(&[0.0, 1.0, 0.5, 0.0, 0.0]).unwrap_err().contains("cells per axis"));
+    }
+}

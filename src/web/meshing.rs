@@ -1,0 +1,53 @@
+//! Meshing off the page's thread: a view gives the job of its next frame's CPU mesh as numbers, the
+//! page's mesher worker (a second instance of this module) meshes it with `mesh_job`, and the view
+//! takes the mesh back and draws it, so that the page's thread only uploads and draws.
+
+use super::{View, js_error};
+use crate::extract::GivenMesh;
+use crate::extract::cpu::elsewhere::Meshers;
+use std::cell::RefCell;
+use wasm_bindgen::prelude::*;
+
+thread_local! {
+    /// This instance's meshers, whose buffers are kept from job to job.
+    static MESHERS: RefCell<Meshers> = RefCell::default();
+}
+
+/// Meshes a job `View::cpu_job` packed: `[vertices (Float32Array), indices (Uint32Array), active
+/// blocks, active cells]`, for `View::give_mesh`.
+#[wasm_bindgen]
+pub fn mesh_job(packed: &[f32]) -> Result<js_sys::Array, JsError> {
+    let mesh = MESHERS.with(|meshers| meshers.borrow_mut().mesh(packed)).map_err(js_error)?;
+    let [blocks, cells] = mesh.counts;
+    Ok(js_sys::Array::of4(
+        &js_sys::Float32Array::from(mesh.vertices.as_slice()),
+        &js_sys::Uint32Array::from(mesh.indices.as_slice()),
+        &blocks.into(),
+        &cells.into(),
+    ))
+}
+
+#[wasm_bindgen]
+impl View {
+    /// Advances the animation by `dt` seconds without drawing (the frame is drawn once its mesh is in).
+    pub fn advance(&mut self, dt: f32) -> Result<(), JsError> {
+        self.renderer.update(dt).map_err(js_error)
+    }
+
+    /// The next frame's mesh job as numbers, when a mesher on the CPU makes it (else none).
+    pub fn cpu_job(&self) -> Option<Vec<f32>> {
+        self.renderer.cpu_job()
+    }
+
+    /// The mesh `mesh_job` made of `job`: the next frame draws it while its job is still the frame's.
+    pub fn give_mesh(
+        &mut self,
+        job: Vec<f32>,
+        vertices: Vec<f32>,
+        indices: Vec<u32>,
+        blocks: u32,
+        cells: u32,
+    ) {
+        self.renderer.give_mesh(GivenMesh { job, vertices, indices, counts: [blocks, cells] });
+    }
+}

@@ -1,0 +1,58 @@
+// Meshing off the page's thread: one worker per page (mesh-worker.js) meshes the jobs of every figure
+// whose CPU mesher makes its mesh, so that the page's thread stays free while they animate. Where the
+// page cannot start a module worker (no Worker, a module imported from a blob: URL, the worker's file
+// missing), `meshWorker()` is null and the figures mesh on the page's thread as before.
+
+import { backendName } from './wasm.js';
+
+let worker;
+let asked = 0;
+const waiting = new Map();
+
+// Every job still waiting fails with `why`, and no new one is taken.
+function stop(why) {
+  worker?.terminate();
+  worker = null;
+  for (const { reject } of waiting.values()) reject(new Error(why));
+  waiting.clear();
+}
+
+function make() {
+  try {
+    const made = new Worker(new URL('./mesh-worker.js', import.meta.url), { type: 'module', name: 'metaballs mesher' });
+    made.onmessage = ({ data }) => {
+      const job = waiting.get(data.id);
+      waiting.delete(data.id);
+      if (!job) return;
+      if (data.error) job.reject(new Error(data.error));
+      else job.resolve([data.vertices, data.indices, data.blocks, data.cells]);
+    };
+    made.onerror = (event) => {
+      event.preventDefault?.();
+      stop(`the mesher worker stopped (${event.message || 'it could not load'})`);
+    };
+    made.postMessage({ build: backendName() });
+    return made;
+  } catch {
+    return null;
+  }
+}
+
+/**
+ * The page's mesher worker (made on first use, once the wasm has loaded), or null where there is none:
+ * `{ mesh(job) }` resolves with `[vertices, indices, activeBlocks, activeCells]` for `View.give_mesh`.
+ */
+export function meshWorker() {
+  if (worker === undefined) worker = typeof Worker === 'function' ? make() : null;
+  if (!worker) return null;
+  return {
+    mesh: (job) => new Promise((resolve, reject) => {
+      asked += 1;
+      waiting.set(asked, { resolve, reject });
+      worker.postMessage({ id: asked, job });
+    }),
+  };
+}
+
+/** Whether the figures' meshes are made off the page's thread (false until a figure has asked). */
+export const meshingOffThread = () => Boolean(worker);

@@ -1,0 +1,69 @@
+// A figure's frames whose mesh the page's mesher worker makes: before such a frame the scene advances
+// and the view's mesh job goes to the worker; the frame is drawn, without a further step, once the mesh
+// is back. Meanwhile the page's thread is free, and the time that passes is owed to the next step. A
+// figure whose meshes come from compute passes, or a page without the worker, draws at once.
+
+import { meshWorker } from '../engine/meshers.js';
+import { within } from '../engine/wasm.js';
+
+// The longest step the animation takes at once, in seconds (as a slow frame's).
+const MAX_STEP = 0.1;
+
+const sameJob = (a, b) => a !== undefined && b !== undefined && a.length === b.length && a.every((x, i) => x === b[i]);
+
+export class MeshElsewhere {
+  #element;
+  #request = null;
+  // The worker failed this figure once: it meshes on the page's thread from then on.
+  #here = false;
+  #requestFrame;
+
+  /** `requestFrame()` asks the page for a frame once a mesh is back. */
+  constructor(element, requestFrame) {
+    this.#element = element;
+    this.#requestFrame = requestFrame;
+  }
+
+  /**
+   * The step (in seconds) to draw `view`'s next frame with after advancing it by `dt`, or null while
+   * its mesh is being made elsewhere (the frame is drawn on a later animation frame).
+   */
+  step(view, dt) {
+    const request = this.#request;
+    if (request?.busy) {
+      request.owed = Math.min(request.owed + dt, MAX_STEP);
+      return null;
+    }
+    let step = dt;
+    if (request) {
+      this.#request = null;
+      const job = within(this.#element, () => view.cpu_job());
+      if (request.mesh && sameJob(job, request.job)) {
+        within(this.#element, () => view.give_mesh(request.job, ...request.mesh));
+        return 0;
+      }
+      // The settings changed while it was meshed: the new job goes out, with the time owed.
+      step = Math.min(request.owed + dt, MAX_STEP);
+    }
+    const worker = this.#here ? null : meshWorker();
+    if (!worker) return step;
+    within(this.#element, () => view.advance(step));
+    const job = within(this.#element, () => view.cpu_job());
+    if (!job) return 0;
+    const made = { job, busy: true, owed: 0, mesh: null };
+    this.#request = made;
+    worker.mesh(job).then((mesh) => { made.mesh = mesh; }, (error) => {
+      this.#here = true;
+      console.warn(`<metaballs-view> meshes on the page's thread: ${error.message}`);
+    }).finally(() => {
+      made.busy = false;
+      this.#requestFrame();
+    });
+    return null;
+  }
+
+  /** The view is gone (released, lost): a mesh being made for it is dropped. */
+  forget() {
+    this.#request = null;
+  }
+}
