@@ -5,8 +5,8 @@
 # notebook widget's module, for anywidget hosts such as MyST's {anywidget} directive). Every path inside
 # is relative, so the folder works under any sub-path of any host.
 #
-# The element's modules are bundled (esbuild, pinned in www/tools/) into two entry files and one
-# shared file, so a visitor's browser fetches three scripts at once instead of discovering the modules
+# The element's modules are bundled (esbuild, pinned in www/tools/) into two entry files (and the
+# mesher worker's, in www/lib/engine/ beside the code that starts it) and one shared file, so a visitor's browser fetches three scripts at once instead of discovering the modules
 # import by import. The shared file sits in www/lib/engine/, where the module that loads the
 # WebAssembly was, so the relative paths to it stay as they are in the sources.
 set -euo pipefail
@@ -19,7 +19,7 @@ need_esbuild
 rm -rf dist
 mkdir -p dist/www dist/pkg dist/pkg-webgl
 cp index.html embed.html dist/
-"$esbuild" www/metaballs-view.js www/page.js --bundle --splitting --format=esm --minify --sourcemap \
+"$esbuild" www/metaballs-view.js www/page.js www/lib/engine/mesh-worker.js --bundle --splitting --format=esm --minify --sourcemap \
     --target=es2022 --outbase=www --outdir=dist/www --chunk-names='lib/engine/[name]-[hash]' \
     --external:'../../../pkg/*' --external:'../../../pkg-webgl/*' --log-level=warning
 if grep -l 'pkg/metaballs' dist/www/*.js; then

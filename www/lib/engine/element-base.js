@@ -7,6 +7,7 @@ import { SPELLINGS } from '../core/table.js';
 import { hub } from './hub.js';
 import { setWasmSources, wasmBytes, wasmHeapBytes } from './wasm.js';
 import { frameBudget, releaseDelay, setFrameBudget, setReleaseDelay } from './page-watch.js';
+import { meshingOffThread } from './meshers.js';
 
 const Base = globalThis.HTMLElement ?? class {};
 
@@ -26,6 +27,8 @@ export class FigureBase extends Base {
   static get wasmBytes() { return wasmBytes(); }
   /** Bytes the figures hold in that memory (allocated and not freed). */
   static get wasmHeapBytes() { return wasmHeapBytes(); }
+  /** True once the figures' CPU meshes are made by the page's mesher worker, off the page's thread. */
+  static get meshingOffThread() { return meshingOffThread(); }
   /** Pipeline sets compiled on the shared device (not one per element). */
   static get pipelineSets() { return hub.gpu?.pipeline_sets_built() ?? 0; }
   /**

@@ -1,7 +1,8 @@
 // The page's mesher worker: a second instance of the page's WebAssembly build, started in a worker,
 // that meshes the frames the figures' CPU mesher would otherwise mesh on the page's thread. It is told
-// which build to start (`{ build }`), then answers each `{ id, job }` (a view's packed mesh job) with the
-// mesh's vertices and indices, handed over without a copy, or with what went wrong.
+// which build to start (`{ build }`) and says when it is ready (or why it failed), then answers each
+// `{ id, job }` (a view's packed mesh job) with the mesh's vertices and indices, handed over without a
+// copy, or with what went wrong.
 
 // The builds, as wasm.js names them; the paths are written out so that bundlers find the files.
 const BUILDS = {
@@ -29,7 +30,7 @@ async function start(build) {
 self.onmessage = async ({ data }) => {
   if (data.build) {
     started = start(BUILDS[data.build]);
-    started.catch(() => { /* answered with each job */ });
+    started.then(() => self.postMessage({ ready: true }), (error) => self.postMessage({ failed: String(error?.message ?? error) }));
     return;
   }
   const { id, job } = data;

@@ -1,11 +1,15 @@
 // Meshing off the page's thread: one worker per page (mesh-worker.js) meshes the jobs of every figure
 // whose CPU mesher makes its mesh, so that the page's thread stays free while they animate. Where the
-// page cannot start a module worker (no Worker, a module imported from a blob: URL, the worker's file
-// missing), `meshWorker()` is null and the figures mesh on the page's thread as before.
+// page cannot start a module worker (no Worker, the element's modules on another origin) or its wasm
+// was given by the host rather than fetched from beside the modules (a notebook widget's, whose worker
+// would have no file to start from), `meshWorker()` is null and the figures mesh on the page's thread.
 
-import { backendName } from './wasm.js';
+import { backendName, wasmBesideModule } from './wasm.js';
 
 let worker;
+// The worker has started its wasm: until then the figures mesh on the page's thread (their first
+// frames do not wait for a second wasm to compile).
+let ready = false;
 let asked = 0;
 const waiting = new Map();
 
@@ -21,6 +25,8 @@ function make() {
   try {
     const made = new Worker(new URL('./mesh-worker.js', import.meta.url), { type: 'module', name: 'metaballs mesher' });
     made.onmessage = ({ data }) => {
+      if (data.ready) ready = true;
+      if (data.failed) stop(`the mesher worker could not start (${data.failed})`);
       const job = waiting.get(data.id);
       waiting.delete(data.id);
       if (!job) return;
@@ -39,12 +45,13 @@ function make() {
 }
 
 /**
- * The page's mesher worker (made on first use, once the wasm has loaded), or null where there is none:
+ * The page's mesher worker (made on first use, once the wasm has loaded), or null where there is none
+ * or it is still starting:
  * `{ mesh(job) }` resolves with `[vertices, indices, activeBlocks, activeCells]` for `View.give_mesh`.
  */
 export function meshWorker() {
-  if (worker === undefined) worker = typeof Worker === 'function' ? make() : null;
-  if (!worker) return null;
+  if (worker === undefined) worker = typeof Worker === 'function' && wasmBesideModule() ? make() : null;
+  if (!worker || !ready) return null;
   return {
     mesh: (job) => new Promise((resolve, reject) => {
       asked += 1;
@@ -55,4 +62,4 @@ export function meshWorker() {
 }
 
 /** Whether the figures' meshes are made off the page's thread (false until a figure has asked). */
-export const meshingOffThread = () => Boolean(worker);
+export const meshingOffThread = () => Boolean(worker) && ready;

@@ -77,6 +77,9 @@ export function setWasmSources(sources) {
   wasmSources = { ...sources };
 }
 
+/** True when the build in use was fetched from beside this module (not given by the host). */
+export const wasmBesideModule = () => !wasmSources[backend];
+
 // What the figures should be told once the wasm is in (it came with the wrong type), or null.
 let warning = null;
 /** A notice for every figure about how the wasm was served, or null. */

@@ -1,0 +1,88 @@
+// The page's thread stays free while figures animate: four figures of 128³ cells × 16 spheres mesh in
+// the page's mesher worker (SwiftShader meshes on the CPU) and the page sees no long task once they
+// draw; without module workers they mesh on the page's thread as before. Either way the figures draw,
+// take their pictures for print and come back after a lost device.
+
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { useServerAndBrowser, openClosedAfterEach, pixelStats } from './helpers.js';
+
+useServerAndBrowser();
+
+const open = openClosedAfterEach({ viewport: { width: 960, height: 700 } });
+const FOUR = 'tests/e2e/fixtures/grid.html?n=4&cols=2&res=128&spheres=16';
+// How long the long tasks are counted, in ms.
+const WATCHED_MS = 10_000;
+
+// Counts the page's long tasks from its start (before any script of the page).
+function watchLongTasks() {
+  window.longTasks = [];
+  new PerformanceObserver((list) => {
+    for (const entry of list.getEntries()) window.longTasks.push({ start: entry.startTime, ms: entry.duration });
+  }).observe({ type: 'longtask', buffered: true });
+}
+
+// Hides the page's Worker, as in a browser without module workers.
+function noWorkers() {
+  delete window.Worker;
+}
+
+const allDrawn = (page, frames) => page.waitForFunction((n) => {
+  const figures = [...document.querySelectorAll('metaballs-view')];
+  return figures.length === 4 && figures.every((e) => e.framesDrawn >= n && e.stats?.triangles > 0);
+}, frames, { timeout: 90_000 });
+const framesOf = (page) => page.evaluate(() => [...document.querySelectorAll('metaballs-view')].map((e) => e.framesDrawn));
+
+test('four animating figures of 128³ × 16 spheres mesh off the page\'s thread: no long task once they draw', async () => {
+  const { page, errors } = await open(FOUR, { initScript: watchLongTasks });
+  await allDrawn(page, 3);
+  assert.equal(await page.evaluate(() => customElements.get('metaballs-view').meshingOffThread), true);
+  const from = await page.evaluate(() => performance.now());
+  const before = await framesOf(page);
+  await page.waitForTimeout(WATCHED_MS);
+  const after = await framesOf(page);
+  const tasks = await page.evaluate((t) => window.longTasks.filter((task) => task.start >= t), from);
+  const drawn = after.map((n, i) => n - before[i]);
+  console.log(`in ${WATCHED_MS / 1000} s: frames ${drawn.join(', ')}; long tasks ${tasks.length}`
+    + `${tasks.length ? ` (${tasks.map((task) => Math.round(task.ms)).join(', ')} ms)` : ''}`);
+  assert.ok(drawn.every((n) => n >= 5), `the figures drew ${drawn.join(', ')} frames in ${WATCHED_MS / 1000} s`);
+  assert.deepEqual(tasks.map((task) => Math.round(task.ms)), [], 'long tasks on the page\'s thread while the figures animate');
+  assert.deepEqual(errors, []);
+});
+
+for (const [path, initScript] of [['the mesher worker', null], ['the page\'s thread', noWorkers]]) {
+  test(`meshing on ${path}: the figures draw, print and come back after a lost device`, async () => {
+    const { page, errors } = await open(FOUR, initScript ? { initScript } : {});
+    await allDrawn(page, 2);
+    assert.equal(await page.evaluate(() => customElements.get('metaballs-view').meshingOffThread), !initScript);
+    // A paused figure asked for a frame draws one, with its whole mesh.
+    const triangles = await page.evaluate(async () => {
+      const figure = document.querySelector('metaballs-view');
+      figure.pause();
+      return (await figure.nextFrame()).triangles;
+    });
+    console.log(`meshing on ${path}: the first figure, paused, draws ${triangles} triangles`);
+    assert.ok(triangles > 10_000, `${triangles} triangles at 128³ × 16 spheres`);
+
+    // Pictures for print, taken of drawn frames.
+    await page.evaluate(() => Promise.all([...document.querySelectorAll('metaballs-view')].map((e) => e.printable())));
+    const picture = await page.evaluate(async () => {
+      const image = document.querySelector('metaballs-view').shadowRoot.getElementById('print-frame');
+      await image.decode();
+      const canvas = Object.assign(document.createElement('canvas'), { width: image.naturalWidth, height: image.naturalHeight });
+      canvas.getContext('2d').drawImage(image, 0, 0);
+      return { width: image.naturalWidth, url: canvas.toDataURL('image/png') };
+    });
+    assert.ok(picture.width > 100, `the picture for print is ${picture.width} pixels wide`);
+    const { surface } = await pixelStats(page, Buffer.from(picture.url.split(',')[1], 'base64'));
+    assert.ok(surface > 0.01, `the picture for print shows ${(surface * 100).toFixed(2)}% of surface`);
+
+    // A lost device: every figure draws again.
+    const before = await framesOf(page);
+    await page.evaluate(() => customElements.get('metaballs-view').destroyDevice());
+    await page.waitForFunction(() => customElements.get('metaballs-view').devicesCreated === 2, null, { timeout: 60_000 });
+    await page.waitForFunction((b) => [...document.querySelectorAll('metaballs-view')].every((e, i) => e.framesDrawn > b[i] + 2),
+      before, { timeout: 60_000 });
+    assert.deepEqual(errors.filter((e) => !/lost|destroy/i.test(e)), []);
+  });
+}
