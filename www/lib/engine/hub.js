@@ -14,6 +14,12 @@ export const WEBGPU_HELP =
 /** WebGL2 figures drawing at once: browsers allow a page only a few WebGL contexts (16 in Chromium). */
 export const MAX_WEBGL_FIGURES = 8;
 
+/**
+ * How long one animation frame's task draws figures before it leaves the rest to the next one, in ms
+ * (a task over 50 ms is a long task, which holds up the page's input and scrolling).
+ */
+export const TASK_SHARE_MS = 20;
+
 /** What a WebGL2 figure waiting for a device says. */
 export const WEBGL_WAIT = 'This browser has no WebGPU, so the figures draw with WebGL2, which allows a page '
   + `only a few drawing contexts: ${MAX_WEBGL_FIGURES} figures are drawing already. This one starts when `
@@ -30,6 +36,8 @@ class Hub {
     this.recovering = false;
     this.stopped = null;
     this.frameRequested = false;
+    // The figure that draws first in the next animation frame (one left over from the last).
+    this.nextInLine = 0;
     // WebGL2 figures holding a device now, and those waiting for one to be given back.
     this.webglHolders = new Set();
     this.webglWaiting = new Set();
@@ -149,9 +157,20 @@ class Hub {
         for (const element of this.elements) element.fail('The GPU reported an error', error);
       }
     }
+    // The figures draw in turn until the task has run its share of the page's thread; the rest draw
+    // in the next animation frame, first in line, so that no figure waits twice.
+    const started = performance.now();
+    const elements = [...this.elements];
+    const first = this.nextInLine % Math.max(elements.length, 1);
     let wanted = false;
-    for (const element of this.elements) {
-      if (element.tick(now)) wanted = true;
+    for (let k = 0; k < elements.length; k++) {
+      const at = (first + k) % elements.length;
+      if (k > 0 && performance.now() - started > TASK_SHARE_MS) {
+        this.nextInLine = at;
+        wanted = true;
+        break;
+      }
+      if (elements[at].tick(now)) wanted = true;
     }
     if (wanted) this.requestFrame();
   }

@@ -78,12 +78,15 @@ export class Hud {
   }
 
   /**
-   * Called every animation frame; refreshes the figures every half second from `view`'s stats.
+   * Called every animation frame; refreshes the figures every half second from `view`'s stats (the
+   * first ones as soon as there are any).
    * Returns the mean frame time when it refreshed with frames drawn, else null.
    */
   update(now, view) {
     if (!this.since) this.since = now;
     const elapsed = now - this.since;
+    // The first counts show as soon as the GPU reports them; then every half second.
+    if (this.frameRead === undefined) this.readStats(view);
     if (elapsed < 500) return null;
     const $ = (id) => this.root.getElementById(id);
     this.stats.fps = (this.frames * 1000) / elapsed;
