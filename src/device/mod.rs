@@ -110,7 +110,10 @@ pub fn render_target(
 /// Copies a 4-byte-per-texel 2D texture (COPY_SRC) into a mappable buffer and returns its texels, rows
 /// top to bottom without padding. Waits for the GPU: for tests and tools.
 pub async fn read_texture(device: &wgpu::Device, queue: &wgpu::Queue, texture: &wgpu::Texture) -> Vec<u8> {
-    TextureCopy::submit(device, queue, texture).texels(device).await
+    TextureCopy::submit(device, queue, texture)
+        .texels(device)
+        .await
+        .expect("the device was lost while reading a texture back")
 }
 
 /// A texture's texels copied into a mappable buffer: the copy is submitted at once (while the texture
@@ -153,16 +156,23 @@ impl TextureCopy {
         TextureCopy { buffer, row_bytes, padded }
     }
 
-    /// The texels, rows top to bottom without padding, once the GPU has made the copy.
-    pub async fn texels(self, device: &wgpu::Device) -> Vec<u8> {
-        let bytes = map_and_read(device, &self.buffer).await;
+    /// The texels, rows top to bottom without padding, once the GPU has made the copy; none when the
+    /// device was lost first.
+    pub async fn texels(self, device: &wgpu::Device) -> Option<Vec<u8>> {
+        let bytes = try_map_and_read(device, &self.buffer).await?;
         let (padded, row_bytes) = (self.padded as usize, self.row_bytes as usize);
-        bytes.chunks(padded).flat_map(|row| &row[..row_bytes]).copied().collect()
+        Some(bytes.chunks(padded).flat_map(|row| &row[..row_bytes]).copied().collect())
     }
 }
 
 /// Maps a MAP_READ buffer and returns its bytes.
 pub async fn map_and_read(device: &wgpu::Device, buffer: &wgpu::Buffer) -> Vec<u8> {
+    try_map_and_read(device, buffer).await.expect("mapping a readback buffer failed")
+}
+
+/// Maps a MAP_READ buffer and returns its bytes, or none when the mapping fails (the device was lost
+/// meanwhile).
+pub async fn try_map_and_read(device: &wgpu::Device, buffer: &wgpu::Buffer) -> Option<Vec<u8>> {
     let (sender, receiver) = futures_channel::oneshot::channel();
     buffer.map_async(wgpu::MapMode::Read, .., move |result| {
         let _ = sender.send(result);
@@ -173,10 +183,10 @@ pub async fn map_and_read(device: &wgpu::Device, buffer: &wgpu::Buffer) -> Vec<u
         .expect("the device was lost while reading a buffer back");
     #[cfg(target_arch = "wasm32")]
     let _ = device;
-    receiver.await.expect("the map callback was dropped").expect("mapping a readback buffer failed");
-    let bytes = buffer.get_mapped_range(..).expect("mapped range").to_vec();
+    receiver.await.ok()?.ok()?;
+    let bytes = buffer.get_mapped_range(..).ok()?.to_vec();
     buffer.unmap();
-    bytes
+    Some(bytes)
 }
 
 /// A compute shader module made of `shaders/common.wgsl` followed by a pass's own source.

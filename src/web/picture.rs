@@ -52,7 +52,10 @@ impl View {
         let device = self.device.clone();
         Some(wasm_bindgen_futures::future_to_promise(async move {
             let _polling = Polling::start(&device);
-            let mut pixels = copy.texels(&device).await;
+            let mut pixels = copy
+                .texels(&device)
+                .await
+                .ok_or_else(|| JsValue::from_str("the device was lost before the frame was read back"))?;
             // The canvas shows the frame opaque, whatever alpha the passes left.
             for texel in pixels.chunks_exact_mut(4) {
                 if bgra {

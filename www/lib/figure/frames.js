@@ -315,7 +315,7 @@ export class FigureFrames {
         frame.blockedMs = performance.now() - started;
         ctx.each('drawn', now, frame);
         for (const resolve of this.#frameWaiters.splice(0)) resolve();
-        if (forPrint && !this.#onScreen) {
+        if (forPrint && !this.#onScreen && !asked) {
           // Not a frame anyone saw: only the picture counts. A figure not near the viewport lets go
           // of its renderer again.
           if (!this.#near) this.release();
