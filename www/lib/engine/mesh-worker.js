@@ -1,35 +1,24 @@
 // The page's mesher worker: a second instance of the page's WebAssembly build, started in a worker,
 // that meshes the frames the figures' CPU mesher would otherwise mesh on the page's thread. It is told
-// which build to start (`{ build }`) and says when it is ready (or why it failed), then answers each
-// `{ id, job }` (a view's packed mesh job) with the mesh's vertices and indices, handed over without a
-// copy, or with what went wrong.
-
-// The builds, as wasm.js names them; the paths are written out so that bundlers find the files.
-const BUILDS = {
-  webgpu: {
-    glue: () => import('../../../pkg/metaballs.js'),
-    wasm: () => new URL('../../../pkg/metaballs_bg.wasm', import.meta.url),
-  },
-  webgl2: {
-    glue: () => import('../../../pkg-webgl/metaballs.js'),
-    wasm: () => new URL('../../../pkg-webgl/metaballs_bg.wasm', import.meta.url),
-  },
-};
+// where the build's JavaScript and WebAssembly are (`{ glue, wasm }`, whole URLs: the file imports
+// nothing itself, so it works wherever a bundler copies it) and says when it is ready (or why it
+// failed), then answers each `{ id, job }` (a view's packed mesh job) with the mesh's vertices and
+// indices, handed over without a copy, or with what went wrong.
 
 let started = null;
 // A Rust panic in this instance: the job that raised it is answered with it.
 let panic = null;
 globalThis.metaballsShowPanic = (message) => { panic = message; };
 
-async function start(build) {
-  const module = await build.glue();
-  await module.default({ module_or_path: build.wasm() });
+async function start({ glue, wasm }) {
+  const module = await import(glue);
+  await module.default({ module_or_path: wasm });
   return module;
 }
 
 self.onmessage = async ({ data }) => {
-  if (data.build) {
-    started = start(BUILDS[data.build]);
+  if (data.glue) {
+    started = start(data);
     started.then(() => self.postMessage({ ready: true }), (error) => self.postMessage({ failed: String(error?.message ?? error) }));
     return;
   }

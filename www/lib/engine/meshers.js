@@ -4,7 +4,7 @@
 // was given by the host rather than fetched from beside the modules (a notebook widget's, whose worker
 // would have no file to start from), `meshWorker()` is null and the figures mesh on the page's thread.
 
-import { backendName, wasmBesideModule } from './wasm.js';
+import { buildFiles, wasmBesideModule } from './wasm.js';
 
 let worker;
 // The worker has started its wasm: until then the figures mesh on the page's thread (their first
@@ -23,7 +23,10 @@ function stop(why) {
 
 function make() {
   try {
-    const made = new Worker(new URL('./mesh-worker.js', import.meta.url), { type: 'module', name: 'metaballs mesher' });
+    // The URL is made apart from the constructor: bundlers copy the file as it is (it imports nothing)
+    // instead of bundling it as a worker of their own format.
+    const url = new URL('./mesh-worker.js', import.meta.url);
+    const made = new Worker(url, { type: 'module', name: 'metaballs mesher' });
     made.onmessage = ({ data }) => {
       if (data.ready) ready = true;
       if (data.failed) stop(`the mesher worker could not start (${data.failed})`);
@@ -37,7 +40,8 @@ function make() {
       event.preventDefault?.();
       stop(`the mesher worker stopped (${event.message || 'it could not load'})`);
     };
-    made.postMessage({ build: backendName() });
+    const { glue, wasm } = buildFiles();
+    made.postMessage({ glue: String(glue), wasm: String(wasm) });
     return made;
   } catch {
     return null;

@@ -54,16 +54,25 @@ export const wasmHeapBytes = () => wasm?.heap_bytes() ?? 0;
 
 // The two builds: their JavaScript and their WebAssembly, fetched together. Each path is written out
 // in full where it is used, so that bundlers (Vite, webpack) find the files and copy them.
+// `glueFile` is the JavaScript's own URL, for the mesher worker (which imports it by URL).
 const WEBGPU_BUILD = {
   name: 'webgpu',
   glue: () => import('../../../pkg/metaballs.js'),
+  glueFile: () => new URL('../../../pkg/metaballs.js', import.meta.url),
   wasm: () => new URL('../../../pkg/metaballs_bg.wasm', import.meta.url),
 };
 const WEBGL_BUILD = {
   name: 'webgl2',
   glue: () => import('../../../pkg-webgl/metaballs.js'),
+  glueFile: () => new URL('../../../pkg-webgl/metaballs.js', import.meta.url),
   wasm: () => new URL('../../../pkg-webgl/metaballs_bg.wasm', import.meta.url),
 };
+
+/** The URLs of the build in use: its JavaScript (`glue`) and its WebAssembly (`wasm`). */
+export function buildFiles() {
+  const build = backend === 'webgl2' ? WEBGL_BUILD : WEBGPU_BUILD;
+  return { glue: build.glueFile(), wasm: build.wasm() };
+}
 
 // Where each build's WebAssembly comes from when not from next to the modules (see `setWasmSources`).
 let wasmSources = {};

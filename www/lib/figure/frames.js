@@ -302,7 +302,8 @@ export class FigureFrames {
       // animation still.
       animating = !state.paused && state.speed > 0 && !ctx.some('holds');
       if (animating || this.#dirty > 0 || this.#stepRequested || view.needs_redraw()) {
-        const step = this.#elsewhere.step(view, animating ? elapsed * state.speed : this.#stepRequested ? 1 / 60 : 0);
+        const dt = animating ? elapsed * state.speed : this.#stepRequested ? 1 / 60 : 0;
+        const step = this.#elsewhere.step(view, dt, !animating && ctx.some('holds'));
         if (step === null) return true;
         this.#printOnce = false;
         this.#stepRequested = false;

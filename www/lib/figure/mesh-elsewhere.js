@@ -1,7 +1,8 @@
 // A figure's frames whose mesh the page's mesher worker makes: before such a frame the scene advances
 // and the view's mesh job goes to the worker; the frame is drawn, without a further step, once the mesh
 // is back. Meanwhile the page's thread is free, and the time that passes is owed to the next step. A
-// figure whose meshes come from compute passes, or a page without the worker, draws at once.
+// figure whose meshes come from compute passes, whose scene another figure or a gesture drives, or on a
+// page without the worker, draws at once.
 
 import { meshWorker } from '../engine/meshers.js';
 import { within } from '../engine/wasm.js';
@@ -14,8 +15,10 @@ const sameJob = (a, b) => a !== undefined && b !== undefined && a.length === b.l
 export class MeshElsewhere {
   #element;
   #request = null;
+  // Time that passed while a mesh was made, taken in the next step.
+  #owed = 0;
   // The worker failed this figure once: it meshes on the page's thread from then on.
-  #here = false;
+  #failed = false;
   #requestFrame;
 
   /** `requestFrame()` asks the page for a frame once a mesh is back. */
@@ -26,15 +29,15 @@ export class MeshElsewhere {
 
   /**
    * The step (in seconds) to draw `view`'s next frame with after advancing it by `dt`, or null while
-   * its mesh is being made elsewhere (the frame is drawn on a later animation frame).
+   * its mesh is being made elsewhere (the frame is drawn on a later animation frame). `here`: the scene
+   * is driven from outside (a sync leader's spheres, a drag), so the frame meshes on the page's thread.
    */
-  step(view, dt) {
+  step(view, dt, here = false) {
     const request = this.#request;
     if (request?.busy) {
-      request.owed = Math.min(request.owed + dt, MAX_STEP);
+      this.#owed = Math.min(this.#owed + dt, MAX_STEP);
       return null;
     }
-    let step = dt;
     if (request) {
       this.#request = null;
       const job = within(this.#element, () => view.cpu_job());
@@ -42,18 +45,20 @@ export class MeshElsewhere {
         within(this.#element, () => view.give_mesh(request.job, ...request.mesh));
         return 0;
       }
-      // The settings changed while it was meshed: the new job goes out, with the time owed.
-      step = Math.min(request.owed + dt, MAX_STEP);
+      // The job changed while it was meshed (a setting, spheres placed): this frame meshes here.
+      here = true;
     }
-    const worker = this.#here ? null : meshWorker();
+    const step = Math.min(this.#owed + dt, MAX_STEP);
+    this.#owed = 0;
+    const worker = this.#failed || here ? null : meshWorker();
     if (!worker) return step;
     within(this.#element, () => view.advance(step));
     const job = within(this.#element, () => view.cpu_job());
     if (!job) return 0;
-    const made = { job, busy: true, owed: 0, mesh: null };
+    const made = { job, busy: true, mesh: null };
     this.#request = made;
     worker.mesh(job).then((mesh) => { made.mesh = mesh; }, (error) => {
-      this.#here = true;
+      this.#failed = true;
       console.warn(`<metaballs-view> meshes on the page's thread: ${error.message}`);
     }).finally(() => {
       made.busy = false;
@@ -65,5 +70,6 @@ export class MeshElsewhere {
   /** The view is gone (released, lost): a mesh being made for it is dropped. */
   forget() {
     this.#request = null;
+    this.#owed = 0;
   }
 }
