@@ -68,6 +68,38 @@ fn gpu_and_cpu_lod_meshes_are_equal_and_closed() {
 }
 
 #[test]
+fn a_coarsening_draws_the_cells_of_a_larger_lod_pixels_and_refuses_less_than_one() {
+    let (settings, coarse) = (lod_settings(6, 8, 512, 2.0, 2.0), lod_settings(6, 8, 512, 8.0, 2.0));
+    let (fine_mesh, fine_levels, _) = mesh_by("lod-cpu", settings, None);
+    let (coarse_mesh, coarse_levels, _) = mesh_by("lod-cpu", coarse, None);
+    assert!(
+        4 * coarse_mesh.triangles.len() < fine_mesh.triangles.len(),
+        "cells 4 times as large on screen: {} triangles against {}",
+        coarse_mesh.triangles.len(),
+        fine_mesh.triangles.len()
+    );
+    with_renderer(settings, 320, 240, |o| {
+        o.renderer.pin_extractor(Some("lod-cpu")).unwrap();
+        assert_eq!(o.renderer.lod_coarsening(), 1.0);
+        o.renderer.set_lod_coarsening(4.0).unwrap();
+        let mesh = pollster::block_on(o.renderer.extract_mesh());
+        assert_eq!(o.renderer.lod_summary().unwrap().blocks, coarse_levels, "the selection of lod_pixels 8");
+        mesh.to_soup()
+            .matches(&coarse_mesh.to_soup(), 0.0, 0.0)
+            .unwrap_or_else(|e| panic!("lod_pixels 2 coarsened 4 times and lod_pixels 8 differ: {e}"));
+        assert_eq!(o.renderer.settings().view.lod_pixels, 2.0, "the setting stays as given");
+        for bad in [0.5, 0.0, -1.0, f32::NAN, f32::INFINITY, 2000.0] {
+            let error = o.renderer.set_lod_coarsening(bad).unwrap_err().to_string();
+            assert!(error.starts_with("LOD coarsening must be"), "{bad}: {error}");
+        }
+        assert_eq!(o.renderer.lod_coarsening(), 4.0, "a refused factor was taken");
+        o.renderer.set_lod_coarsening(1.0).unwrap();
+        pollster::block_on(o.renderer.extract_mesh());
+        assert_eq!(o.renderer.lod_summary().unwrap().blocks, fine_levels, "back to lod_pixels 2");
+    });
+}
+
+#[test]
 fn the_cli_exports_a_closed_lod_mesh_at_2048() {
     let dir = scratch_dir("lod-export");
     let out = dir.join("lod.stl");

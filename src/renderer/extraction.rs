@@ -10,9 +10,14 @@ use crate::extract::reference::Construction;
 use crate::extract::uniforms::LEVEL_SLOTS;
 use crate::extract::{Capabilities, Extractor, Job, LodJob, LodSummary, MeshCount, Output, Viewpoint};
 use crate::scene::BOX_HALF_EXTENT;
+use crate::scene::checks::check_f32;
 use crate::scene::params::ParamError;
 use crate::scene::params::view::MeshOn;
 use crate::scene::params::view::{Method, Projection};
+
+/// The most [`Renderer::set_lod_coarsening`] takes, far beyond what a page asks (its largest cell
+/// size over its smallest).
+pub const MAX_LOD_COARSENING: f32 = 1024.0;
 
 impl Renderer {
     /// Makes this frame's mesh with the chosen extractor: the room it reports is made first (a fixed
@@ -164,8 +169,21 @@ impl Renderer {
             view_projection: view.view_projection(),
             pixels_per_unit: view.pixels_per_unit(),
             orthographic: view.projection == Projection::Orthographic,
-            lod_pixels: self.settings.view.lod_pixels,
+            lod_pixels: self.settings.view.lod_pixels * self.lod_coarsening,
         }
+    }
+
+    /// Lets level of detail's cells look up to `factor` times `lod_pixels` on screen (1: as set),
+    /// from the next frame on. The page raises it while frames run long and lowers it again when they
+    /// are fast, as it does the render scale; the setting itself stays as given.
+    pub fn set_lod_coarsening(&mut self, factor: f32) -> Result<(), ParamError> {
+        self.lod_coarsening = check_f32("LOD coarsening", factor, 1.0, MAX_LOD_COARSENING)?;
+        Ok(())
+    }
+
+    /// How many times `lod_pixels` level of detail's cells may look on screen now.
+    pub fn lod_coarsening(&self) -> f32 {
+        self.lod_coarsening
     }
 
     /// The latest frame's level-of-detail selection and counts, when a LOD extractor made it.
