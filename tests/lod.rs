@@ -100,6 +100,36 @@ fn a_coarsening_draws_the_cells_of_a_larger_lod_pixels_and_refuses_less_than_one
 }
 
 #[test]
+fn the_cpu_lod_mesh_draws_the_gpu_lod_mesh_picture_without_its_back_faces() {
+    let (width, height) = (320, 240);
+    let settings = lod_settings(7, 8, 256, 3.0, 3.0);
+    let mut pictures = Vec::new();
+    for name in ["lod-gpu", "lod-cpu"] {
+        pictures.push(with_renderer(settings, width, height, |o| {
+            o.renderer.pin_extractor(Some(name)).unwrap();
+            let pixels = o.render_rgba();
+            assert_eq!(o.renderer.mesh_source(), name);
+            pollster::block_on(o.renderer.flush_stats());
+            let stats = o.renderer.stats().unwrap();
+            assert!(stats.triangles > 1000 && !stats.overflowed, "{name}: {stats:?}");
+            if name == "lod-cpu" {
+                // Closed, and seen from outside the box: drawn without the triangles facing away.
+                let drawn = o.renderer.triangles_drawn().expect("the CPU counts what it draws");
+                let share = drawn as f32 / stats.triangles as f32;
+                assert!((0.3..0.7).contains(&share), "drew {drawn} of {} triangles", stats.triangles);
+            }
+            (pixels, stats.triangles)
+        }));
+    }
+    assert_eq!(pictures[0].1, pictures[1].1, "both LOD paths report the same triangle count");
+    let (mean, _) = flip(width, height, &pictures[0].0, &pictures[1].0);
+    println!("mean FLIP error between the GPU and CPU LOD meshes' pictures: {mean:.5}");
+    assert!(mean < 0.005, "the CPU LOD mesh looks different from the GPU one: FLIP {mean}");
+    let lit = pictures[1].0.chunks(4).filter(|p| luminance(p) > 60.0).count();
+    assert!(lit > (width * height / 20) as usize, "the CPU LOD mesh drew little: {lit} bright pixels");
+}
+
+#[test]
 fn the_cli_exports_a_closed_lod_mesh_at_2048() {
     let dir = scratch_dir("lod-export");
     let out = dir.join("lod.stl");

@@ -61,7 +61,7 @@ impl Renderer {
                 let (capacity, bytes) = (stage.buffers.capacity, stage.buffers.bytes());
                 let overflowed = indices < needed.indices;
                 let made_by = stage.extractors[active].capabilities();
-                stage.counted.closed = !overflowed && !made_by.lod && made_by.method == Method::MarchingCubes;
+                stage.counted.closed = !overflowed && made_by.method == Method::MarchingCubes;
                 stage.counted.drawn = Some(drawn);
                 let mut levels = [0; LEVEL_SLOTS];
                 if let Some(triangles) = self.lod_summary().and_then(|s| s.triangles) {
@@ -85,8 +85,9 @@ impl Renderer {
     }
 
     /// True when no back face of the mesh can show: marching cubes gives a closed surface inside the
-    /// box (the grid's boundary reads 0, below any iso level), so from an eye outside the box every back
-    /// face lies behind a front face. The margin keeps the near plane clear of the box.
+    /// box (the grid's boundary reads 0, below any iso level; with level of detail, transition cells
+    /// close every seam), so from an eye outside the box every back face lies behind a front face. The
+    /// margin keeps the near plane clear of the box.
     pub(super) fn back_faces_hidden(&self) -> bool {
         self.stage.counted.closed && self.eye_outside_box()
     }

@@ -3,7 +3,6 @@
 //! fill (`Queue::write_buffer`), and the mesh is drawn the same way. On a software adapter it beats
 //! compute passes emulated on the CPU; on WebGL2 it is the only extractor.
 
-pub mod facing;
 pub mod mesher;
 pub mod surface_nets;
 
@@ -11,6 +10,7 @@ pub use mesher::CpuMesher;
 pub use surface_nets::SurfaceNetsMesher;
 
 use super::extractor::{Capabilities, Extractor, Job, MeshCount, Output};
+use super::facing;
 use super::mesh::IndexedMesh;
 use super::uniforms::Counters;
 use crate::scene::params::view::Method;
