@@ -68,6 +68,68 @@ fn gpu_and_cpu_lod_meshes_are_equal_and_closed() {
 }
 
 #[test]
+fn a_coarsening_draws_the_cells_of_a_larger_lod_pixels_and_refuses_less_than_one() {
+    let (settings, coarse) = (lod_settings(6, 8, 512, 2.0, 2.0), lod_settings(6, 8, 512, 8.0, 2.0));
+    let (fine_mesh, fine_levels, _) = mesh_by("lod-cpu", settings, None);
+    let (coarse_mesh, coarse_levels, _) = mesh_by("lod-cpu", coarse, None);
+    assert!(
+        4 * coarse_mesh.triangles.len() < fine_mesh.triangles.len(),
+        "cells 4 times as large on screen: {} triangles against {}",
+        coarse_mesh.triangles.len(),
+        fine_mesh.triangles.len()
+    );
+    with_renderer(settings, 320, 240, |o| {
+        o.renderer.pin_extractor(Some("lod-cpu")).unwrap();
+        assert_eq!(o.renderer.lod_coarsening(), 1.0);
+        o.renderer.set_lod_coarsening(4.0).unwrap();
+        let mesh = pollster::block_on(o.renderer.extract_mesh());
+        assert_eq!(o.renderer.lod_summary().unwrap().blocks, coarse_levels, "the selection of lod_pixels 8");
+        mesh.to_soup()
+            .matches(&coarse_mesh.to_soup(), 0.0, 0.0)
+            .unwrap_or_else(|e| panic!("lod_pixels 2 coarsened 4 times and lod_pixels 8 differ: {e}"));
+        assert_eq!(o.renderer.settings().view.lod_pixels, 2.0, "the setting stays as given");
+        for bad in [0.5, 0.0, -1.0, f32::NAN, f32::INFINITY, 2000.0] {
+            let error = o.renderer.set_lod_coarsening(bad).unwrap_err().to_string();
+            assert!(error.starts_with("LOD coarsening must be"), "{bad}: {error}");
+        }
+        assert_eq!(o.renderer.lod_coarsening(), 4.0, "a refused factor was taken");
+        o.renderer.set_lod_coarsening(1.0).unwrap();
+        pollster::block_on(o.renderer.extract_mesh());
+        assert_eq!(o.renderer.lod_summary().unwrap().blocks, fine_levels, "back to lod_pixels 2");
+    });
+}
+
+#[test]
+fn the_cpu_lod_mesh_draws_the_gpu_lod_mesh_picture_without_its_back_faces() {
+    let (width, height) = (320, 240);
+    let settings = lod_settings(7, 8, 256, 3.0, 3.0);
+    let mut pictures = Vec::new();
+    for name in ["lod-gpu", "lod-cpu"] {
+        pictures.push(with_renderer(settings, width, height, |o| {
+            o.renderer.pin_extractor(Some(name)).unwrap();
+            let pixels = o.render_rgba();
+            assert_eq!(o.renderer.mesh_source(), name);
+            pollster::block_on(o.renderer.flush_stats());
+            let stats = o.renderer.stats().unwrap();
+            assert!(stats.triangles > 1000 && !stats.overflowed, "{name}: {stats:?}");
+            if name == "lod-cpu" {
+                // Closed, and seen from outside the box: drawn without the triangles facing away.
+                let drawn = o.renderer.triangles_drawn().expect("the CPU counts what it draws");
+                let share = drawn as f32 / stats.triangles as f32;
+                assert!((0.3..0.7).contains(&share), "drew {drawn} of {} triangles", stats.triangles);
+            }
+            (pixels, stats.triangles)
+        }));
+    }
+    assert_eq!(pictures[0].1, pictures[1].1, "both LOD paths report the same triangle count");
+    let (mean, _) = flip(width, height, &pictures[0].0, &pictures[1].0);
+    println!("mean FLIP error between the GPU and CPU LOD meshes' pictures: {mean:.5}");
+    assert!(mean < 0.005, "the CPU LOD mesh looks different from the GPU one: FLIP {mean}");
+    let lit = pictures[1].0.chunks(4).filter(|p| luminance(p) > 60.0).count();
+    assert!(lit > (width * height / 20) as usize, "the CPU LOD mesh drew little: {lit} bright pixels");
+}
+
+#[test]
 fn the_cli_exports_a_closed_lod_mesh_at_2048() {
     let dir = scratch_dir("lod-export");
     let out = dir.join("lod.stl");

@@ -113,6 +113,8 @@ export declare class MetaballsView extends HTMLElement {
   maxPixelRatio: number;
   /** Min-render-scale: 0.25 to 1. Attribute `min-render-scale`; default 0.5. */
   minRenderScale: number;
+  /** Largest LOD cell size (pixels): 0.25 to 64. Attribute `max-lod-pixels`; default 16. */
+  maxLodPixels: number;
   /** The figure's accessible name (without it, one is made from what it shows). Attribute `alt`; default "". */
   alt: string;
   /** An image URL shown before the first frame and in print until a frame is drawn. Attribute `poster`; default "". */

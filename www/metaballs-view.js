@@ -21,6 +21,7 @@ import { pageWatch, unwatch } from './lib/engine/page-watch.js';
 import { elementStyle, flasher, TEMPLATE } from './lib/figure/dom.js';
 import { FigureFrames } from './lib/figure/frames.js';
 import { FigureSize } from './lib/figure/size.js';
+import { FigureDetail } from './lib/figure/detail.js';
 import { Look } from './lib/figure/look.js';
 import { Camera } from './lib/features/camera.js';
 import { ErrorPlot } from './lib/features/error-plot.js';
@@ -38,7 +39,7 @@ import { TopologyWatch } from './lib/features/topology.js';
 const SPHERE_LIST = nameOfKind('spheres');
 
 // The features every figure has, in the order they hear of changes and frames.
-const FEATURES = [FigureSize, Look, Guard, Hud, Playback, Camera, Inspector, SphereEditor, SceneFiles,
+const FEATURES = [FigureSize, FigureDetail, Look, Guard, Hud, Playback, Camera, Inspector, SphereEditor, SceneFiles,
   TopologyWatch, Sync, ErrorPlot, Panel];
 
 export class MetaballsView extends FigureBase {

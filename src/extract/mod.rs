@@ -5,6 +5,7 @@
 //! - [`tables`]: the 256-case marching-cubes tables, once, for the GPU and every CPU path.
 //! - [`reference`]: the CPU oracle every extractor must equal exactly.
 //! - [`field`]: the field on the CPU as the passes evaluate it (bounds, rows of samples).
+//! - [`facing`]: which triangles of a closed mesh face the eye, for the CPU paths to draw those alone.
 //! - [`gpu`]: the compute passes (blocks → field → marching cubes), all on the device, no readback.
 //! - [`cpu`]: the CPU mesher, uploaded into the same buffers (faster on software adapters, the only
 //!   one on WebGL2).
@@ -17,6 +18,7 @@
 pub mod buffers;
 pub mod cpu;
 pub mod extractor;
+pub mod facing;
 pub mod field;
 pub mod gpu;
 pub mod lod;

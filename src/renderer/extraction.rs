@@ -12,10 +12,15 @@ use crate::extract::uniforms::LEVEL_SLOTS;
 use crate::extract::{
     Capabilities, Extractor, GivenMesh, Job, LodJob, LodSummary, MeshCount, Output, Viewpoint,
 };
+use crate::scene::checks::check_f32;
 use crate::scene::params::ParamError;
 use crate::scene::params::view::MeshOn;
 use crate::scene::params::view::{Method, Projection};
 use crate::scene::{BOX_HALF_EXTENT, Sphere};
+
+/// The most [`Renderer::set_lod_coarsening`] takes, far beyond what a page asks (its largest cell
+/// size over its smallest).
+pub const MAX_LOD_COARSENING: f32 = 1024.0;
 
 impl Renderer {
     /// Makes this frame's mesh with the chosen extractor: the room it reports is made first (a fixed
@@ -52,7 +57,7 @@ impl Renderer {
                 let (capacity, bytes) = (stage.buffers.capacity, stage.buffers.bytes());
                 let overflowed = indices < needed.indices;
                 let made_by = stage.extractors[active].capabilities();
-                stage.counted.closed = !overflowed && !made_by.lod && made_by.method == Method::MarchingCubes;
+                stage.counted.closed = !overflowed && made_by.method == Method::MarchingCubes;
                 stage.counted.drawn = Some(drawn);
                 let mut levels = [0; LEVEL_SLOTS];
                 if let Some(triangles) = self.lod_summary().and_then(|s| s.triangles) {
@@ -103,8 +108,9 @@ impl Renderer {
     }
 
     /// True when no back face of the mesh can show: marching cubes gives a closed surface inside the
-    /// box (the grid's boundary reads 0, below any iso level), so from an eye outside the box every back
-    /// face lies behind a front face. The margin keeps the near plane clear of the box.
+    /// box (the grid's boundary reads 0, below any iso level; with level of detail, transition cells
+    /// close every seam), so from an eye outside the box every back face lies behind a front face. The
+    /// margin keeps the near plane clear of the box.
     pub(super) fn back_faces_hidden(&self) -> bool {
         self.stage.counted.closed && self.eye_outside_box()
     }
@@ -187,8 +193,21 @@ impl Renderer {
             view_projection: view.view_projection(),
             pixels_per_unit: view.pixels_per_unit(),
             orthographic: view.projection == Projection::Orthographic,
-            lod_pixels: self.settings.view.lod_pixels,
+            lod_pixels: self.settings.view.lod_pixels * self.lod_coarsening,
         }
+    }
+
+    /// Lets level of detail's cells look up to `factor` times `lod_pixels` on screen (1: as set),
+    /// from the next frame on. The page raises it while frames run long and lowers it again when they
+    /// are fast, as it does the render scale; the setting itself stays as given.
+    pub fn set_lod_coarsening(&mut self, factor: f32) -> Result<(), ParamError> {
+        self.lod_coarsening = check_f32("LOD coarsening", factor, 1.0, MAX_LOD_COARSENING)?;
+        Ok(())
+    }
+
+    /// How many times `lod_pixels` level of detail's cells may look on screen now.
+    pub fn lod_coarsening(&self) -> f32 {
+        self.lod_coarsening
     }
 
     /// The latest frame's level-of-detail selection and counts, when a LOD extractor made it.

@@ -51,6 +51,9 @@ pub struct Renderer {
     stage: MeshStage,
     stats: Statistics,
     teaching: Teaching,
+    /// How many times `lod_pixels` level of detail's cells may look on screen (see
+    /// `set_lod_coarsening`).
+    lod_coarsening: f32,
 }
 
 impl Renderer {
@@ -98,6 +101,7 @@ impl Renderer {
             ),
             stats: Statistics::new(&device),
             teaching: Teaching::default(),
+            lod_coarsening: 1.0,
             scene_buffers: SceneBuffers::new(&device),
             _alive: context.renderer_token(),
             context: context.clone(),

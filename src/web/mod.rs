@@ -286,6 +286,13 @@ impl View {
         })
     }
 
+    /// Lets level of detail's cells look up to `factor` (1 or more) times `lod-pixels` on screen from
+    /// the next frame on: the page's budget raises it while frames run long (see
+    /// `www/lib/figure/detail.js`); throws with what is accepted.
+    pub fn set_lod_coarsening(&mut self, factor: f32) -> Result<(), JsError> {
+        self.renderer.set_lod_coarsening(factor).map_err(js_error)
+    }
+
     /// With level of detail, the finest resolution, then blocks and triangles of each level in use
     /// (finest first, triangles from the newest figures): `[resolution, blocks₀, triangles₀, …]`;
     /// empty for a uniform grid.

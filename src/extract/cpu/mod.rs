@@ -4,7 +4,6 @@
 //! compute passes emulated on the CPU; on WebGL2 it is the only extractor.
 
 pub mod elsewhere;
-pub mod facing;
 pub mod mesher;
 pub mod surface_nets;
 
@@ -12,6 +11,7 @@ pub use mesher::CpuMesher;
 pub use surface_nets::SurfaceNetsMesher;
 
 use super::extractor::{Capabilities, Extractor, GivenMesh, Job, MeshCount, Output};
+use super::facing;
 use super::mesh::IndexedMesh;
 use super::uniforms::Counters;
 use crate::scene::params::view::Method;

@@ -5,6 +5,7 @@ use super::mesher::LodMesher;
 use super::select::Selection;
 use super::{LodSummary, next_selection};
 use crate::extract::extractor::{Capabilities, Extractor, Job, MeshCount, Output};
+use crate::extract::facing::front_faces;
 use crate::extract::mesh::IndexedMesh;
 use crate::extract::uniforms::Counters;
 use crate::scene::params::view::Method;
@@ -14,7 +15,10 @@ use crate::scene::params::view::Method;
 pub struct LodCpuExtractor {
     mesher: LodMesher,
     selection: Selection,
+    /// Indices of the mesh the latest `write` uploaded (or would have, before leaving out back faces).
     written: u32,
+    /// The indices of the triangles facing the viewer, when only those are drawn.
+    front: Vec<u32>,
 }
 
 impl LodCpuExtractor {
@@ -59,13 +63,26 @@ impl Extractor for LodCpuExtractor {
 
     fn write(&mut self, output: Output) -> MeshCount {
         let mesher = &self.mesher;
-        self.written = output.buffers.upload(output.queue, &mesher.vertices, &mesher.indices);
         let stats = mesher.stats();
         let needed = Counters {
             active_blocks: stats.active_blocks,
             vertices: mesher.vertex_count(),
             indices: mesher.indices.len() as u32,
             active_cells: stats.active_cells + stats.transition_cells,
+        };
+        // The mesh is closed (transition cells stitch every seam), so from outside the box its back
+        // faces never show; nothing but the shading pass reads the buffers when it is asked to leave
+        // them out.
+        let drawn = match output.front_faces {
+            Some(viewpoint) if output.buffers.holds(needed.vertices, needed.indices) => {
+                front_faces(&mesher.vertices, &mesher.indices, viewpoint, &mut self.front);
+                self.written = needed.indices;
+                output.buffers.upload(output.queue, &mesher.vertices, &self.front)
+            }
+            _ => {
+                self.written = output.buffers.upload(output.queue, &mesher.vertices, &mesher.indices);
+                self.written
+            }
         };
         let buffers = output.buffers;
         // The views colour by level and count what to draw from the device's copies.
@@ -81,10 +98,10 @@ impl Extractor for LodCpuExtractor {
             output.queue.write_buffer(lod_data, at, bytemuck::cast_slice(&mesher.kept_blocks[..kept]));
         }
         if buffers.counters.usage().contains(wgpu::BufferUsages::STORAGE) {
-            let drawn = Counters { indices: self.written, ..needed };
-            output.queue.write_buffer(&buffers.counters, 0, bytemuck::bytes_of(&drawn));
+            let counts = Counters { indices: self.written, ..needed };
+            output.queue.write_buffer(&buffers.counters, 0, bytemuck::bytes_of(&counts));
         }
-        MeshCount::Known { needed, indices: self.written, drawn: self.written }
+        MeshCount::Known { needed, indices: self.written, drawn }
     }
 
     fn cpu_mesh(&self) -> Option<IndexedMesh> {

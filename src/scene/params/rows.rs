@@ -209,6 +209,10 @@ pub const PARAMETERS: &[Parameter] = &[
         .slider(0.25, 1.0, 0.05)
         .url("min_render_scale")
         .page_only(),
+    number("max-lod-pixels", "Largest LOD cell", "largest LOD cell size (pixels)", (0.25, 64.0), "16")
+        .slider(0.5, 32.0, 0.25)
+        .url("max_lod_px")
+        .page_only(),
     row("alt", "Description", Kind::Text, "").page_only(),
     row("poster", "Poster", Kind::Text, "").page_only(),
     row("sync", "Sync group", Kind::Text, "").page_only(),

@@ -38,7 +38,8 @@ export class FigureBase extends Base {
   static set wasmSources(sources) { setWasmSources(sources); }
   /**
    * The time between the page's frames the figures aim for, in ms (30): a figure whose frames take
-   * longer lowers its render scale, down to its `min-render-scale`.
+   * longer lowers its render scale, down to its `min-render-scale`, and then, with level of detail,
+   * draws larger cells, up to its `max-lod-pixels`.
    */
   static get frameBudget() { return frameBudget(); }
   static set frameBudget(ms) { setFrameBudget(ms); }

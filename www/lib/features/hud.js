@@ -1,10 +1,12 @@
 // The figure's statistics: frames per second, frame time, triangles, adapter and mesher (GPU or CPU
-// meshing), with level of detail the effective resolution and each level's blocks and triangles, with
+// meshing), with level of detail the cells' size on screen (larger while frames are slow), the
+// effective resolution and each level's blocks and triangles, with
 // color-by=error or quality the mesh's distance to the exact surface and its shape histogram, and a
 // warning when the triangle budget stays full. Figures update twice a second from the GPU's
 // asynchronous reports.
 
 import { hub } from '../engine/hub.js';
+import { FigureDetail } from '../figure/detail.js';
 import { levelColor } from './legends.js';
 
 // Made on first use: a number format costs tens of milliseconds to set up, not to be paid at import.
@@ -173,14 +175,18 @@ export class Hud {
     const $ = (id) => this.root.getElementById(id);
     if (!flat.length) {
       this.stats.lod = null;
-      $('hud-lod').hidden = true;
+      $('hud-lod').hidden = $('hud-lod-cell').hidden = true;
       return;
     }
     const levels = [];
     for (let i = 1; i + 1 < flat.length; i += 2) levels.push({ blocks: flat[i], triangles: flat[i + 1] });
     const used = levels.filter((l) => l.blocks > 0).length;
-    this.stats.lod = { resolution: flat[0], levels };
-    $('hud-lod').hidden = false;
+    const state = this.#ctx.state;
+    const cellPixels = this.#ctx.get(FigureDetail).lodPixels ?? state['lod-pixels'];
+    this.stats.lod = { resolution: flat[0], levels, cellPixels };
+    $('hud-lod').hidden = $('hud-lod-cell').hidden = false;
+    const px = (n) => String(Number(n.toFixed(2)));
+    $('hud-lod-cell-text').textContent = `≤ ${px(cellPixels)} px (${px(state['lod-pixels'])}–${px(Math.max(state['lod-pixels'], state['max-lod-pixels']))})`;
     $('hud-lod-summary').textContent = `${flat[0]}³ effective · ${used} level${used === 1 ? '' : 's'}`;
     $('hud-lod-levels').replaceChildren(...levels.map(({ blocks, triangles }, k) => {
       const item = document.createElement('li');

@@ -330,6 +330,7 @@ export const TEMPLATE = `
     <div id="hud-error" hidden><span class="key">Error</span> <span id="hud-error-text"></span></div>
     <div id="hud-topology" hidden><span class="key">Topology</span> <span id="hud-topology-text"></span></div>
     <div id="hud-quality" hidden><span class="key">Quality</span> <span id="hud-quality-bars" role="img"></span></div>
+    <div id="hud-lod-cell" hidden title="The largest a cell looks on screen: larger while frames are slow, from lod-pixels up to max-lod-pixels"><span class="key">LOD cell</span> <span id="hud-lod-cell-text"></span></div>
     <div id="hud-lod" hidden><span class="key">LOD</span> <span id="hud-lod-summary"></span><ol id="hud-lod-levels"></ol></div>
     <div id="overflow" role="alert" hidden>Triangle budget full: part of the surface is not drawn. Lower the resolution or raise the iso level.</div>
     </details>

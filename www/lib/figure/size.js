@@ -1,10 +1,10 @@
 // A figure's canvas size: its CSS box times the pixel ratio, which follows the screen up to a cap and
 // stays at 1 or less on software adapters (they shade every pixel on the CPU), and at half that there
 // while the exact surface is ray cast (every pixel marches through the field); times the render scale
-// (see render-scale.js) while it animates; and the notice, given once, that the exact surface is drawn
-// at a lower ratio on a software renderer.
+// (see detail.js) while it animates; and the notice, given once, that the exact surface is drawn at a
+// lower ratio on a software renderer.
 
-import { RenderScale } from './render-scale.js';
+import { FigureDetail } from './detail.js';
 
 /** Device pixels per CSS pixel drawing the exact surface on a software adapter. */
 const SOFTWARE_EXACT_RATIO = 0.5;
@@ -36,7 +36,6 @@ function canvasPixels(canvas, ratio, entry = null) {
 export class FigureSize {
   static attributes = ['max-pixel-ratio', 'min-render-scale', 'paused', 'speed', 'display', 'compare'];
   #ctx;
-  #scale = new RenderScale();
   #exactNoticed = false;
   /** True on a software adapter (set when the renderer starts). */
   software = false;
@@ -47,8 +46,7 @@ export class FigureSize {
 
   /** The render scale in effect: 1 while the figure is still. */
   get renderScale() {
-    const s = this.#ctx.state;
-    return s.paused || s.speed === 0 ? 1 : this.#scale.value(s['min-render-scale']);
+    return this.#ctx.get(FigureDetail).renderScale;
   }
 
   #ratio() {
@@ -81,11 +79,6 @@ export class FigureSize {
     this.software = software;
     this.fit();
     this.#exactChanged();
-  }
-
-  /** Frame times came in: an animating figure's render scale follows them. */
-  timed({ frameMs, animating }) {
-    if (animating && this.#scale.observe(frameMs, this.#ctx.state['min-render-scale'])) this.#ctx.frames.resize();
   }
 
   // Says once what a software renderer does with the exact surface.

@@ -39,8 +39,7 @@ pub fn front_faces(vertices: &[f32], indices: &[u32], viewpoint: Viewpoint, fron
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::extract::cpu::CpuMesher;
-    use crate::extract::reference::{Construction, Grid};
+    use crate::extract::reference::{Grid, extract};
     use crate::scene::Scene;
 
     /// Casts a ray from `eye` through `target` and returns the nearest triangle it hits, by index.
@@ -71,9 +70,17 @@ mod tests {
     #[test]
     fn leaves_out_about_half_and_keeps_every_triangle_a_ray_from_the_eye_meets_first() {
         let scene = Scene::new(3, 6).unwrap();
-        let mut mesher = CpuMesher::new();
-        mesher.mesh(scene.spheres(), 1.0, Grid { cells_per_axis: 24 }, Construction::default());
-        let (vertices, indices) = (&mesher.vertices, &mesher.indices);
+        // The oracle's mesh, welded as the meshers weld it (one vertex per crossed edge), interleaved
+        // as they hold it.
+        let mesh = extract(scene.spheres(), 1.0, Grid { cells_per_axis: 24 }).weld_by_edge();
+        let vertices: Vec<f32> = mesh
+            .positions
+            .iter()
+            .zip(&mesh.normals)
+            .flat_map(|(p, n)| [p.x, p.y, p.z, n.x, n.y, n.z])
+            .collect();
+        let indices: Vec<u32> = mesh.triangles.iter().flatten().copied().collect();
+        let (vertices, indices) = (&vertices, &indices);
         for viewpoint in
             [Viewpoint::At(Vec3::new(0.4, 1.3, 3.0)), Viewpoint::Along(Vec3::new(-0.3, -0.5, -1.0))]
         {
