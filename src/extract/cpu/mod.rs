@@ -3,9 +3,8 @@
 //! fill (`Queue::write_buffer`), and the mesh is drawn the same way. On a software adapter it beats
 //! compute passes emulated on the CPU; on WebGL2 it is the only extractor.
 
-pub mod facing;
-pub mod mesher;
-pub mod surface_nets;
+// The meshers themselves are in the `metaballs-core` crate (`core/src/extract/cpu/`), built for speed.
+pub use metaballs_core::extract::cpu::{facing, mesher, surface_nets};
 
 pub use mesher::CpuMesher;
 pub use surface_nets::SurfaceNetsMesher;
