@@ -17,7 +17,8 @@
 //!   (mesh files, also used by the page), [`offscreen`], [`bench`] and [`manifest`] (the element's
 //!   description for editors, written from the parameter table).
 
-pub mod scene;
+/// The spheres and settings: the `metaballs-scene` crate (`scene/`).
+pub use metaballs_scene as scene;
 
 pub mod device;
 

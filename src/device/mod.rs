@@ -4,6 +4,9 @@
 
 pub mod bindings;
 pub mod timing;
+pub mod wgsl;
+
+pub(crate) use wgsl::wgsl;
 
 use std::fmt;
 
@@ -189,9 +192,12 @@ pub async fn try_map_and_read(device: &wgpu::Device, buffer: &wgpu::Buffer) -> O
     Some(bytes)
 }
 
+/// `shaders/common.wgsl`: the grid, the spheres and the field, composed before every pass's own source.
+pub(crate) const COMMON_WGSL: &str = wgsl!(include_str!("../../shaders/common.wgsl"));
+
 /// A compute shader module made of `shaders/common.wgsl` followed by a pass's own source.
 pub(crate) fn compute_module(device: &wgpu::Device, label: &str, source: &str) -> wgpu::ShaderModule {
-    shader_module(device, label, &[include_str!("../../shaders/common.wgsl"), source])
+    shader_module(device, label, &[COMMON_WGSL, source])
 }
 
 /// A shader module made of `parts` in order, after the constants the crate fixes (`MAX_SPHERES`).

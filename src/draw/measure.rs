@@ -2,7 +2,7 @@
 //! triangle's shape, summed on the GPU into the counters buffer, which the frame statistics bring back.
 //! It reads the mesh, whichever extractor made it, and writes only the measures.
 
-use crate::device::{bind_buffers, bindings, compute_module, compute_pipeline};
+use crate::device::{bind_buffers, bindings, compute_module, compute_pipeline, wgsl};
 use crate::extract::buffers::MeshBuffers;
 use crate::extract::gpu::scene_buffers::SceneBuffers;
 use crate::extract::uniforms::{MEASURES_OFFSET, Measures};
@@ -19,8 +19,11 @@ pub struct MeasurePass {
 
 impl MeasurePass {
     pub fn new(device: &wgpu::Device) -> Self {
-        let module =
-            compute_module(device, "measures: shader", include_str!("../../shaders/draw/measure.wgsl"));
+        let module = compute_module(
+            device,
+            "measures: shader",
+            wgsl!(include_str!("../../shaders/draw/measure.wgsl")),
+        );
         use wgpu::BufferUsages as U;
         Self {
             plan: compute_pipeline(device, "measures: plan pipeline", &module, "plan_measures"),

@@ -2,7 +2,7 @@
 //! Blinn-Phong, depth-tested and (with antialiasing) multisampled and resolved into the caller's view.
 
 use crate::device::bindings;
-use crate::draw::uniforms::ShadingUniform;
+use crate::draw::uniforms::{SHADE_WGSL, ShadingUniform};
 use crate::draw::views::{ViewPipelines, ViewState};
 use crate::extract::buffers::VERTEX_BYTES;
 use crate::scene::params::ViewOptions;
@@ -35,7 +35,7 @@ impl ShadePipelines {
     pub fn new(device: &wgpu::Device, format: wgpu::TextureFormat, sample_count: u32) -> Self {
         let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some("shade: shader"),
-            source: wgpu::ShaderSource::Wgsl(include_str!("../../shaders/draw/shade.wgsl").into()),
+            source: wgpu::ShaderSource::Wgsl(SHADE_WGSL.into()),
         });
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("shade: bind group layout"),

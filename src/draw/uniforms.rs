@@ -1,7 +1,12 @@
 //! The shading uniforms as `shaders/draw/shade.wgsl` reads them: `#[repr(C)]` mirrors of its WGSL
 //! structs, with their sizes checked at compile time.
 
+use crate::device::wgsl;
 use bytemuck::{Pod, Zeroable};
+
+/// `shaders/draw/shade.wgsl`, whose structs these mirror: the shading pass, and what the teaching views
+/// compose after `shaders/common.wgsl`.
+pub(crate) const SHADE_WGSL: &str = wgsl!(include_str!("../../shaders/draw/shade.wgsl"));
 
 /// One light (`Light` in `shaders/draw/shade.wgsl`).
 #[repr(C)]

@@ -6,8 +6,7 @@
 use crate::extract::reference::Grid;
 use crate::extract::uniforms::{CounterBlock, Counters};
 
-/// Cells along each edge of a block (`BLOCK_CELLS` in `shaders/common.wgsl`).
-pub const BLOCK_CELLS: u32 = 4;
+pub use crate::extract::field::BLOCK_CELLS;
 /// Bytes of one vertex: position and normal, three f32 each.
 pub const VERTEX_BYTES: u64 = 24;
 /// Bytes of one index.

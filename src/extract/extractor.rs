@@ -5,12 +5,12 @@ use super::buffers::MeshBuffers;
 use super::gpu::scene_buffers::SceneBuffers;
 use super::lod::select::Eye;
 use super::mesh::IndexedMesh;
+pub use super::mesh::Viewpoint;
 use super::reference::{Construction, Grid};
 use super::uniforms::Counters;
 use crate::device::timing::Timing;
 use crate::scene::Sphere;
 use crate::scene::params::view::Method;
-use glam::Vec3;
 
 /// What an extractor can do. The renderer chooses by these (and by name only for the `mesher`
 /// setting), never by type.
@@ -96,15 +96,6 @@ pub struct Output<'a> {
     /// and the eye is outside the box: an extractor whose mesh is closed may then leave out the
     /// triangles facing away, which the shading pass would cull anyway.
     pub front_faces: Option<Viewpoint>,
-}
-
-/// Where a mesh is seen from.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Viewpoint {
-    /// A perspective camera's eye.
-    At(Vec3),
-    /// An orthographic camera looking along this direction.
-    Along(Vec3),
 }
 
 /// How a frame's mesh is counted.

@@ -18,13 +18,13 @@
 pub mod buffers;
 pub mod cpu;
 pub mod extractor;
-pub mod facing;
-pub mod field;
 pub mod gpu;
 pub mod lod;
-pub mod mesh;
-pub mod reference;
-pub mod tables;
+
+// The GPU-free modules live in the `metaballs-core` crate (`core/`), built for speed in the browser's
+// size-optimised build, and keep their paths here.
+pub use metaballs_core::extract::cpu::facing;
+pub use metaballs_core::extract::{field, mesh, reference, tables};
 pub mod uniforms;
 
 pub use extractor::{

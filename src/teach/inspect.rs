@@ -13,7 +13,7 @@ use glam::{UVec3, Vec3};
 /// One crossed edge of the inspected cell.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct EdgeCrossing {
-    /// Edge number (0..11, src/extract/tables.rs).
+    /// Edge number (0..11, core/src/extract/tables.rs).
     pub edge: u8,
     /// Where on the edge, from its first corner (`EDGE_CORNERS`) to its second.
     pub t: f32,
@@ -26,7 +26,7 @@ pub struct EdgeCrossing {
 pub struct CellReport {
     /// Grid coordinates of the cell's lowest corner.
     pub cell: UVec3,
-    /// f at the eight corners, numbered as in src/extract/tables.rs (points on the box's faces read 0).
+    /// f at the eight corners, numbered as in core/src/extract/tables.rs (points on the box's faces read 0).
     pub corners: [f32; 8],
     /// Bit c set when corner c is inside (f > iso).
     pub case: u8,

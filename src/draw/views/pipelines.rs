@@ -2,24 +2,25 @@
 //! every drawing entry of `shaders/draw/views/`, and the overlay pass's compute pipelines
 //! (`shaders/draw/overlays.wgsl`) with the tables they read.
 
-use crate::device::{bindings, shader_module};
+use crate::device::{COMMON_WGSL, bindings, shader_module, wgsl};
 use crate::draw::slice::packed_square_segments;
+use crate::draw::uniforms::SHADE_WGSL;
 use crate::teach::case_classes::case_classes;
 use wgpu::util::DeviceExt;
 
 /// The teaching views' WGSL, one file per view after what they share: one module holds them all.
 const VIEW_SOURCES: [&str; 11] = [
-    include_str!("../../../shaders/draw/views/common.wgsl"),
-    include_str!("../../../shaders/draw/views/triangles.wgsl"),
-    include_str!("../../../shaders/draw/views/points.wgsl"),
-    include_str!("../../../shaders/draw/views/lattice.wgsl"),
-    include_str!("../../../shaders/draw/views/cells.wgsl"),
-    include_str!("../../../shaders/draw/views/blocks.wgsl"),
-    include_str!("../../../shaders/draw/views/ambiguous.wgsl"),
-    include_str!("../../../shaders/draw/views/slice.wgsl"),
-    include_str!("../../../shaders/draw/views/selected.wgsl"),
-    include_str!("../../../shaders/draw/views/gizmo.wgsl"),
-    include_str!("../../../shaders/draw/views/exact.wgsl"),
+    wgsl!(include_str!("../../../shaders/draw/views/common.wgsl")),
+    wgsl!(include_str!("../../../shaders/draw/views/triangles.wgsl")),
+    wgsl!(include_str!("../../../shaders/draw/views/points.wgsl")),
+    wgsl!(include_str!("../../../shaders/draw/views/lattice.wgsl")),
+    wgsl!(include_str!("../../../shaders/draw/views/cells.wgsl")),
+    wgsl!(include_str!("../../../shaders/draw/views/blocks.wgsl")),
+    wgsl!(include_str!("../../../shaders/draw/views/ambiguous.wgsl")),
+    wgsl!(include_str!("../../../shaders/draw/views/slice.wgsl")),
+    wgsl!(include_str!("../../../shaders/draw/views/selected.wgsl")),
+    wgsl!(include_str!("../../../shaders/draw/views/gizmo.wgsl")),
+    wgsl!(include_str!("../../../shaders/draw/views/exact.wgsl")),
 ];
 
 /// The pipelines of the views for one output format and sample count, with the compute pipelines of
@@ -58,12 +59,9 @@ impl ViewPipelines {
         depth: wgpu::TextureFormat,
     ) -> Self {
         // After the grid and spheres, the shading uniforms and lighting.
-        let module = |label, source: &str| {
-            let common = include_str!("../../../shaders/common.wgsl");
-            shader_module(device, label, &[common, include_str!("../../../shaders/draw/shade.wgsl"), source])
-        };
+        let module = |label, source: &str| shader_module(device, label, &[COMMON_WGSL, SHADE_WGSL, source]);
         let views = module("views: shader", &VIEW_SOURCES.join("\n"));
-        let overlays = module("overlays: shader", include_str!("../../../shaders/draw/overlays.wgsl"));
+        let overlays = module("overlays: shader", wgsl!(include_str!("../../../shaders/draw/overlays.wgsl")));
 
         use wgpu::ShaderStages as S;
         let entry =

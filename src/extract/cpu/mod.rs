@@ -4,14 +4,13 @@
 //! compute passes emulated on the CPU; on WebGL2 it is the only extractor.
 
 pub mod elsewhere;
-pub mod mesher;
-pub mod surface_nets;
+// The meshers themselves are in the `metaballs-core` crate (`core/src/extract/cpu/`), built for speed.
+pub use metaballs_core::extract::cpu::{facing, mesher, surface_nets};
 
 pub use mesher::CpuMesher;
 pub use surface_nets::SurfaceNetsMesher;
 
 use super::extractor::{Capabilities, Extractor, GivenMesh, Job, MeshCount, Output};
-use super::facing;
 use super::mesh::IndexedMesh;
 use super::uniforms::Counters;
 use crate::scene::params::view::Method;

@@ -1,7 +1,7 @@
 //! The block pass (`shaders/extract/blocks.wgsl`): bound the field over blocks of 4³ cells, keep the blocks the
 //! surface may cross, and size the per-block passes' indirect dispatch to them.
 
-use crate::device::{bind_buffers, bindings, compute_module, compute_pipeline};
+use crate::device::{bind_buffers, bindings, compute_module, compute_pipeline, wgsl};
 use crate::extract::buffers::{BLOCK_CELLS, MeshBuffers};
 use crate::extract::gpu::scene_buffers::SceneBuffers;
 
@@ -15,8 +15,11 @@ pub struct BlockPass {
 
 impl BlockPass {
     pub fn new(device: &wgpu::Device) -> Self {
-        let module =
-            compute_module(device, "blocks: shader", include_str!("../../../shaders/extract/blocks.wgsl"));
+        let module = compute_module(
+            device,
+            "blocks: shader",
+            wgsl!(include_str!("../../../shaders/extract/blocks.wgsl")),
+        );
         Self {
             classify: compute_pipeline(device, "blocks: classify pipeline", &module, "classify_blocks"),
             plan: compute_pipeline(device, "blocks: plan pipeline", &module, "plan_dispatch"),

@@ -1,7 +1,7 @@
 //! The field pass (`shaders/extract/field.wgsl`): f at the 5³ grid points of every active block, then the cells
 //! the surface crosses, compacted into a list with its indirect dispatch.
 
-use crate::device::{bind_buffers, bindings, compute_module, compute_pipeline};
+use crate::device::{bind_buffers, bindings, compute_module, compute_pipeline, wgsl};
 use crate::extract::buffers::MeshBuffers;
 use crate::extract::gpu::scene_buffers::SceneBuffers;
 
@@ -16,8 +16,11 @@ pub struct FieldPass {
 
 impl FieldPass {
     pub fn new(device: &wgpu::Device) -> Self {
-        let module =
-            compute_module(device, "field: shader", include_str!("../../../shaders/extract/field.wgsl"));
+        let module = compute_module(
+            device,
+            "field: shader",
+            wgsl!(include_str!("../../../shaders/extract/field.wgsl")),
+        );
         Self {
             pipeline: compute_pipeline(device, "field: pipeline", &module, "evaluate_field"),
             classify: compute_pipeline(device, "field: classify pipeline", &module, "classify_cells"),

@@ -1,7 +1,7 @@
 //! The marching-cubes passes (`shaders/extract/marching_cubes.wgsl`), over the active cells: vertices on the
 //! edges each cell owns, then triangles as indices into them, then the indexed indirect draw's arguments.
 
-use crate::device::{bind_buffers, bindings, compute_module, compute_pipeline};
+use crate::device::{bind_buffers, bindings, compute_module, compute_pipeline, wgsl};
 use crate::extract::buffers::MeshBuffers;
 use crate::extract::gpu::scene_buffers::SceneBuffers;
 use crate::extract::tables::{flat_triangle_table, packed_case_table};
@@ -23,7 +23,7 @@ impl MarchingCubesPass {
         let module = compute_module(
             device,
             "marching cubes: shader",
-            include_str!("../../../shaders/extract/marching_cubes.wgsl"),
+            wgsl!(include_str!("../../../shaders/extract/marching_cubes.wgsl")),
         );
         Self {
             vertices: compute_pipeline(device, "marching cubes: vertex pipeline", &module, "make_vertices"),

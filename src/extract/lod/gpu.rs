@@ -5,7 +5,7 @@
 use super::select::{Block, Selection};
 use super::transition;
 use super::{LodSummary, next_selection};
-use crate::device::{bind_buffers, bindings, compute_module, compute_pipeline, has_compute};
+use crate::device::{bind_buffers, bindings, compute_module, compute_pipeline, has_compute, wgsl};
 use crate::extract::buffers::MeshBuffers;
 use crate::extract::extractor::{Capabilities, Extractor, Job, MeshCount, Output};
 use crate::extract::gpu::scene_buffers::SceneBuffers;
@@ -55,7 +55,8 @@ struct Pipelines {
 
 impl Pipelines {
     fn new(device: &wgpu::Device) -> Self {
-        let module = compute_module(device, "lod: shader", include_str!("../../../shaders/extract/lod.wgsl"));
+        let module =
+            compute_module(device, "lod: shader", wgsl!(include_str!("../../../shaders/extract/lod.wgsl")));
         let pipeline = |name: &str| compute_pipeline(device, &format!("lod: {name} pipeline"), &module, name);
         let mut tables: Vec<u32> = packed_case_table().to_vec();
         tables.extend(flat_triangle_table().iter().map(|&e| e as u32));

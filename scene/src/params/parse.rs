@@ -100,8 +100,8 @@ impl Parameter {
             Kind::Slice => Slice::parse(trimmed).map(|slice| Value::Text(Slice::text(slice))),
             Kind::Text => Ok(Value::Text(text.to_string())),
             Kind::Spheres if trimmed.is_empty() => Ok(Value::Text(String::new())),
-            Kind::Spheres => crate::scene::sphere::parse_spheres_text(trimmed)
-                .map(|spheres| Value::Text(crate::scene::sphere::spheres_text(&spheres)))
+            Kind::Spheres => crate::sphere::parse_spheres_text(trimmed)
+                .map(|spheres| Value::Text(crate::sphere::spheres_text(&spheres)))
                 .map_err(|e| ParamError::Invalid {
                     name: noun,
                     value: text.to_string(),
@@ -120,8 +120,8 @@ pub fn parse_parameter(name: &str, text: &str) -> Result<Value, ParamError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scene::params::Settings;
-    use crate::scene::params::{PARAMETERS, parameter};
+    use crate::params::Settings;
+    use crate::params::{PARAMETERS, parameter};
 
     #[test]
     fn every_default_in_the_table_parses() {
@@ -169,7 +169,7 @@ mod tests {
             message("resolution", ""),
             "resolution (cells per axis) must be a whole number from 8 to 2048, got \"\""
         );
-        let settings = crate::scene::params::Settings::default();
+        let settings = crate::params::Settings::default();
         let refused = settings.with_parameter("resolution", "1024").unwrap_err().to_string();
         assert!(refused.contains("at most 512 for a uniform grid (lod=on goes up to 2048)"), "{refused}");
         let lod = settings.with_parameter("lod", "on").unwrap();

@@ -9,8 +9,7 @@
 //! classified and their triangles emitted, each vertex made once on first use and found again through
 //! the edge it lies on. Every array is kept between frames: after warm-up a frame allocates nothing.
 
-use crate::extract::buffers::BLOCK_CELLS;
-use crate::extract::field::{Spheres, sample_run};
+use crate::extract::field::{BLOCK_CELLS, Spheres, sample_run};
 use crate::extract::mesh::IndexedMesh;
 use crate::extract::reference::{self, Construction, Grid};
 use crate::extract::tables::{CASE_TRIANGLES, EDGE_TABLE, TRI_TABLE};

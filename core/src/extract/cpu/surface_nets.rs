@@ -9,8 +9,7 @@
 //! (the crossings come from `reference::surface_vertex`), so the two meshes differ only in how they
 //! join the crossings up.
 
-use crate::extract::buffers::BLOCK_CELLS;
-use crate::extract::field::{Spheres, sample_run};
+use crate::extract::field::{BLOCK_CELLS, Spheres, sample_run};
 use crate::extract::mesh::IndexedMesh;
 use crate::extract::reference::{self, Construction, Grid};
 use crate::extract::tables::{CORNER_OFFSETS, EDGE_CORNERS};

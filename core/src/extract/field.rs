@@ -7,6 +7,9 @@ use crate::scene::Sphere;
 use crate::scene::params::view::Blend;
 use glam::Vec3;
 
+/// Cells along each edge of a block (`BLOCK_CELLS` in `shaders/common.wgsl`).
+pub const BLOCK_CELLS: u32 = 4;
+
 /// Bounds skip a box only with this relative margin (`BOUND_MARGIN` in `shaders/common.wgsl`).
 const BOUND_MARGIN: f32 = 1e-4;
 
@@ -73,7 +76,6 @@ impl Spheres {
     /// `coords` may hold the surface, as [`Spheres::straddles`] decides: the block every extractor
     /// keeps.
     pub fn block_straddles(&self, coords: &[f32], block: [u32; 3], n: u32, iso: f32, by_max: bool) -> bool {
-        use crate::extract::buffers::BLOCK_CELLS;
         let first = block.map(|b| b * BLOCK_CELLS);
         let last = first.map(|f| (f + BLOCK_CELLS).min(n));
         let low = Vec3::from_array(first.map(|i| coords[i as usize]));
@@ -95,7 +97,6 @@ impl Spheres {
         iso: f32,
         by_max: bool,
     ) -> bool {
-        use crate::extract::buffers::BLOCK_CELLS;
         let nb = n.div_ceil(BLOCK_CELLS);
         let last = first.map(|b| (b + group).min(nb));
         let corner =
@@ -180,7 +181,6 @@ pub fn sample_run(run: &mut [f32], xs: &[f32], py: f32, pz: f32, s: &Spheres, bl
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::extract::buffers::BLOCK_CELLS;
     use crate::scene::Scene;
 
     /// Where a group's bound passes its blocks over, every block's own bound would too, with adding

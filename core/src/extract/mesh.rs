@@ -4,6 +4,15 @@
 use glam::Vec3;
 use std::collections::HashMap;
 
+/// Where a mesh is seen from.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Viewpoint {
+    /// A perspective camera's eye.
+    At(Vec3),
+    /// An orthographic camera looking along this direction.
+    Along(Vec3),
+}
+
 /// A triangle soup: vertices `3k`, `3k+1`, `3k+2` form triangle `k`, counter-clockwise seen from outside.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Mesh {

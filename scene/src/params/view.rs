@@ -341,7 +341,7 @@ impl ViewOptions {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scene::params::Value;
+    use crate::params::Value;
 
     #[test]
     fn slices_read_an_axis_and_a_position_inside_the_box() {

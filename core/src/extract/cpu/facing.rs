@@ -3,7 +3,7 @@
 //! spares a software rasteriser its vertices and set-up. Only triangles that face away by a clear margin
 //! are left out: those nearly edge-on stay, and the shading pass culls them as it always would.
 
-use crate::extract::Viewpoint;
+use crate::extract::mesh::Viewpoint;
 use glam::Vec3;
 
 /// How clearly a triangle must face away to be left out: the cosine of its angle to the line of sight.
