@@ -39,8 +39,8 @@ import { TopologyWatch } from './lib/features/topology.js';
 const SPHERE_LIST = nameOfKind('spheres');
 
 // The features every figure has, in the order they hear of changes and frames.
-const FEATURES = [FigureSize, FigureDetail, Look, Guard, Hud, Playback, Camera, Inspector, SphereEditor, SceneFiles,
-  TopologyWatch, Sync, ErrorPlot, Panel];
+const FEATURES = [FigureSize, FigureDetail, Look, Guard, Hud, Playback, Camera, Inspector, SphereEditor,
+  SceneFiles, TopologyWatch, Sync, ErrorPlot, Panel];
 
 export class MetaballsView extends FigureBase {
   /** GPU memory held by every element's buffers and targets, in bytes. */

@@ -1,9 +1,8 @@
 // The figure's statistics: frames per second, frame time, triangles, adapter and mesher (GPU or CPU
 // meshing), with level of detail the cells' size on screen (larger while frames are slow), the
-// effective resolution and each level's blocks and triangles, with
-// color-by=error or quality the mesh's distance to the exact surface and its shape histogram, and a
-// warning when the triangle budget stays full. Figures update twice a second from the GPU's
-// asynchronous reports.
+// effective resolution and each level's blocks and triangles, with color-by=error or quality the
+// mesh's distance to the exact surface and its shape histogram, and a warning when the triangle
+// budget stays full. Figures update twice a second from the GPU's asynchronous reports.
 
 import { hub } from '../engine/hub.js';
 import { FigureDetail } from '../figure/detail.js';
@@ -186,7 +185,8 @@ export class Hud {
     this.stats.lod = { resolution: flat[0], levels, cellPixels };
     $('hud-lod').hidden = $('hud-lod-cell').hidden = false;
     const px = (n) => String(Number(n.toFixed(2)));
-    $('hud-lod-cell-text').textContent = `≤ ${px(cellPixels)} px (${px(state['lod-pixels'])}–${px(Math.max(state['lod-pixels'], state['max-lod-pixels']))})`;
+    const [least, most] = [state['lod-pixels'], Math.max(state['lod-pixels'], state['max-lod-pixels'])];
+    $('hud-lod-cell-text').textContent = `≤ ${px(cellPixels)} px (${px(least)}–${px(most)})`;
     $('hud-lod-summary').textContent = `${flat[0]}³ effective · ${used} level${used === 1 ? '' : 's'}`;
     $('hud-lod-levels').replaceChildren(...levels.map(({ blocks, triangles }, k) => {
       const item = document.createElement('li');
