@@ -6,30 +6,11 @@
 // there), and a JSON line starting "metaballs-figures ". Not a test: figures depend on the machine.
 
 import { spawn } from 'node:child_process';
-import { readdirSync, readFileSync } from 'node:fs';
 import { chromium } from 'playwright-core';
-import { root, CHROMIUM, FLAGS, freePort, waitForServer } from './helpers.js';
+import { root, CHROMIUM, FLAGS, cpuSeconds, freePort, waitForServer } from './helpers.js';
 
 const fixed = process.argv.includes('--fixed');
 
-/** CPU seconds used so far by Chromium's processes (run nothing else in Chromium meanwhile), by kind
- * (`renderer`, `gpu-process`), from /proc. */
-function cpuSeconds() {
-  const seconds = {};
-  let pids = [];
-  try { pids = readdirSync('/proc').filter((name) => /^\d+$/.test(name)); } catch { return seconds; }
-  for (const pid of pids) {
-    try {
-      const command = readFileSync(`/proc/${pid}/cmdline`, 'utf8');
-      if (!command.split('\0')[0].includes('chromium')) continue;
-      const kind = command.match(/--type=([a-z-]+)/)?.[1] ?? 'browser';
-      // utime and stime, in clock ticks (100 per second on Linux), after the command's name.
-      const fields = readFileSync(`/proc/${pid}/stat`, 'utf8').split(') ')[1].split(' ');
-      seconds[kind] = (seconds[kind] ?? 0) + (Number(fields[11]) + Number(fields[12])) / 100;
-    } catch { /* the process ended meanwhile */ }
-  }
-  return seconds;
-}
 const PAGES = [
   { name: 'one figure 960×640', query: 'n=1&cols=1&aspect=3/2' },
   { name: 'four figures in a 2×2 grid, 960 wide', query: 'n=4&cols=2' },

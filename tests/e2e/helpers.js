@@ -2,9 +2,9 @@
 // with real WebGPU (SwiftShader), and checks of what a person sees, computed on decoded pixels.
 
 import { before, after, afterEach } from 'node:test';
-import { spawn } from 'node:child_process';
+import { execFileSync, spawn } from 'node:child_process';
 import { createServer } from 'node:net';
-import { mkdirSync } from 'node:fs';
+import { mkdirSync, readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import path from 'node:path';
 import { chromium } from 'playwright-core';
@@ -200,4 +200,32 @@ export async function openPanelGroups(page, selector = 'metaballs-view') {
   await page.$eval(selector, (element) => {
     for (const group of element.shadowRoot.querySelectorAll('details')) group.open = true;
   });
+}
+
+/** CPU seconds used so far by this browser's processes, by kind (`renderer`, `gpu-process`). */
+export function cpuSeconds() {
+  const rows = execFileSync('ps', ['-eo', 'pid=,ppid='], { encoding: 'utf8' }).trim().split('\n')
+    .map((line) => line.trim().split(/\s+/));
+  const ours = new Set([String(process.pid)]);
+  for (let grew = true; grew;) {
+    grew = false;
+    for (const [pid, parent] of rows) {
+      if (ours.has(parent) && !ours.has(pid)) {
+        ours.add(pid);
+        grew = true;
+      }
+    }
+  }
+  const seconds = {};
+  for (const pid of ours) {
+    try {
+      const command = readFileSync(`/proc/${pid}/cmdline`, 'utf8');
+      if (!command.split('\0')[0].includes('chrom')) continue;
+      const kind = command.match(/--type=([a-z-]+)/)?.[1] ?? 'browser';
+      // utime and stime, in clock ticks (100 per second on Linux), after the command's name.
+      const fields = readFileSync(`/proc/${pid}/stat`, 'utf8').split(') ')[1].split(' ');
+      seconds[kind] = (seconds[kind] ?? 0) + (Number(fields[11]) + Number(fields[12])) / 100;
+    } catch { /* the process ended meanwhile */ }
+  }
+  return seconds;
 }

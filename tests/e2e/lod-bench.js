@@ -7,11 +7,10 @@
 // processes (whose software rasteriser runs there), then the median. Not a test: figures depend on the
 // machine and on what else runs on it.
 
-import { spawn, execFileSync } from 'node:child_process';
-import { readFileSync } from 'node:fs';
+import { spawn } from 'node:child_process';
 import path from 'node:path';
 import { chromium } from 'playwright-core';
-import { root, CHROMIUM, FLAGS, freePort, waitForServer } from './helpers.js';
+import { root, CHROMIUM, FLAGS, cpuSeconds, freePort, waitForServer } from './helpers.js';
 
 const option = (name, fallback) => {
   const at = process.argv.indexOf(`--${name}`);
@@ -20,34 +19,6 @@ const option = (name, fallback) => {
 const directory = path.resolve(option('root', root));
 const runs = Number(option('runs', 3));
 const query = option('query', '?lod=on&res=2048&fov=15');
-
-/** CPU seconds used so far by this browser's processes, by kind (`renderer`, `gpu-process`). */
-function cpuSeconds() {
-  const rows = execFileSync('ps', ['-eo', 'pid=,ppid='], { encoding: 'utf8' }).trim().split('\n')
-    .map((line) => line.trim().split(/\s+/));
-  const ours = new Set([String(process.pid)]);
-  for (let grew = true; grew;) {
-    grew = false;
-    for (const [pid, parent] of rows) {
-      if (ours.has(parent) && !ours.has(pid)) {
-        ours.add(pid);
-        grew = true;
-      }
-    }
-  }
-  const seconds = {};
-  for (const pid of ours) {
-    try {
-      const command = readFileSync(`/proc/${pid}/cmdline`, 'utf8');
-      if (!command.split('\0')[0].includes('chrom')) continue;
-      const kind = command.match(/--type=([a-z-]+)/)?.[1] ?? 'browser';
-      // utime and stime, in clock ticks (100 per second on Linux), after the command's name.
-      const fields = readFileSync(`/proc/${pid}/stat`, 'utf8').split(') ')[1].split(' ');
-      seconds[kind] = (seconds[kind] ?? 0) + (Number(fields[11]) + Number(fields[12])) / 100;
-    } catch { /* the process ended meanwhile */ }
-  }
-  return seconds;
-}
 
 const port = await freePort();
 const server = spawn('python3', ['-m', 'http.server', '--bind', '127.0.0.1', String(port), '--directory', directory],
