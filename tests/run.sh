@@ -5,7 +5,33 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
+# Each stage's wall time, printed at the end, so a slow stage shows.
+run_start=$(date +%s)
+stage_names=()
+stage_seconds=()
+stage_start=$run_start
+stage() {
+    local now
+    now=$(date +%s)
+    if [ ${#stage_names[@]} -gt 0 ]; then stage_seconds+=($((now - stage_start))); fi
+    stage_names+=("$1")
+    stage_start=$now
+    echo "== $1"
+}
+stage_report() {
+    local now i
+    now=$(date +%s)
+    stage_seconds+=($((now - stage_start)))
+    echo "stage times:"
+    for i in "${!stage_names[@]}"; do
+        printf '  %5ds  %s\n' "${stage_seconds[$i]}" "${stage_names[$i]}"
+    done
+    printf '  %5ds  all (%dm %02ds)\n' $((now - run_start)) $(((now - run_start) / 60)) $(((now - run_start) % 60))
+}
+
 source www/need-deb.sh
+
+stage "tools (installed when missing)"
 
 need_deb mesa-vulkan-drivers chromium chromium-driver poppler-utils python3 g++
 command -v node >/dev/null && command -v npm >/dev/null || need_deb nodejs npm
@@ -22,26 +48,26 @@ fi
 # A test run builds each crate once: incremental caches would only take disk.
 export CARGO_INCREMENTAL="${CARGO_INCREMENTAL:-0}"
 
-echo "== format"
+stage "format"
 cargo fmt --all --check
-echo "== lints (native)"
+stage "lints (native)"
 cargo clippy --all-targets -- -D warnings
-echo "== lints (wasm32)"
+stage "lints (wasm32)"
 cargo clippy --lib --test browser --target wasm32-unknown-unknown -- -D warnings
-echo "== crate package (metadata and file list)"
+stage "crate package (metadata and file list)"
 cargo package --allow-dirty --no-verify --quiet
-echo "== page build (release wasm, wasm-bindgen)"
+stage "page build (release wasm, wasm-bindgen)"
 bash www/build.sh
 
 log="$(mktemp)"
 trap 'rm -f "$log"' EXIT
-echo "== native tests"
+stage "native tests"
 cargo test 2>&1 | tee -a "$log"
 
-echo "== engine in headless Chromium (WebGPU)"
+stage "engine in headless Chromium (WebGPU)"
 CHROMEDRIVER=/usr/bin/chromedriver cargo test --target wasm32-unknown-unknown --test browser 2>&1 | tee -a "$log"
 
-echo "== notebook widget (wheel, Python tests)"
+stage "notebook widget (wheel, Python tests)"
 bash python/build.sh
 venv=target/python/test-venv
 if [ ! -x "$venv/bin/pip" ]; then
@@ -52,7 +78,7 @@ fi
 "$venv/bin/pip" install --quiet target/python/dist/*.whl pytest jupyterlab
 METABALLS_CLI="$PWD/target/debug/metaballs" "$venv/bin/pytest" -q -p no:cacheprovider python/tests 2>&1 | tee -a "$log"
 
-echo "== page end to end (Playwright, headless Chromium)"
+stage "page end to end (Playwright, headless Chromium)"
 (
     cd tests/e2e
     # Installs the locked test tools when any is missing (Playwright, TypeScript, publint, VitePress,
@@ -75,3 +101,4 @@ awk '/^test result:/ { passed += $4; failed += $6 }
          }
      }
      END { printf "all tests: %d passed, %d failed\n", passed, failed }' "$log"
+stage_report
