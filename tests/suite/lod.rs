@@ -1,8 +1,7 @@
 //! Level of detail through the renderer: the GPU and CPU LOD meshes are equal, closed and follow the
 //! camera; exports write them; a frozen selection stays put.
-#![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::*;
 use metaballs::extract::mesh::IndexedMesh;

@@ -1,7 +1,6 @@
 //! Bad input gets a clear message, leaves the previous state running, and never panics.
-#![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::*;
 use glam::Vec3;
