@@ -1,6 +1,7 @@
 //! The native tests, in one binary: one module per subject (each was a test file of its own), built and
-//! linked once, its tests spread over every core together. `cargo test --test suite MODULE::` runs one
-//! module.
+//! linked once, its tests spread over every core together. GPU tests draw on one shared device with
+//! its pipelines compiled once (`common::with_renderer`); those that test the device itself (memory
+//! counts, limits, loss) make their own. `cargo test --test suite MODULE::` runs one module.
 #![cfg(not(target_arch = "wasm32"))]
 
 #[path = "../common/mod.rs"]
