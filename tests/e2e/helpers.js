@@ -2,9 +2,9 @@
 // with real WebGPU (SwiftShader), and checks of what a person sees, computed on decoded pixels.
 
 import { before, after, afterEach } from 'node:test';
-import { spawn } from 'node:child_process';
+import { execFileSync, spawn } from 'node:child_process';
 import { createServer } from 'node:net';
-import { mkdirSync } from 'node:fs';
+import { existsSync, mkdirSync, readdirSync, statSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import path from 'node:path';
 import { chromium } from 'playwright-core';
@@ -27,6 +27,34 @@ export const FLAGS = [
   '--disable-quic',
 ];
 
+// What the build scripts make their outputs from: the crate and its shaders, the built WebAssembly,
+// the page, the element and the widget's module.
+const SOURCES = ['src', 'shaders', 'Cargo.toml', 'Cargo.lock', 'pkg', 'pkg-webgl', 'www', 'python/js', 'index.html', 'embed.html'];
+
+function newestChange(file) {
+  if (!existsSync(file)) return 0;
+  const stat = statSync(file);
+  if (!stat.isDirectory()) return stat.mtimeMs;
+  return readdirSync(file).filter((name) => name !== 'node_modules')
+    .reduce((newest, name) => Math.max(newest, newestChange(path.join(file, name))), stat.mtimeMs);
+}
+
+/**
+ * Runs the build script `script` unless `output` (the last file it writes, relative to the repository)
+ * is newer than every source: tests/run.sh builds dist/, the npm package and the wheel once before the
+ * tests, and a test run on its own builds what is missing or out of date.
+ */
+export function builtBy(script, output) {
+  const made = existsSync(path.join(root, output)) ? statSync(path.join(root, output)).mtimeMs : 0;
+  if (made > Math.max(...SOURCES.map((source) => newestChange(path.join(root, source))))) return;
+  console.log(`building ${output} (bash ${script})`);
+  try {
+    execFileSync('bash', [path.join(root, script)], { encoding: 'utf8', stdio: 'pipe' });
+  } catch (error) {
+    throw new Error(`bash ${script} failed:\n${error.stdout}\n${error.stderr}`);
+  }
+}
+
 let server;
 export let browser;
 export let baseUrl;
@@ -42,8 +70,9 @@ export function freePort() {
   });
 }
 
-export async function waitForServer(url) {
-  for (let i = 0; i < 100; i++) {
+/** Waits until `url` answers (a server just started), at most `timeoutMs`. */
+export async function waitForServer(url, timeoutMs = 10_000) {
+  for (const end = Date.now() + timeoutMs; Date.now() < end;) {
     try {
       if ((await fetch(url)).ok) return;
     } catch {
@@ -119,11 +148,20 @@ export async function waitForTriangles(page, differentFrom = null) {
   return Number((await page.textContent('#triangles')).replace(/,/g, ''));
 }
 
-// Renders settle once the stats for the current settings are in: two HUD updates with the same count.
+/**
+ * Resolves with the statistics of a frame the figure (the first by default) draws of its current
+ * settings: it draws one even while paused or off screen (`nextFrame()`), and its HUD shows them.
+ */
+export function frameDrawn(page, selector = 'metaballs-view') {
+  return page.$eval(selector, (e) => e.nextFrame());
+}
+
+// Renders settle once the stats for the current settings are in: two frames in a row, each drawn and
+// its statistics read back, with the same count in the HUD.
 export async function settledTriangles(page) {
   let previous = await waitForTriangles(page);
   for (let i = 0; i < 20; i++) {
-    await page.waitForTimeout(700);
+    await frameDrawn(page);
     const now = Number((await page.textContent('#triangles')).replace(/,/g, ''));
     if (now === previous) return now;
     previous = now;
