@@ -98,6 +98,7 @@ stage "page end to end (Playwright, headless Chromium)"
     if [ ! -f node_modules/.package-lock.json ] || [ node_modules/.package-lock.json -ot package-lock.json ]; then
         PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 npm ci --no-audit --no-fund
     fi
+    # Two files at a time, longest first, then those that time the page's responsiveness alone (all.js).
     npm test
 ) 2>&1 | tee -a "$log"
 

@@ -31,8 +31,8 @@ const nodes = (tree, type) => (tree && typeof tree === 'object'
   ? [...(tree.type === type ? [tree] : []), ...Object.values(tree).flatMap((v) => nodes(v, type))]
   : []);
 
-before(() => {
-  builtBy('www/dist.sh', 'dist/widget.js');
+before(async () => {
+  await builtBy('www/dist.sh', 'dist/widget.js');
   rmSync(BUILD, { recursive: true, force: true });
   offlineTheme();
   const started = Date.now();

@@ -280,7 +280,7 @@ test('embed.html shows no panel unless asked', async () => {
 });
 
 test('dist/ (the bundled element) served under a sub-path draws the demo page and the lecture', async () => {
-  builtBy('www/dist.sh', 'dist/widget.js');
+  await builtBy('www/dist.sh', 'dist/widget.js');
   const site = mkdtempSync(path.join(os.tmpdir(), 'metaballs-site-'));
   cpSync(path.join(root, 'dist'), path.join(site, 'course/figures'), { recursive: true });
   const port = await freePort();

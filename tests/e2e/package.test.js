@@ -62,7 +62,7 @@ async function drawsEveryFigure(url, count) {
 }
 
 before(async () => {
-  builtBy('www/pack.sh', path.relative(root, tarball));
+  await builtBy('www/pack.sh', path.relative(root, tarball));
   project = mkdtempSync(path.join(os.tmpdir(), 'metaballs-course-'));
   installPackage(project);
   browser = await chromium.launch({ executablePath: CHROMIUM, args: FLAGS, headless: true });
