@@ -7,7 +7,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 source www/need-deb.sh
 
-bash www/build.sh
+# tests/run.sh builds the WebAssembly once for all of its outputs and says so.
+[ "${METABALLS_WASM_BUILT:-}" = 1 ] || bash www/build.sh
 
 static=python/src/metaballs_widget/static
 rm -rf "$static"

@@ -2,7 +2,7 @@
 //! the PNG renderer, tests and benchmarks.
 
 use crate::device;
-use crate::{Renderer, Settings};
+use crate::{GpuContext, Renderer, Settings};
 use std::path::Path;
 
 /// The format offscreen frames are drawn in.
@@ -43,8 +43,20 @@ impl Offscreen {
         width: u32,
         height: u32,
     ) -> Result<Self, crate::ParamError> {
-        let renderer =
-            Renderer::new(device.clone(), queue.clone(), OFFSCREEN_FORMAT, width, height, settings)?;
+        Self::on_context(adapter, &GpuContext::new(device, queue), settings, width, height)
+    }
+
+    /// Builds a renderer for `width` × `height` frames on a device shared with other renderers (its
+    /// pipelines built once for all of them).
+    pub fn on_context(
+        adapter: wgpu::Adapter,
+        context: &GpuContext,
+        settings: Settings,
+        width: u32,
+        height: u32,
+    ) -> Result<Self, crate::ParamError> {
+        let renderer = Renderer::on_context(context, OFFSCREEN_FORMAT, width, height, settings)?;
+        let (device, queue) = (context.device().clone(), context.queue().clone());
         let (texture, view) = target(&device, width, height);
         Ok(Self { renderer, adapter, device, queue, texture, view })
     }

@@ -1,11 +1,41 @@
 #!/usr/bin/env bash
 # Installs what the tests need (skipping what is present) and runs every test: formatting and lints
 # (native and wasm32), the native suite on the GPU adapter at hand (lavapipe without a GPU), the engine
-# in headless Chromium's WebGPU (wasm-bindgen-test), and the page end to end (Playwright).
+# in headless Chromium's WebGPU (wasm-bindgen-test), the notebook widget's Python tests and the page end
+# to end (Playwright), then prints each stage's wall time. It leaves the checkout as it found it.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
+# Each stage's wall time, printed at the end, so a slow stage shows.
+run_start=$(date +%s)
+stage_names=()
+stage_seconds=()
+stage_start=$run_start
+stage() {
+    local now
+    now=$(date +%s)
+    if [ ${#stage_names[@]} -gt 0 ]; then stage_seconds+=($((now - stage_start))); fi
+    stage_names+=("$1")
+    stage_start=$now
+    echo "== $1"
+}
+stage_report() {
+    local now i
+    now=$(date +%s)
+    stage_seconds+=($((now - stage_start)))
+    echo "stage times:"
+    for i in "${!stage_names[@]}"; do
+        printf '  %5ds  %s\n' "${stage_seconds[$i]}" "${stage_names[$i]}"
+    done
+    printf '  %5ds  all (%dm %02ds)\n' $((now - run_start)) $(((now - run_start) / 60)) $(((now - run_start) % 60))
+}
+# The tests' output, for the closing count; the stage times are printed however the run ends.
+log="$(mktemp)"
+trap 'rm -f "$log"; stage_report' EXIT
+
 source www/need-deb.sh
+
+stage "tools (installed when missing)"
 
 need_deb mesa-vulkan-drivers chromium chromium-driver poppler-utils python3 g++
 command -v node >/dev/null && command -v npm >/dev/null || need_deb nodejs npm
@@ -22,27 +52,33 @@ fi
 # A test run builds each crate once: incremental caches would only take disk.
 export CARGO_INCREMENTAL="${CARGO_INCREMENTAL:-0}"
 
-echo "== format"
+stage "format"
 cargo fmt --all --check
-echo "== lints (native)"
+stage "lints (native)"
 cargo clippy --all-targets -- -D warnings
-echo "== lints (wasm32)"
+stage "lints (wasm32)"
 cargo clippy --lib --test browser --target wasm32-unknown-unknown -- -D warnings
-echo "== crate package (metadata and file list)"
+stage "crate package (metadata and file list)"
 cargo package --allow-dirty --no-verify --quiet
-echo "== page build (release wasm, wasm-bindgen)"
-bash www/build.sh
 
-log="$(mktemp)"
-trap 'rm -f "$log"' EXIT
-echo "== native tests"
+# Everything the tests use is built once, here: the two release wasm builds, then from them dist/, the
+# npm package and the notebook's wheel (each of whose scripts would otherwise build the wasm again). The
+# end-to-end tests take these as they are (they build one themselves only when it is missing or older
+# than its sources, as when a test file is run on its own).
+stage "page build (release wasm, dist/, npm package, wheel)"
+bash www/build.sh
+export METABALLS_WASM_BUILT=1
+bash www/dist.sh
+bash www/pack.sh
+bash python/build.sh
+
+stage "native tests"
 cargo test 2>&1 | tee -a "$log"
 
-echo "== engine in headless Chromium (WebGPU)"
+stage "engine in headless Chromium (WebGPU)"
 CHROMEDRIVER=/usr/bin/chromedriver cargo test --target wasm32-unknown-unknown --test browser 2>&1 | tee -a "$log"
 
-echo "== notebook widget (wheel, Python tests)"
-bash python/build.sh
+stage "notebook widget (Python tests)"
 venv=target/python/test-venv
 if [ ! -x "$venv/bin/pip" ]; then
     python3 -c 'import venv, ensurepip' 2>/dev/null || need_deb python3-venv
@@ -52,15 +88,17 @@ fi
 "$venv/bin/pip" install --quiet target/python/dist/*.whl pytest jupyterlab
 METABALLS_CLI="$PWD/target/debug/metaballs" "$venv/bin/pytest" -q -p no:cacheprovider python/tests 2>&1 | tee -a "$log"
 
-echo "== page end to end (Playwright, headless Chromium)"
+stage "page end to end (Playwright, headless Chromium)"
 (
     cd tests/e2e
-    # Installs the locked test tools when any is missing (Playwright, TypeScript, publint, VitePress,
-    # reveal.js, axe-core). `npm install` rather than `npm ci`: the lock holds only this platform's
-    # builds of the bundlers' optional native packages, which `npm ci` refuses.
-    node -e 'const d = require("./package.json").devDependencies;
-      for (const n of Object.keys(d)) require("fs").statSync(`node_modules/${n}/package.json`)' 2>/dev/null \
-        || PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 npm install --no-audit --no-fund
+    # The locked test tools (Playwright, TypeScript, publint, VitePress, reveal.js, axe-core, MyST),
+    # installed exactly as locked when missing or older than the lock. The lock lists every platform's
+    # builds of the bundlers' optional native packages, so `npm ci` takes it as it is and the checkout
+    # stays unchanged.
+    if [ ! -f node_modules/.package-lock.json ] || [ node_modules/.package-lock.json -ot package-lock.json ]; then
+        PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 npm ci --no-audit --no-fund
+    fi
+    # Two files at a time, longest first, then those that time the page's responsiveness alone (all.js).
     npm test
 ) 2>&1 | tee -a "$log"
 

@@ -13,7 +13,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 source www/need-deb.sh
 
-bash www/build.sh
+# tests/run.sh builds the WebAssembly once for all of its outputs and says so.
+[ "${METABALLS_WASM_BUILT:-}" = 1 ] || bash www/build.sh
 need_esbuild
 
 rm -rf dist

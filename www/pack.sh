@@ -6,7 +6,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-bash www/build.sh
+# tests/run.sh builds the WebAssembly once for all of its outputs and says so.
+[ "${METABALLS_WASM_BUILT:-}" = 1 ] || bash www/build.sh
 version=$(awk -F'"' '/^version = / { print $2; exit }' Cargo.toml)
 out=target/npm/package
 rm -rf "$out"

@@ -1,7 +1,7 @@
 //! The binding numbers of bind group 0, the one group every pass's shaders use. Each number means one
 //! resource in every shader: the scene's uniforms first, then the mesh buffers the extraction passes
 //! fill and the later passes read, then each pass's own. A constant is named as its WGSL variable, in
-//! upper case; `tests/bindings.rs` holds the shaders to these numbers.
+//! upper case; `tests/suite/bindings.rs` holds the shaders to these numbers.
 
 macro_rules! bindings {
     ($($(#[$doc:meta])* $name:ident = $number:literal,)*) => {

@@ -116,8 +116,9 @@ pub enum MeshCount {
 }
 
 /// One way of making the mesh. Each renderer holds its own instance of every extractor the device
-/// can run ([`Extractor::fresh`] from the device's compiled one).
-pub trait Extractor {
+/// can run ([`Extractor::fresh`] from the device's compiled one). Natively, as wgpu's objects, they may
+/// move between threads and be shared (renderers on one device in several threads).
+pub trait Extractor: wgpu::WasmNotSendSync {
     /// Its word in the `mesher` setting and the HUD (`gpu`, `cpu`).
     fn name(&self) -> &'static str;
 

@@ -10,9 +10,10 @@ pub use conditioning::*;
 use glam::{UVec3, Vec3};
 use metaballs::extract::reference::{Grid, sample_field};
 use metaballs::offscreen::Offscreen;
-use metaballs::{Settings, Sphere};
+use metaballs::{GpuContext, Settings, Sphere};
 #[allow(unused_imports)]
 pub use pictures::*;
+use std::sync::OnceLock;
 
 /// Every file under `dir` (in its folders too) whose name ends in `.{extension}`.
 pub fn files_under(dir: &std::path::Path, extension: &str) -> Vec<std::path::PathBuf> {
@@ -28,16 +29,42 @@ pub fn files_under(dir: &std::path::Path, extension: &str) -> Vec<std::path::Pat
     found
 }
 
-/// A device from the adapter at hand (lavapipe in CI). Fails, never skips, when there is none.
+/// A device of its own from the adapter at hand (lavapipe in CI), for tests of the device itself: its
+/// memory counts, its limits, its loss. Fails, never skips, when there is none.
 pub fn device() -> (wgpu::Adapter, wgpu::Device, wgpu::Queue) {
     let instance = metaballs::device::native_instance();
     pollster::block_on(metaballs::device::request_device(&instance, None))
         .unwrap_or_else(|e| panic!("GPU tests need an adapter: {e}"))
 }
 
-/// Runs `f` with an offscreen renderer inside a validation error scope: any validation error, in
-/// setup or in the frames, fails the test.
+/// The device every other GPU test draws on, with its pipelines, made by the first test that asks:
+/// a test's renderer owns only its buffers, targets and scene, as a figure's does on a page.
+pub fn shared_device() -> &'static (wgpu::Adapter, GpuContext) {
+    static SHARED: OnceLock<(wgpu::Adapter, GpuContext)> = OnceLock::new();
+    SHARED.get_or_init(|| {
+        let (adapter, device, queue) = device();
+        (adapter, GpuContext::new(device, queue))
+    })
+}
+
+/// Runs `f` with an offscreen renderer on the shared device inside a validation error scope: any
+/// validation error, in setup or in the frames, fails the test. (Error scopes are the calling
+/// thread's: tests running beside it on the device neither catch its errors nor give it theirs.)
 pub fn with_renderer<T>(
+    settings: Settings,
+    width: u32,
+    height: u32,
+    f: impl FnOnce(&mut Offscreen) -> T,
+) -> T {
+    let (adapter, context) = shared_device();
+    let scope = context.device().push_error_scope(wgpu::ErrorFilter::Validation);
+    let offscreen =
+        Offscreen::on_context(adapter.clone(), context, settings, width, height).expect("renderer");
+    checked(offscreen, scope, f)
+}
+
+/// `with_renderer` on a device of its own, for tests that count the device's memory.
+pub fn with_own_renderer<T>(
     settings: Settings,
     width: u32,
     height: u32,
@@ -45,10 +72,18 @@ pub fn with_renderer<T>(
 ) -> T {
     let (adapter, device, queue) = device();
     let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
-    let mut offscreen =
-        Offscreen::with_device(adapter, device.clone(), queue, settings, width, height).expect("renderer");
+    let offscreen =
+        Offscreen::with_device(adapter, device, queue, settings, width, height).expect("renderer");
+    checked(offscreen, scope, f)
+}
+
+fn checked<T>(
+    mut offscreen: Offscreen,
+    scope: wgpu::ErrorScopeGuard,
+    f: impl FnOnce(&mut Offscreen) -> T,
+) -> T {
     let result = f(&mut offscreen);
-    let _ = device.poll(wgpu::PollType::wait_indefinitely());
+    let _ = offscreen.device.poll(wgpu::PollType::wait_indefinitely());
     if let Some(error) = pollster::block_on(scope.pop()) {
         panic!("validation error: {error}");
     }

@@ -18,7 +18,7 @@ pub struct OracleScene {
 }
 
 /// `how_many` scenes drawn from a fixed seed (sphere count, resolution, iso level, layout and time), so
-/// runs repeat: the draws of `tests/gpu_matches_oracle.rs`.
+/// runs repeat: the draws of `tests/suite/gpu_matches_oracle.rs`.
 pub fn random_scenes(how_many: usize) -> Vec<OracleScene> {
     let mut rng = rand_pcg::Pcg32::seed_from_u64(0x6d65_7461);
     (0..how_many)
@@ -83,7 +83,7 @@ pub fn dented() -> Vec<Sphere> {
     vec![sphere([0.0, 0.0, 0.0], 0.5), hole]
 }
 
-/// `random` seeded random scenes (the generator of `tests/gpu_matches_oracle.rs`) and as many with
+/// `random` seeded random scenes (the generator of `tests/suite/gpu_matches_oracle.rs`) and as many with
 /// subtracting spheres, then the walls, overlaps, grid-point and dented scenes at five iso levels, two
 /// placements and two blends.
 pub fn oracle_scenes(random: usize) -> Vec<OracleScene> {

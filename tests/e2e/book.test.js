@@ -10,7 +10,7 @@ import { execFileSync } from 'node:child_process';
 import { cpSync, existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { browser, baseUrl, differingFraction, outputDir, root, useServerAndBrowser } from './helpers.js';
+import { browser, baseUrl, builtBy, differingFraction, outputDir, root, useServerAndBrowser } from './helpers.js';
 
 const BOOK = path.join(root, 'examples/book');
 const BUILD = path.join(BOOK, '_build');
@@ -31,8 +31,8 @@ const nodes = (tree, type) => (tree && typeof tree === 'object'
   ? [...(tree.type === type ? [tree] : []), ...Object.values(tree).flatMap((v) => nodes(v, type))]
   : []);
 
-before(() => {
-  execFileSync('bash', [path.join(root, 'www/dist.sh')], { stdio: 'ignore' });
+before(async () => {
+  await builtBy('www/dist.sh', 'dist/widget.js');
   rmSync(BUILD, { recursive: true, force: true });
   offlineTheme();
   const started = Date.now();
@@ -86,13 +86,13 @@ test("the built page's figures draw as MyST shows them: the widget under a model
   assert.equal(await figure.evaluate((e) => [e.spheres, e.iso, e.resolution, e.controls].join()), '2,1,48,iso');
   assert.ok(wasm.length > 0 && wasm.every((p) => p.startsWith('/metaballs/pkg')), `wasm fetched from ${wasm}`);
   const before = await tab.evaluate(() => window.host.figure().stats.triangles);
-  await tab.waitForTimeout(300);
+  await tab.evaluate(() => window.host.figure().nextFrame());
   const shot = await figure.screenshot();
 
   // The page sets a prop: the figure takes it and draws a merged surface.
   await tab.evaluate(() => window.host.set('iso', 0.6));
   await tab.waitForFunction((b) => window.host.figure().stats.triangles !== b, before, { timeout: 30_000 });
-  await tab.waitForTimeout(300);
+  await tab.evaluate(() => window.host.figure().nextFrame());
   const changed = await differingFraction(tab, shot, await figure.screenshot());
   assert.ok(changed > 0.01, `iso 1 → 0.6 changed ${(changed * 100).toFixed(2)}% of the figure`);
 

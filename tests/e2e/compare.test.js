@@ -5,7 +5,9 @@
 
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { useServerAndBrowser, openClosedAfterEach, picture, settledTriangles, screenshot, differingFraction } from './helpers.js';
+import {
+  useServerAndBrowser, openClosedAfterEach, picture, settledTriangles, screenshot, differingFraction, frameDrawn,
+} from './helpers.js';
 
 useServerAndBrowser();
 
@@ -13,7 +15,6 @@ const open = openClosedAfterEach();
 
 const BALLS = '-0.3,0,0,0.32;0.25,0.1,0,0.3;0,-0.25,0.2,0.26';
 const set = (page, name, value) => page.$eval('metaballs-view', (e, [n, v]) => e.setAttribute(n, v), [name, value]);
-const drawn = (page) => page.waitForTimeout(400);
 
 test('display=exact, compare=split with its divider and compare=overlay change the picture and go into the link', async () => {
   const { page, errors } = await open(`?balls=${BALLS}&res=8&paused=1&aa=0&yaw=0&pitch=0`);
@@ -24,7 +25,7 @@ test('display=exact, compare=split with its divider and compare=overlay change t
   for (const [name, value] of [['display', 'exact'], ['display', 'shaded'], ['compare', 'split'], ['compare', 'overlay']]) {
     await set(page, name, value);
     await page.waitForFunction(([n, v]) => location.search.includes(`${n}=${v}`) || (n === 'display' && v === 'shaded' && !location.search.includes('display=')), [name, value]);
-    await drawn(page);
+    await frameDrawn(page);
     pictures[`${name}-${value}`] = await picture(page);
     await screenshot(page, `compare-${name}-${value}`);
   }
@@ -93,9 +94,11 @@ test('figures with one sync name share spheres and camera: turning one turns the
   assert.match(sources[1], /SURFACE-NETS/);
   // The spheres move in the first and follow in the second.
   const centres = () => page.$$eval(figures, (es) => es.map((e) => JSON.stringify(e.sphereList.map((s) => s.center.map((c) => c.toFixed(3))))));
-  await page.waitForTimeout(1500);
+  const drawn = await page.$$eval(figures, (es) => es[0].framesDrawn);
+  await page.waitForFunction(([sel, n]) => document.querySelector(sel).framesDrawn > n + 3, [figures, drawn]);
   await page.$$eval(figures, (es) => es[0].pause());
-  await page.waitForTimeout(600);
+  // A frame of each after the pause: the second takes the first one's spheres before it draws.
+  await page.$$eval(figures, async (es) => { for (const e of es) await e.nextFrame(); });
   const [lead, follow] = await centres();
   assert.equal(follow, lead, 'the second figure shows the first one\'s spheres');
   // Dragging the camera in the second turns the first.

@@ -7,7 +7,9 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { readdirSync, readFileSync } from 'node:fs';
 import { chromium } from 'playwright-core';
-import { useServerAndBrowser, baseUrl, browser, CHROMIUM, FLAGS, differingFraction, open, picture, pixelStats } from './helpers.js';
+import {
+  useServerAndBrowser, baseUrl, browser, CHROMIUM, FLAGS, differingFraction, frameDrawn, open, picture, pixelStats,
+} from './helpers.js';
 
 let server;
 useServerAndBrowser({
@@ -66,7 +68,7 @@ test('figures draw again after the GPU process is killed', async () => {
   await waitForDrawing(page, '.row metaballs-view');
   await page.$eval('#a', (e) => e.setAttribute('iso', '0.8'));
   await page.$eval('#b', (e) => e.setAttribute('spheres', '7'));
-  await page.waitForTimeout(1000);
+  await Promise.all([frameDrawn(page, '#a'), frameDrawn(page, '#b')]);
   const drawn = await page.$eval('#a', (e) => e.framesDrawn);
   const killed = await killGpuProcess();
   console.log(`killed the GPU process ${killed}`);
@@ -116,7 +118,7 @@ test('a WebGL2 figure whose context is lost draws again with its settings, and s
   });
   try {
     await page.waitForFunction(() => document.querySelector('metaballs-view').stats?.triangles > 0, null, { timeout: 30_000 });
-    await page.waitForTimeout(500);
+    await frameDrawn(page);
     assert.match(await page.textContent('#adapter'), /^WebGL2/);
     const before = await picture(page);
     for (let loss = 1; loss <= 2; loss++) {

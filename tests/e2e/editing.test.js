@@ -3,15 +3,15 @@
 // a long press on touch drags; the export buttons download a valid STL and PNGs; a saved scene file
 // dropped on the figure restores it, and bad files are refused with a message, changing nothing. The
 // page's picture of a saved scene matches the committed fixture that `metaballs render --scene` is
-// compared with (tests/scene_render.rs).
+// compared with (tests/suite/scene_render.rs).
 
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import {
-  useServerAndBrowser, browser, baseUrl, open, settledTriangles, screenshot, differingFraction, openPanelGroups,
-  root, outputDir,
+  useServerAndBrowser, browser, baseUrl, open, settledTriangles, frameDrawn, screenshot, differingFraction,
+  openPanelGroups, root, outputDir,
 } from './helpers.js';
 
 useServerAndBrowser();
@@ -43,7 +43,8 @@ async function drag(page, from, to, steps = 12) {
   await page.mouse.up();
 }
 
-// Drops a file with `text` named `name` on the figure, as a person dragging it from their desktop.
+// Drops a file with `text` named `name` on the figure, as a person dragging it from their desktop, and
+// waits for the figure's notice about it (loaded or refused, it names the file).
 async function dropFile(page, name, text) {
   await page.evaluate(([fileName, content]) => {
     const transfer = new DataTransfer();
@@ -53,7 +54,10 @@ async function dropFile(page, name, text) {
       element.dispatchEvent(new DragEvent(type, { dataTransfer: transfer, bubbles: true, cancelable: true }));
     }
   }, [name, text]);
-  await page.waitForTimeout(600);
+  await page.waitForFunction((fileName) => {
+    const box = window.metaballs.element.shadowRoot.getElementById('notice');
+    return !box.hidden && box.textContent.includes(fileName);
+  }, name);
 }
 
 test('dragging a sphere moves it until the surfaces merge; Shift-click adds one, Delete removes it', async () => {
@@ -221,7 +225,7 @@ test('a saved scene dropped on the figure restores it; bad files are refused and
   // Change the scene: move a sphere, another iso and colour.
   await drag(page, await onScreen(page, 1), { x: 700, y: 150 });
   await page.evaluate(() => { const e = window.metaballs.element; e.iso = 1.3; e.color = '#2244ff'; });
-  await page.waitForTimeout(500);
+  await frameDrawn(page);
   const changed = await page.evaluate(() => window.metaballs.element.sphereList);
   assert.notDeepEqual(changed, original);
 
@@ -248,7 +252,7 @@ test('a saved scene dropped on the figure restores it; bad files are refused and
   assert.deepEqual(await page.evaluate(() => window.metaballs.element.sphereList), original);
   assert.equal(await page.evaluate(() => window.metaballs.element.iso), 0.8);
   assert.equal(await page.evaluate(() => window.metaballs.element.color), '#33aa66');
-  await page.waitForTimeout(800);
+  await frameDrawn(page);
   const restored = await picture(page);
   const differing = await differingFraction(page, saved, restored);
   assert.ok(differing < 0.005, `${(differing * 100).toFixed(2)}% of pixels differ from the saved scene`);
@@ -257,7 +261,7 @@ test('a saved scene dropped on the figure restores it; bad files are refused and
 });
 
 // The fixture pair tests/fixtures/page-scene.json and tests/reference/page-scene.png: a scene built and
-// saved in the page, and the page's picture of it. tests/scene_render.rs renders the JSON with
+// saved in the page, and the page's picture of it. tests/suite/scene_render.rs renders the JSON with
 // `metaballs render --scene` and compares with the PNG (FLIP). Here: the page still saves that document
 // and draws that picture.
 test('the page saves and draws the fixture scene that the command line renders', async () => {
@@ -266,7 +270,7 @@ test('the page saves and draws the fixture scene that the command line renders',
   const { page, errors } = await open('?controls=none&hud=off&paused=1');
   await settledTriangles(page).catch(() => {});
   await page.evaluate((t) => window.metaballs.element.loadScene(t), JSON.stringify(expected));
-  await page.waitForTimeout(1000);
+  await frameDrawn(page);
   const saved = JSON.parse(await page.evaluate(() => window.metaballs.element.saveScene()));
   assert.deepEqual(saved, expected, 'the page saves the scene it loaded, unchanged');
   const png = await picture(page);

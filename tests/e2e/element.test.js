@@ -4,12 +4,13 @@
 
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { spawn, execFileSync } from 'node:child_process';
+import { spawn } from 'node:child_process';
 import { cpSync, mkdtempSync, rmSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import {
-  useServerAndBrowser, openClosedAfterEach, root, freePort, waitForServer, pixelStats, differingFraction,
+  useServerAndBrowser, openClosedAfterEach, root, freePort, waitForServer, pixelStats, differingFraction, frameDrawn,
+  builtBy,
 } from './helpers.js';
 
 useServerAndBrowser();
@@ -37,7 +38,8 @@ test('five figures: one device, the visible ones draw, the ones below the fold s
   // Below the fold, each figure is drawn once while the page is idle, for its picture in print, and
   // lets go of its renderer again.
   await page.evaluate(() => Promise.all(['c', 'd', 'e'].map((id) => document.getElementById(id).printable())));
-  await page.waitForTimeout(2000);
+  // A second of animation above: the figures below draw no frame meanwhile.
+  await page.waitForTimeout(1000);
   for (const id of ['a', 'b']) {
     const { surface } = await surfaceOf(page, `#${id}`);
     assert.ok(surface > 0.01, `figure ${id}: the surface covers only ${(surface * 100).toFixed(2)}%`);
@@ -60,7 +62,7 @@ test('five figures: one device, the visible ones draw, the ones below the fold s
   await page.evaluate(() => window.scrollTo(0, 0));
   await page.waitForTimeout(500);
   const stopped = await frames(page, 'd');
-  await page.waitForTimeout(1500);
+  await page.waitForTimeout(1000);
   assert.equal(await frames(page, 'd'), stopped, 'a figure scrolled away kept drawing');
   assert.equal(await frames(page, 'e'), 0);
   assert.equal(await page.evaluate(() => customElements.get('metaballs-view').devicesCreated), 1);
@@ -196,7 +198,7 @@ test('every attribute: good values take effect, bad ones show a notice and keep 
   // Good values change the picture: a new colour.
   const blue = await surfaceOf(page, '#a');
   await page.$eval('#a', (e) => e.setAttribute('color', '#e77661'));
-  await page.waitForTimeout(600);
+  await frameDrawn(page, '#a');
   const red = await surfaceOf(page, '#a');
   assert.ok(await differingFraction(page, blue.png, red.png) > 0.01, 'a new colour did not change the picture');
   assert.ok(red.surface > 0.01, 'the red surface is not visible');
@@ -209,7 +211,8 @@ test('a host stylesheet that restyles canvas, div, button and input does not rea
   for (const query of ['', '?hostile']) {
     const { page, errors, close } = await open(`${FIXTURES}/styled.html${query}`);
     await page.waitForFunction(() => document.querySelector('metaballs-view')?.stats?.triangles > 0);
-    await page.waitForTimeout(1000);
+    await frameDrawn(page);
+    await frameDrawn(page);
     shots.push({ page, close, png: await page.locator('metaballs-view').screenshot() });
     assert.deepEqual(errors, []);
   }
@@ -224,7 +227,7 @@ test('a destroyed device: every visible figure comes back with its settings', as
   await waitForStats(page, 'a');
   await waitForStats(page, 'b');
   await page.$eval('#a', (e) => e.setAttribute('iso', '0.8'));
-  await page.waitForTimeout(1000);
+  await frameDrawn(page, '#a');
   const before = await page.evaluate(() => ['a', 'b'].map((id) => document.getElementById(id).framesDrawn));
   await page.evaluate(() => customElements.get('metaballs-view').destroyDevice());
   await page.waitForFunction(() => customElements.get('metaballs-view').devicesCreated === 2, null, { timeout: 20_000 });
@@ -249,7 +252,7 @@ test('a device lost again and again: the figures stop, say so, and can be starte
   await page.waitForSelector('#a >> #message', { state: 'visible', timeout: 20_000 });
   assert.match(await page.textContent('#a >> #message-text'), /lost 3 times/);
   const created = await page.evaluate(() => customElements.get('metaballs-view').devicesCreated);
-  await page.waitForTimeout(2000);
+  await page.waitForTimeout(1000);
   assert.equal(await page.evaluate(() => customElements.get('metaballs-view').devicesCreated), created, 'it kept retrying');
   const drawn = await frames(page, 'a');
   await page.click('#a >> #retry');
@@ -277,7 +280,7 @@ test('embed.html shows no panel unless asked', async () => {
 });
 
 test('dist/ (the bundled element) served under a sub-path draws the demo page and the lecture', async () => {
-  execFileSync('bash', [path.join(root, 'www/dist.sh')], { stdio: 'ignore' });
+  await builtBy('www/dist.sh', 'dist/widget.js');
   const site = mkdtempSync(path.join(os.tmpdir(), 'metaballs-site-'));
   cpSync(path.join(root, 'dist'), path.join(site, 'course/figures'), { recursive: true });
   const port = await freePort();

@@ -8,7 +8,7 @@ import assert from 'node:assert/strict';
 import { chromium } from 'playwright-core';
 import {
   useServerAndBrowser, openClosedAfterEach, CHROMIUM, FLAGS, differingFraction, pixelStats, settledTriangles,
-  openPanelGroups,
+  openPanelGroups, frameDrawn,
 } from './helpers.js';
 
 useServerAndBrowser();
@@ -27,7 +27,7 @@ const canvasShot = (page) => page.locator('metaballs-view').locator('#view').scr
 
 async function setAndSettle(page, name, value) {
   await page.$eval('metaballs-view', (element, [n, v]) => element.setAttribute(n, v), [name, value]);
-  await page.waitForTimeout(700);
+  await frameDrawn(page);
 }
 
 test('without navigator.gpu the page draws with WebGL2 and CPU meshing, and its controls change the picture', async () => {

@@ -4,7 +4,7 @@
 import { before, after, afterEach } from 'node:test';
 import { execFileSync, spawn } from 'node:child_process';
 import { createServer } from 'node:net';
-import { mkdirSync, readFileSync } from 'node:fs';
+import { existsSync, mkdirSync, readFileSync, readdirSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import path from 'node:path';
 import { chromium } from 'playwright-core';
@@ -27,6 +27,72 @@ export const FLAGS = [
   '--disable-quic',
 ];
 
+// What the build scripts make their outputs from: the WebAssembly (pkg/ and pkg-webgl/, from the crate
+// and its shaders), the page, the element and the widget's module.
+const WASM_SOURCES = ['src', 'shaders', 'Cargo.toml', 'Cargo.lock'];
+const SOURCES = [...WASM_SOURCES, 'pkg', 'pkg-webgl', 'www', 'python/js', 'index.html', 'embed.html'];
+
+function newestChange(file) {
+  if (!existsSync(file)) return 0;
+  const stat = statSync(file);
+  if (!stat.isDirectory()) return stat.mtimeMs;
+  return readdirSync(file).filter((name) => name !== 'node_modules')
+    .reduce((newest, name) => Math.max(newest, newestChange(path.join(file, name))), stat.mtimeMs);
+}
+
+/** True when `output` (relative to the repository) is newer than every one of `sources`. */
+const newerThan = (output, sources) => existsSync(path.join(root, output))
+  && statSync(path.join(root, output)).mtimeMs > Math.max(...sources.map((s) => newestChange(path.join(root, s))));
+
+/** Runs `f` while holding the build lock: test files running side by side build one at a time. */
+async function exclusively(f) {
+  const lock = path.join(root, 'target/e2e-build.lock');
+  mkdirSync(path.dirname(lock), { recursive: true });
+  for (;;) {
+    try {
+      writeFileSync(lock, String(process.pid), { flag: 'wx' });
+      break;
+    } catch {
+      // Taken: wait for its holder, or take it over from a holder that is gone.
+      const holder = Number(readFileSync(lock, 'utf8'));
+      try {
+        if (holder) process.kill(holder, 0);
+      } catch {
+        rmSync(lock, { force: true });
+        continue;
+      }
+      await new Promise((r) => setTimeout(r, 200));
+    }
+  }
+  try {
+    return await f();
+  } finally {
+    rmSync(lock, { force: true });
+  }
+}
+
+/**
+ * Runs the build script `script` unless `output` (the last file it writes, relative to the repository)
+ * is newer than every source: tests/run.sh builds dist/, the npm package and the wheel once before the
+ * tests, and a test file run on its own builds what is missing or out of date (the WebAssembly too, only
+ * when it is older than the crate).
+ */
+export async function builtBy(script, output) {
+  if (newerThan(output, SOURCES)) return;
+  await exclusively(async () => {
+    if (newerThan(output, SOURCES)) return;
+    const wasmBuilt = ['pkg', 'pkg-webgl'].every((dir) => newerThan(`${dir}/metaballs_bg.wasm`, WASM_SOURCES));
+    console.log(`building ${output} (bash ${script})`);
+    try {
+      execFileSync('bash', [path.join(root, script)], {
+        encoding: 'utf8', stdio: 'pipe', env: { ...process.env, METABALLS_WASM_BUILT: wasmBuilt ? '1' : '' },
+      });
+    } catch (error) {
+      throw new Error(`bash ${script} failed:\n${error.stdout}\n${error.stderr}`);
+    }
+  });
+}
+
 let server;
 export let browser;
 export let baseUrl;
@@ -42,8 +108,9 @@ export function freePort() {
   });
 }
 
-export async function waitForServer(url) {
-  for (let i = 0; i < 100; i++) {
+/** Waits until `url` answers (a server just started), at most `timeoutMs`. */
+export async function waitForServer(url, timeoutMs = 10_000) {
+  for (const end = Date.now() + timeoutMs; Date.now() < end;) {
     try {
       if ((await fetch(url)).ok) return;
     } catch {
@@ -119,11 +186,20 @@ export async function waitForTriangles(page, differentFrom = null) {
   return Number((await page.textContent('#triangles')).replace(/,/g, ''));
 }
 
-// Renders settle once the stats for the current settings are in: two HUD updates with the same count.
+/**
+ * Resolves with the statistics of a frame the figure (the first by default) draws of its current
+ * settings: it draws one even while paused or off screen (`nextFrame()`), and its HUD shows them.
+ */
+export function frameDrawn(page, selector = 'metaballs-view') {
+  return page.$eval(selector, (e) => e.nextFrame());
+}
+
+// Renders settle once the stats for the current settings are in: two frames in a row, each drawn and
+// its statistics read back, with the same count in the HUD.
 export async function settledTriangles(page) {
   let previous = await waitForTriangles(page);
   for (let i = 0; i < 20; i++) {
-    await page.waitForTimeout(700);
+    await frameDrawn(page);
     const now = Number((await page.textContent('#triangles')).replace(/,/g, ''));
     if (now === previous) return now;
     previous = now;

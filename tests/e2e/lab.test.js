@@ -4,7 +4,9 @@
 
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { useServerAndBrowser, openClosedAfterEach, settledTriangles, screenshot, differingFraction } from './helpers.js';
+import {
+  useServerAndBrowser, openClosedAfterEach, settledTriangles, frameDrawn, screenshot, differingFraction,
+} from './helpers.js';
 
 useServerAndBrowser();
 
@@ -22,7 +24,7 @@ test('color_by=error colours the mesh, the HUD gives RMS and max error and a sha
   assert.equal(stats.quality.length, 10);
   assert.ok(stats.quality.reduce((a, b) => a + b, 0) >= stats.triangles * 0.9, `${stats.quality} against ${stats.triangles}`);
   assert.match(await page.textContent('#hud-error-text'), /^RMS [\d.e-]+ · max [\d.e-]+ cells$/);
-  await page.waitForTimeout(500);
+  await frameDrawn(page);
   const coloured = await screenshot(page, 'lab-error');
   assert.ok(await differingFraction(page, plain, coloured) > 0.02, 'the error colouring changes the picture');
   assert.match(page.url(), /color_by=error/);

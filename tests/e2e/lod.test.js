@@ -8,7 +8,7 @@
 
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { useServerAndBrowser, openClosedAfterEach, settledTriangles } from './helpers.js';
+import { useServerAndBrowser, openClosedAfterEach, settledTriangles, frameDrawn } from './helpers.js';
 import { DetailBudget, Ladder, LOD_STEPS, RENDER_SCALES } from '../../www/lib/figure/ladder.js';
 
 /** A figure's chain, as detail.js makes it: the render scale down to 0.5, then cells from 2 to 16 px. */
@@ -72,7 +72,9 @@ const levels = (page) => page.$eval('metaballs-view', (e) => e.stats.lod?.levels
 
 async function setAndSettle(page, name, value) {
   await page.$eval('metaballs-view', (element, [n, v]) => element.setAttribute(n, v), [name, value]);
-  await page.waitForTimeout(1500);
+  // Two frames of the new settings, each with its statistics (the levels among them) read back.
+  await frameDrawn(page);
+  await frameDrawn(page);
 }
 
 test('a LOD figure draws coloured by level and its HUD counts each level, on the CPU and the GPU', async () => {

@@ -59,7 +59,8 @@ before(async () => {
   server = spawn(path.join(VENV, 'bin/jupyter'), args, { stdio: ['ignore', log, log], detached: true, cwd: directory,
     env: { ...process.env, JUPYTER_CONFIG_DIR: path.join(directory, '.jupyter'), JUPYTER_DATA_DIR: path.join(directory, '.data'),
       JUPYTER_RUNTIME_DIR: path.join(directory, '.runtime'), IPYTHONDIR: path.join(directory, '.ipython') } });
-  await waitForServer(`http://127.0.0.1:${port}/api/status?token=${TOKEN}`);
+  // A first start in a new environment compiles JupyterLab's Python modules: give it a minute.
+  await waitForServer(`http://127.0.0.1:${port}/api/status?token=${TOKEN}`, 60_000);
   browser = await chromium.launch({ executablePath: CHROMIUM, args: FLAGS, headless: true });
 });
 
@@ -131,7 +132,7 @@ test('in JupyterLab the widget draws, follows Python, reports back, exports, sha
   await waitFor(page, 'the figure did not draw', () => document.querySelector('metaballs-view')?.stats?.triangles > 0, null, 120_000);
   console.log(`first frame ${Date.now() - started} ms after the cell was run`);
   const figure = page.locator('metaballs-view').first();
-  await page.waitForTimeout(500);
+  await V(page, () => document.querySelector('metaballs-view').nextFrame());
   const before = await V(page, () => document.querySelector('metaballs-view').stats.triangles);
   const shot = await figure.screenshot();
 
@@ -139,7 +140,7 @@ test('in JupyterLab the widget draws, follows Python, reports back, exports, sha
   await run(page, 1);
   await waitFor(page, 'w.iso = 0.7 did not reach the figure', () => document.querySelector('metaballs-view').iso === 0.7);
   await waitFor(page, 'the count did not change', (b) => document.querySelector('metaballs-view').stats.triangles !== b, before);
-  await page.waitForTimeout(500);
+  await V(page, () => document.querySelector('metaballs-view').nextFrame());
   const changed = await differingFraction(page, shot, await figure.screenshot());
   assert.ok(changed > 0.01, `w.iso = 0.7 changed ${(changed * 100).toFixed(2)}% of the figure`);
 
@@ -150,6 +151,8 @@ test('in JupyterLab the widget draws, follows Python, reports back, exports, sha
     slider.dispatchEvent(new Event('input', { bubbles: true }));
     slider.dispatchEvent(new Event('change', { bubbles: true }));
   });
+  // The widget sends a change to the kernel once the kernel has answered its previous message: time for
+  // it to arrive before the next cell runs.
   await page.waitForTimeout(1500);
   await run(page, 2);
   await waitForOutput(page, /ISO 0\.8 TRIANGLES [1-9]/);

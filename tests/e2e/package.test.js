@@ -9,7 +9,7 @@ import { cpSync, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } f
 import os from 'node:os';
 import path from 'node:path';
 import { chromium } from 'playwright-core';
-import { CHROMIUM, FLAGS, freePort, root, waitForServer } from './helpers.js';
+import { CHROMIUM, FLAGS, builtBy, freePort, root, waitForServer } from './helpers.js';
 
 const e2e = path.join(root, 'tests/e2e');
 const version = readFileSync(path.join(root, 'Cargo.toml'), 'utf8').match(/^version = "([^"]+)"/m)[1];
@@ -62,7 +62,7 @@ async function drawsEveryFigure(url, count) {
 }
 
 before(async () => {
-  run('bash', [path.join(root, 'www/pack.sh')]);
+  await builtBy('www/pack.sh', path.relative(root, tarball));
   project = mkdtempSync(path.join(os.tmpdir(), 'metaballs-course-'));
   installPackage(project);
   browser = await chromium.launch({ executablePath: CHROMIUM, args: FLAGS, headless: true });

@@ -6,8 +6,8 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import path from 'node:path';
 import {
-  useServerAndBrowser, open, waitForTriangles, settledTriangles, screenshot, pixelStats, differingFraction,
-  setRange, outputDir,
+  useServerAndBrowser, open, waitForTriangles, settledTriangles, frameDrawn, screenshot, pixelStats,
+  differingFraction, setRange, outputDir,
 } from './helpers.js';
 
 useServerAndBrowser();
@@ -49,8 +49,9 @@ test('each control changes the picture and the triangle count', async () => {
     assert.notEqual(now, triangles, `${id}: the triangle count did not change`);
     console.log(`${id} → ${value}: ${triangles} → ${now} triangles, ${(changed * 100).toFixed(1)}% of pixels changed`);
     triangles = await settledTriangles(page);
-    // The buffers have grown to the surface: no lasting overflow warning.
-    await page.waitForTimeout(1200);
+    // The buffers have grown to the surface: no lasting overflow warning, two frames later.
+    await frameDrawn(page);
+    await frameDrawn(page);
     assert.equal(await page.isVisible('#overflow'), false, `${id}: overflow warning still shown`);
     before = after;
   }
@@ -160,7 +161,11 @@ test('the HUD reports frame rate, frame time and triangles at 32, 64 and 128 cel
   for (const res of [32, 64, 128]) {
     const { page, errors } = await open(`?res=${res}`);
     await waitForTriangles(page);
-    await page.waitForTimeout(3000);
+    // The HUD times the frames of each half second: wait until it has timed some.
+    await page.waitForFunction(() => {
+      const $ = (id) => document.querySelector('metaballs-view').shadowRoot.getElementById(id);
+      return Number($('fps').textContent) > 0 && / ms$/.test($('frame-time').textContent);
+    }, null, { timeout: 30_000 });
     const fps = Number(await page.textContent('#fps'));
     const frame = await page.textContent('#frame-time');
     const triangles = Number((await page.textContent('#triangles')).replace(/,/g, ''));

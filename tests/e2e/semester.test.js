@@ -114,7 +114,11 @@ test('a lecture of 24 figures, scrolled through, holds no more GPU memory than t
     const now = await totals();
     most = { bytes: Math.max(most.bytes, now.bytes), renderers: Math.max(most.renderers, now.renderers) };
   }
-  await page.waitForTimeout(2000);
+  // Until the figures scrolled past have let go (a second after they left the screen).
+  await page.waitForFunction(() => [...document.querySelectorAll('metaballs-view')].every((e) => {
+    const box = e.getBoundingClientRect();
+    return (box.bottom > 0 && box.top < innerHeight) || e.gpuBytes === 0;
+  }), null, { timeout: 10_000 }).catch(() => {});
   const figures = await onScreen();
   const visible = figures.filter((f) => f.visible);
   const end = await totals();

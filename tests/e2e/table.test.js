@@ -1,7 +1,7 @@
 // Every row of the parameter table, walked through the ways a page gives a setting: a link (by its
 // short name, its name and each older spelling), an attribute (by each spelling), the property, the
 // panel's control and the saved scene. The rows are read from the element's table, so a new row is
-// covered here without a new line (tests/table.rs walks the same rows through the Rust side, and
+// covered here without a new line (tests/suite/table.rs walks the same rows through the Rust side, and
 // python/tests the notebook's traits).
 
 import { test } from 'node:test';

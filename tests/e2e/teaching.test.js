@@ -9,7 +9,7 @@ import { writeFileSync } from 'node:fs';
 import path from 'node:path';
 import {
   useServerAndBrowser, open, waitForTriangles, settledTriangles, screenshot, differingFraction, setRange,
-  openPanelGroups, outputDir,
+  openPanelGroups, outputDir, frameDrawn,
 } from './helpers.js';
 
 useServerAndBrowser();
@@ -35,15 +35,10 @@ const CONTROLS = [
 ];
 
 async function frameAfterChange(page) {
-  // Two frames are drawn after a change, even paused: wait until they are (a busy machine is slower).
-  await page.waitForTimeout(900);
-  let drawn = await page.evaluate(() => window.metaballs.element.framesDrawn);
-  for (let i = 0; i < 10; i++) {
-    await page.waitForTimeout(300);
-    const now = await page.evaluate(() => window.metaballs.element.framesDrawn);
-    if (now === drawn) break;
-    drawn = now;
-  }
+  // Two frames of the changed settings, even paused: the second is drawn once the first one's counts
+  // are back (a mesh that outgrew its buffers is drawn again in grown ones).
+  await frameDrawn(page);
+  await frameDrawn(page);
   // The figure's own picture of its state (drawn once more, settled; without the panel over it).
   const png = Buffer.from(await page.evaluate(async () => {
     const blob = await window.metaballs.element.picture(1);

@@ -1,12 +1,14 @@
 // The notebook widget's front end under a host of its own that follows the anywidget contract (no kernel,
 // the wasm beside the module, as on MyST's static pages): Python's side is played by the page, which
-// sets traits through the model and reads back what the figure reports. Expects python/build.sh to have
-// bundled the module into python/src/metaballs_widget/static/.
+// sets traits through the model and reads back what the figure reports. The module is the one
+// python/build.sh bundles into python/src/metaballs_widget/static/ (built here when missing or older than
+// its sources).
 
-import { test } from 'node:test';
+import { before, test } from 'node:test';
 import assert from 'node:assert/strict';
-import { browser, baseUrl, differingFraction, useServerAndBrowser } from './helpers.js';
+import { browser, baseUrl, builtBy, differingFraction, frameDrawn, useServerAndBrowser } from './helpers.js';
 
+before(() => builtBy('python/build.sh', 'python/src/metaballs_widget/static/widget.js'));
 useServerAndBrowser();
 
 const ESM = '/python/src/metaballs_widget/static/widget.js';
@@ -43,7 +45,7 @@ test('under a plain anywidget host the figure draws, follows its traits and repo
   assert.equal(await figure.evaluate((e) => e.iso), 0.5);
   const after = await triangles(page, before);
   assert.notEqual(after, before);
-  await page.waitForTimeout(500);
+  await frameDrawn(page);
   const changed = await differingFraction(page, shot, await figure.screenshot());
   assert.ok(changed > 0.01, `iso 1 → 0.5 changed ${(changed * 100).toFixed(2)}% of the pixels`);
 

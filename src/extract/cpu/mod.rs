@@ -17,7 +17,7 @@ use crate::scene::params::view::Method;
 
 /// A mesher on the CPU whose mesh [`CpuMeshExtractor`] uploads: vertices of 6 `f32` (position, then
 /// outward normal) and three indices per triangle, counter-clockwise seen from outside.
-pub trait CpuMeshing: Default + 'static {
+pub trait CpuMeshing: Default + wgpu::WasmNotSendSync + 'static {
     /// The extractor's name (`Extractor::name`).
     const NAME: &'static str;
     /// How it joins the field's crossings into a mesh.

@@ -1,9 +1,8 @@
 //! Surface nets, the second extractor, chosen by `extractor=surface_nets` and run through the renderer
 //! on the scenes every extractor meets: a closed surface, one vertex per crossed cell inside that
 //! cell, the same blobs as marching cubes, and the volume marching cubes encloses.
-#![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::scenes::oracle_scenes;
 use common::*;

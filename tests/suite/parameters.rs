@@ -1,7 +1,6 @@
 //! Bad input gets a clear message, leaves the previous state running, and never panics.
-#![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::*;
 use glam::Vec3;
@@ -250,7 +249,8 @@ fn the_cli_writes_a_png_of_the_requested_size() {
 
 #[test]
 fn changing_resolution_frees_the_old_buffers() {
-    with_renderer(Settings { resolution: 64, ..Settings::default() }, 32, 32, |o| {
+    // The device's own memory counts: a device of its own, which no other test allocates on.
+    with_own_renderer(Settings { resolution: 64, ..Settings::default() }, 32, 32, |o| {
         let memory = |o: &mut metaballs::offscreen::Offscreen| {
             o.render();
             let _ = o.device.poll(wgpu::PollType::wait_indefinitely());

@@ -1,7 +1,6 @@
 //! The GPU passes against the CPU oracle: same field, same triangles.
-#![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::scenes::{overlapping, touching_walls};
 use common::*;

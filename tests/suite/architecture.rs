@@ -1,9 +1,8 @@
 //! The layout's rules, checked on the source: each folder of `src/` imports only the folders below it
 //! (`docs/architecture.md`), no module imports itself through others, the scene's modules import in one
 //! direction, the extractors do not know each other, and the scene and the tables know nothing of wgpu.
-#![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 #[path = "architecture/imports.rs"]
 mod imports;
 

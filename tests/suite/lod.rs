@@ -1,8 +1,7 @@
 //! Level of detail through the renderer: the GPU and CPU LOD meshes are equal, closed and follow the
 //! camera; exports write them; a frozen selection stays put.
-#![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::*;
 use metaballs::extract::mesh::IndexedMesh;
@@ -263,36 +262,32 @@ const CAMERAS: [(f32, f32, f32); 8] = [
 
 #[test]
 fn gpu_lod_meshes_are_closed_for_twelve_scenes_and_eight_cameras() {
-    let (adapter, device, queue) = device();
-    let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
     let base = lod_settings(1, 5, 128, 4.0, 4.3);
-    let mut o = metaballs::offscreen::Offscreen::with_device(adapter, device.clone(), queue, base, 320, 240)
-        .expect("renderer");
-    for seed in 1..=12u64 {
-        let spheres = [3, 8, 16][seed as usize % 3];
-        for (yaw, pitch, distance) in CAMERAS {
-            let mut settings = Settings { seed, sphere_count: spheres, ..base };
-            settings.camera.yaw_degrees = yaw;
-            settings.camera.pitch_degrees = pitch;
-            settings.camera.distance = distance;
-            o.renderer.set_settings(settings).unwrap();
-            let what = format!("seed {seed}, camera ({yaw}, {pitch}, {distance})");
-            o.renderer.pin_extractor(Some("lod-gpu")).unwrap();
-            let gpu = pollster::block_on(o.renderer.extract_mesh());
-            let levels = o.renderer.lod_summary().unwrap().blocks;
-            o.renderer.pin_extractor(Some("lod-cpu")).unwrap();
-            let cpu = pollster::block_on(o.renderer.extract_mesh());
-            let topology = gpu.topology();
-            assert_eq!(
-                topology.open_or_nonmanifold_edges, 0,
-                "{what}, levels {levels:?}: open or non-manifold edges"
-            );
-            assert_eq!(topology.misoriented_edges, 0, "{what}: inconsistent orientation");
-            assert_eq!(gpu.triangles.len(), cpu.triangles.len(), "{what}: GPU and CPU triangle counts");
+    with_renderer(base, 320, 240, |o| {
+        for seed in 1..=12u64 {
+            let spheres = [3, 8, 16][seed as usize % 3];
+            for (yaw, pitch, distance) in CAMERAS {
+                let mut settings = Settings { seed, sphere_count: spheres, ..base };
+                settings.camera.yaw_degrees = yaw;
+                settings.camera.pitch_degrees = pitch;
+                settings.camera.distance = distance;
+                o.renderer.set_settings(settings).unwrap();
+                let what = format!("seed {seed}, camera ({yaw}, {pitch}, {distance})");
+                o.renderer.pin_extractor(Some("lod-gpu")).unwrap();
+                let gpu = pollster::block_on(o.renderer.extract_mesh());
+                let levels = o.renderer.lod_summary().unwrap().blocks;
+                o.renderer.pin_extractor(Some("lod-cpu")).unwrap();
+                let cpu = pollster::block_on(o.renderer.extract_mesh());
+                let topology = gpu.topology();
+                assert_eq!(
+                    topology.open_or_nonmanifold_edges, 0,
+                    "{what}, levels {levels:?}: open or non-manifold edges"
+                );
+                assert_eq!(topology.misoriented_edges, 0, "{what}: inconsistent orientation");
+                assert_eq!(gpu.triangles.len(), cpu.triangles.len(), "{what}: GPU and CPU triangle counts");
+            }
         }
-    }
-    let _ = device.poll(wgpu::PollType::wait_indefinitely());
-    assert!(pollster::block_on(scope.pop()).is_none(), "validation error");
+    });
 }
 
 /// A browser grants a page WebGPU's default limits unless it asks for more: 8 storage buffers per

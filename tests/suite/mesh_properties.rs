@@ -1,8 +1,7 @@
 //! What the extracted surface must be: closed, manifold, of the right topology and shape, with exact
 //! normals.
-#![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::*;
 use glam::{DVec3, Vec3};

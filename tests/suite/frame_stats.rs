@@ -1,8 +1,7 @@
 //! The host learns triangles emitted and overflow asynchronously, and an overflow never writes out of
 //! bounds.
-#![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::*;
 use metaballs::extract::reference::{self, Grid};

@@ -4,8 +4,7 @@
 //! back to itself, or refused with a short message naming what is wrong; never a panic.
 //!
 //! The number of cases per property follows `PROPTEST_CASES` (256 by default, as the test command runs
-//! them); `PROPTEST_CASES=20000 cargo test --release --test hostile_inputs` is the longer run.
-#![cfg(not(target_arch = "wasm32"))]
+//! them); `PROPTEST_CASES=20000 cargo test --release --test suite hostile_inputs::` is the longer run.
 
 use glam::Vec3;
 use metaballs::Settings;

@@ -1,11 +1,10 @@
 //! Every extractor in `extract::EXTRACTORS`, run through the renderer, against the CPU oracle on the
 //! scenes the GPU and CPU tests use. A new marching-cubes extractor of the uniform grid added to that
 //! list is held to the same scenes without a line here; level-of-detail extractors, whose cells follow
-//! the camera, are held to the oracle in their finest blocks and to each other in `tests/lod.rs`, and
-//! surface nets, another method, to its own properties in `tests/surface_nets.rs`.
-#![cfg(not(target_arch = "wasm32"))]
+//! the camera, are held to the oracle in their finest blocks and to each other in `tests/suite/lod.rs`,
+//! and surface nets, another method, to its own properties in `tests/suite/surface_nets.rs`.
 
-mod common;
+use crate::common;
 
 use common::scenes::oracle_scenes;
 use common::*;

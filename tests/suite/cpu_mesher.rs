@@ -1,8 +1,7 @@
 //! The CPU mesher against the oracle (the same scenes the GPU is held to), and the renderer drawing its
 //! mesh: the same picture as the GPU's, the choice `auto` makes, and a long soak switching meshers.
-#![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::scenes::{on_grid_point, overlapping, random_scenes, touching_walls};
 use common::*;
@@ -38,7 +37,7 @@ fn assert_equals_oracle(
 
 #[test]
 fn seeded_random_scenes_equal_the_oracle() {
-    // The draws of the GPU's test (tests/gpu_matches_oracle.rs), one mesher reused throughout.
+    // The draws of the GPU's test (tests/suite/gpu_matches_oracle.rs), one mesher reused throughout.
     let mut mesher = CpuMesher::new();
     let mut with_surface = 0;
     for s in random_scenes(60) {

@@ -1,9 +1,8 @@
 //! Exported meshes, read back with independent readers (stl_io, tobj): the GPU mesh's triangles, a
 //! closed 2-manifold, the volume it encloses; simplified exports reach their target and stay closed;
 //! `metaballs export` writes them from flags or a scene file and refuses bad input.
-#![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::*;
 use glam::Vec3;

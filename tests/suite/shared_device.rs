@@ -1,8 +1,7 @@
 //! Several views on one device: pipelines compiled once, each renderer with its own buffers and scene,
 //! memory returned when a renderer goes, and a lost device reported so views can move to a new one.
-#![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use metaballs::offscreen::OFFSCREEN_FORMAT;
 use metaballs::{GpuContext, Renderer, Settings};

@@ -3,7 +3,6 @@
 //! table) is read, and a module that imports one of a higher layer, a module that is in no layer, an
 //! import of a file that is not there, or modules that import each other in a cycle fail the test.
 //! `docs/architecture.md` names every module of `www/lib/`.
-#![cfg(not(target_arch = "wasm32"))]
 
 use std::collections::BTreeMap;
 use std::fs;
@@ -228,7 +227,7 @@ fn modules_import_only_their_layer_and_those_below() {
     for (module, targets) in graph() {
         let Some(own) = layer_of(&module) else {
             problems.push(format!(
-                "{module} is in no layer: place it in a folder of tests/js_layers.rs's LAYERS"
+                "{module} is in no layer: place it in a folder of tests/suite/js_layers.rs's LAYERS"
             ));
             continue;
         };

@@ -1,5 +1,4 @@
 //! Motion: Euler steps with elastic bounces keep every sphere in the box at its speed.
-#![cfg(not(target_arch = "wasm32"))]
 
 use metaballs::Scene;
 use metaballs::scene::BOX_HALF_EXTENT;

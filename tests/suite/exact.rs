@@ -1,9 +1,8 @@
 //! The exact surface (`display=exact`, `compare=split|overlay`): the device's ray caster against a
 //! brute-force CPU one at many pixels, and the silhouettes of the exact surface and of the 128³ mesh
 //! as drawn, pixel for pixel.
-#![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::*;
 use metaballs::extract::reference::exact_hit;

@@ -1,8 +1,7 @@
 //! Scene documents: saved and loaded they give the same scene and the same mesh; every bad document is
 //! refused with a message naming the field and the value (the page keeps its scene: tests/e2e).
-#![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::*;
 use glam::Vec3;

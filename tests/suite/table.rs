@@ -1,7 +1,6 @@
 //! Every row of the parameter table, walked through every way a setting is given outside a page: its
 //! names (attribute, link, older spellings), the renderer's settings, a link, a scene file, the
 //! element's table and the notebook's traits. A new row is covered here without a new line.
-#![cfg(not(target_arch = "wasm32"))]
 
 use metaballs::bench::with_view;
 use metaballs::manifest;

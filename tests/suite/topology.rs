@@ -1,9 +1,8 @@
 //! Topology as the figure reports it (`View.topology`, the HUD): components, genus, closed. Two
 //! spheres are two blobs until the frame the oracle's mesh joins them; a ring of spheres has one hole;
 //! and the counts agree with an independent count on the exported mesh, read back by `tobj`.
-#![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::*;
 use glam::Vec3;

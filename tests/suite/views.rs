@@ -2,9 +2,8 @@
 //! make; none changes the mesh; the overlays draw exactly what the oracle says (crossed cells, slice
 //! contour); the construction toggles match the oracle run with the same choice; the inspector reads a
 //! picked cell as the oracle does.
-#![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::*;
 use glam::{UVec3, Vec3};

@@ -1,8 +1,7 @@
 //! The lab: the mesh measured against the exact surface (on the GPU, every frame, no readback in the
 //! frame) and against itself at other resolutions, subtracting spheres, topology.
-#![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::*;
 use metaballs::extract::reference::{Construction, Grid, surface_distance};

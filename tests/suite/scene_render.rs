@@ -1,9 +1,8 @@
 //! A scene built and saved in the page renders the same offline: `metaballs render --scene` of
 //! tests/fixtures/page-scene.json against the page's own picture of it (tests/reference/page-scene.png,
 //! which tests/e2e/editing.test.js checks the page still draws), by mean FLIP error.
-#![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::*;
 use metaballs::offscreen::read_png;

@@ -1,8 +1,7 @@
 //! What a person sees: a reference frame compared perceptually (FLIP), and the checks one would make
 //! by eye — not blank, the lit side brighter, a specular highlight where the light reflects.
-#![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::*;
 use glam::Vec3;

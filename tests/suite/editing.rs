@@ -1,9 +1,8 @@
 //! Editing the scene by hand, natively: the sphere under a pixel is the one pointed at, dragging moves
 //! it in the plane facing the camera inside the box until two surfaces merge, adding puts a sphere at
 //! the box centre's depth, and refused edits leave the scene as it was.
-#![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::*;
 use glam::Vec3;

@@ -1,9 +1,8 @@
 //! The shaders' bindings, checked on the source: across every file of `shaders/`, one number in a group
 //! means one variable, and each variable's number is the constant of its name in
 //! `src/device/bindings.rs`, which the Rust side binds with.
-#![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use metaballs::device::bindings::ALL;
 use std::collections::BTreeMap;

@@ -1,9 +1,8 @@
 //! The element's description never drifts from the parameter table: the files in `www/` are what
 //! `metaballs manifest` writes, the manifest lists every attribute with its default, and the themes
 //! reach the drawn picture.
-#![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::*;
 use metaballs::manifest;

@@ -1,0 +1,34 @@
+//! The native tests, in one binary: one module per subject (each was a test file of its own), built and
+//! linked once, its tests spread over every core together. GPU tests draw on one shared device with
+//! its pipelines compiled once (`common::with_renderer`); those that test the device itself (memory
+//! counts, limits, loss) make their own. `cargo test --test suite MODULE::` runs one module.
+#![cfg(not(target_arch = "wasm32"))]
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod animation;
+mod architecture;
+mod bindings;
+mod cpu_mesher;
+mod editing;
+mod exact;
+mod export;
+mod extractors;
+mod frame_stats;
+mod gpu_matches_oracle;
+mod hostile_inputs;
+mod image;
+mod js_layers;
+mod lab;
+mod lod;
+mod manifest;
+mod mesh_properties;
+mod parameters;
+mod scene_file;
+mod scene_render;
+mod shared_device;
+mod surface_nets;
+mod table;
+mod topology;
+mod views;
