@@ -161,7 +161,7 @@ fn typed_default(p: &Parameter) -> Json {
 /// What a parameter is, in one sentence for editors.
 fn description(p: &Parameter) -> String {
     let noun = if p.noun.is_empty() { p.name } else { p.noun };
-    let noun = noun[..1].to_uppercase() + &noun[1..];
+    let noun = noun[..1].to_ascii_uppercase() + &noun[1..];
     match p.kind {
         Kind::Integer | Kind::Number => format!("{noun}: {} to {}.", number(p.min), number(p.max)),
         Kind::Choice(words) => format!("{noun}: {}.", words.join(", ")),
