@@ -54,23 +54,43 @@ export CARGO_INCREMENTAL="${CARGO_INCREMENTAL:-0}"
 
 stage "format"
 cargo fmt --all --check
+
+# Everything the tests use is built once: the two release wasm builds, then from them dist/, the npm
+# package and the notebook's wheel (each of whose scripts would otherwise build the wasm again). The
+# end-to-end tests take these as they are (they build one themselves only when it is missing or older
+# than its sources, as when a test file is run on its own). The build runs beside the lints and the test
+# builds: its whole-program optimisation keeps one core busy for long stretches, which they fill.
+page_log="$(mktemp)"
+setsid bash -c 'set -euo pipefail
+    started=$(date +%s)
+    bash www/build.sh
+    export METABALLS_WASM_BUILT=1
+    bash www/dist.sh
+    bash www/pack.sh
+    bash python/build.sh
+    echo "page build: $(($(date +%s) - started)) s beside the lints and test builds"' >"$page_log" 2>&1 &
+page_build=$!
+# Stopped with the run, whichever way it ends.
+trap 'kill -- -"$page_build" 2>/dev/null || true; rm -f "$log" "$page_log"; stage_report' EXIT
+
 stage "lints (native)"
 cargo clippy --all-targets -- -D warnings
 stage "lints (wasm32)"
 cargo clippy --lib --test browser --target wasm32-unknown-unknown -- -D warnings
 stage "crate package (metadata and file list)"
 cargo package --allow-dirty --no-verify --quiet
+stage "test builds (native, wasm32)"
+cargo test --no-run
+cargo test --target wasm32-unknown-unknown --test browser --no-run
 
-# Everything the tests use is built once, here: the two release wasm builds, then from them dist/, the
-# npm package and the notebook's wheel (each of whose scripts would otherwise build the wasm again). The
-# end-to-end tests take these as they are (they build one themselves only when it is missing or older
-# than its sources, as when a test file is run on its own).
 stage "page build (release wasm, dist/, npm package, wheel)"
-bash www/build.sh
+if ! wait "$page_build"; then
+    cat "$page_log"
+    echo "the page build failed (above)" >&2
+    exit 1
+fi
+cat "$page_log"
 export METABALLS_WASM_BUILT=1
-bash www/dist.sh
-bash www/pack.sh
-bash python/build.sh
 
 stage "native tests"
 cargo test 2>&1 | tee -a "$log"
