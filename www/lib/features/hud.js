@@ -8,9 +8,9 @@ import { hub } from '../engine/hub.js';
 import { FigureDetail } from '../figure/detail.js';
 import { levelColor } from './legends.js';
 
-// Made on first use: a number format costs tens of milliseconds to set up, not to be paid at import.
-let numberFormat = null;
-const formatNumber = (n) => (numberFormat ??= new Intl.NumberFormat('en')).format(n);
+// A count with thousands separators (12,345). Not `Intl.NumberFormat`: setting one up takes tens to
+// hundreds of milliseconds on the page's thread the first time, just when the first statistics show.
+const formatNumber = (n) => String(Math.round(n)).replace(/\B(?=(\d{3})+$)/g, ',');
 
 export class Hud {
   static attributes = ['hud'];
