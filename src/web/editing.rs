@@ -130,18 +130,18 @@ impl View {
         }))
     }
 
-    /// The shape of the current mesh: resolves to `[components, genus, closed (0/1), manifold (0/1)]`.
+    /// What the shape of the current mesh is worked out from (`mesh_shape`, on the page's mesher worker
+    /// where there is one): resolves to `[vertex count, triangles (Uint32Array, three indices each)]`.
     /// On the CPU path the mesh is at hand; on the GPU path it is one readback, queued now and asked for
     /// only on demand, never every frame.
-    pub fn topology(&mut self) -> js_sys::Promise {
+    pub fn mesh_triangles(&mut self) -> js_sys::Promise {
         let readback = self.renderer.mesh_readback();
         let device = self.device.clone();
         wasm_bindgen_futures::future_to_promise(async move {
             let _polling = Polling::start(&device);
             let mesh = readback.finish().await.map_err(|e| JsValue::from(js_error(e)))?;
-            let s = mesh.shape();
-            let out = [s.components as f64, s.genus as f64, s.closed as u8 as f64, s.manifold as u8 as f64];
-            Ok(js_sys::Float64Array::from(&out[..]).into())
+            let triangles = js_sys::Uint32Array::from(mesh.triangles.as_flattened());
+            Ok(js_sys::Array::of2(&(mesh.positions.len() as u32).into(), &triangles).into())
         })
     }
 

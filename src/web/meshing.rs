@@ -27,6 +27,18 @@ pub fn mesh_job(packed: &[f32]) -> Result<js_sys::Array, JsError> {
     ))
 }
 
+/// The shape of a mesh of `vertex_count` vertices and `triangles` (three indices each, as
+/// `View::mesh_triangles` gives them): `[components, genus, closed (0/1), manifold (0/1)]`.
+#[wasm_bindgen]
+pub fn mesh_shape(vertex_count: u32, triangles: &[u32]) -> Result<Vec<f64>, JsError> {
+    let triangles: Vec<[u32; 3]> = triangles.chunks_exact(3).map(|t| [t[0], t[1], t[2]]).collect();
+    if let Some(&beyond) = triangles.as_flattened().iter().find(|&&i| i >= vertex_count) {
+        return Err(JsError::new(&format!("a triangle uses vertex {beyond} of {vertex_count}")));
+    }
+    let s = crate::extract::mesh::shape_of(vertex_count as usize, &triangles);
+    Ok(vec![s.components as f64, s.genus as f64, s.closed as u8 as f64, s.manifold as u8 as f64])
+}
+
 #[wasm_bindgen]
 impl View {
     /// Advances the animation by `dt` seconds without drawing (the frame is drawn once its mesh is in).

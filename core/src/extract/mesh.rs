@@ -193,67 +193,79 @@ impl IndexedMesh {
 
     /// Components, genus, closed and manifold, from `topology`.
     pub fn shape(&self) -> ShapeSummary {
-        let t = self.topology();
-        let closed = t.open_edges == 0;
-        let manifold = t.open_or_nonmanifold_edges == 0 && t.misoriented_edges == 0;
-        // A component of one vertex and no triangle is a vertex no triangle uses: not a blob.
-        let blobs: Vec<i64> = t.components.iter().filter(|c| c.1 > 1).map(|c| c.0).collect();
-        let genus = if closed { blobs.iter().map(|&euler| ((2 - euler) / 2).max(0) as u32).sum() } else { 0 };
-        ShapeSummary { components: blobs.len() as u32, genus, closed, manifold }
+        shape_of(self.positions.len(), &self.triangles)
     }
 
-    /// Edge use, orientation and per-component Euler characteristic. Edges are counted by sorting them
-    /// as numbers (`from << 32 | to`), not by hashing: the figure asks for this every second while its
-    /// statistics show, on meshes of hundreds of thousands of triangles.
+    /// Edge use, orientation and per-component Euler characteristic.
     pub fn topology(&self) -> Topology {
-        let edge = |a: u32, b: u32| (a as u64) << 32 | b as u64;
-        let mut directed: Vec<u64> =
-            self.triangles.iter().flat_map(|t| (0..3).map(move |k| edge(t[k], t[(k + 1) % 3]))).collect();
-        directed.sort_unstable();
-        let misoriented_edges = directed.chunk_by(|a, b| a == b).filter(|run| run.len() > 1).count();
-        let mut undirected: Vec<u64> = directed
-            .iter()
-            .map(|&e| {
-                let (a, b) = ((e >> 32) as u32, e as u32);
-                edge(a.min(b), a.max(b))
-            })
-            .collect();
-        undirected.sort_unstable();
-        let undirected: Vec<(u32, usize)> =
-            undirected.chunk_by(|a, b| a == b).map(|run| ((run[0] >> 32) as u32, run.len())).collect();
-        let open_or_nonmanifold_edges = undirected.iter().filter(|&&(_, n)| n != 2).count();
-        let open_edges = undirected.iter().filter(|&&(_, n)| n == 1).count();
-
-        // Components by union-find over vertices joined by triangles.
-        let mut parent: Vec<u32> = (0..self.positions.len() as u32).collect();
-        fn find(parent: &mut [u32], mut x: u32) -> u32 {
-            while parent[x as usize] != x {
-                parent[x as usize] = parent[parent[x as usize] as usize];
-                x = parent[x as usize];
-            }
-            x
-        }
-        for t in &self.triangles {
-            for k in 1..3 {
-                let (a, b) = (find(&mut parent, t[0]), find(&mut parent, t[k]));
-                parent[a as usize] = b;
-            }
-        }
-        // Vertices, edges and faces of each component, at its root.
-        let mut per_root = vec![(0i64, 0i64, 0i64); self.positions.len()];
-        for v in 0..self.positions.len() as u32 {
-            per_root[find(&mut parent, v) as usize].0 += 1;
-        }
-        for &(a, _) in &undirected {
-            per_root[find(&mut parent, a) as usize].1 += 1;
-        }
-        for t in &self.triangles {
-            per_root[find(&mut parent, t[0]) as usize].2 += 1;
-        }
-        let per_component = per_root.into_iter().filter(|c| c.0 > 0);
-        let mut components: Vec<(i64, i64)> = per_component.map(|(v, e, f)| (v - e + f, v)).collect();
-        components.sort();
-        let component_euler = components.iter().map(|c| c.0).collect();
-        Topology { open_or_nonmanifold_edges, open_edges, misoriented_edges, component_euler, components }
+        topology_of(self.positions.len(), &self.triangles)
     }
+}
+
+/// Components, genus, closed and manifold of `triangles` over `vertex_count` vertices, from
+/// `topology_of`.
+pub fn shape_of(vertex_count: usize, triangles: &[[u32; 3]]) -> ShapeSummary {
+    let t = topology_of(vertex_count, triangles);
+    let closed = t.open_edges == 0;
+    let manifold = t.open_or_nonmanifold_edges == 0 && t.misoriented_edges == 0;
+    // A component of one vertex and no triangle is a vertex no triangle uses: not a blob.
+    let blobs: Vec<i64> = t.components.iter().filter(|c| c.1 > 1).map(|c| c.0).collect();
+    let genus = if closed { blobs.iter().map(|&euler| ((2 - euler) / 2).max(0) as u32).sum() } else { 0 };
+    ShapeSummary { components: blobs.len() as u32, genus, closed, manifold }
+}
+
+/// Edge use, orientation and per-component Euler characteristic of `triangles` over `vertex_count`
+/// vertices. Edges are counted by sorting them as numbers (`from << 32 | to`), not by hashing: the
+/// figure asks for this every second while its statistics show, on meshes of hundreds of thousands of
+/// triangles.
+pub fn topology_of(vertex_count: usize, triangles: &[[u32; 3]]) -> Topology {
+    let edge = |a: u32, b: u32| (a as u64) << 32 | b as u64;
+    let mut directed: Vec<u64> =
+        triangles.iter().flat_map(|t| (0..3).map(move |k| edge(t[k], t[(k + 1) % 3]))).collect();
+    directed.sort_unstable();
+    let misoriented_edges = directed.chunk_by(|a, b| a == b).filter(|run| run.len() > 1).count();
+    let mut undirected: Vec<u64> = directed
+        .iter()
+        .map(|&e| {
+            let (a, b) = ((e >> 32) as u32, e as u32);
+            edge(a.min(b), a.max(b))
+        })
+        .collect();
+    undirected.sort_unstable();
+    let undirected: Vec<(u32, usize)> =
+        undirected.chunk_by(|a, b| a == b).map(|run| ((run[0] >> 32) as u32, run.len())).collect();
+    let open_or_nonmanifold_edges = undirected.iter().filter(|&&(_, n)| n != 2).count();
+    let open_edges = undirected.iter().filter(|&&(_, n)| n == 1).count();
+
+    // Components by union-find over vertices joined by triangles.
+    let mut parent: Vec<u32> = (0..vertex_count as u32).collect();
+    fn find(parent: &mut [u32], mut x: u32) -> u32 {
+        while parent[x as usize] != x {
+            parent[x as usize] = parent[parent[x as usize] as usize];
+            x = parent[x as usize];
+        }
+        x
+    }
+    for t in triangles {
+        for k in 1..3 {
+            let (a, b) = (find(&mut parent, t[0]), find(&mut parent, t[k]));
+            parent[a as usize] = b;
+        }
+    }
+    // Vertices, edges and faces of each component, at its root.
+    let mut per_root = vec![(0i64, 0i64, 0i64); vertex_count];
+    for v in 0..vertex_count as u32 {
+        per_root[find(&mut parent, v) as usize].0 += 1;
+    }
+    for &(a, _) in &undirected {
+        per_root[find(&mut parent, a) as usize].1 += 1;
+    }
+    for t in triangles {
+        per_root[find(&mut parent, t[0]) as usize].2 += 1;
+    }
+    let per_component = per_root.into_iter().filter(|c| c.0 > 0);
+    let mut components: Vec<(i64, i64)> = per_component.map(|(v, e, f)| (v - e + f, v)).collect();
+    components.sort();
+    let component_euler = components.iter().map(|c| c.0).collect();
+    Topology { open_or_nonmanifold_edges, open_edges, misoriented_edges, component_euler, components }
 }

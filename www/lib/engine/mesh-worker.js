@@ -3,7 +3,8 @@
 // where the build's JavaScript and WebAssembly are (`{ glue, wasm }`, whole URLs: the file imports
 // nothing itself, so it works wherever a bundler copies it) and says when it is ready (or why it
 // failed), then answers each `{ id, job }` (a view's packed mesh job) with the mesh's vertices and
-// indices, handed over without a copy, or with what went wrong.
+// indices, handed over without a copy, and each `{ id, shape: [vertex count, triangles] }` with the
+// mesh's shape (`mesh_shape`: blobs, genus, closed, manifold), or with what went wrong.
 
 let started = null;
 // A Rust panic in this instance: the job that raised it is answered with it.
@@ -22,9 +23,13 @@ self.onmessage = async ({ data }) => {
     started.then(() => self.postMessage({ ready: true }), (error) => self.postMessage({ failed: String(error?.message ?? error) }));
     return;
   }
-  const { id, job } = data;
+  const { id, job, shape } = data;
   try {
     const module = await started;
+    if (shape) {
+      self.postMessage({ id, shape: module.mesh_shape(...shape) });
+      return;
+    }
     const [vertices, indices, blocks, cells] = module.mesh_job(job);
     self.postMessage({ id, vertices, indices, blocks, cells }, [vertices.buffer, indices.buffer]);
   } catch (error) {

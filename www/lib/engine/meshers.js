@@ -4,7 +4,7 @@
 // was given by the host rather than fetched from beside the modules (a notebook widget's, whose worker
 // would have no file to start from), `meshWorker()` is null and the figures mesh on the page's thread.
 
-import { buildFiles, wasmBesideModule } from './wasm.js';
+import { buildFiles, wasmBesideModule, wasmModule } from './wasm.js';
 
 let worker;
 // The worker has started its wasm: until then the figures mesh on the page's thread (their first
@@ -34,7 +34,7 @@ function make() {
       waiting.delete(data.id);
       if (!job) return;
       if (data.error) job.reject(new Error(data.error));
-      else job.resolve([data.vertices, data.indices, data.blocks, data.cells]);
+      else job.resolve(data.shape ?? [data.vertices, data.indices, data.blocks, data.cells]);
     };
     made.onerror = (event) => {
       event.preventDefault?.();
@@ -56,13 +56,25 @@ function make() {
 export function meshWorker() {
   if (worker === undefined) worker = typeof Worker === 'function' && wasmBesideModule() ? make() : null;
   if (!worker || !ready) return null;
+  const ask = (message, transfer = []) => new Promise((resolve, reject) => {
+    asked += 1;
+    waiting.set(asked, { resolve, reject });
+    worker.postMessage({ id: asked, ...message }, transfer);
+  });
   return {
-    mesh: (job) => new Promise((resolve, reject) => {
-      asked += 1;
-      waiting.set(asked, { resolve, reject });
-      worker.postMessage({ id: asked, job });
-    }),
+    mesh: (job) => ask({ job }),
+    shape: (vertices, triangles) => ask({ shape: [vertices, triangles] }, [triangles.buffer]),
   };
+}
+
+/**
+ * The shape of a mesh of `vertices` vertices and `triangles` (`View.mesh_triangles`): resolves to
+ * `[components, genus, closed (0/1), manifold (0/1)]`, worked out on the mesher worker (the triangles
+ * are handed over) or, where there is none, on the page's thread.
+ */
+export function meshShape(vertices, triangles) {
+  const worker = meshWorker();
+  return worker ? worker.shape(vertices, triangles) : Promise.resolve(wasmModule().mesh_shape(vertices, triangles));
 }
 
 /** Whether the figures' meshes are made off the page's thread (false until a figure has asked). */

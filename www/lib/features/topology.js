@@ -1,8 +1,11 @@
-// The surface's shape, live: how many blobs, their genus, closed and manifold. The view works it out
-// from the CPU mesher's mesh, or from one readback of the GPU's mesh, only when asked: every second
+// The surface's shape, live: how many blobs, their genus, closed and manifold. It is worked out from
+// the CPU mesher's mesh, or from one readback of the GPU's mesh, on the page's mesher worker where there
+// is one (meshers.js; tens of milliseconds on a large mesh), only when asked: every second
 // while the statistics show, and after every frame while `pause-on=merge` waits for two blobs to touch
 // (the animation holds still until each answer is in, so it stops at the very frame they merge).
 // Merges and splits are announced in the figure's live region.
+
+import { meshShape } from '../engine/meshers.js';
 
 const HUD_EVERY_MS = 1000;
 
@@ -47,7 +50,8 @@ export class TopologyWatch {
   check() {
     const view = this.#ctx.view;
     if (!view) return Promise.reject(new Error('the figure is not drawing'));
-    this.#pending ??= view.topology().then((a) => this.#take(a)).finally(() => {
+    this.#pending ??= view.mesh_triangles().then(([vertices, triangles]) => meshShape(vertices, triangles))
+      .then((a) => this.#take(a)).finally(() => {
       this.#pending = null;
     });
     return this.#pending;
