@@ -37,7 +37,11 @@ const SHARED = [
 // are counted: these run alone.
 const ALONE = ['fallback.test.js', 'lod.test.js', 'thread.test.js'];
 
-const jobs = Math.max(1, Number(process.env.E2E_JOBS ?? 2));
+const jobs = Number(process.env.E2E_JOBS ?? 2);
+if (!Number.isInteger(jobs) || jobs < 1) {
+  console.error(`all.js: E2E_JOBS must be a whole number from 1 up, not "${process.env.E2E_JOBS}"`);
+  process.exit(1);
+}
 
 // A new test file goes in one of the lists, or it would never run.
 const unlisted = readdirSync(here).filter((f) => f.endsWith('.test.js') && ![...SHARED, ...ALONE].includes(f));
@@ -76,4 +80,6 @@ const results = [...await pool(SHARED, jobs), ...await pool(ALONE, 1)];
 console.log('# end-to-end files, wall time:');
 for (const r of results) console.log(`#   ${r.seconds.padStart(6)} s  ${r.file}${r.ok ? '' : '  FAILED'}`);
 console.log(`#   ${((Date.now() - started) / 1000).toFixed(1).padStart(6)} s  all`);
-process.exitCode = results.every((r) => r.ok) ? 0 : 1;
+const ran = results.length === SHARED.length + ALONE.length;
+if (!ran) console.error(`all.js: ${results.length} of ${SHARED.length + ALONE.length} files ran`);
+process.exitCode = ran && results.every((r) => r.ok) ? 0 : 1;

@@ -112,7 +112,7 @@ test('layout shift on the lecture stays under 0.05 while its figures load', asyn
   await page.waitForFunction(() => document.querySelector('#merge metaballs-view')?.framesDrawn > 0, null,
     { timeout: 60_000 });
   // A second more for what loads after the first frame (the other figures, their posters) to shift.
-  await page.waitForTimeout(1000);
+  await page.waitForTimeout(1500);
   const shift = await page.evaluate(() => window.layoutShift);
   console.log(`lecture cumulative layout shift: ${shift.toFixed(4)}`);
   assert.ok(shift <= 0.05, `cumulative layout shift ${shift}`);
@@ -206,7 +206,7 @@ test('on reveal.js slides: off-slide figures draw nothing, the current one draws
   const { page, errors } = await openPage(`${FIXTURES}/deck.html`);
   await page.waitForFunction(() => window.Reveal?.isReady());
   const frames = () => page.evaluate(() => ['two', 'three'].map((id) => document.getElementById(id).framesDrawn));
-  await page.waitForTimeout(1000);
+  await page.waitForTimeout(1500);
   assert.deepEqual(await frames(), [0, 0], 'figures drew on slides that are not shown');
   await page.evaluate(() => window.Reveal.slide(1));
   await page.waitForFunction(() => document.getElementById('two').framesDrawn > 3, null, { timeout: 60_000 });

@@ -38,8 +38,8 @@ test('five figures: one device, the visible ones draw, the ones below the fold s
   // Below the fold, each figure is drawn once while the page is idle, for its picture in print, and
   // lets go of its renderer again.
   await page.evaluate(() => Promise.all(['c', 'd', 'e'].map((id) => document.getElementById(id).printable())));
-  // A second of animation above: the figures below draw no frame meanwhile.
-  await page.waitForTimeout(1000);
+  // Two seconds of animation above: the figures below draw no frame meanwhile.
+  await page.waitForTimeout(2000);
   for (const id of ['a', 'b']) {
     const { surface } = await surfaceOf(page, `#${id}`);
     assert.ok(surface > 0.01, `figure ${id}: the surface covers only ${(surface * 100).toFixed(2)}%`);
@@ -62,7 +62,7 @@ test('five figures: one device, the visible ones draw, the ones below the fold s
   await page.evaluate(() => window.scrollTo(0, 0));
   await page.waitForTimeout(500);
   const stopped = await frames(page, 'd');
-  await page.waitForTimeout(1000);
+  await page.waitForTimeout(1500);
   assert.equal(await frames(page, 'd'), stopped, 'a figure scrolled away kept drawing');
   assert.equal(await frames(page, 'e'), 0);
   assert.equal(await page.evaluate(() => customElements.get('metaballs-view').devicesCreated), 1);
@@ -252,7 +252,7 @@ test('a device lost again and again: the figures stop, say so, and can be starte
   await page.waitForSelector('#a >> #message', { state: 'visible', timeout: 20_000 });
   assert.match(await page.textContent('#a >> #message-text'), /lost 3 times/);
   const created = await page.evaluate(() => customElements.get('metaballs-view').devicesCreated);
-  await page.waitForTimeout(1000);
+  await page.waitForTimeout(2000);
   assert.equal(await page.evaluate(() => customElements.get('metaballs-view').devicesCreated), created, 'it kept retrying');
   const drawn = await frames(page, 'a');
   await page.click('#a >> #retry');
