@@ -253,6 +253,10 @@ pub(crate) fn bind_buffers_to(
 
 /// Compute shaders with storage buffers: WebGL2 devices report no room for either.
 pub fn has_compute(device: &wgpu::Device) -> bool {
-    let limits = device.limits();
+    compute_within(&device.limits())
+}
+
+/// True when a device of these limits runs compute shaders.
+pub fn compute_within(limits: &wgpu::Limits) -> bool {
     limits.max_compute_invocations_per_workgroup > 0 && limits.max_storage_buffers_per_shader_stage > 0
 }

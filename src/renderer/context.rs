@@ -3,7 +3,7 @@
 //! error and loss reports. A page with several views holds one `GpuContext`; when its device is lost,
 //! a new context is made and every view rebuilds its renderer on it from its own state.
 
-use crate::device::has_compute;
+use crate::device::compute_within;
 use crate::draw::shade::ShadePipelines;
 use crate::extract::{self, Extractor};
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
@@ -30,6 +30,8 @@ pub struct GpuContext {
     /// True on a software adapter (SwiftShader, llvmpipe, any fallback adapter), where the CPU mesher
     /// is faster than compute passes emulated on the CPU.
     software: Arc<AtomicBool>,
+    /// The device's limits, read once: in a browser every read goes through each limit's getter.
+    limits: wgpu::Limits,
     error: Arc<Mutex<Option<String>>>,
     lost: Arc<Mutex<Option<String>>>,
 }
@@ -60,6 +62,7 @@ impl GpuContext {
         let pipelines =
             Arc::new(Pipelines { extractors: extract::compile_all(&device), shading: Mutex::default() });
         Self {
+            limits: device.limits(),
             device,
             queue,
             pipelines,
@@ -81,7 +84,12 @@ impl GpuContext {
 
     /// True when the device runs compute shaders (every WebGPU device; not WebGL2).
     pub fn has_compute(&self) -> bool {
-        has_compute(&self.device)
+        compute_within(&self.limits)
+    }
+
+    /// The device's limits.
+    pub fn limits(&self) -> &wgpu::Limits {
+        &self.limits
     }
 
     /// Says whether the adapter is a software one (natively the adapter's type tells; in a browser

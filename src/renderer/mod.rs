@@ -81,15 +81,15 @@ impl Renderer {
     ) -> Result<Self, ParamError> {
         let settings = settings.validated()?;
         let (device, queue) = (context.device().clone(), context.queue().clone());
-        let target = Target::new(&device, format, width, height)?;
+        let target = Target::new(context.limits(), format, width, height)?;
         let lod = settings.view.lod;
         if !lod {
-            check_resolution_fits(&device, settings.resolution)?;
+            check_resolution_fits(context.limits(), settings.resolution)?;
         }
         let scene = Scene::new(settings.seed, settings.sphere_count)?;
 
         let grid = Grid { cells_per_axis: settings.resolution };
-        let capacity = automatic_capacity(&device, grid, lod, context.has_compute());
+        let capacity = automatic_capacity(context.limits(), grid, lod, context.has_compute());
         let buffer_grid = if lod { Grid { cells_per_axis: BLOCK_CELLS } } else { grid };
         Ok(Self {
             stage: MeshStage::new(&device, context.extractors(), buffer_grid, capacity),
@@ -140,7 +140,7 @@ impl Renderer {
 
     /// The largest resolution this device holds.
     pub fn max_resolution(&self) -> u32 {
-        max_resolution(&self.device)
+        max_resolution(self.context.limits())
     }
 
     /// What the mesh buffers hold now.
@@ -186,7 +186,7 @@ impl Renderer {
 
     /// Follows a new output size.
     pub fn resize(&mut self, width: u32, height: u32) -> Result<(), ParamError> {
-        if self.target.resize(&self.device, width, height)? {
+        if self.target.resize(self.context.limits(), width, height)? {
             self.shade.resize(&self.device, width, height);
         }
         Ok(())
@@ -196,7 +196,7 @@ impl Renderer {
     pub fn set_settings(&mut self, settings: Settings) -> Result<(), ParamError> {
         let settings = settings.validated()?;
         if !settings.view.lod {
-            check_resolution_fits(&self.device, settings.resolution)?;
+            check_resolution_fits(self.context.limits(), settings.resolution)?;
         }
         if settings.seed != self.settings.seed {
             self.scene = Scene::new(settings.seed, settings.sphere_count)?;

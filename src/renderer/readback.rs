@@ -26,7 +26,7 @@ impl Renderer {
         }
         let mut counters = self.run_extraction().await;
         while self.stage.sizing == Sizing::Automatic && !self.stage.buffers.capacity.holds(&counters) {
-            let largest = Capacity::largest(self.grid(), storage_limit(&self.device));
+            let largest = Capacity::largest(self.grid(), storage_limit(self.context.limits()));
             let grown = self.stage.buffers.capacity.grown_for(&counters).min(largest);
             if grown == self.stage.buffers.capacity {
                 break;

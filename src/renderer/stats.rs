@@ -246,7 +246,7 @@ impl Renderer {
                 FrameStats::from_counts(frame, grid, capacity, counters, overflowed, bytes, level_triangles);
             self.stats.offer(stats);
             // Grow once per size: figures from frames drawn with smaller buffers than now are stale.
-            self.stage.plan_growth(capacity, &counters, largest_capacity(&self.device, grid));
+            self.stage.plan_growth(capacity, &counters, largest_capacity(self.context.limits(), grid));
         }
     }
 

@@ -12,20 +12,20 @@ pub(super) struct Target {
 }
 
 impl Target {
-    /// A `width` × `height` target of `format`, if `device` holds textures that large.
+    /// A `width` × `height` target of `format`, if a device of `limits` holds textures that large.
     pub fn new(
-        device: &wgpu::Device,
+        limits: &wgpu::Limits,
         format: wgpu::TextureFormat,
         width: u32,
         height: u32,
     ) -> Result<Self, ParamError> {
-        check_size(device, width, height)?;
+        check_size(limits, width, height)?;
         Ok(Self { format, size: (width, height) })
     }
 
-    /// Takes a new size, if `device` holds it; returns whether it changed.
-    pub fn resize(&mut self, device: &wgpu::Device, width: u32, height: u32) -> Result<bool, ParamError> {
-        check_size(device, width, height)?;
+    /// Takes a new size, if a device of `limits` holds it; returns whether it changed.
+    pub fn resize(&mut self, limits: &wgpu::Limits, width: u32, height: u32) -> Result<bool, ParamError> {
+        check_size(limits, width, height)?;
         let changed = (width, height) != self.size;
         self.size = (width, height);
         Ok(changed)

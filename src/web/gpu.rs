@@ -113,6 +113,6 @@ impl Gpu {
 
     /// The largest resolution this device holds.
     pub fn max_resolution(&self) -> u32 {
-        crate::renderer::max_resolution(self.context.device())
+        crate::renderer::max_resolution(self.context.limits())
     }
 }

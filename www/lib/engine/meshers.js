@@ -7,8 +7,8 @@
 import { buildFiles, wasmBesideModule, wasmModule } from './wasm.js';
 
 let worker;
-// The worker has started its wasm: until then the figures mesh on the page's thread (their first
-// frames do not wait for a second wasm to compile).
+// The worker has started its wasm: until then the figures mesh their first frames on the page's thread
+// (they do not wait for a second wasm to compile); later frames wait for it.
 let ready = false;
 let asked = 0;
 const waiting = new Map();
@@ -50,12 +50,13 @@ function make() {
 
 /**
  * The page's mesher worker (made on first use, once the wasm has loaded), or null where there is none
- * or it is still starting:
+ * or, unless `starting` is true, while it is still starting (what is asked of it meanwhile waits until it
+ * has):
  * `{ mesh(job) }` resolves with `[vertices, indices, activeBlocks, activeCells]` for `View.give_mesh`.
  */
-export function meshWorker() {
+export function meshWorker(starting = false) {
   if (worker === undefined) worker = typeof Worker === 'function' && wasmBesideModule() ? make() : null;
-  if (!worker || !ready) return null;
+  if (!worker || !(ready || starting)) return null;
   const ask = (message, transfer = []) => new Promise((resolve, reject) => {
     asked += 1;
     waiting.set(asked, { resolve, reject });
@@ -73,7 +74,7 @@ export function meshWorker() {
  * are handed over) or, where there is none, on the page's thread.
  */
 export function meshShape(vertices, triangles) {
-  const worker = meshWorker();
+  const worker = meshWorker(true);
   return worker ? worker.shape(vertices, triangles) : Promise.resolve(wasmModule().mesh_shape(vertices, triangles));
 }
 
