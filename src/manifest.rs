@@ -145,7 +145,7 @@ fn number(x: f64) -> Json {
     if x.fract() == 0.0 && x.abs() < 1e15 {
         json!(x as i64)
     } else {
-        json!((x as f32).to_string().parse::<f64>().unwrap_or(x))
+        json!(metaballs_scene::number::parse_f64(&(x as f32).to_string()).unwrap_or(x))
     }
 }
 

@@ -62,8 +62,8 @@ pub fn quoted(text: &str) -> String {
 
 /// A number written for a message: as given, or in scientific notation when its digits run long.
 fn short_number(text: &str) -> String {
-    match text.parse::<f64>() {
-        Ok(x) if text.len() > 24 => format!("{x:e}"),
+    match crate::number::parse_f64(text) {
+        Some(x) if text.len() > 24 => format!("{x:e}"),
         _ => text.to_string(),
     }
 }

@@ -12,6 +12,7 @@
 //! ```
 
 use super::checks::cut;
+use super::number::{parse_f32, parse_f64};
 use super::params::{Settings, Value, parameter};
 use super::sphere::{SceneError, Sphere, at, check_count, check_sphere};
 use glam::Vec3;
@@ -65,7 +66,7 @@ fn number(value: &serde_json::Value, field: &str) -> Result<f32, SceneError> {
     match value {
         // Through the shortest decimal text, so that an f32 written by `to_json` reads back exactly.
         serde_json::Value::Number(n) => {
-            n.to_string().parse::<f32>().map_err(|_| SceneError(format!("{field} must be a number, got {n}")))
+            parse_f32(&n.to_string()).ok_or_else(|| SceneError(format!("{field} must be a number, got {n}")))
         }
         other => Err(SceneError(format!("{field} must be a number, got {}", describe(other)))),
     }
@@ -269,5 +270,5 @@ impl SceneFile {
 /// An f32 as the JSON number with the shortest decimal text that reads back as the same f32.
 fn short(x: f32) -> serde_json::Value {
     let text = x.to_string();
-    text.parse::<f64>().ok().and_then(Number::from_f64).map_or(serde_json::Value::Null, Into::into)
+    parse_f64(&text).and_then(Number::from_f64).map_or(serde_json::Value::Null, Into::into)
 }

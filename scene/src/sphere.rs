@@ -2,6 +2,7 @@
 //! edit, a scene file, a link), and the compact text form of a sphere list that links carry.
 
 use super::checks::{ParamError, check_f32, check_u32, quoted};
+use super::number::parse_f32;
 use glam::Vec3;
 use std::fmt;
 
@@ -122,7 +123,7 @@ pub fn spheres_text(spheres: &[Sphere]) -> String {
     spheres
         .iter()
         .map(|s| {
-            let radius = n(s.radius, 3).parse::<f32>().unwrap_or(s.radius);
+            let radius = parse_f32(&n(s.radius, 3)).unwrap_or(s.radius);
             let limit = BOX_HALF_EXTENT - radius;
             let mut parts: Vec<String> = s
                 .center
@@ -131,7 +132,7 @@ pub fn spheres_text(spheres: &[Sphere]) -> String {
                 .map(|&c| {
                     let mut t = n(c, 3);
                     for step in 1..=3 {
-                        if !t.parse::<f32>().is_ok_and(|v| v.abs() > limit) {
+                        if !parse_f32(&t).is_some_and(|v| v.abs() > limit) {
                             break;
                         }
                         t = n(c - c.signum() * 0.001 * step as f32, 3);
@@ -163,9 +164,8 @@ pub fn parse_spheres_text(text: &str) -> Result<Vec<Sphere>, SceneError> {
             let numbers = group
                 .split(',')
                 .map(|t| {
-                    t.trim()
-                        .parse::<f32>()
-                        .map_err(|_| SceneError(format!("{field}: {} is not a number", quoted(t.trim()))))
+                    parse_f32(t.trim())
+                        .ok_or_else(|| SceneError(format!("{field}: {} is not a number", quoted(t.trim()))))
                 })
                 .collect::<Result<Vec<f32>, _>>()?;
             let s = match numbers[..] {

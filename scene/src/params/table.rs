@@ -295,7 +295,7 @@ pub enum Value {
 impl Value {
     /// An f32 as the table holds numbers: its shortest decimal, so that it reads back as itself.
     pub fn of_f32(x: f32) -> Value {
-        Value::Number(x.to_string().parse().unwrap_or(f64::from(x)))
+        Value::Number(crate::number::parse_f64(&x.to_string()).unwrap_or(f64::from(x)))
     }
 
     /// A word or other text.

@@ -185,7 +185,7 @@ impl Slice {
         };
         let (axis, position) = text.split_once(':').unwrap_or((&text, "0"));
         let axis = ["x", "y", "z"].iter().position(|a| *a == axis.trim()).ok_or_else(invalid)? as u32;
-        let position: f32 = position.trim().parse().map_err(|_| invalid())?;
+        let position = crate::number::parse_f32(position.trim()).ok_or_else(invalid)?;
         check_f32("slice position", position, -1.0, 1.0)?;
         Ok(Some(Slice { axis, position }))
     }
