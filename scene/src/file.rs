@@ -12,6 +12,7 @@
 //! ```
 
 use super::checks::cut;
+use super::decimal::{Fixed, num};
 use super::number::{parse_f32, parse_f64};
 use super::params::{Settings, Value, parameter};
 use super::sphere::{SceneError, Sphere, at, check_count, check_sphere};
@@ -36,8 +37,8 @@ pub struct SceneFile {
 pub fn check_size(bytes: u64) -> Result<(), SceneError> {
     if bytes > MAX_BYTES as u64 {
         return Err(SceneError(format!(
-            "the file is {:.1} MB; a scene file is at most {} MB",
-            bytes as f64 / (1 << 20) as f64,
+            "the file is {} MB; a scene file is at most {} MB",
+            Fixed(bytes as f64 / (1 << 20) as f64, 1),
             MAX_BYTES >> 20
         )));
     }
@@ -269,6 +270,6 @@ impl SceneFile {
 
 /// An f32 as the JSON number with the shortest decimal text that reads back as the same f32.
 fn short(x: f32) -> serde_json::Value {
-    let text = x.to_string();
+    let text = num(x).to_string();
     parse_f64(&text).and_then(Number::from_f64).map_or(serde_json::Value::Null, Into::into)
 }

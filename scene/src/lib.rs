@@ -3,10 +3,11 @@
 //! Nothing here knows of wgpu; every other layer may import it.
 //!
 //! Inside, each module imports only those above it in this list: `number` (reading decimals),
-//! `checks` (range checks), `sphere` (one sphere, its checks, the link form), `params` (the parameter
+//! `decimal` (writing them), `checks` (range checks), `sphere` (one sphere, its checks, the link form), `params` (the parameter
 //! table and settings), `motion` (a seeded layout moving in the box), `file` (scene documents).
 
 pub mod checks;
+pub mod decimal;
 pub mod file;
 pub mod motion;
 pub mod number;

@@ -2,6 +2,7 @@
 //! edit, a scene file, a link), and the compact text form of a sphere list that links carry.
 
 use super::checks::{ParamError, check_f32, check_u32, quoted};
+use super::decimal::{Fixed, num};
 use super::number::parse_f32;
 use glam::Vec3;
 use std::fmt;
@@ -81,7 +82,7 @@ pub fn check_sphere(field: &str, sphere: Sphere) -> Result<Sphere, SceneError> {
     if sphere.charge != 1.0 && sphere.charge != -1.0 {
         return Err(SceneError(format!(
             "{field}.charge: a sphere's charge is 1 (adds) or -1 (subtracts), got {}",
-            sphere.charge
+            num(sphere.charge)
         )));
     }
     let (min, max) = RADIUS_RANGE;
@@ -116,7 +117,7 @@ pub(crate) fn check_count(field: &str, count: usize) -> Result<(), SceneError> {
 /// past a wall, so that what is written always reads back as a valid sphere.
 pub fn spheres_text(spheres: &[Sphere]) -> String {
     let n = |x: f32, places: usize| {
-        let t = format!("{x:.places$}");
+        let t = Fixed(f64::from(x), places).to_string();
         let t = t.trim_end_matches('0').trim_end_matches('.');
         if t == "-0" || t.is_empty() { "0".to_string() } else { t.to_string() }
     };

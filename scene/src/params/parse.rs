@@ -5,6 +5,7 @@ use super::rows::{control, control_names, parameter_named, unknown};
 use super::table::{Kind, Parameter, Value};
 use super::view::Slice;
 use super::{ParamError, check_f32, check_range};
+use crate::decimal::num;
 use crate::number::{parse_f32, parse_f64};
 
 impl Parameter {
@@ -36,7 +37,7 @@ impl Parameter {
             |expected: String| ParamError::Invalid { name: noun, value: text.to_string(), expected };
         match self.kind {
             Kind::Integer => {
-                let range = format!("a whole number from {} to {}", self.min, self.max);
+                let range = format!("a whole number from {} to {}", num(self.min), num(self.max));
                 if trimmed.is_empty() || !trimmed.bytes().all(|b| b.is_ascii_digit()) {
                     return Err(invalid(range));
                 }
@@ -45,7 +46,7 @@ impl Parameter {
             }
             Kind::Number => {
                 let (min, max) = (self.min as f32, self.max as f32);
-                let expected = format!("a number from {min} to {max}");
+                let expected = format!("a number from {} to {}", num(min), num(max));
                 // Read as the f32 the renderer keeps, and held as that f32's shortest decimal: the
                 // value checked is the value used, and it reads back as itself.
                 let value = parse_f32(trimmed).ok_or_else(|| invalid(expected.clone()))?;

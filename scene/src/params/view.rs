@@ -2,6 +2,7 @@
 //! triangle colouring, lights, projection, and the two construction toggles (interpolation, blend).
 
 use super::{ParamError, Settings, check_f32};
+use crate::decimal::num;
 
 /// Declares a choice among words: the enum, its words in order, and the conversions.
 macro_rules! choice {
@@ -195,7 +196,9 @@ impl Slice {
         match slice {
             None => "off".into(),
             // An axis past z (a slice made in code) reads back as one the parser refuses.
-            Some(s) => format!("{}:{}", ["x", "y", "z"].get(s.axis as usize).unwrap_or(&"?"), s.position),
+            Some(s) => {
+                format!("{}:{}", ["x", "y", "z"].get(s.axis as usize).unwrap_or(&"?"), num(s.position))
+            }
         }
     }
 
