@@ -248,7 +248,7 @@ impl IndexedMesh {
         }
         let mut components: Vec<(i64, i64)> =
             per_component.values().map(|(v, e, f)| (v - e + f, *v)).collect();
-        components.sort();
+        components.sort_unstable();
         let component_euler = components.iter().map(|c| c.0).collect();
         Topology { open_or_nonmanifold_edges, open_edges, misoriented_edges, component_euler, components }
     }
