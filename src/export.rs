@@ -6,6 +6,7 @@
 //! format keeps its triangles wound counter-clockwise seen from outside.
 
 use crate::extract::mesh::IndexedMesh;
+use crate::scene::decimal::num;
 use glam::Vec3;
 use std::fmt::Write as _;
 
@@ -110,10 +111,10 @@ fn obj(mesh: &IndexedMesh, scale: f32) -> String {
     );
     for p in &mesh.positions {
         let p = *p * scale;
-        let _ = writeln!(out, "v {} {} {}", p.x, p.y, p.z);
+        let _ = writeln!(out, "v {} {} {}", num(p.x), num(p.y), num(p.z));
     }
     for n in &mesh.normals {
-        let _ = writeln!(out, "vn {} {} {}", n.x, n.y, n.z);
+        let _ = writeln!(out, "vn {} {} {}", num(n.x), num(n.y), num(n.z));
     }
     for t in &mesh.triangles {
         let [a, b, c] = t.map(|i| i + 1);

@@ -9,6 +9,7 @@ use crate::scene::params::{
     ACTIONS, Kind, PARAMETERS, ParamError, Parameter, Value, control_names, parameter,
 };
 use crate::scene::sphere::RADIUS_RANGE;
+use metaballs_scene::decimal::num;
 use serde_json::{Value as Json, json};
 
 /// The element's methods: name, TypeScript signature after the name, what it does.
@@ -145,7 +146,7 @@ fn number(x: f64) -> Json {
     if x.fract() == 0.0 && x.abs() < 1e15 {
         json!(x as i64)
     } else {
-        json!((x as f32).to_string().parse::<f64>().unwrap_or(x))
+        json!(metaballs_scene::number::parse_f64(&num(x as f32).to_string()).unwrap_or(x))
     }
 }
 

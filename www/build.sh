@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
-# Builds the page's WebAssembly (release), installing what it needs when missing: the wasm32 target and
-# the wasm-bindgen command line at exactly the version Cargo.lock pins. Two builds: pkg/ draws with
+# Builds the page's WebAssembly (release), installing what it needs when missing: the wasm32 target, the
+# wasm-bindgen command line at exactly the version Cargo.lock pins, and Node.js (for
+# www/tools/short-imports.mjs, which gives the wasm's imports short names). Two builds: pkg/ draws with
 # WebGPU (what nearly every visitor loads), pkg-webgl/ with WebGL2, loaded only where WebGPU is missing
 # (wgpu's WebGL2 backend is large, so WebGPU visitors do not pay for it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source www/need-deb.sh
 
+command -v node >/dev/null || need_deb nodejs
 rustup target list --installed | grep -qx wasm32-unknown-unknown || rustup target add wasm32-unknown-unknown
 
 # The version of the wasm-bindgen crate in Cargo.lock (the command line must match it exactly).
@@ -26,6 +29,8 @@ build() {
     cargo build --profile wasm --lib --target wasm32-unknown-unknown "$@"
     wasm-bindgen --target web --no-typescript "${bindgen[@]}" --out-dir "$out" \
         target/wasm32-unknown-unknown/wasm/metaballs.wasm
+    # Short names for the imports from the glue (wasm-bindgen's carry 16 hex digits of hash each).
+    node www/tools/short-imports.mjs "$out"
     echo "built $out/metaballs_bg.wasm ($(wc -c < "$out/metaballs_bg.wasm") bytes, $(gzip -9c "$out/metaballs_bg.wasm" | wc -c) gzipped)"
 }
 # Both builds use the `wasm` profile (Cargo.toml: optimised for size, whole-program) and drop the

@@ -1,6 +1,7 @@
 //! The range checks every parameter and sphere goes through: a refused value comes back as a
 //! [`ParamError`] whose message names the parameter, the value given and the accepted range.
 
+use crate::decimal::{Sci, num};
 use glam::Vec3;
 use std::fmt;
 
@@ -62,8 +63,8 @@ pub fn quoted(text: &str) -> String {
 
 /// A number written for a message: as given, or in scientific notation when its digits run long.
 fn short_number(text: &str) -> String {
-    match text.parse::<f64>() {
-        Ok(x) if text.len() > 24 => format!("{x:e}"),
+    match crate::number::parse_f64(text) {
+        Some(x) if text.len() > 24 => Sci(x).to_string(),
         _ => text.to_string(),
     }
 }
@@ -84,18 +85,37 @@ pub fn check_u32(name: &'static str, value: u32, min: u32, max: u32) -> Result<u
     check_range(name, value, min, max)
 }
 
-pub(crate) fn check_range<T: PartialOrd + fmt::Display>(
-    name: &'static str,
-    value: T,
-    min: T,
-    max: T,
-) -> Result<T, ParamError> {
+/// A value as a message writes it: floats through [`crate::decimal`], so that the browser's build
+/// holds none of core's float formatting.
+pub(crate) trait Written: PartialOrd + Copy {
+    fn written(self) -> String;
+}
+
+impl Written for f32 {
+    fn written(self) -> String {
+        num(self).to_string()
+    }
+}
+
+impl Written for f64 {
+    fn written(self) -> String {
+        num(self).to_string()
+    }
+}
+
+impl Written for u32 {
+    fn written(self) -> String {
+        self.to_string()
+    }
+}
+
+pub(crate) fn check_range<T: Written>(name: &'static str, value: T, min: T, max: T) -> Result<T, ParamError> {
     if value < min || value > max {
         return Err(ParamError::OutOfRange {
             name,
-            value: value.to_string(),
-            min: min.to_string(),
-            max: max.to_string(),
+            value: value.written(),
+            min: min.written(),
+            max: max.written(),
         });
     }
     Ok(value)

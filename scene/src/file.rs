@@ -12,6 +12,8 @@
 //! ```
 
 use super::checks::cut;
+use super::decimal::{Fixed, num};
+use super::number::{parse_f32, parse_f64};
 use super::params::{Settings, Value, parameter};
 use super::sphere::{SceneError, Sphere, at, check_count, check_sphere};
 use glam::Vec3;
@@ -35,8 +37,8 @@ pub struct SceneFile {
 pub fn check_size(bytes: u64) -> Result<(), SceneError> {
     if bytes > MAX_BYTES as u64 {
         return Err(SceneError(format!(
-            "the file is {:.1} MB; a scene file is at most {} MB",
-            bytes as f64 / (1 << 20) as f64,
+            "the file is {} MB; a scene file is at most {} MB",
+            Fixed(bytes as f64 / (1 << 20) as f64, 1),
             MAX_BYTES >> 20
         )));
     }
@@ -65,7 +67,7 @@ fn number(value: &serde_json::Value, field: &str) -> Result<f32, SceneError> {
     match value {
         // Through the shortest decimal text, so that an f32 written by `to_json` reads back exactly.
         serde_json::Value::Number(n) => {
-            n.to_string().parse::<f32>().map_err(|_| SceneError(format!("{field} must be a number, got {n}")))
+            parse_f32(&n.to_string()).ok_or_else(|| SceneError(format!("{field} must be a number, got {n}")))
         }
         other => Err(SceneError(format!("{field} must be a number, got {}", describe(other)))),
     }
@@ -268,6 +270,6 @@ impl SceneFile {
 
 /// An f32 as the JSON number with the shortest decimal text that reads back as the same f32.
 fn short(x: f32) -> serde_json::Value {
-    let text = x.to_string();
-    text.parse::<f64>().ok().and_then(Number::from_f64).map_or(serde_json::Value::Null, Into::into)
+    let text = num(x).to_string();
+    parse_f64(&text).and_then(Number::from_f64).map_or(serde_json::Value::Null, Into::into)
 }

@@ -2,13 +2,16 @@
 //! sets (one table feeding links, attributes, the panel and scene files), and scenes as files.
 //! Nothing here knows of wgpu; every other layer may import it.
 //!
-//! Inside, each module imports only those above it in this list: `checks` (range checks), `sphere`
-//! (one sphere, its checks, the link form), `params` (the parameter table and settings), `motion`
-//! (a seeded layout moving in the box), `file` (scene documents).
+//! Inside, each module imports only those above it in this list: `math` (sines, powers),
+//! `number` (reading decimals), `decimal` (writing them), `checks` (range checks), `sphere` (one sphere, its checks, the link form), `params` (the parameter
+//! table and settings), `motion` (a seeded layout moving in the box), `file` (scene documents).
 
 pub mod checks;
+pub mod decimal;
 pub mod file;
+pub mod math;
 pub mod motion;
+pub mod number;
 pub mod params;
 pub mod sphere;
 

@@ -1,6 +1,7 @@
 //! Spheres moving in a box: a seeded layout, Euler steps and elastic bounces off the walls.
 
 use super::checks::{ParamError, check_f32};
+use super::math;
 use super::sphere::{BOX_HALF_EXTENT, MAX_SPHERES, SceneError, Sphere, check_sphere, check_sphere_count};
 use glam::Vec3;
 use rand::{RngExt, SeedableRng};
@@ -49,7 +50,7 @@ impl Scene {
                 Seedling {
                     radius_scale,
                     position,
-                    velocity: speed * Vec3::new(s * phi.cos(), s * phi.sin(), z),
+                    velocity: speed * Vec3::new(s * math::cos(phi), s * math::sin(phi), z),
                 }
             })
             .collect();

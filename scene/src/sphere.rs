@@ -2,6 +2,8 @@
 //! edit, a scene file, a link), and the compact text form of a sphere list that links carry.
 
 use super::checks::{ParamError, check_f32, check_u32, quoted};
+use super::decimal::{Fixed, num};
+use super::number::parse_f32;
 use glam::Vec3;
 use std::fmt;
 
@@ -80,7 +82,7 @@ pub fn check_sphere(field: &str, sphere: Sphere) -> Result<Sphere, SceneError> {
     if sphere.charge != 1.0 && sphere.charge != -1.0 {
         return Err(SceneError(format!(
             "{field}.charge: a sphere's charge is 1 (adds) or -1 (subtracts), got {}",
-            sphere.charge
+            num(sphere.charge)
         )));
     }
     let (min, max) = RADIUS_RANGE;
@@ -115,14 +117,14 @@ pub(crate) fn check_count(field: &str, count: usize) -> Result<(), SceneError> {
 /// past a wall, so that what is written always reads back as a valid sphere.
 pub fn spheres_text(spheres: &[Sphere]) -> String {
     let n = |x: f32, places: usize| {
-        let t = format!("{x:.places$}");
+        let t = Fixed(f64::from(x), places).to_string();
         let t = t.trim_end_matches('0').trim_end_matches('.');
         if t == "-0" || t.is_empty() { "0".to_string() } else { t.to_string() }
     };
     spheres
         .iter()
         .map(|s| {
-            let radius = n(s.radius, 3).parse::<f32>().unwrap_or(s.radius);
+            let radius = parse_f32(&n(s.radius, 3)).unwrap_or(s.radius);
             let limit = BOX_HALF_EXTENT - radius;
             let mut parts: Vec<String> = s
                 .center
@@ -131,7 +133,7 @@ pub fn spheres_text(spheres: &[Sphere]) -> String {
                 .map(|&c| {
                     let mut t = n(c, 3);
                     for step in 1..=3 {
-                        if !t.parse::<f32>().is_ok_and(|v| v.abs() > limit) {
+                        if !parse_f32(&t).is_some_and(|v| v.abs() > limit) {
                             break;
                         }
                         t = n(c - c.signum() * 0.001 * step as f32, 3);
@@ -163,9 +165,8 @@ pub fn parse_spheres_text(text: &str) -> Result<Vec<Sphere>, SceneError> {
             let numbers = group
                 .split(',')
                 .map(|t| {
-                    t.trim()
-                        .parse::<f32>()
-                        .map_err(|_| SceneError(format!("{field}: {} is not a number", quoted(t.trim()))))
+                    parse_f32(t.trim())
+                        .ok_or_else(|| SceneError(format!("{field}: {} is not a number", quoted(t.trim()))))
                 })
                 .collect::<Result<Vec<f32>, _>>()?;
             let s = match numbers[..] {

@@ -11,8 +11,9 @@ macro_rules! wgsl {
         const SOURCE: &str = $source;
         const LEN: usize = SOURCE.len();
         const MINIFIED: ([u8; LEN], usize) = $crate::device::wgsl::minify::<LEN>(SOURCE);
-        const USED: usize = MINIFIED.1;
-        const BYTES: [u8; USED] = $crate::device::wgsl::prefix::<LEN, USED>(&MINIFIED.0);
+        const SQUEEZED: ([u8; LEN], usize) = $crate::device::wgsl::squeeze::<LEN>(&MINIFIED.0, MINIFIED.1);
+        const USED: usize = SQUEEZED.1;
+        const BYTES: [u8; USED] = $crate::device::wgsl::prefix::<LEN, USED>(&SQUEEZED.0);
         match ::core::str::from_utf8(&BYTES) {
             Ok(text) => text,
             Err(_) => panic!("a minified shader is not UTF-8"),
@@ -64,6 +65,61 @@ pub const fn minify<const N: usize>(source: &str) -> ([u8; N], usize) {
     (out, used)
 }
 
+/// The first `used` bytes of `bytes` without the spaces and tabs that separate nothing: a run of them
+/// between two tokens becomes one space only where the bytes on either side would otherwise run
+/// together, as two word characters (`let x`, `1u`) or as two characters that together begin a comment
+/// or make another operator (`a - -b`, `x > >`, `/ /`). WGSL reads a space as nothing but a
+/// separator, so the shader means the same; line breaks stay.
+pub const fn squeeze<const N: usize>(bytes: &[u8; N], used: usize) -> ([u8; N], usize) {
+    let mut out = [0u8; N];
+    let mut kept = 0;
+    let mut i = 0;
+    while i < used {
+        let b = bytes[i];
+        if b == b' ' || b == b'\t' {
+            let mut next = i;
+            while next < used && (bytes[next] == b' ' || bytes[next] == b'\t') {
+                next += 1;
+            }
+            if kept > 0 && next < used && runs_together(out[kept - 1], bytes[next]) {
+                out[kept] = b' ';
+                kept += 1;
+            }
+            i = next;
+        } else {
+            out[kept] = b;
+            kept += 1;
+            i += 1;
+        }
+    }
+    (out, kept)
+}
+
+/// Whether `a` written right before `b` would read as one token (or a comment) where a space between
+/// them reads as two.
+const fn runs_together(a: u8, b: u8) -> bool {
+    const fn word(c: u8) -> bool {
+        c.is_ascii_alphanumeric() || c == b'_' || c == b'.'
+    }
+    if word(a) && word(b) {
+        return true;
+    }
+    // Every two-character operator and comment marker of WGSL; longer ones (`>>=`, `<<=`) begin with
+    // one of these.
+    const PAIRS: [&[u8; 2]; 22] = [
+        b"//", b"/*", b"*/", b"==", b"!=", b"<=", b">=", b"+=", b"-=", b"*=", b"/=", b"%=", b"&=", b"|=",
+        b"^=", b"->", b"++", b"--", b"&&", b"||", b"<<", b">>",
+    ];
+    let mut k = 0;
+    while k < PAIRS.len() {
+        if PAIRS[k][0] == a && PAIRS[k][1] == b {
+            return true;
+        }
+        k += 1;
+    }
+    false
+}
+
 /// The first `M` bytes of `bytes`.
 pub const fn prefix<const N: usize, const M: usize>(bytes: &[u8; N]) -> [u8; M] {
     let mut out = [0u8; M];
@@ -92,6 +148,56 @@ mod tests {
         assert_eq!(minified("let a = 1u; /* kept */"), "let a = 1u; /* kept */");
         assert_eq!(minified("a / b\n/"), "a / b\n/");
         assert_eq!(minified(""), "");
+    }
+
+    fn squeezed(source: &str) -> String {
+        let mut bytes = [0u8; 256];
+        bytes[..source.len()].copy_from_slice(source.as_bytes());
+        let (out, used) = squeeze::<256>(&bytes, source.len());
+        String::from_utf8(out[..used].to_vec()).unwrap()
+    }
+
+    /// Spaces go between tokens that stay apart without them, and stay (one of them) where two words,
+    /// an operator and its neighbour, or a comment marker would run together.
+    #[test]
+    fn squeezes_only_the_spaces_that_separate_nothing() {
+        assert_eq!(
+            squeezed("fn f(x: f32) -> f32 {\nreturn x * 2.0;\n}"),
+            "fn f(x:f32)->f32{\nreturn x*2.0;\n}"
+        );
+        assert_eq!(squeezed("let a  =\t1u;"), "let a=1u;");
+        assert_eq!(
+            squeezed("a - -b; c > >d; e / /f; g = = h; i & &j; k < =l; m - > n; o. 5"),
+            "a- -b;c> >d;e/ /f;g= =h;i& &j;k< =l;m- >n;o. 5"
+        );
+        assert_eq!(squeezed("x = -1; y == -z; vec3<f32>(a, b)"), "x=-1;y==-z;vec3<f32>(a,b)");
+        assert_eq!(squeezed("  lead\ntrail  "), "lead\ntrail");
+    }
+
+    /// Squeezed, every shader the crate ships reads as the same tokens, on the same lines.
+    #[test]
+    fn the_squeezed_shaders_keep_their_tokens_and_lines() {
+        let shaders = concat!(
+            include_str!("../../shaders/common.wgsl"),
+            include_str!("../../shaders/extract/lod.wgsl"),
+            include_str!("../../shaders/draw/shade.wgsl"),
+            include_str!("../../shaders/draw/views/exact.wgsl"),
+        );
+        const LEN: usize = 64 * 1024;
+        let (bytes, used) = minify::<LEN>(shaders);
+        let (out, kept) = squeeze::<LEN>(&bytes, used);
+        let (before, after) =
+            (std::str::from_utf8(&bytes[..used]).unwrap(), std::str::from_utf8(&out[..kept]).unwrap());
+        assert_eq!(after.lines().count(), before.lines().count());
+        assert!(kept < used * 19 / 20, "{kept} of {used} bytes left");
+        for (ours, original) in after.lines().zip(before.lines()) {
+            // Without its spaces each line is the same text, and every space left stands between two
+            // bytes that would run together.
+            assert_eq!(ours.replace(' ', ""), original.replace([' ', '\t'], ""));
+            for (i, _) in ours.match_indices(' ') {
+                assert!(runs_together(ours.as_bytes()[i - 1], ours.as_bytes()[i + 1]), "{ours}");
+            }
+        }
     }
 
     /// Every shader the crate ships keeps its lines and loses at least a third of its bytes; what is

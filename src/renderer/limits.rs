@@ -6,6 +6,7 @@ use super::stage::Sizing;
 use crate::device::compute_within;
 use crate::extract::buffers::{BLOCK_CELLS, Capacity};
 use crate::extract::reference::Grid;
+use crate::scene::decimal::Fixed;
 use crate::scene::params::{self, MAX_UNIFORM_RESOLUTION, MIN_RESOLUTION, ParamError};
 
 /// The largest buffer the mesh passes bind: a storage binding, or without compute shaders (where the
@@ -56,9 +57,9 @@ fn resolution_fits(limits: &wgpu::Limits, cells_per_axis: u32) -> Result<(), Str
     let needed = blocks * 4;
     if needed > storage_limit(limits) {
         return Err(format!(
-            "its block table needs {:.1} MiB but the device's max_storage_buffer_binding_size is {:.1} MiB",
-            needed as f64 / 1048576.0,
-            storage_limit(limits) as f64 / 1048576.0
+            "its block table needs {} MiB but the device's max_storage_buffer_binding_size is {} MiB",
+            Fixed(needed as f64 / 1048576.0, 1),
+            Fixed(storage_limit(limits) as f64 / 1048576.0, 1)
         ));
     }
     let groups = blocks.div_ceil(64);

@@ -6,6 +6,7 @@ use crate::draw::uniforms::{LightUniform, ShadingUniform};
 use crate::draw::views;
 use crate::extract::uniforms::GridUniform;
 use crate::scene::BOX_HALF_EXTENT;
+use crate::scene::math;
 use crate::scene::params::Settings;
 use crate::scene::params::view::{Blend, Interpolation, Projection};
 use glam::{Mat4, UVec3, Vec3};
@@ -97,9 +98,9 @@ fn lights(settings: &Settings) -> [LightUniform; 3] {
             position: spot_position.to_array(),
             kind: if on.spot { 3 } else { 0 },
             direction: (-spot_position).normalize().to_array(),
-            cos_outer: half_angle.cos(),
+            cos_outer: math::cos(half_angle),
             color: [1.0, 0.8, 0.5],
-            cos_inner: (half_angle * (1.0 - settings.view.spot_softness)).cos(),
+            cos_inner: math::cos(half_angle * (1.0 - settings.view.spot_softness)),
         },
     ]
 }

@@ -5,6 +5,7 @@
 use crate::extract::cpu::mesher::CpuMesher;
 use crate::extract::reference::{Construction, Grid, surface_distance};
 use crate::scene::Sphere;
+use crate::scene::math;
 
 /// One resolution's figures: distances in box half-widths (world units), so that resolutions compare.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -38,8 +39,11 @@ pub fn error_at(spheres: &[Sphere], iso: f32, construction: Construction, cells_
 /// and `x` the cells per axis (about −2 for linear placement, −1 for midpoints). `None` with fewer than
 /// two usable points.
 pub fn fitted_slope(points: &[(f64, f64)]) -> Option<f64> {
-    let logs: Vec<(f64, f64)> =
-        points.iter().filter(|(x, y)| *x > 0.0 && *y > 0.0).map(|(x, y)| (x.ln(), y.ln())).collect();
+    let logs: Vec<(f64, f64)> = points
+        .iter()
+        .filter(|(x, y)| *x > 0.0 && *y > 0.0)
+        .map(|(x, y)| (math::ln(*x), math::ln(*y)))
+        .collect();
     if logs.len() < 2 {
         return None;
     }

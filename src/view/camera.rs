@@ -1,13 +1,28 @@
 //! The camera framing an output: its view and projection matrices, where a world point lands in pixels,
 //! and the ray through a pixel.
 
+use crate::scene::math;
 use crate::scene::params::view::Projection;
 use crate::scene::params::{Camera, Settings};
-use glam::{Mat4, Vec2, Vec3};
+use glam::{Mat4, Vec2, Vec3, Vec4};
 
 /// Near and far planes of both projections.
 const NEAR: f32 = 0.05;
 const FAR: f32 = 100.0;
+
+/// The right-handed perspective with depth from 0 (near) to 1 (far) that WebGPU takes, as glam's
+/// `camera::rh::proj::directx::perspective` makes it, with the sine and cosine from
+/// [`math`](crate::scene::math) (the browser's own in the browser's build).
+fn perspective(vertical_fov: f32, aspect: f32) -> Mat4 {
+    let h = math::cos(0.5 * vertical_fov) / math::sin(0.5 * vertical_fov);
+    let depth = 1.0 / (FAR - NEAR);
+    Mat4::from_cols(
+        Vec4::new(h / aspect, 0.0, 0.0, 0.0),
+        Vec4::new(0.0, h, 0.0, 0.0),
+        Vec4::new(0.0, 0.0, -FAR * depth, -1.0),
+        Vec4::new(0.0, 0.0, -NEAR * FAR * depth, 0.0),
+    )
+}
 
 /// The camera looking at the box's centre, and the output it draws into: pixels count from the top
 /// left of a `size.0` × `size.1` output.
@@ -46,9 +61,9 @@ impl CameraView {
         let aspect = self.size.0 as f32 / self.size.1 as f32;
         let fov = self.camera.fov_y_degrees.to_radians();
         let projection = match self.projection {
-            Projection::Perspective => glam::camera::rh::proj::directx::perspective(fov, aspect, NEAR, FAR),
+            Projection::Perspective => perspective(fov, aspect),
             Projection::Orthographic => {
-                let half_height = self.camera.distance * (fov / 2.0).tan();
+                let half_height = self.camera.distance * math::tan(fov / 2.0);
                 let half_width = half_height * aspect;
                 glam::camera::rh::proj::directx::orthographic(
                     -half_width,
@@ -65,7 +80,7 @@ impl CameraView {
 
     /// Pixels per world unit: at unit distance from the eye in perspective, anywhere in orthographic.
     pub fn pixels_per_unit(&self) -> f32 {
-        let half_fov = (self.camera.fov_y_degrees.to_radians() / 2.0).tan();
+        let half_fov = math::tan(self.camera.fov_y_degrees.to_radians() / 2.0);
         let height = self.size.1 as f32;
         match self.projection {
             Projection::Perspective => height / (2.0 * half_fov),
@@ -113,6 +128,16 @@ impl CameraView {
 pub(crate) mod tests {
     use super::*;
     use crate::scene::params::view::ViewOptions;
+
+    /// The perspective is glam's, number for number, where `math` is the platform's.
+    #[test]
+    fn the_perspective_is_glams() {
+        for (fov, aspect) in [(10.0f32, 1.5f32), (45.0, 4.0 / 3.0), (90.0, 0.5), (170.0, 2.0)] {
+            let fov = fov.to_radians();
+            let glams = glam::camera::rh::proj::directx::perspective(fov, aspect, NEAR, FAR);
+            assert_eq!(perspective(fov, aspect), glams, "{fov} rad at {aspect}");
+        }
+    }
 
     /// A 320 × 240 view from the default camera with `projection`.
     pub(crate) fn view(projection: Projection) -> CameraView {

@@ -15,8 +15,12 @@ use wasm_bindgen::prelude::*;
 /// of parameter names and values); throws with what is wrong.
 #[wasm_bindgen]
 pub fn save_scene(spheres: Vec<f32>, settings_json: &str) -> Result<String, JsError> {
-    let settings: serde_json::Map<String, serde_json::Value> =
-        serde_json::from_str(settings_json).map_err(js_error)?;
+    // Read as any JSON value and then required to be an object: reading into a map directly would
+    // bring serde's messages for values of the wrong type, and with them core's float formatting.
+    let settings = match serde_json::from_str(settings_json).map_err(js_error)? {
+        serde_json::Value::Object(settings) => settings,
+        _ => return Err(JsError::new("the page's settings must be a JSON object")),
+    };
     Ok(SceneFile::new(unpack_spheres(&spheres)?, &settings).map_err(js_error)?.to_json())
 }
 

@@ -265,7 +265,7 @@ pub fn topology_of(vertex_count: usize, triangles: &[[u32; 3]]) -> Topology {
     }
     let per_component = per_root.into_iter().filter(|c| c.0 > 0);
     let mut components: Vec<(i64, i64)> = per_component.map(|(v, e, f)| (v - e + f, v)).collect();
-    components.sort();
+    components.sort_unstable();
     let component_euler = components.iter().map(|c| c.0).collect();
     Topology { open_or_nonmanifold_edges, open_edges, misoriented_edges, component_euler, components }
 }

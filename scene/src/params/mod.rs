@@ -3,6 +3,7 @@
 //! Every check returns a [`ParamError`] whose message names the parameter, the value given and the
 //! accepted range; a refused value leaves the previous one in place.
 
+use crate::math;
 use glam::Vec3;
 use std::sync::OnceLock;
 
@@ -74,7 +75,8 @@ impl Camera {
     /// The eye position in world space, for a box centred on the origin.
     pub fn eye(&self) -> Vec3 {
         let (yaw, pitch) = (self.yaw_degrees.to_radians(), self.pitch_degrees.to_radians());
-        self.distance * Vec3::new(pitch.cos() * yaw.sin(), pitch.sin(), pitch.cos() * yaw.cos())
+        let (sin, cos) = (math::sin, math::cos);
+        self.distance * Vec3::new(cos(pitch) * sin(yaw), sin(pitch), cos(pitch) * cos(yaw))
     }
 }
 
@@ -184,7 +186,7 @@ pub fn srgb_hex_to_linear(hex: &str) -> Vec3 {
     let channel = |i: usize| {
         let c = hex.get(1 + 2 * i..3 + 2 * i).and_then(|h| u8::from_str_radix(h, 16).ok()).unwrap_or(0);
         let c = c as f32 / 255.0;
-        if c <= 0.04045 { c / 12.92 } else { ((c + 0.055) / 1.055).powf(2.4) }
+        if c <= 0.04045 { c / 12.92 } else { math::powf((c + 0.055) / 1.055, 2.4) }
     };
     Vec3::new(channel(0), channel(1), channel(2))
 }
@@ -193,7 +195,7 @@ pub fn srgb_hex_to_linear(hex: &str) -> Vec3 {
 pub fn linear_to_srgb_hex(color: Vec3) -> String {
     let channel = |c: f32| {
         let c = c.clamp(0.0, 1.0);
-        let s = if c <= 0.0031308 { c * 12.92 } else { 1.055 * c.powf(1.0 / 2.4) - 0.055 };
+        let s = if c <= 0.0031308 { c * 12.92 } else { 1.055 * math::powf(c, 1.0 / 2.4) - 0.055 };
         (s * 255.0).round() as u8
     };
     format!("#{:02x}{:02x}{:02x}", channel(color.x), channel(color.y), channel(color.z))

@@ -5,6 +5,8 @@ use super::rows::{control, control_names, parameter_named, unknown};
 use super::table::{Kind, Parameter, Value};
 use super::view::Slice;
 use super::{ParamError, check_f32, check_range};
+use crate::decimal::num;
+use crate::number::{parse_f32, parse_f64};
 
 impl Parameter {
     /// Reads `text` as this parameter's value and checks it; the error says what is accepted.
@@ -35,21 +37,21 @@ impl Parameter {
             |expected: String| ParamError::Invalid { name: noun, value: text.to_string(), expected };
         match self.kind {
             Kind::Integer => {
-                let range = format!("a whole number from {} to {}", self.min, self.max);
+                let range = format!("a whole number from {} to {}", num(self.min), num(self.max));
                 if trimmed.is_empty() || !trimmed.bytes().all(|b| b.is_ascii_digit()) {
                     return Err(invalid(range));
                 }
-                let value: f64 = trimmed.parse().map_err(|_| invalid(range))?;
+                let value = parse_f64(trimmed).ok_or_else(|| invalid(range))?;
                 check_range(noun, value, self.min, self.max).map(Value::Number)
             }
             Kind::Number => {
                 let (min, max) = (self.min as f32, self.max as f32);
-                let expected = format!("a number from {min} to {max}");
+                let expected = format!("a number from {} to {}", num(min), num(max));
                 // Read as the f32 the renderer keeps, and held as that f32's shortest decimal: the
                 // value checked is the value used, and it reads back as itself.
-                let value: f32 = trimmed.parse().map_err(|_| invalid(expected.clone()))?;
+                let value = parse_f32(trimmed).ok_or_else(|| invalid(expected.clone()))?;
                 check_f32(noun, value, min, max)?;
-                Ok(Value::Number(value.to_string().parse().unwrap_or(f64::from(value))))
+                Ok(Value::of_f32(value))
             }
             Kind::Boolean => match trimmed.to_ascii_lowercase().as_str() {
                 "" | "1" | "true" | "on" | "yes" => Ok(Value::Boolean(true)),

@@ -5,6 +5,7 @@
 
 use super::Settings;
 use super::view::ViewOptions;
+use crate::decimal::num;
 
 /// How a parameter's text is read.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -295,7 +296,7 @@ pub enum Value {
 impl Value {
     /// An f32 as the table holds numbers: its shortest decimal, so that it reads back as itself.
     pub fn of_f32(x: f32) -> Value {
-        Value::Number(x.to_string().parse().unwrap_or(f64::from(x)))
+        Value::Number(crate::number::parse_f64(&num(x).to_string()).unwrap_or(f64::from(x)))
     }
 
     /// A word or other text.
@@ -335,7 +336,7 @@ impl Value {
     /// The value as a link or an attribute writes it.
     pub fn to_text(&self) -> String {
         match self {
-            Value::Number(n) => n.to_string(),
+            Value::Number(n) => num(*n).to_string(),
             Value::Boolean(b) => b.to_string(),
             Value::Text(t) => t.clone(),
         }

@@ -2,6 +2,7 @@
 //! triangle colouring, lights, projection, and the two construction toggles (interpolation, blend).
 
 use super::{ParamError, Settings, check_f32};
+use crate::decimal::num;
 
 /// Declares a choice among words: the enum, its words in order, and the conversions.
 macro_rules! choice {
@@ -185,7 +186,7 @@ impl Slice {
         };
         let (axis, position) = text.split_once(':').unwrap_or((&text, "0"));
         let axis = ["x", "y", "z"].iter().position(|a| *a == axis.trim()).ok_or_else(invalid)? as u32;
-        let position: f32 = position.trim().parse().map_err(|_| invalid())?;
+        let position = crate::number::parse_f32(position.trim()).ok_or_else(invalid)?;
         check_f32("slice position", position, -1.0, 1.0)?;
         Ok(Some(Slice { axis, position }))
     }
@@ -195,7 +196,9 @@ impl Slice {
         match slice {
             None => "off".into(),
             // An axis past z (a slice made in code) reads back as one the parser refuses.
-            Some(s) => format!("{}:{}", ["x", "y", "z"].get(s.axis as usize).unwrap_or(&"?"), s.position),
+            Some(s) => {
+                format!("{}:{}", ["x", "y", "z"].get(s.axis as usize).unwrap_or(&"?"), num(s.position))
+            }
         }
     }
 

@@ -6,6 +6,7 @@ use super::{CpuMesher, CpuMeshing, SurfaceNetsMesher};
 use crate::extract::extractor::{GivenMesh, Job};
 use crate::extract::reference::{Construction, Grid};
 use crate::scene::Sphere;
+use crate::scene::decimal::num;
 use crate::scene::params::view::{Blend, Interpolation, Method};
 use glam::Vec3;
 
@@ -85,7 +86,7 @@ fn unpack(packed: &[f32]) -> Result<Unpacked, String> {
         (value >= 0.0 && (value as usize) < words.len() && value.fract() == 0.0)
             .then_some(value as usize)
             .ok_or_else(|| {
-                format!("a packed mesh job has {value} where a choice of {} belongs", words.join(", "))
+                format!("a packed mesh job has {} where a choice of {} belongs", num(value), words.join(", "))
             })
     };
     if packed.len() < HEAD || !(packed.len() - HEAD).is_multiple_of(PER_SPHERE) {
@@ -96,7 +97,7 @@ fn unpack(packed: &[f32]) -> Result<Unpacked, String> {
     let blend = [Blend::Sum, Blend::Max][word(4, Blend::WORDS)?];
     let cells = packed[2];
     if !((1.0..=MAX_CELLS).contains(&cells) && cells.fract() == 0.0) {
-        return Err(format!("a packed mesh job has {cells} cells per axis"));
+        return Err(format!("a packed mesh job has {} cells per axis", num(cells)));
     }
     let spheres = packed[HEAD..]
         .chunks_exact(PER_SPHERE)

@@ -17,6 +17,23 @@ use transvoxel_data::transition_cell_data::{
     TRANSITION_CELL_CLASS, TRANSITION_CELL_DATA, TRANSITION_VERTEX_DATA,
 };
 
+/// The edge of every vertex of every case, as its two samples a nibble each: the low bytes of
+/// `TRANSITION_VERTEX_DATA`, made while the crate compiles. The high bytes (Lengyel's vertex reuse)
+/// are not used here, and the whole table would double these bytes in the browser's wasm.
+const EDGE_CODES: [[u8; 12]; 512] = {
+    let mut codes = [[0u8; 12]; 512];
+    let mut case = 0;
+    while case < 512 {
+        let mut k = 0;
+        while k < 12 {
+            codes[case][k] = (TRANSITION_VERTEX_DATA[case][k] & 0xff) as u8;
+            k += 1;
+        }
+        case += 1;
+    }
+    codes
+};
+
 /// The full-resolution sample each half-resolution sample (9 to 12) repeats.
 pub const HALF_RESOLUTION: [usize; 4] = [0, 2, 6, 8];
 
@@ -50,10 +67,10 @@ pub fn triangles(case: usize) -> impl Iterator<Item = [Edge; 3]> {
     let class = TRANSITION_CELL_CLASS[case];
     let data = &TRANSITION_CELL_DATA[(class & 0x7f) as usize];
     let reversed = class & 0x80 != 0;
-    let vertices = &TRANSITION_VERTEX_DATA[case];
+    let vertices = &EDGE_CODES[case];
     let edge = move |k: u8| {
-        let code = vertices[k as usize] & 0xff;
-        let (a, b) = ((code >> 4) as u8, (code & 0x0f) as u8);
+        let code = vertices[k as usize];
+        let (a, b) = (code >> 4, code & 0x0f);
         (a.min(b), a.max(b))
     };
     (0..data.get_triangle_count() as usize).map(move |t| {

@@ -1,0 +1,33 @@
+// The page's WebAssembly within its download budgets, gzipped as `www/build.sh` reports it (`gzip -9`;
+// Node's zlib at level 9, which `npm run bench:load` uses, gives about 0.6 % more): the WebGPU build, which nearly every visitor loads, at most 200 KB; the WebGL2 build, loaded only
+// where WebGPU is missing, at most 900 KB. Both are read as `www/build.sh` left them: a build that is
+// missing fails here rather than passing unmeasured.
+
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { readFileSync } from 'node:fs';
+import path from 'node:path';
+import { root } from './helpers.js';
+
+const BUDGETS = [
+  { build: 'pkg', api: 'WebGPU', budget: 200 * 1024 },
+  { build: 'pkg-webgl', api: 'WebGL2', budget: 900 * 1024 },
+];
+
+for (const { build, api, budget } of BUDGETS) {
+  test(`the ${api} build's wasm is at most ${budget} bytes gzipped`, () => {
+    const file = path.join(root, build, 'metaballs_bg.wasm');
+    let bytes;
+    try {
+      bytes = readFileSync(file);
+    } catch (error) {
+      assert.fail(`${path.relative(root, file)} cannot be read (${error.code}): build it with bash www/build.sh`);
+    }
+    assert.deepEqual([...bytes.subarray(0, 4)], [0x00, 0x61, 0x73, 0x6d], `${build}/metaballs_bg.wasm is not WebAssembly`);
+    const gzipped = execFileSync('gzip', ['-9c', file], { maxBuffer: 64 << 20 }).length;
+    console.log(`${build}/metaballs_bg.wasm: ${bytes.length} bytes, ${gzipped} gzipped (budget ${budget})`);
+    assert.ok(gzipped <= budget,
+      `${build}/metaballs_bg.wasm is ${gzipped} bytes gzipped, ${gzipped - budget} over its budget of ${budget}`);
+  });
+}
