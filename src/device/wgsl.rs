@@ -174,15 +174,18 @@ mod tests {
         assert_eq!(squeezed("  lead\ntrail  "), "lead\ntrail");
     }
 
+    /// Shaders the crate ships, one after another.
+    const SHIPPED: &str = concat!(
+        include_str!("../../shaders/common.wgsl"),
+        include_str!("../../shaders/extract/lod.wgsl"),
+        include_str!("../../shaders/draw/shade.wgsl"),
+        include_str!("../../shaders/draw/views/exact.wgsl"),
+    );
+
     /// Squeezed, every shader the crate ships reads as the same tokens, on the same lines.
     #[test]
     fn the_squeezed_shaders_keep_their_tokens_and_lines() {
-        let shaders = concat!(
-            include_str!("../../shaders/common.wgsl"),
-            include_str!("../../shaders/extract/lod.wgsl"),
-            include_str!("../../shaders/draw/shade.wgsl"),
-            include_str!("../../shaders/draw/views/exact.wgsl"),
-        );
+        let shaders = SHIPPED;
         const LEN: usize = 64 * 1024;
         let (bytes, used) = minify::<LEN>(shaders);
         let (out, kept) = squeeze::<LEN>(&bytes, used);
@@ -204,12 +207,7 @@ mod tests {
     /// left of each line is a prefix of the original line's code, trimmed.
     #[test]
     fn the_shaders_keep_their_lines_and_code() {
-        let shaders = concat!(
-            include_str!("../../shaders/common.wgsl"),
-            include_str!("../../shaders/extract/lod.wgsl"),
-            include_str!("../../shaders/draw/shade.wgsl"),
-            include_str!("../../shaders/draw/views/exact.wgsl"),
-        );
+        let shaders = SHIPPED;
         const LEN: usize = 64 * 1024;
         assert!(shaders.len() <= LEN);
         let (bytes, used) = minify::<LEN>(shaders);
