@@ -3,13 +3,24 @@
 // where the build's JavaScript and WebAssembly are (`{ glue, wasm }`, whole URLs: the file imports
 // nothing itself, so it works wherever a bundler copies it) and says when it is ready (or why it
 // failed), then answers each `{ id, job }` (a view's packed mesh job) with the mesh's vertices and
-// indices, handed over without a copy, and each `{ id, shape: [vertex count, triangles] }` with the
-// mesh's shape (`mesh_shape`: blobs, genus, closed, manifold), or with what went wrong.
+// indices, handed over without a copy, each `{ id, shape: [vertex count, triangles] }` with the
+// mesh's shape (`mesh_shape`: blobs, genus, closed, manifold) and each `{ id, png: [pixels, width,
+// height] }` (RGBA8 rows, top first) with the picture as a PNG blob, or with what went wrong.
 
 let started = null;
 // A Rust panic in this instance: the job that raised it is answered with it.
 let panic = null;
 globalThis.metaballsShowPanic = (message) => { panic = message; };
+
+// Encoded in a canvas of this thread's own: on the page's thread, putting the pixels in a canvas takes
+// tens of milliseconds at a large figure's size.
+async function encodePng(pixels, width, height) {
+  if (typeof OffscreenCanvas !== 'function') throw new Error('this browser has no OffscreenCanvas in workers');
+  const canvas = new OffscreenCanvas(width, height);
+  const image = new ImageData(new Uint8ClampedArray(pixels.buffer, pixels.byteOffset, pixels.byteLength), width, height);
+  canvas.getContext('2d').putImageData(image, 0, 0);
+  return canvas.convertToBlob({ type: 'image/png' });
+}
 
 async function start({ glue, wasm }) {
   const module = await import(glue);
@@ -23,8 +34,12 @@ self.onmessage = async ({ data }) => {
     started.then(() => self.postMessage({ ready: true }), (error) => self.postMessage({ failed: String(error?.message ?? error) }));
     return;
   }
-  const { id, job, shape } = data;
+  const { id, job, shape, png } = data;
   try {
+    if (png) {
+      self.postMessage({ id, png: await encodePng(...png) });
+      return;
+    }
     const module = await started;
     if (shape) {
       self.postMessage({ id, shape: module.mesh_shape(...shape) });

@@ -34,7 +34,7 @@ function make() {
       waiting.delete(data.id);
       if (!job) return;
       if (data.error) job.reject(new Error(data.error));
-      else job.resolve(data.shape ?? [data.vertices, data.indices, data.blocks, data.cells]);
+      else job.resolve(data.shape ?? data.png ?? [data.vertices, data.indices, data.blocks, data.cells]);
     };
     made.onerror = (event) => {
       event.preventDefault?.();
@@ -52,7 +52,8 @@ function make() {
  * The page's mesher worker (made on first use, once the wasm has loaded), or null where there is none
  * or, unless `starting` is true, while it is still starting (what is asked of it meanwhile waits until it
  * has):
- * `{ mesh(job) }` resolves with `[vertices, indices, activeBlocks, activeCells]` for `View.give_mesh`.
+ * `{ mesh(job) }` resolves with `[vertices, indices, activeBlocks, activeCells]` for `View.give_mesh`;
+ * `{ shape(vertices, triangles) }` and `{ png(pixels, width, height) }` as `meshShape` and `pngOf` (look.js).
  */
 export function meshWorker(starting = false) {
   if (worker === undefined) worker = typeof Worker === 'function' && wasmBesideModule() ? make() : null;
@@ -65,6 +66,7 @@ export function meshWorker(starting = false) {
   return {
     mesh: (job) => ask({ job }),
     shape: (vertices, triangles) => ask({ shape: [vertices, triangles] }, [triangles.buffer]),
+    png: (pixels, width, height) => ask({ png: [pixels, width, height] }, [pixels.buffer]),
   };
 }
 

@@ -5,6 +5,7 @@
 
 import { nameOfKind, rowOf } from '../core/table.js';
 import { ONE_FRAME, PICTURE_FRAMES } from '../core/redraw.js';
+import { meshWorker } from '../engine/meshers.js';
 
 // The setting that holds spheres placed by hand, as text (`;` between spheres).
 const SPHERE_LIST = nameOfKind('spheres');
@@ -27,11 +28,23 @@ export const picturesTaken = () => pictures;
 export const resolvedTheme = (theme) => (theme === 'auto'
   ? (matchMedia('(prefers-color-scheme: light)').matches ? 'light' : 'dark') : theme);
 
+// The page's worker has not failed to encode a picture.
+let workerEncodes = true;
+
 /**
  * A PNG blob of RGBA8 `pixels` of `width` × `height`, encoded off the page's thread where the browser
  * has OffscreenCanvas.
  */
 export async function pngOf(pixels, width, height) {
+  // On the page's worker where there is one (the pixels are handed over); a worker that cannot encode
+  // is not asked again.
+  const worker = workerEncodes ? meshWorker(true) : null;
+  if (worker) {
+    return worker.png(pixels, width, height).catch((error) => {
+      workerEncodes = false;
+      throw error;
+    });
+  }
   const image = new ImageData(new Uint8ClampedArray(pixels.buffer, pixels.byteOffset, pixels.byteLength), width, height);
   // A canvas kept in memory (`willReadFrequently`): one drawn on the GPU would wait for it.
   const options = { willReadFrequently: true };
