@@ -30,5 +30,17 @@ fi
 cp -r www/examples www/metaballs-view.css www/style.css dist/www/
 cp pkg/metaballs.js pkg/metaballs_bg.wasm dist/pkg/
 cp pkg-webgl/metaballs.js pkg-webgl/metaballs_bg.wasm dist/pkg-webgl/
+# Every file the bundled modules name relative to themselves (`new URL("…", import.meta.url)`: the
+# WebAssembly, its JavaScript, the mesher worker) is where that path leads from the file that names it.
+missing=0
+while IFS= read -r file; do
+    while IFS= read -r path; do
+        if [ ! -f "$(dirname "$file")/$path" ]; then
+            echo "dist.sh: $file names $path, which is not beside it in dist/" >&2
+            missing=1
+        fi
+    done < <(grep -oE 'new URL\("[^"]+",import\.meta\.url\)' "$file" | sed -E 's/^new URL\("([^"]+)".*/\1/')
+done < <(find dist/www -name '*.js')
+[ "$missing" = 0 ] || exit 1
 bundle_widget dist/widget.js
 echo "dist/ is ready ($(du -sh dist | cut -f1)): copy it to a static host"

@@ -304,8 +304,14 @@ test('dist/ (the bundled element) served under a sub-path draws the demo page an
     assert.equal(await demo.page.$eval('metaballs-view', (e) => e.spheres), 7, 'the page did not apply its link');
     await demo.page.waitForFunction(() => /spheres=7/.test(document.getElementById('share').getAttribute('href')));
     assert.equal(await demo.page.evaluate(() => customElements.get('metaballs-view').devicesCreated), 1);
+    // The bundled element finds its mesher worker (SwiftShader meshes on the CPU) and meshes there.
+    await demo.page.waitForFunction(() => customElements.get('metaballs-view').meshingOffThread, null,
+      { timeout: 30_000 });
+    assert.ok(demo.page.workers().some((w) => w.url().endsWith('/course/figures/www/lib/engine/mesh-worker.js')),
+      `workers: ${demo.page.workers().map((w) => w.url()).join(', ')}`);
+    // The page's own scripts (the worker's starts once the first frame is drawn).
     const scripts = await demo.page.evaluate(() => performance.getEntriesByType('resource')
-      .filter((r) => r.name.endsWith('.js')).map((r) => r.name.split('/').pop()));
+      .filter((r) => r.name.endsWith('.js') && !r.name.endsWith('/mesh-worker.js')).map((r) => r.name.split('/').pop()));
     assert.ok(scripts.length <= 4, `the page fetched ${scripts.length} scripts: ${scripts.join(', ')}`);
     assert.deepEqual(demo.errors, []);
     await demo.close();

@@ -23,9 +23,7 @@ function stop(why) {
 
 function make() {
   try {
-    // The URL is made apart from the constructor: bundlers copy the file as it is (it imports nothing)
-    // instead of bundling it as a worker of their own format.
-    const url = new URL('./mesh-worker.js', import.meta.url);
+    const { glue, wasm, worker: url } = buildFiles();
     const made = new Worker(url, { type: 'module', name: 'metaballs mesher' });
     made.onmessage = ({ data }) => {
       if (data.ready) ready = true;
@@ -40,7 +38,6 @@ function make() {
       event.preventDefault?.();
       stop(`the mesher worker stopped (${event.message || 'it could not load'})`);
     };
-    const { glue, wasm } = buildFiles();
     made.postMessage({ glue: String(glue), wasm: String(wasm) });
     return made;
   } catch {

@@ -68,10 +68,16 @@ const WEBGL_BUILD = {
   wasm: () => new URL('../../../pkg-webgl/metaballs_bg.wasm', import.meta.url),
 };
 
-/** The URLs of the build in use: its JavaScript (`glue`) and its WebAssembly (`wasm`). */
+/**
+ * The URLs of the build in use, its JavaScript (`glue`) and its WebAssembly (`wasm`), and of the mesher
+ * worker's module (`worker`). The worker's is made here, beside the build's paths, because this module
+ * keeps its place when bundled (www/dist.sh checks it), so a path relative to it holds in dist/ too. The
+ * URL is made apart from the `Worker` constructor: bundlers copy the file as it is (it imports nothing)
+ * instead of bundling it as a worker of their own format.
+ */
 export function buildFiles() {
   const build = backend === 'webgl2' ? WEBGL_BUILD : WEBGPU_BUILD;
-  return { glue: build.glueFile(), wasm: build.wasm() };
+  return { glue: build.glueFile(), wasm: build.wasm(), worker: new URL('./mesh-worker.js', import.meta.url) };
 }
 
 // Where each build's WebAssembly comes from when not from next to the modules (see `setWasmSources`).
