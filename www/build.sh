@@ -36,4 +36,4 @@ build() {
 # Both builds use the `wasm` profile (Cargo.toml: optimised for size, whole-program) and drop the
 # function names (panic traces show indices instead).
 build pkg --remove-name-section --remove-producers-section --
-build pkg-webgl --remove-name-section --remove-producers-section -- --features webgl
+build pkg-webgl --remove-name-section --remove-producers-section -- --no-default-features --features webgl

@@ -19,9 +19,12 @@ pub fn dragged(view: &CameraView, sphere: Sphere, from: (f32, f32), to: (f32, f3
 /// when there are none).
 pub fn added(view: &CameraView, spheres: &[Sphere], x: f32, y: f32) -> Sphere {
     let center = view.on_plane_through(x, y, Vec3::ZERO).unwrap_or(Vec3::ZERO);
-    let mut radii: Vec<f32> = spheres.iter().map(|s| s.radius).collect();
-    radii.sort_by(f32::total_cmp);
-    let radius = radii.get(radii.len() / 2).copied().unwrap_or(nominal_radius(spheres.len() as u32 + 1));
+    // Radii are positive, so their bits sort as they do (as u64: the sort the topology count uses,
+    // so the browser's build carries one sort, not two).
+    let mut radii: Vec<u64> = spheres.iter().map(|s| s.radius.to_bits() as u64).collect();
+    radii.sort_unstable();
+    let median = radii.get(radii.len() / 2).map(|&bits| f32::from_bits(bits as u32));
+    let radius = median.unwrap_or(nominal_radius(spheres.len() as u32 + 1));
     Sphere { center, radius, velocity: Vec3::ZERO, charge: 1.0 }
 }
 

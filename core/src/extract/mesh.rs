@@ -263,9 +263,32 @@ pub fn topology_of(vertex_count: usize, triangles: &[[u32; 3]]) -> Topology {
     for t in triangles {
         per_root[find(&mut parent, t[0]) as usize].2 += 1;
     }
+    // Each component's (Euler characteristic, vertices), in order, sorted as numbers like the edges:
+    // χ (offset into u32; |χ| ≤ 3 × triangles) above, the vertex count (< 2³², the indices are u32)
+    // below.
     let per_component = per_root.into_iter().filter(|c| c.0 > 0);
-    let mut components: Vec<(i64, i64)> = per_component.map(|(v, e, f)| (v - e + f, v)).collect();
-    components.sort_unstable();
+    let key = |(v, e, f): (i64, i64, i64)| (((v - e + f) as i32 as u32 ^ 1 << 31) as u64) << 32 | v as u64;
+    let mut keys: Vec<u64> = per_component.map(key).collect();
+    keys.sort_unstable();
+    let components: Vec<(i64, i64)> =
+        keys.iter().map(|&k| (((k >> 32) as u32 ^ 1 << 31) as i32 as i64, (k as u32) as i64)).collect();
     let component_euler = components.iter().map(|c| c.0).collect();
     Topology { open_or_nonmanifold_edges, open_edges, misoriented_edges, component_euler, components }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn components_are_counted_and_sorted_whatever_the_sign_of_their_euler_characteristic() {
+        // The Fano plane's seven lines as triangles: 7 vertices, 21 edges (each used once), 7 faces,
+        // so χ = −7; then a lone triangle (χ = 1, 3 vertices) and a vertex no triangle uses (χ = 1).
+        let mut triangles = vec![[0, 1, 2], [0, 3, 4], [0, 5, 6], [1, 3, 5], [1, 4, 6], [2, 3, 6], [2, 4, 5]];
+        triangles.push([7, 8, 9]);
+        let topology = topology_of(11, &triangles);
+        assert_eq!(topology.components, vec![(-7, 7), (1, 1), (1, 3)]);
+        assert_eq!(topology.component_euler, vec![-7, 1, 1]);
+        assert_eq!((topology.open_edges, topology.open_or_nonmanifold_edges), (24, 24));
+    }
 }
