@@ -151,6 +151,13 @@ impl Renderer {
     /// exports), never part of a frame. An extractor that keeps its mesh on the CPU has it at hand.
     pub fn mesh_readback(&mut self) -> MeshReadback {
         self.extract();
+        self.drawn_mesh_readback()
+    }
+
+    /// Queues the readback of the mesh the last frame drew, without extracting again: for what is
+    /// measured of the picture on show (its live topology), where the scene may already have moved on
+    /// while its next mesh is made elsewhere.
+    pub fn drawn_mesh_readback(&self) -> MeshReadback {
         if let Some(mesh) = self.active_extractor().cpu_mesh() {
             return MeshReadback::Ready(mesh);
         }

@@ -1,8 +1,8 @@
-// The page's WebAssembly within its download budgets, gzipped as `www/build.sh` reports it (`gzip -9`;
-// Node's zlib at level 9, which `npm run bench:load` uses, gives about 0.6 % more), in kilobytes of
-// 1,000 bytes: the WebGPU build, which nearly every visitor loads, at most 200 KB; the WebGL2 build,
-// loaded only where WebGPU is missing, at most 900 KB. Both are read as `www/build.sh` left them: a
-// build that is missing fails here rather than passing unmeasured.
+// The page's WebAssembly within its download budgets, gzipped as `www/build.sh` and the benchmarks
+// report it (`gzip -9`), in kilobytes of 1,000 bytes: the WebGPU build, which nearly every visitor
+// loads, at most 200 KB; the WebGL2 build, loaded only where WebGPU is missing, at most 900 KB. Both
+// are read as `www/build.sh` left them: a build that is missing fails here rather than passing
+// unmeasured.
 
 import { test } from 'node:test';
 import assert from 'node:assert/strict';

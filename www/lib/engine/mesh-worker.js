@@ -1,7 +1,8 @@
 // The page's mesher worker: a second instance of the page's WebAssembly build, started in a worker,
 // that meshes the frames the figures' CPU mesher would otherwise mesh on the page's thread. It is told
 // where the build's JavaScript and WebAssembly are (`{ glue, wasm }`, whole URLs: the file imports
-// nothing itself, so it works wherever a bundler copies it) and says when it is ready (or why it
+// nothing itself, so it works wherever a bundler copies it) and given the page's compiled module
+// (`compiled`, so it only instantiates it) where there is one, and says when it is ready (or why it
 // failed), then answers each `{ id, job }` (a view's packed mesh job) with the mesh's vertices and
 // indices, handed over without a copy, each `{ id, shape: [vertex count, triangles] }` with the
 // mesh's shape (`mesh_shape`: blobs, genus, closed, manifold) and each `{ id, png: [pixels, width,
@@ -22,9 +23,9 @@ async function encodePng(pixels, width, height) {
   return canvas.convertToBlob({ type: 'image/png' });
 }
 
-async function start({ glue, wasm }) {
+async function start({ glue, wasm, compiled }) {
   const module = await import(glue);
-  await module.default({ module_or_path: wasm });
+  await module.default({ module_or_path: compiled ?? wasm });
   return module;
 }
 

@@ -7,8 +7,8 @@
 import { buildFiles, wasmBesideModule, wasmModule } from './wasm.js';
 
 let worker;
-// The worker has started its wasm: until then the figures mesh their first frames on the page's thread
-// (they do not wait for a second wasm to compile); later frames wait for it.
+// The worker has started its wasm (the page's compiled module, instantiated again): meshes asked for
+// meanwhile wait for it; what asks only a ready worker (pictures for print) is done on the page's thread.
 let ready = false;
 let asked = 0;
 const waiting = new Map();
@@ -23,7 +23,7 @@ function stop(why) {
 
 function make() {
   try {
-    const { glue, wasm, worker: url } = buildFiles();
+    const { glue, wasm, compiled, worker: url } = buildFiles();
     const made = new Worker(url, { type: 'module', name: 'metaballs mesher' });
     made.onmessage = ({ data }) => {
       if (data.ready) ready = true;
@@ -38,7 +38,7 @@ function make() {
       event.preventDefault?.();
       stop(`the mesher worker stopped (${event.message || 'it could not load'})`);
     };
-    made.postMessage({ glue: String(glue), wasm: String(wasm) });
+    made.postMessage({ glue: String(glue), wasm: String(wasm), compiled });
     return made;
   } catch {
     return null;

@@ -68,16 +68,25 @@ const WEBGL_BUILD = {
   wasm: () => new URL('../../../pkg-webgl/metaballs_bg.wasm', import.meta.url),
 };
 
+// Each build's compiled WebAssembly.Module, where it was fetched from beside this module.
+const compiledModules = new Map();
+
 /**
- * The URLs of the build in use, its JavaScript (`glue`) and its WebAssembly (`wasm`), and of the mesher
- * worker's module (`worker`). The worker's is made here, beside the build's paths, because this module
+ * The URLs of the build in use, its JavaScript (`glue`) and its WebAssembly (`wasm`), its compiled
+ * WebAssembly.Module (`compiled`, or undefined where it was given by the host), and the URL of the
+ * mesher worker's module (`worker`). The worker's is made here, beside the build's paths, because this module
  * keeps its place when bundled (www/dist.sh checks it), so a path relative to it holds in dist/ too. The
  * URL is made apart from the `Worker` constructor: bundlers copy the file as it is (it imports nothing)
  * instead of bundling it as a worker of their own format.
  */
 export function buildFiles() {
   const build = backend === 'webgl2' ? WEBGL_BUILD : WEBGPU_BUILD;
-  return { glue: build.glueFile(), wasm: build.wasm(), worker: new URL('./mesh-worker.js', import.meta.url) };
+  return {
+    glue: build.glueFile(),
+    wasm: build.wasm(),
+    compiled: compiledModules.get(build.name),
+    worker: new URL('./mesh-worker.js', import.meta.url),
+  };
 }
 
 // Where each build's WebAssembly comes from when not from next to the modules (see `setWasmSources`).
@@ -108,11 +117,17 @@ async function start(build) {
   const given = wasmSources[build.name];
   const url = given ? `the ${build.name} build's WebAssembly` : build.wasm();
   const fetched = given ? Promise.resolve({ source: given(), warning: null }) : fetchWasm(url);
-  fetched.catch(() => { /* reported below */ });
+  // Fetched from beside this module, it is compiled here (while the glue loads), so that the page's
+  // mesher worker can be handed the compiled module rather than fetch and compile it again.
+  const compiling = given ? null : fetched.then(({ source }) => (source instanceof Response
+    ? WebAssembly.compileStreaming(source) : WebAssembly.compile(source)));
+  compiling?.catch(() => { /* reported below */ });
   try {
     const module = await build.glue();
     const wasmFile = await fetched;
-    memories.set(module, (await module.default({ module_or_path: wasmFile.source })).memory);
+    const compiled = await compiling;
+    memories.set(module, (await module.default({ module_or_path: compiled ?? wasmFile.source })).memory);
+    if (compiled) compiledModules.set(build.name, compiled);
     warning = wasmFile.warning;
     return module;
   } catch (error) {

@@ -10,10 +10,6 @@ import { within } from '../engine/wasm.js';
 // The longest step the animation takes at once, in seconds (as a slow frame's).
 const MAX_STEP = 0.1;
 
-// A figure of this page has made a frame's mesh: from then on meshes wait for the worker to start
-// rather than run on the page's thread.
-let pageHasDrawn = false;
-
 const sameJob = (a, b) => a !== undefined && b !== undefined && a.length === b.length && a.every((x, i) => x === b[i]);
 
 export class MeshElsewhere {
@@ -54,9 +50,10 @@ export class MeshElsewhere {
     }
     const step = Math.min(this.#owed + dt, MAX_STEP);
     this.#owed = 0;
-    // The page's first frame does not wait for the worker to start; every later one does.
-    const worker = this.#failed || here ? null : meshWorker(pageHasDrawn);
-    pageHasDrawn = true;
+    // Every frame waits for the worker to start, the page's first too: it is handed the page's compiled
+    // wasm, so it starts within tens of milliseconds, while a first mesh takes the page's thread for as
+    // long on a small machine.
+    const worker = this.#failed || here ? null : meshWorker(true);
     if (!worker) return step;
     within(this.#element, () => view.advance(step));
     const job = within(this.#element, () => view.cpu_job());
