@@ -49,6 +49,29 @@ struct Digits {
     point: i32,
 }
 
+/// The f64 that `x`'s shortest decimal (as `{}` writes it) reads as, where it can be worked out
+/// without reading text: digits that fit 2⁵³ and a power of ten within 10²², so one correctly rounded
+/// multiplication or division by an exact power of ten gives the correctly rounded value (Clinger's
+/// fast path). `None` otherwise (and for values that are not finite).
+pub fn shortest_as_f64(x: f32) -> Option<f64> {
+    if !x.is_finite() {
+        return None;
+    }
+    let digits = Num::F32(x).digits();
+    let text = std::str::from_utf8(&digits.digits).ok()?;
+    let whole: u64 = text.parse().ok().filter(|&w| w < 1 << 53)?;
+    let tens = digits.point - digits.digits.len() as i32;
+    let power = *POWERS_OF_TEN.get(tens.unsigned_abs() as usize)?;
+    let value = if tens >= 0 { whole as f64 * power } else { whole as f64 / power };
+    Some(if digits.negative { -value } else { value })
+}
+
+/// 10⁰ to 10²², each exact in an f64.
+const POWERS_OF_TEN: [f64; 23] = [
+    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18,
+    1e19, 1e20, 1e21, 1e22,
+];
+
 impl Num {
     fn as_f64(self) -> f64 {
         match self {

@@ -67,3 +67,23 @@ fn pads_as_strings_do() {
     assert_eq!(format!("[{:>6}]", num(1.5f32)), "[   1.5]");
     assert_eq!(format!("[{:<6}]", Fixed(2.0, 1)), "[2.0   ]");
 }
+
+#[test]
+fn shortest_as_f64_is_what_the_shortest_decimal_reads_as() {
+    let mut fast = 0;
+    let settings_like = [0.15f32, 0.85, 0.6, 1.5, 45.0, -30.0, 0.3, 200.0, 1e-3, 2.5e-2, 3.4e5, -0.0, 0.0];
+    let random = patterns(200_000).map(|bits| f32::from_bits(bits as u32));
+    for x in settings_like.into_iter().chain(random).chain(specials().into_iter().map(|x| x as f32)) {
+        let read: Option<f64> = x.to_string().parse().ok().filter(|_| x.is_finite());
+        match shortest_as_f64(x) {
+            Some(value) => {
+                fast += 1;
+                assert_eq!(Some(value.to_bits()), read.map(f64::to_bits), "{x}");
+            }
+            None => {
+                assert!(!x.is_finite() || x.to_string().len() > 22 || x.abs() < 1e-13, "{x} has no fast path")
+            }
+        }
+    }
+    assert!(fast > 50_000, "{fast} values took the fast path");
+}

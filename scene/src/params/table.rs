@@ -296,7 +296,8 @@ pub enum Value {
 impl Value {
     /// An f32 as the table holds numbers: its shortest decimal, so that it reads back as itself.
     pub fn of_f32(x: f32) -> Value {
-        Value::Number(crate::number::parse_f64(&num(x).to_string()).unwrap_or(f64::from(x)))
+        let read = || crate::number::parse_f64(&num(x).to_string());
+        Value::Number(crate::decimal::shortest_as_f64(x).or_else(read).unwrap_or(f64::from(x)))
     }
 
     /// A word or other text.
