@@ -36,9 +36,14 @@ export class Panel {
     if (this.#built) this.build();
   }
 
-  // A figure about to start builds its panel once it knows its device (after its first frame).
+  // A figure about to start builds its panel once it knows its device (after its first frame); the
+  // others (below the fold, paused) when the page's thread is idle, one figure at a time, so that a
+  // page of many figures does not build every panel in the task that loads the wasm.
   loaded() {
-    if (!this.#ctx.frames.starting) this.build();
+    if (this.#ctx.frames.starting) return;
+    const build = () => { if (!this.#built) this.build(); };
+    if (typeof requestIdleCallback === 'function') requestIdleCallback(build, { timeout: 1000 });
+    else setTimeout(build, 0);
   }
 
   deviceKnown() { this.build(); }
