@@ -3,6 +3,7 @@
 // when none needs a frame), and rebuilds every view on a new device when the device is lost.
 
 import { LossCount } from './losses.js';
+import { meshWorker } from './meshers.js';
 import { backendName, loadWasm, takeEarlyGpu, wasmModule, whenWebgpuLoaded } from './wasm.js';
 
 export const WEBGPU_HELP =
@@ -61,6 +62,9 @@ class Hub {
     if (backendName() !== 'webgpu') throw new Error(WEBGPU_HELP);
     const { early, adapter } = takeEarlyGpu();
     this.adapter = describeAdapter(adapter);
+    // A software adapter's figures mesh on the CPU: their worker starts while the device and the views
+    // are made, not when the first frame asks for it.
+    if (this.adapter.software) meshWorker(true);
     let gpu;
     try {
       gpu = await (early ?? wasmModule().Gpu.create());
@@ -111,6 +115,8 @@ class Hub {
     this.webglWaiting.delete(element);
     this.webglHolders.add(element);
     this.adapter = { label: 'WebGL2', software: false };
+    // WebGL2 figures mesh on the CPU (see #start).
+    meshWorker(true);
     try {
       return await wasmModule().Gpu.create_webgl(canvas);
     } catch (error) {
