@@ -143,7 +143,7 @@ impl Settings {
         check_light_position(self.light_position)?;
         for p in PARAMETERS {
             if let Some(field) = p.field {
-                p.check(&field.get(&self))?;
+                p.accepts(&field.get(&self))?;
             }
         }
         check_resolution_for_lod(self.resolution, self.view.lod)?;

@@ -18,13 +18,21 @@ impl Parameter {
     /// holds it.
     pub fn check(&self, value: &Value) -> Result<Value, ParamError> {
         match (self.kind, value) {
-            (Kind::Number, Value::Number(n)) => {
-                check_f32(self.noun, *n as f32, self.min as f32, self.max as f32).map(Value::of_f32)
-            }
-            (Kind::Integer, Value::Number(n)) => {
-                check_range(self.noun, *n, self.min, self.max).map(Value::Number)
-            }
+            (Kind::Number, Value::Number(n)) => self.accepts(value).map(|()| Value::of_f32(*n as f32)),
+            (Kind::Integer, Value::Number(_)) => self.accepts(value).map(|()| value.clone()),
             _ => self.parse(&value.to_text()),
+        }
+    }
+
+    /// Whether `value` is one of this parameter's values, as [`Parameter::check`] says, without
+    /// making the value again (settings check every row each time one changes).
+    pub fn accepts(&self, value: &Value) -> Result<(), ParamError> {
+        match (self.kind, value) {
+            (Kind::Number, Value::Number(n)) => {
+                check_f32(self.noun, *n as f32, self.min as f32, self.max as f32).map(drop)
+            }
+            (Kind::Integer, Value::Number(n)) => check_range(self.noun, *n, self.min, self.max).map(drop),
+            _ => self.parse(&value.to_text()).map(drop),
         }
     }
 
@@ -36,20 +44,22 @@ impl Parameter {
         let invalid =
             |expected: String| ParamError::Invalid { name: noun, value: text.to_string(), expected };
         match self.kind {
+            // What is accepted is written out only when a value is refused: settings are checked
+            // many times on a figure's start, and formatting numbers costs more than checking them.
             Kind::Integer => {
-                let range = format!("a whole number from {} to {}", num(self.min), num(self.max));
+                let range = || format!("a whole number from {} to {}", num(self.min), num(self.max));
                 if trimmed.is_empty() || !trimmed.bytes().all(|b| b.is_ascii_digit()) {
-                    return Err(invalid(range));
+                    return Err(invalid(range()));
                 }
-                let value = parse_f64(trimmed).ok_or_else(|| invalid(range))?;
+                let value = parse_f64(trimmed).ok_or_else(|| invalid(range()))?;
                 check_range(noun, value, self.min, self.max).map(Value::Number)
             }
             Kind::Number => {
                 let (min, max) = (self.min as f32, self.max as f32);
-                let expected = format!("a number from {} to {}", num(min), num(max));
+                let expected = || format!("a number from {} to {}", num(min), num(max));
                 // Read as the f32 the renderer keeps, and held as that f32's shortest decimal: the
                 // value checked is the value used, and it reads back as itself.
-                let value = parse_f32(trimmed).ok_or_else(|| invalid(expected.clone()))?;
+                let value = parse_f32(trimmed).ok_or_else(|| invalid(expected()))?;
                 check_f32(noun, value, min, max)?;
                 Ok(Value::of_f32(value))
             }
