@@ -58,8 +58,7 @@ pub fn shortest_as_f64(x: f32) -> Option<f64> {
         return None;
     }
     let digits = Num::F32(x).digits();
-    let text = std::str::from_utf8(&digits.digits).ok()?;
-    let whole: u64 = text.parse().ok().filter(|&w| w < 1 << 53)?;
+    let whole = digits.whole().filter(|&w| w < 1 << 53)?;
     let tens = digits.point - digits.digits.len() as i32;
     let power = *POWERS_OF_TEN.get(tens.unsigned_abs() as usize)?;
     let value = if tens >= 0 { whole as f64 * power } else { whole as f64 / power };
@@ -99,8 +98,7 @@ impl Num {
     /// place above: 2 × value = (2 × DIGITS + 1) × 10^(point - len).
     fn is_tie(self, digits: &Digits) -> bool {
         let (mantissa, exponent) = parts(self.as_f64().abs());
-        let Ok(text) = std::str::from_utf8(&digits.digits) else { return false };
-        let Ok(whole) = text.parse::<u64>() else { return false };
+        let Some(whole) = digits.whole() else { return false };
         let (mut left, mut right) = (Big::from(mantissa), Big::from(2 * whole + 1));
         let (twos, tens) = (exponent + 1, digits.point - digits.digits.len() as i32);
         for _ in 0..tens.unsigned_abs() {
@@ -116,6 +114,11 @@ impl Num {
 }
 
 impl Digits {
+    /// The digits as one whole number, where it fits a u64 (up to 19 digits).
+    fn whole(&self) -> Option<u64> {
+        (self.digits.len() <= 19).then(|| self.digits.iter().fold(0, |w, &d| w * 10 + u64::from(d - b'0')))
+    }
+
     /// Adds one unit of the last place.
     fn round_up(&mut self) {
         for d in self.digits.iter_mut().rev() {
