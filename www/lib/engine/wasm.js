@@ -74,10 +74,10 @@ const compiledModules = new Map();
 /**
  * The URLs of the build in use, its JavaScript (`glue`) and its WebAssembly (`wasm`), its compiled
  * WebAssembly.Module (`compiled`, or undefined where it was given by the host), and the URL of the
- * mesher worker's module (`worker`). The worker's is made here, beside the build's paths, because this module
- * keeps its place when bundled (www/dist.sh checks it), so a path relative to it holds in dist/ too. The
- * URL is made apart from the `Worker` constructor: bundlers copy the file as it is (it imports nothing)
- * instead of bundling it as a worker of their own format.
+ * mesher worker's module (`worker`). The worker's is made here, beside the build's paths, because this
+ * module keeps its place when bundled (www/dist.sh checks it), so a path relative to it holds in dist/
+ * too. The URL is made apart from the `Worker` constructor: bundlers copy the file as it is (it imports
+ * nothing) instead of bundling it as a worker of their own format.
  */
 export function buildFiles() {
   const build = backend === 'webgl2' ? WEBGL_BUILD : WEBGPU_BUILD;
