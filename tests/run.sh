@@ -58,7 +58,7 @@ cargo fmt --all --check
 # Everything the tests use is built once: the two release wasm builds, then from them dist/, the npm
 # package and the notebook's wheel (each of whose scripts would otherwise build the wasm again). The
 # end-to-end tests take these as they are (they build one themselves only when it is missing or older
-# than its sources, as when a test file is run on its own). The build runs beside the lints and the test
+# than its sources, as when a test file is run on its own). The build runs beside the test
 # builds: its whole-program optimisation keeps one core busy for long stretches, which they fill.
 page_log="$(mktemp)"
 setsid bash -c 'set -euo pipefail
@@ -68,20 +68,22 @@ setsid bash -c 'set -euo pipefail
     bash www/dist.sh
     bash www/pack.sh
     bash python/build.sh
-    echo "page build: $(($(date +%s) - started)) s beside the lints and test builds"' >"$page_log" 2>&1 &
+    echo "page build: $(($(date +%s) - started)) s beside the test builds"' >"$page_log" 2>&1 &
 page_build=$!
 # Stopped with the run, whichever way it ends.
 trap 'kill -- -"$page_build" 2>/dev/null || true; rm -f "$log" "$page_log"; stage_report' EXIT
 
-stage "lints (native)"
-cargo clippy --all-targets -- -D warnings
-stage "lints (wasm32)"
-cargo clippy --lib --test browser --target wasm32-unknown-unknown -- -D warnings
 stage "crate package (metadata and file list)"
 cargo package --allow-dirty --no-verify --quiet
-stage "test builds (native, wasm32)"
-cargo test --no-run
-cargo test --target wasm32-unknown-unknown --test browser --no-run
+
+# The test builds are the lints: the workspace's crates are compiled by Clippy's driver with every
+# warning an error (native: the library, its tests, the command and the suite; wasm32: the library and
+# the browser tests), so the dependencies are compiled once for both. Every later `cargo test` of the
+# run uses the same wrapper, or it would compile the crates again.
+lints=(env RUSTC_WORKSPACE_WRAPPER="$PWD/tests/tools/clippy-rustc.sh")
+stage "test builds with the lints (native, wasm32)"
+"${lints[@]}" cargo test --no-run
+"${lints[@]}" cargo test --target wasm32-unknown-unknown --test browser --no-run
 
 stage "page build (release wasm, dist/, npm package, wheel)"
 if ! wait "$page_build"; then
@@ -93,10 +95,10 @@ cat "$page_log"
 export METABALLS_WASM_BUILT=1
 
 stage "native tests"
-cargo test 2>&1 | tee -a "$log"
+"${lints[@]}" cargo test 2>&1 | tee -a "$log"
 
 stage "engine in headless Chromium (WebGPU)"
-CHROMEDRIVER=/usr/bin/chromedriver cargo test --target wasm32-unknown-unknown --test browser 2>&1 | tee -a "$log"
+CHROMEDRIVER=/usr/bin/chromedriver "${lints[@]}" cargo test --target wasm32-unknown-unknown --test browser 2>&1 | tee -a "$log"
 
 stage "notebook widget (Python tests)"
 venv=target/python/test-venv

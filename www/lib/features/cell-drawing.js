@@ -51,11 +51,18 @@ export function cellDrawing(cube, inside, triangles, t, { size = 64, color = '#e
   return svg;
 }
 
-/** The gallery: one drawing per class, with its number, name and how many of the 256 cases it holds. */
-export function buildGallery({ classes, cube }) {
+/**
+ * The gallery: one drawing per class, with its number, name and how many of the 256 cases it holds.
+ * `count` drawings are made now (all by default); `more()` makes the next one and says whether any is
+ * left, so that a page can draw them a few at a time.
+ */
+export function buildGallery({ classes, cube }, count = classes.length) {
   const list = document.createElement('div');
   list.className = 'gallery';
-  for (const k of classes) {
+  let next = 0;
+  list.more = () => {
+    const k = classes[next++];
+    if (!k) return false;
     const figure = document.createElement('figure');
     figure.dataset.class = String(k.class);
     const caption = document.createElement('figcaption');
@@ -67,7 +74,9 @@ export function buildGallery({ classes, cube }) {
       caption,
     );
     list.append(figure);
-  }
+    return next < classes.length;
+  };
+  while (next < count && list.more());
   return list;
 }
 

@@ -45,19 +45,27 @@ export class Inspector {
     return { inspector: (panel) => this.#control(panel) };
   }
 
-  // The hint, and the gallery of the 15 cases, drawn while the page is idle (or when opened first),
-  // not before the figure's first frame.
+  // The hint, and the gallery of the 15 cases, drawn one case at a time while the page is idle (all
+  // that are left when it is opened), not before the figure's first frame.
   #control({ element, gallery }) {
     const hint = element('p', { className: 'hint', textContent: 'Click the surface to inspect a cell (Esc to let go).' });
     const cases = element('details', { className: 'cases' }, element('summary', { textContent: 'The 15 cases' }));
-    const fill = () => {
-      if (this.#gallery || !cases.isConnected) return;
-      this.#gallery = buildGallery(gallery);
-      cases.append(this.#gallery);
+    const idle = (draw) => (globalThis.requestIdleCallback
+      ? requestIdleCallback(draw, { timeout: 1000 }) : setTimeout(draw, 0));
+    let drawing = null;
+    const fill = (all) => {
+      if (!cases.isConnected || (drawing && drawing !== this.#gallery)) return;
+      if (!drawing) {
+        drawing = this.#gallery = buildGallery(gallery, 0);
+        cases.append(drawing);
+      }
+      let more = drawing.more();
+      while (all && more) more = drawing.more();
       this.#markClass();
+      if (more) idle(() => fill(false));
     };
-    cases.addEventListener('toggle', fill, { once: true });
-    (globalThis.requestIdleCallback ?? setTimeout)(fill);
+    cases.addEventListener('toggle', () => fill(true), { once: true });
+    idle(() => fill(false));
     return [hint, cases];
   }
 

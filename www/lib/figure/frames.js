@@ -158,6 +158,7 @@ export class FigureFrames {
     try {
       await this.#loaded();
       gpu = await hub.deviceFor(ctx.element, ctx.canvas);
+      if (gpu) await hub.startTurn();
     } catch (error) {
       this.fail(error.title, error.message, { retry: Boolean(hub.stopped) });
       return false;
