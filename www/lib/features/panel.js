@@ -26,6 +26,8 @@ export class Panel {
   #ctx;
   #built = false;
   #updates = [];
+  // Counts builds: the folded groups of an earlier build stop filling.
+  #builds = 0;
 
   constructor(ctx) {
     this.#ctx = ctx;
@@ -41,19 +43,23 @@ export class Panel {
   // page of many figures does not build every panel in the task that loads the wasm.
   loaded() {
     if (this.#ctx.frames.starting) return;
-    const build = () => { if (!this.#built) this.build(); };
+    const build = () => { if (!this.#built) this.build({ stepwise: true }); };
     if (typeof requestIdleCallback === 'function') requestIdleCallback(build, { timeout: 1000 });
     else setTimeout(build, 0);
   }
 
-  deviceKnown() { this.build(); }
+  deviceKnown() { this.build({ stepwise: true }); }
 
   refresh(state) {
     for (const update of this.#updates) update(state);
   }
 
-  /** Builds the panel (emptied first) for the listed controls. */
-  build() {
+  /**
+   * Builds the panel (emptied first) for the listed controls. `stepwise`: the folded groups are filled
+   * one per task after this one (or when opened), so that a full panel is not one long task.
+   */
+  build({ stepwise = false } = {}) {
+    const build = ++this.#builds;
     const ctx = this.#ctx;
     const { frames, state } = ctx;
     const container = ctx.$('panel');
@@ -83,42 +89,66 @@ export class Panel {
       if (!groups.has(control.group)) groups.set(control.group, []);
       groups.get(control.group).push(control.name);
     }
+    const folded = [];
     for (const [title, members] of groups) {
       const section = element('div', { className: 'group-body' });
       const group = element('details', { className: 'group', open: title === CONTROLS[0].group },
         element('summary', { textContent: title || 'More' }), section);
-      const buttons = element('div', { className: 'buttons' });
-      for (const name of members) {
-        if (own[name]) {
-          for (const node of [own[name](helpers)].flat()) {
-            const isButton = node.tagName === 'BUTTON' || (node.tagName === 'SPAN' && node.classList.contains('buttons'));
-            (isButton ? buttons : section).append(node);
-          }
-          continue;
-        }
-        const spec = rowOf(name);
-        const control = builders[spec.kind](name, spec);
-        if (withoutCompute && spec.compute) {
-          for (const input of control.querySelectorAll('input, select')) input.disabled = true;
-          control.title = WITHOUT_COMPUTE;
-          control.classList.add('unavailable');
-        }
-        section.append(control);
-        if (name === 'color-by') {
-          const key = element('div', { className: 'key' });
-          const classNames = helpers.gallery.classes.map((k) => k.name);
-          this.#updates.push((s) => key.replaceChildren(...[colorKey(s, classNames)].filter(Boolean)));
-          section.append(key);
-        }
-      }
-      if (buttons.childElementCount) section.append(buttons);
       body.append(group);
+      let filled = false;
+      const fill = () => {
+        if (filled || build !== this.#builds) return;
+        filled = true;
+        const from = this.#updates.length;
+        this.#fill(members, section, own, builders, helpers, withoutCompute);
+        for (const update of this.#updates.slice(from)) update(ctx.state);
+      };
+      if (stepwise && !group.open) {
+        folded.push(fill);
+        group.addEventListener('toggle', fill, { once: true });
+      } else {
+        fill();
+      }
     }
     body.append(element('slot', { name: 'panel-footer' }));
     body.append(element('p', {
       className: 'hint',
       textContent: 'Drag to orbit · click, then wheel to zoom · arrows to turn · double-click to reset',
     }));
-    this.refresh(state);
+    const next = () => {
+      if (build !== this.#builds || !folded.length) return;
+      folded.shift()();
+      setTimeout(next, 0);
+    };
+    setTimeout(next, 0);
+  }
+
+  // Fills one group's section with the controls of `members` (and the buttons among them).
+  #fill(members, section, own, builders, helpers, withoutCompute) {
+    const buttons = element('div', { className: 'buttons' });
+    for (const name of members) {
+      if (own[name]) {
+        for (const node of [own[name](helpers)].flat()) {
+          const isButton = node.tagName === 'BUTTON' || (node.tagName === 'SPAN' && node.classList.contains('buttons'));
+          (isButton ? buttons : section).append(node);
+        }
+        continue;
+      }
+      const spec = rowOf(name);
+      const control = builders[spec.kind](name, spec);
+      if (withoutCompute && spec.compute) {
+        for (const input of control.querySelectorAll('input, select')) input.disabled = true;
+        control.title = WITHOUT_COMPUTE;
+        control.classList.add('unavailable');
+      }
+      section.append(control);
+      if (name === 'color-by') {
+        const key = element('div', { className: 'key' });
+        const classNames = helpers.gallery.classes.map((k) => k.name);
+        this.#updates.push((s) => key.replaceChildren(...[colorKey(s, classNames)].filter(Boolean)));
+        section.append(key);
+      }
+    }
+    if (buttons.childElementCount) section.append(buttons);
   }
 }
