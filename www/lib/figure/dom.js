@@ -216,7 +216,7 @@ select {
 select:focus-visible { outline: 2px solid var(--accent); outline-offset: 1px; }
 details.group { border-top: 1px solid #2a3042; }
 details.group > summary { padding: 5px 0; font-weight: 600; color: var(--text); }
-.control.slice { grid-template-columns: minmax(48px, 92px) 44px minmax(40px, 1fr) 32px; }
+.control.slice { grid-template-columns: minmax(48px, 92px) 58px minmax(40px, 1fr) 32px; }
 .control.list { grid-template-columns: minmax(48px, 92px) 1fr; align-items: start; }
 .control .label { color: var(--muted); }
 .checks { display: flex; flex-wrap: wrap; gap: 2px 10px; }
