@@ -24,12 +24,16 @@ fn blend_max() -> bool {
     return (grid.flags & FLAG_MAX) != 0u;
 }
 
+// The least share of its edge that keeps a vertex off the edge's ends, so that a sample equal to iso
+// never puts the vertices of several edges on one point (EDGE_MARGIN in core/src/extract/reference.rs).
+const EDGE_MARGIN: f32 = 0.0009765625;
+
 // Where on an edge from value fa to value fb the vertex lands.
 fn edge_parameter(fa: f32, fb: f32) -> f32 {
     if ((grid.flags & FLAG_MIDPOINT) != 0u) {
         return 0.5;
     }
-    return (grid.iso - fa) / (fb - fa);
+    return clamp((grid.iso - fa) / (fb - fa), EDGE_MARGIN, 1.0 - EDGE_MARGIN);
 }
 
 // Counts the passes append with. A count above its capacity means the buffer overflowed.

@@ -29,18 +29,16 @@ fn scene() -> Scene {
     .unwrap()
 }
 
-/// An indexed mesh from a reader's vertices and triangles, without the triangles that welding
-/// coincident vertices flattened (a vertex exactly on a grid point is made once per edge there).
-fn from_reader(positions: Vec<Vec3>, triangles: Vec<[u32; 3]>) -> (IndexedMesh, usize) {
-    let all = triangles.len();
-    let kept: Vec<[u32; 3]> =
-        triangles.into_iter().filter(|t| t[0] != t[1] && t[1] != t[2] && t[0] != t[2]).collect();
-    let flattened = all - kept.len();
+/// An indexed mesh from a reader's vertices and triangles. Readers of STL weld corners by position: a
+/// triangle with two corners at one point would mean two vertices of the mesh coincide.
+fn from_reader(positions: Vec<Vec3>, triangles: Vec<[u32; 3]>) -> IndexedMesh {
+    let flattened = triangles.iter().filter(|t| t[0] == t[1] || t[1] == t[2] || t[0] == t[2]).count();
+    assert_eq!(flattened, 0, "triangles flattened by welding their corners by position");
     let normals = vec![Vec3::Y; positions.len()];
-    (IndexedMesh { positions, normals, triangles: kept }, flattened)
+    IndexedMesh { positions, normals, triangles }
 }
 
-fn read_stl(bytes: &[u8]) -> (IndexedMesh, usize) {
+fn read_stl(bytes: &[u8]) -> IndexedMesh {
     let stl = stl_io::read_stl(&mut std::io::Cursor::new(bytes)).expect("stl_io reads the STL");
     let positions = stl.vertices.iter().map(|v| Vec3::new(v[0], v[1], v[2])).collect();
     let triangles = stl.faces.iter().map(|f| f.vertices.map(|i| i as u32)).collect();
@@ -55,7 +53,7 @@ fn read_obj(path: &std::path::Path) -> (IndexedMesh, Vec<Vec3>) {
     let positions = m.positions.chunks(3).map(Vec3::from_slice).collect();
     let normals = m.normals.chunks(3).map(Vec3::from_slice).collect();
     let triangles = m.indices.chunks(3).map(|t| [t[0], t[1], t[2]]).collect();
-    (from_reader(positions, triangles).0, normals)
+    (from_reader(positions, triangles), normals)
 }
 
 fn assert_closed(mesh: &IndexedMesh, what: &str) {
@@ -79,9 +77,8 @@ fn stl_and_obj_read_back_as_the_gpu_mesh_closed_with_its_volume() {
 
     let stl = encode(&mesh, MeshFormat::Stl, 25.0);
     assert_eq!(stl.len(), 84 + 50 * triangles);
-    let (read, flattened) = read_stl(&stl);
-    assert_eq!(read.triangles.len() + flattened, triangles, "STL triangle count");
-    assert!(flattened * 1000 < triangles, "{flattened} flattened triangles");
+    let read = read_stl(&stl);
+    assert_eq!(read.triangles.len(), triangles, "STL triangle count");
     assert_closed(&read, "STL");
     assert_eq!(read.topology().component_euler.len(), 2, "two blobs");
     let stl_volume = enclosed_volume(&read) / 25f64.powi(3);
@@ -121,7 +118,7 @@ fn one_sphere_encloses_its_own_volume() {
     let radius = 0.5f32;
     let mesh = gpu_mesh(&Scene::from_spheres(vec![sphere([0.0, 0.0, 0.0], radius)]).unwrap(), 64);
     let exact = 4.0 / 3.0 * std::f64::consts::PI * (radius as f64).powi(3);
-    let (read, _) = read_stl(&encode(&mesh, MeshFormat::Stl, 1.0));
+    let read = read_stl(&encode(&mesh, MeshFormat::Stl, 1.0));
     let volume = enclosed_volume(&read);
     assert!((volume - exact).abs() < 0.01 * exact, "volume {volume} against {exact}");
 }
@@ -138,8 +135,7 @@ fn simplified_exports_reach_their_target_and_stay_closed() {
             (got as f64 - target as f64).abs() <= 0.05 * target as f64,
             "asked {target} of {full}, got {got}"
         );
-        let (read, flattened) = read_stl(&encode(&simple, MeshFormat::Stl, 25.0));
-        assert_eq!(flattened, 0);
+        let read = read_stl(&encode(&simple, MeshFormat::Stl, 25.0));
         assert_closed(&read, &format!("simplified to {target}"));
         let v = enclosed_volume(&read) / 25f64.powi(3);
         assert!((v - volume).abs() < 0.05 * volume, "simplified to {target}: volume {v} against {volume}");
@@ -161,11 +157,10 @@ fn the_cli_exports_a_scene_file_and_refuses_bad_input() {
         cli(&["export", "--out", stl.to_str().unwrap(), "--scene", scene_path.to_str().unwrap()]);
     assert_eq!(code, 0, "{stderr}");
     assert!(stdout.contains("closed"), "{stdout}");
-    let (read, _) = read_stl(&std::fs::read(&stl).unwrap());
+    let read = read_stl(&std::fs::read(&stl).unwrap());
     assert_closed(&read, "CLI STL");
     let expected = gpu_mesh(&scene(), 40).triangles.len();
-    let (_, flattened) = read_stl(&std::fs::read(&stl).unwrap());
-    assert_eq!(read.triangles.len() + flattened, expected, "the scene file's resolution was used");
+    assert_eq!(read.triangles.len(), expected, "the scene file's resolution was used");
 
     let obj = dir.join("small.obj");
     let (code, stdout, stderr) = cli(&[

@@ -30,5 +30,6 @@ mod scene_render;
 mod shared_device;
 mod surface_nets;
 mod table;
+mod ties;
 mod topology;
 mod views;

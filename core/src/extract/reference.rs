@@ -45,6 +45,15 @@ impl Grid {
     }
 }
 
+/// The least share of its edge that keeps a vertex off the edge's ends: t is clamped to
+/// [EDGE_MARGIN, 1 − EDGE_MARGIN]. Where a sample equals the iso level (it reads as outside), every
+/// crossed edge from it would otherwise put its vertex on that one grid point, and welded by position
+/// (as an STL reader or a slicer welds) the mesh would have flattened triangles and edges in four.
+/// Kept off the ends, each crossed edge's vertex is a point of its own: a cell's width times the margin
+/// is still several units in the last place of a coordinate at 2048 cells (the GPU uses the same
+/// constant, `EDGE_MARGIN` in `shaders/common.wgsl`).
+pub const EDGE_MARGIN: f32 = 1.0 / 1024.0;
+
 /// How the surface is built: where vertices land on edges and how the spheres' fields combine.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Construction {
@@ -53,10 +62,11 @@ pub struct Construction {
 }
 
 impl Construction {
-    /// Where on an edge from value `fa` to value `fb` the vertex for level `iso` lands.
+    /// Where on an edge from value `fa` to value `fb` the vertex for level `iso` lands, never nearer an
+    /// end than `EDGE_MARGIN`.
     pub fn edge_parameter(&self, iso: f32, fa: f32, fb: f32) -> f32 {
         match self.interpolation {
-            Interpolation::Linear => (iso - fa) / (fb - fa),
+            Interpolation::Linear => ((iso - fa) / (fb - fa)).clamp(EDGE_MARGIN, 1.0 - EDGE_MARGIN),
             Interpolation::Midpoint => 0.5,
         }
     }
