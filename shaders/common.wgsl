@@ -13,12 +13,18 @@ struct Grid {
     max_vertices: u32,
     max_indices: u32,
     max_cells: u32,
-    // Bit 0: vertices at edge midpoints (else interpolated); bit 1: blend by max (else sum).
+    // Bit 0: vertices at edge midpoints (else interpolated); bit 1: blend by max (else sum); bit 2:
+    // ambiguous faces joined by the asymptotic decider (else the classic table).
     flags: u32,
 }
 
 const FLAG_MIDPOINT: u32 = 1u;
 const FLAG_MAX: u32 = 2u;
+const FLAG_DECIDER: u32 = 4u;
+
+// A cell's word in cell_cases: its case in bits 0..7 and, with the decider, its choices on its
+// ambiguous faces (in face order) from bit 8.
+const CASE_BITS: u32 = 0xffu;
 
 fn blend_max() -> bool {
     return (grid.flags & FLAG_MAX) != 0u;

@@ -67,6 +67,8 @@ export declare class MetaballsView extends HTMLElement {
   slice: string;
   /** Interpolation: linear, midpoint. Attribute `interpolation`; default "linear". */
   interpolation: 'linear' | 'midpoint';
+  /** Table: classic, decider. Attribute `table`; default "classic". */
+  table: 'classic' | 'decider';
   /** Blend: sum, max. Attribute `blend`; default "sum". */
   blend: 'sum' | 'max';
   /** Saddle: table, center, decider. Attribute `saddle`; default "table". */
@@ -103,7 +105,7 @@ export declare class MetaballsView extends HTMLElement {
   get sphereList(): MetaballsSphere[];
   /** Sphere-list: x,y,z,radius[,vx,vy,vz] per sphere joined by ; (a negative radius subtracts). Attribute `sphere-list`; default "". */
   set sphereList(value: string | MetaballsSphere[]);
-  /** Controls: all, none, or a comma list of spheres, iso, resolution, lod, lod-pixels, lod-freeze, mesh-on, method, speed, seed, paused, pause-on, step, view, display, compare, grid, color-by, ambiguous, color, theme, antialiasing, slice, interpolation, blend, saddle, inspector, error-plot, light, spot-angle, spot-softness, ambient, diffuse, specular, shininess, projection, fov, edit, scene, export. Attribute `controls`; default "none". */
+  /** Controls: all, none, or a comma list of spheres, iso, resolution, lod, lod-pixels, lod-freeze, mesh-on, method, speed, seed, paused, pause-on, step, view, display, compare, grid, color-by, ambiguous, color, theme, antialiasing, slice, interpolation, table, blend, saddle, inspector, error-plot, light, spot-angle, spot-softness, ambient, diffuse, specular, shininess, projection, fov, edit, scene, export. Attribute `controls`; default "none". */
   controls: string;
   /** Hud: on, off. Attribute `hud`; default "off". */
   hud: 'on' | 'off';

@@ -55,13 +55,58 @@ fn classify_cells(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_in
             case_index |= select(0u, 1u << c, v > grid.iso);
         }
     }
-    cell_cases[slot * 64u + local] = case_index;
+    var entry = case_index;
+    if ((grid.flags & FLAG_DECIDER) != 0u && case_index != 0u && case_index != 255u) {
+        entry |= face_choices(slot, at);
+    }
+    cell_cases[slot * 64u + local] = entry;
     if (case_index != 0u && case_index != 255u) {
         let place = atomicAdd(&counters.active_cells, 1u);
         if (place < grid.max_cells) {
             active_cells[place] = slot * 64u + local;
         }
     }
+}
+
+// True when the bilinear interpolant of a face's values (in the face's own corner order) has its saddle
+// above iso, joining the face's two inside corners (saddle_above in core/src/extract/decider.rs).
+fn saddle_above(f: array<f32, 4>) -> bool {
+    let n = f[0] * f[2] - f[1] * f[3];
+    let d = (f[0] + f[2]) - (f[1] + f[3]);
+    if (d > 0.0) {
+        return n > grid.iso * d;
+    }
+    if (d < 0.0) {
+        return n < grid.iso * d;
+    }
+    return false;
+}
+
+// From bit 8, the decider's choice on each of the cell's ambiguous faces in face order (face
+// 2 · axis + side, corners (u, v) = (0, 0), (1, 0), (1, 1), (0, 1) with u, v the next two axes:
+// FACE_CORNERS in core/src/extract/tables.rs): set where its inside corners are joined.
+fn face_choices(slot: u32, at: vec3<u32>) -> u32 {
+    var choices = 0u;
+    var ambiguous = 0u;
+    for (var face = 0u; face < 6u; face++) {
+        let axis = face / 2u;
+        var f: array<f32, 4>;
+        var inside = 0u;
+        for (var k = 0u; k < 4u; k++) {
+            var o = vec3<u32>(0u);
+            o[axis] = face % 2u;
+            o[(axis + 1u) % 3u] = select(0u, 1u, k == 1u || k == 2u);
+            o[(axis + 2u) % 3u] = select(0u, 1u, k >= 2u);
+            let p = at + o;
+            f[k] = block_values[slot * 125u + p.x + BLOCK_POINTS * (p.y + BLOCK_POINTS * p.z)];
+            inside |= select(0u, 1u << k, f[k] > grid.iso);
+        }
+        if (inside == 5u || inside == 10u) {
+            choices |= select(0u, 1u << ambiguous, saddle_above(f));
+            ambiguous += 1u;
+        }
+    }
+    return choices << 8u;
 }
 
 struct DispatchIndirect {

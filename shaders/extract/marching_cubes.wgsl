@@ -14,10 +14,10 @@
 // The active cells, each as slot * 64 + cell.
 @group(0) @binding(8) var<storage, read> active_cells: array<u32>;
 @group(0) @binding(6) var<storage, read> block_values: array<f32>;
-// Per case: bits 0..11 the crossed edges, bits 16.. the triangle count.
-@group(0) @binding(16) var<storage, read> case_table: array<u32, 256>;
-// Per case, 16 entries: edge numbers of the triangles, -1 after the last.
-@group(0) @binding(17) var<storage, read> triangle_table: array<i32, 4096>;
+// Every case's triangles under every choice on its ambiguous faces (decider_table in
+// core/src/extract/decider.rs): per case, its first variant; per variant, its first triangle << 8 | its
+// triangle count; per triangle, its three edges in 4 bits each. Variant 0 is the classic table's.
+@group(0) @binding(17) var<storage, read> triangle_table: array<u32>;
 // Slot s, cell c: the case at s * 64 + c.
 @group(0) @binding(7) var<storage, read> cell_cases: array<u32>;
 // Slot s, cell c, axis a: the vertex on the edge leaving the cell's lowest corner along a, at
@@ -138,26 +138,24 @@ fn make_triangles(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_in
     }
     let slot = reference / 64u;
     let local = reference % 64u;
-    let case_index = cell_cases[reference];
-    let entry = case_table[case_index];
-    let triangle_count = entry >> 16u;
+    // The cell's case and, with the decider, its choices on its ambiguous faces pick its variant.
+    let cell_entry = cell_cases[reference];
+    let variant = triangle_table[triangle_table[cell_entry & CASE_BITS] + (cell_entry >> 8u)];
+    let first_triangle = variant >> 8u;
+    let triangle_count = variant & 255u;
     if (triangle_count == 0u) {
         return;
     }
     let cell = block_coords(active_blocks[slot]) * BLOCK_CELLS + local_cell(local);
     let first = atomicAdd(&counters.indices, triangle_count * 3u);
-    let row = case_index * 16u;
     for (var k = 0u; k < triangle_count; k++) {
         let slot_index = first + 3u * k;
         if (slot_index + 3u > grid.max_indices) {
             return;
         }
         // The table winds clockwise seen from outside; emit counter-clockwise.
-        let edges = vec3<u32>(
-            u32(triangle_table[row + 3u * k]),
-            u32(triangle_table[row + 3u * k + 2u]),
-            u32(triangle_table[row + 3u * k + 1u]),
-        );
+        let word = triangle_table[first_triangle + k];
+        let edges = vec3<u32>(word & 15u, (word >> 8u) & 15u, (word >> 4u) & 15u);
         var triangle = vec3<u32>(0u);
         var complete = true;
         for (var j = 0u; j < 3u; j++) {

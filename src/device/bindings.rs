@@ -45,9 +45,8 @@ bindings! {
     /// With level of detail: each triangle's level, then the kept blocks as the views draw them.
     LOD_DATA = 14,
 
-    /// The marching-cubes case table (`shaders/extract/marching_cubes.wgsl`).
-    CASE_TABLE = 16,
-    /// The marching-cubes triangle table.
+    /// The marching-cubes triangles of every case and choice on its ambiguous faces
+    /// (`shaders/extract/marching_cubes.wgsl`).
     TRIANGLE_TABLE = 17,
 
     /// Level of detail's uniforms (`shaders/extract/lod.wgsl`).

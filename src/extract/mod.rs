@@ -4,6 +4,7 @@
 //!
 //! - [`tables`]: the 256-case marching-cubes tables, once, for the GPU and every CPU path.
 //! - [`reference`]: the CPU oracle every extractor must equal exactly.
+//! - [`decider`]: the triangles of cells whose ambiguous faces the asymptotic decider joins.
 //! - [`field`]: the field on the CPU as the passes evaluate it (bounds, rows of samples).
 //! - [`facing`]: which triangles of a closed mesh face the eye, for the CPU paths to draw those alone.
 //! - [`gpu`]: the compute passes (blocks → field → marching cubes), all on the device, no readback.
@@ -24,7 +25,7 @@ pub mod lod;
 // The GPU-free modules live in the `metaballs-core` crate (`core/`), built for speed in the browser's
 // size-optimised build, and keep their paths here.
 pub use metaballs_core::extract::cpu::facing;
-pub use metaballs_core::extract::{field, mesh, reference, tables};
+pub use metaballs_core::extract::{decider, field, mesh, reference, tables};
 pub mod uniforms;
 
 pub use extractor::{

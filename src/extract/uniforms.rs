@@ -16,7 +16,8 @@ pub struct GridUniform {
     pub max_vertices: u32,
     pub max_indices: u32,
     pub max_cells: u32,
-    /// Bit 0: vertices at edge midpoints; bit 1: blend by max (`FLAG_*` in `shaders/common.wgsl`).
+    /// Bit 0: vertices at edge midpoints; bit 1: blend by max; bit 2: ambiguous faces by the asymptotic
+    /// decider (`FLAG_*` in `shaders/common.wgsl`).
     pub flags: u32,
 }
 const _: () = assert!(std::mem::size_of::<GridUniform>() == 48);

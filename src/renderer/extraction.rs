@@ -87,7 +87,11 @@ impl Renderer {
             spheres,
             iso: self.settings.iso,
             grid: self.grid(),
-            construction: Construction { interpolation: view.interpolation, blend: view.blend },
+            construction: Construction {
+                interpolation: view.interpolation,
+                blend: view.blend,
+                case_table: view.case_table,
+            },
             lod: view.lod.then(|| LodJob { eye: self.lod_eye(), freeze: view.lod_freeze }),
         }
     }

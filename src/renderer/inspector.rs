@@ -19,7 +19,11 @@ impl Renderer {
 
     /// How the surface is built (vertex placement and blend), as the oracle takes it.
     pub fn construction(&self) -> Construction {
-        Construction { interpolation: self.settings.view.interpolation, blend: self.settings.view.blend }
+        Construction {
+            interpolation: self.settings.view.interpolation,
+            blend: self.settings.view.blend,
+            case_table: self.settings.view.case_table,
+        }
     }
 
     /// The cell under pixel (`x`, `y`) of the output (origin top left): the cell whose triangles the ray

@@ -8,7 +8,7 @@ use crate::extract::uniforms::GridUniform;
 use crate::scene::BOX_HALF_EXTENT;
 use crate::scene::math;
 use crate::scene::params::Settings;
-use crate::scene::params::view::{Blend, Interpolation, Projection};
+use crate::scene::params::view::{Blend, CaseTable, Interpolation, Projection};
 use glam::{Mat4, UVec3, Vec3};
 
 impl Renderer {
@@ -27,7 +27,8 @@ impl Renderer {
             max_indices: capacity.indices,
             max_cells: capacity.cells,
             flags: (self.settings.view.interpolation == Interpolation::Midpoint) as u32
-                | ((self.settings.view.blend == Blend::Max) as u32) << 1,
+                | ((self.settings.view.blend == Blend::Max) as u32) << 1
+                | ((self.settings.view.case_table == CaseTable::Decider) as u32) << 2,
         };
         self.queue.write_buffer(&self.scene_buffers.grid, 0, bytemuck::bytes_of(&grid_uniform));
         let packed: Vec<[f32; 4]> = spheres.iter().map(|s| s.to_gpu()).collect();

@@ -68,7 +68,6 @@ fn ball_hit(sphere: &Sphere, origin: Vec3, direction: Vec3) -> Option<f32> {
 mod tests {
     use super::*;
     use crate::scene::params::Settings;
-    use crate::scene::params::view::{Blend, Interpolation};
 
     fn sphere(center: [f32; 3], radius: f32, charge: f32) -> Sphere {
         Sphere { center: Vec3::from_array(center), radius, velocity: Vec3::ZERO, charge }
@@ -80,7 +79,7 @@ mod tests {
             spheres,
             iso: 1.0,
             grid: Grid { cells_per_axis: 40 },
-            construction: Construction { interpolation: Interpolation::Linear, blend: Blend::Sum },
+            construction: Construction::default(),
         }
     }
 

@@ -169,7 +169,8 @@ impl View {
         crate::scene::params::check_resolution(cells_per_axis).map_err(js_error)?;
         let settings = self.renderer.settings();
         let interpolation = if midpoint { Interpolation::Midpoint } else { Interpolation::Linear };
-        let construction = Construction { interpolation, blend: settings.view.blend };
+        let construction =
+            Construction { interpolation, blend: settings.view.blend, case_table: settings.view.case_table };
         let p = error_at(self.renderer.scene().spheres(), settings.iso, construction, cells_per_axis);
         Ok(vec![p.rms, p.max, p.triangles as f64])
     }

@@ -1,10 +1,10 @@
 //! The scenes every extractor is held to against the oracle: the seeded random draws of the GPU and
 //! CPU tests, spheres against the walls, overlapping and on a grid point at extreme iso levels, with
-//! both vertex placements and both blends.
+//! both vertex placements, both blends and both ways of joining ambiguous faces.
 
 use super::sphere;
 use metaballs::extract::reference::Construction;
-use metaballs::scene::params::view::{Blend, Interpolation};
+use metaballs::scene::params::view::{Blend, CaseTable, Interpolation};
 use metaballs::{Scene, Sphere};
 use rand::{RngExt, SeedableRng};
 
@@ -18,7 +18,8 @@ pub struct OracleScene {
 }
 
 /// `how_many` scenes drawn from a fixed seed (sphere count, resolution, iso level, layout and time), so
-/// runs repeat: the draws of `tests/suite/gpu_matches_oracle.rs`.
+/// runs repeat: the draws of `tests/suite/gpu_matches_oracle.rs`, every other one with its ambiguous
+/// faces resolved by the asymptotic decider.
 pub fn random_scenes(how_many: usize) -> Vec<OracleScene> {
     let mut rng = rand_pcg::Pcg32::seed_from_u64(0x6d65_7461);
     (0..how_many)
@@ -31,11 +32,14 @@ pub fn random_scenes(how_many: usize) -> Vec<OracleScene> {
             let mut scene = Scene::new(seed, count).unwrap();
             scene.step(time).unwrap();
             OracleScene {
-                what: format!("case {case}: seed {seed}, {count} spheres, {resolution} cells, iso {iso}"),
+                what: format!(
+                    "case {case}: seed {seed}, {count} spheres, {resolution} cells, iso {iso}, {:?}",
+                    alternate(case)
+                ),
                 spheres: scene.spheres().to_vec(),
                 iso,
                 resolution,
-                construction: Construction::default(),
+                construction: Construction { case_table: alternate(case), ..Construction::default() },
             }
         })
         .collect()
@@ -65,15 +69,21 @@ pub fn subtractive_scenes(how_many: usize) -> Vec<OracleScene> {
             OracleScene {
                 what: format!(
                     "subtractive case {case}: seed {seed}, {count} spheres ({negative} negative), \
-                     {resolution} cells, iso {iso}, {interpolation:?}, {blend:?}"
+                     {resolution} cells, iso {iso}, {interpolation:?}, {blend:?}, {:?}",
+                    alternate(case / 4)
                 ),
                 spheres,
                 iso,
                 resolution,
-                construction: Construction { interpolation, blend },
+                construction: Construction { interpolation, blend, case_table: alternate(case / 4) },
             }
         })
         .collect()
+}
+
+/// The classic table for even `k`, the asymptotic decider for odd.
+pub fn alternate(k: usize) -> CaseTable {
+    if k.is_multiple_of(2) { CaseTable::Classic } else { CaseTable::Decider }
 }
 
 /// A sphere with a subtracting sphere inside it, off its centre: a dented blob.
@@ -98,12 +108,13 @@ pub fn oracle_scenes(random: usize) -> Vec<OracleScene> {
         for iso in [0.05, 0.3, 1.0, 4.0, 20.0] {
             for interpolation in [Interpolation::Linear, Interpolation::Midpoint] {
                 for blend in [Blend::Sum, Blend::Max] {
+                    let case_table = alternate(scenes.len());
                     scenes.push(OracleScene {
-                        what: format!("{name}, iso {iso}, {interpolation:?}, {blend:?}"),
+                        what: format!("{name}, iso {iso}, {interpolation:?}, {blend:?}, {case_table:?}"),
                         spheres: spheres.clone(),
                         iso,
                         resolution: 32,
-                        construction: Construction { interpolation, blend },
+                        construction: Construction { interpolation, blend, case_table },
                     });
                 }
             }

@@ -90,3 +90,32 @@ test('a negative radius in the link subtracts a sphere, and the editor toggles i
   await page.waitForFunction(() => document.querySelector('metaballs-view').sphereList[1].charge === 1);
   assert.deepEqual(errors, []);
 });
+
+test('table=decider joins the two blobs the interpolant joins, on the CPU and the GPU, from the panel and the link', async () => {
+  // Seed 11, 64 spheres, 128³, iso 1.5: the classic table makes 58 blobs where the field's interpolant
+  // has 57 (scikit-image's Lewiner method agrees).
+  const { page, errors } = await open('?seed=11&spheres=64&res=128&iso=1.5&paused=1&mesher=cpu&controls=all&aa=0');
+  await settledTriangles(page);
+  const shape = () => page.$eval('metaballs-view', async (e) => [(await e.topology()).components, e.stats.triangles]);
+  assert.deepEqual(await shape(), [58, 54404]);
+  await openPanelGroups(page);
+  await page.selectOption('#table', 'decider');
+  await page.waitForFunction(() => document.querySelector('metaballs-view').stats.triangles === 54408, null, { timeout: 30000 });
+  assert.deepEqual(await shape(), [57, 54408]);
+  await page.waitForFunction(() => location.search.includes('table=decider'), null, { timeout: 5000 });
+  // The GPU's compute passes make the same mesh.
+  await page.$eval('metaballs-view', (e) => e.setAttribute('mesher', 'gpu'));
+  await page.waitForFunction(() => document.querySelector('metaballs-view').meshSource === 'gpu', null, { timeout: 30000 })
+    .catch(() => {});
+  await frameDrawn(page);
+  await frameDrawn(page);
+  assert.deepEqual(await shape(), [57, 54408]);
+  // A bad value keeps the table in use and says what is accepted.
+  await page.$eval('metaballs-view', (e) => e.setAttribute('table', 'mc99'));
+  await page.waitForFunction(() => document.querySelector('metaballs-view').shadowRoot
+    .getElementById('notice').textContent.includes('mc99'));
+  const notice = await page.$eval('metaballs-view', (e) => e.shadowRoot.getElementById('notice').textContent);
+  assert.ok(notice.includes('classic, decider'), notice);
+  assert.equal(await page.evaluate(() => document.querySelector('metaballs-view').table), 'decider');
+  assert.deepEqual(errors, []);
+});

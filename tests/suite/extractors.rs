@@ -51,6 +51,7 @@ fn every_extractor_in_the_list_matches_the_oracle() {
                 let mut settings = Settings { resolution: scene.resolution, iso, ..Settings::default() };
                 settings.view.interpolation = scene.construction.interpolation;
                 settings.view.blend = scene.construction.blend;
+                settings.view.case_table = scene.construction.case_table;
                 o.renderer.set_settings(settings).unwrap();
                 o.renderer.set_scene(Scene::from_spheres(scene.spheres.clone()).unwrap());
                 let ours = pollster::block_on(o.renderer.extract_mesh());

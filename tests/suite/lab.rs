@@ -84,7 +84,7 @@ fn the_error_falls_at_second_order_with_linear_placement_and_first_with_midpoint
         for (interpolation, low, high) in
             [(Interpolation::Linear, -2.6, -1.6), (Interpolation::Midpoint, -1.35, -0.7)]
         {
-            let construction = Construction { interpolation, blend: Blend::Sum };
+            let construction = Construction { interpolation, ..Construction::default() };
             let points: Vec<_> =
                 resolutions.iter().map(|&n| error_at(spheres, 1.0, construction, n)).collect();
             let slope = |f: fn(&metaballs::teach::error::ErrorPoint) -> f64| {

@@ -11,6 +11,7 @@ mod animation;
 mod architecture;
 mod bindings;
 mod cpu_mesher;
+mod decider;
 mod editing;
 mod exact;
 mod export;

@@ -42,6 +42,7 @@ fn surface_nets_make_one_vertex_per_crossed_cell_and_closed_surfaces() {
             let mut settings = Settings { resolution: scene.resolution, iso, ..Settings::default() };
             settings.view.interpolation = scene.construction.interpolation;
             settings.view.blend = scene.construction.blend;
+            settings.view.case_table = scene.construction.case_table;
             settings.view.method = Method::SurfaceNets;
             o.renderer.set_settings(settings).unwrap();
             o.renderer.set_scene(Scene::from_spheres(scene.spheres.clone()).unwrap());

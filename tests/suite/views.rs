@@ -297,7 +297,7 @@ fn midpoint_vertices_and_blend_by_max_match_the_oracle() {
             o.renderer.set_settings(s).unwrap();
             let spheres = o.renderer.scene().spheres().to_vec();
             let grid = Grid { cells_per_axis: 32 };
-            let construction = Construction { interpolation, blend };
+            let construction = Construction { interpolation, blend, ..Construction::default() };
             let gpu = pollster::block_on(o.renderer.extract_mesh()).to_soup();
             let cpu = reference::extract_with(&spheres, s.iso, grid, construction);
             let plain = reference::extract(&spheres, s.iso, grid);

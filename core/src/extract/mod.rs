@@ -1,12 +1,14 @@
 //! The GPU-free parts of extraction (`metaballs::extract` re-exports them):
 //!
 //! - [`tables`]: the 256-case marching-cubes tables, once, for the GPU and every CPU path.
+//! - [`decider`]: the triangles of cells whose ambiguous faces the asymptotic decider resolves.
 //! - [`reference`]: the CPU oracle every extractor must equal exactly.
 //! - [`field`]: the field on the CPU as the passes evaluate it (bounds, rows of samples).
 //! - [`mesh`]: triangle meshes and the properties the tests hold them to.
 //! - [`cpu`]: the CPU meshers (marching cubes and surface nets).
 
 pub mod cpu;
+pub mod decider;
 pub mod field;
 pub mod mesh;
 pub mod reference;

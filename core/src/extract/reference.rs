@@ -1,9 +1,10 @@
 //! The CPU oracle: the same field, tables and interpolation as the GPU passes, in plain Rust, for tests
 //! and tools. It favours being obviously right over being fast.
 
+use crate::extract::decider::{decided_triangles, face_choices};
 use crate::extract::mesh::Mesh;
-use crate::extract::tables::{CORNER_OFFSETS, EDGE_CORNERS, EDGE_TABLE, TRI_TABLE};
-use crate::scene::params::view::{Blend, Interpolation};
+use crate::extract::tables::{CORNER_OFFSETS, EDGE_CORNERS, EDGE_TABLE};
+use crate::scene::params::view::{Blend, CaseTable, Interpolation};
 use crate::scene::{BOX_HALF_EXTENT, Sphere};
 use glam::{UVec3, Vec3};
 
@@ -54,11 +55,35 @@ impl Grid {
 /// constant, `EDGE_MARGIN` in `shaders/common.wgsl`).
 pub const EDGE_MARGIN: f32 = 1.0 / 1024.0;
 
-/// How the surface is built: where vertices land on edges and how the spheres' fields combine.
+/// How the surface is built: where vertices land on edges, how the spheres' fields combine, and how
+/// marching cubes joins ambiguous faces.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Construction {
     pub interpolation: Interpolation,
     pub blend: Blend,
+    pub case_table: CaseTable,
+}
+
+impl Construction {
+    /// The triangles of a cell of case `case` with corner values `values` (corner order), as edge
+    /// triples wound clockwise seen from outside: the classic table's, or with `CaseTable::Decider` the
+    /// asymptotic decider's where the cell has an ambiguous face. Returns how many of `out` it filled.
+    pub fn cell_triangles(
+        &self,
+        case: usize,
+        values: [f32; 8],
+        iso: f32,
+        out: &mut [[usize; 3]; 10],
+    ) -> usize {
+        let decided = self.case_table == CaseTable::Decider;
+        let joined = if decided { face_choices(case, values, iso) } else { 0 };
+        let mut n = 0;
+        for t in decided_triangles(case, joined) {
+            out[n] = t;
+            n += 1;
+        }
+        n
+    }
 }
 
 impl Construction {
@@ -247,9 +272,12 @@ pub fn extract_with(spheres: &[Sphere], iso: f32, grid: Grid, construction: Cons
                     let axis = (0..3).find(|&i| ia[i] != ib[i]).unwrap() as u64;
                     (p, normal, grid.point_index(ia) as u64 * 3 + axis)
                 };
-                for tri in TRI_TABLE[case].chunks(3).take_while(|t| t[0] >= 0) {
-                    for &e in &[tri[0], tri[2], tri[1]] {
-                        let (p, normal, edge) = vertex(e as usize);
+                let mut triangles = [[0; 3]; 10];
+                let count =
+                    construction.cell_triangles(case, std::array::from_fn(value), iso, &mut triangles);
+                for tri in &triangles[..count] {
+                    for e in [tri[0], tri[2], tri[1]] {
+                        let (p, normal, edge) = vertex(e);
                         mesh.positions.push(p);
                         mesh.normals.push(normal);
                         mesh.edge_ids.push(edge);

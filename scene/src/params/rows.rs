@@ -5,8 +5,8 @@
 
 use super::table::{Action, Field, Group, Kind, Parameter, Value, number, row};
 use super::view::{
-    Blend, ColorBy, Compare, Display, GridView, Interpolation, LIGHT_KINDS, Lights, MeshOn, Method,
-    Projection, Saddle, Slice, Theme,
+    Blend, CaseTable, ColorBy, Compare, Display, GridView, Interpolation, LIGHT_KINDS, Lights, MeshOn,
+    Method, Projection, Saddle, Slice, Theme,
 };
 use super::{MAX_RESOLUTION, MAX_SPHERES, MIN_RESOLUTION, linear_to_srgb_hex, srgb_hex_to_linear};
 use super::{ParamError, ViewOptions};
@@ -139,6 +139,9 @@ pub const PARAMETERS: &[Parameter] = &[
         .url("interp")
         .group(Teaching)
         .renderer(word!(interpolation: Interpolation)),
+    row("table", "Case table", Kind::Choice(CaseTable::WORDS), "classic")
+        .group(Teaching)
+        .renderer(word!(case_table: CaseTable)),
     row("blend", "Blend", Kind::Choice(Blend::WORDS), "sum").group(Teaching).renderer(word!(blend: Blend)),
     row("saddle", "Saddles", Kind::Choice(Saddle::WORDS), "table")
         .group(Teaching)

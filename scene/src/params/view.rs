@@ -108,6 +108,18 @@ choice!(
 );
 
 choice!(
+    /// How marching cubes joins a cell's ambiguous faces (those whose two inside corners sit on a
+    /// diagonal, which the corners' signs alone cannot decide).
+    CaseTable {
+        /// The classic table's fixed choice, whatever the values.
+        Classic = "classic",
+        /// The asymptotic decider: the bilinear interpolant's saddle on each such face decides, so the
+        /// surface meets every cell face as the interpolant does (the cell's interior is not resolved).
+        Decider = "decider",
+    }
+);
+
+choice!(
     /// How the spheres' fields combine.
     Blend {
         /// The metaball sum: nearby spheres merge.
@@ -273,6 +285,8 @@ pub struct ViewOptions {
     /// Marks the cell faces whose two inside corners sit on a diagonal (the ambiguous faces).
     pub ambiguous: bool,
     pub interpolation: Interpolation,
+    /// How marching cubes joins ambiguous faces.
+    pub case_table: CaseTable,
     pub blend: Blend,
     /// How the field slice's contour joins its saddle squares.
     pub saddle: Saddle,
@@ -314,6 +328,7 @@ impl ViewOptions {
             slice: None,
             ambiguous: false,
             interpolation: Interpolation::Linear,
+            case_table: CaseTable::Classic,
             blend: Blend::Sum,
             saddle: Saddle::Table,
             lights: Lights { point: false, directional: false, spot: false },

@@ -10,7 +10,7 @@ fn corner_number(o: vec3<u32>) -> u32 {
 @vertex
 fn ambiguous_vertex(@builtin(vertex_index) v: u32, @builtin(instance_index) i: u32) -> MarkOut {
     let reference = active_cells[i];
-    let case_index = cell_cases[reference];
+    let case_index = cell_cases[reference] & CASE_BITS;
     let face = v / 4u;
     let axis = face / 2u;
     // The face's corners in order around it.

@@ -110,7 +110,7 @@ fn case_at(p: vec3<f32>) -> u32 {
         return 0u;
     }
     let at = cell % BLOCK_CELLS;
-    return cell_cases[slot * 64u + at.x + BLOCK_CELLS * (at.y + BLOCK_CELLS * at.z)];
+    return cell_cases[slot * 64u + at.x + BLOCK_CELLS * (at.y + BLOCK_CELLS * at.z)] & CASE_BITS;
 }
 
 fn clip_of(p: vec3<f32>) -> vec4<f32> {

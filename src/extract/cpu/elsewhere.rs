@@ -7,18 +7,18 @@ use crate::extract::extractor::{GivenMesh, Job};
 use crate::extract::reference::{Construction, Grid};
 use crate::scene::Sphere;
 use crate::scene::decimal::num;
-use crate::scene::params::view::{Blend, Interpolation, Method};
+use crate::scene::params::view::{Blend, CaseTable, Interpolation, Method};
 use glam::Vec3;
 
-/// Numbers before the spheres: method, iso level, cells per axis, interpolation, blend.
-const HEAD: usize = 5;
+/// Numbers before the spheres: method, iso level, cells per axis, interpolation, blend, case table.
+const HEAD: usize = 6;
 /// Numbers per sphere: centre, radius, charge.
 const PER_SPHERE: usize = 5;
 /// The finest grid a job may ask for (the largest a device holds without level of detail is smaller).
 const MAX_CELLS: f32 = 1024.0;
 
 /// `job` meshed by a mesher of `method`, as numbers: method, iso, cells per axis, interpolation,
-/// blend, then centre, radius and charge of each sphere.
+/// blend, case table, then centre, radius and charge of each sphere.
 pub fn pack(method: Method, job: &Job) -> Vec<f32> {
     let construction = job.construction;
     let mut packed = Vec::with_capacity(HEAD + PER_SPHERE * job.spheres.len());
@@ -28,6 +28,7 @@ pub fn pack(method: Method, job: &Job) -> Vec<f32> {
         job.grid.cells_per_axis as f32,
         construction.interpolation.index() as f32,
         construction.blend.index() as f32,
+        construction.case_table.index() as f32,
     ]);
     for s in job.spheres {
         packed.extend([s.center.x, s.center.y, s.center.z, s.radius, s.charge]);
@@ -90,11 +91,12 @@ fn unpack(packed: &[f32]) -> Result<Unpacked, String> {
             })
     };
     if packed.len() < HEAD || !(packed.len() - HEAD).is_multiple_of(PER_SPHERE) {
-        return Err(format!("a packed mesh job has {} numbers: 5 and then 5 per sphere", packed.len()));
+        return Err(format!("a packed mesh job has {} numbers: 6 and then 5 per sphere", packed.len()));
     }
     let method = [Method::MarchingCubes, Method::SurfaceNets][word(0, Method::WORDS)?];
     let interpolation = [Interpolation::Linear, Interpolation::Midpoint][word(3, Interpolation::WORDS)?];
     let blend = [Blend::Sum, Blend::Max][word(4, Blend::WORDS)?];
+    let case_table = [CaseTable::Classic, CaseTable::Decider][word(5, CaseTable::WORDS)?];
     let cells = packed[2];
     if !((1.0..=MAX_CELLS).contains(&cells) && cells.fract() == 0.0) {
         return Err(format!("a packed mesh job has {} cells per axis", num(cells)));
@@ -109,7 +111,7 @@ fn unpack(packed: &[f32]) -> Result<Unpacked, String> {
         })
         .collect();
     let grid = Grid { cells_per_axis: cells as u32 };
-    Ok((method, spheres, packed[1], grid, Construction { interpolation, blend }))
+    Ok((method, spheres, packed[1], grid, Construction { interpolation, blend, case_table }))
 }
 
 #[cfg(test)]
@@ -120,7 +122,11 @@ mod tests {
     #[test]
     fn a_job_meshed_from_its_numbers_is_the_mesh_of_the_job() {
         let scene = Scene::new(7, 5).unwrap();
-        let construction = Construction { interpolation: Interpolation::Linear, blend: Blend::Sum };
+        let construction = Construction {
+            interpolation: Interpolation::Linear,
+            blend: Blend::Sum,
+            case_table: CaseTable::Decider,
+        };
         let job = Job {
             spheres: scene.spheres(),
             iso: 0.9,
@@ -145,7 +151,8 @@ mod tests {
     fn numbers_that_are_not_a_job_are_refused_with_what_is_wrong() {
         let mut meshers = Meshers::default();
         assert!(meshers.mesh(&[0.0, 1.0]).unwrap_err().contains("2 numbers"));
-        assert!(meshers.mesh(&[7.0, 1.0, 8.0, 0.0, 0.0]).unwrap_err().contains("marching_cubes"));
-        assert!(meshers.mesh(&[0.0, 1.0, 0.5, 0.0, 0.0]).unwrap_err().contains("cells per axis"));
+        assert!(meshers.mesh(&[7.0, 1.0, 8.0, 0.0, 0.0, 0.0]).unwrap_err().contains("marching_cubes"));
+        assert!(meshers.mesh(&[0.0, 1.0, 8.0, 0.0, 0.0, 2.0]).unwrap_err().contains("classic, decider"));
+        assert!(meshers.mesh(&[0.0, 1.0, 0.5, 0.0, 0.0, 0.0]).unwrap_err().contains("cells per axis"));
     }
 }

@@ -3,8 +3,8 @@
 
 use crate::device::{bind_buffers, bindings, compute_module, compute_pipeline, wgsl};
 use crate::extract::buffers::MeshBuffers;
+use crate::extract::decider::decider_table;
 use crate::extract::gpu::scene_buffers::SceneBuffers;
-use crate::extract::tables::{flat_triangle_table, packed_case_table};
 use wgpu::util::DeviceExt;
 
 /// Owns the marching-cubes pipelines, the tables on the GPU, and bind groups for the current buffers.
@@ -13,7 +13,6 @@ pub struct MarchingCubesPass {
     vertices: wgpu::ComputePipeline,
     triangles: wgpu::ComputePipeline,
     finalize: wgpu::ComputePipeline,
-    case_table: wgpu::Buffer,
     triangle_table: wgpu::Buffer,
     groups: Option<[wgpu::BindGroup; 3]>,
 }
@@ -34,14 +33,9 @@ impl MarchingCubesPass {
                 "make_triangles",
             ),
             finalize: compute_pipeline(device, "marching cubes: finalize pipeline", &module, "finalize_draw"),
-            case_table: device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                label: Some("marching cubes: case table"),
-                contents: bytemuck::cast_slice(&packed_case_table()),
-                usage: wgpu::BufferUsages::STORAGE,
-            }),
             triangle_table: device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
                 label: Some("marching cubes: triangle table"),
-                contents: bytemuck::cast_slice(&flat_triangle_table()),
+                contents: bytemuck::cast_slice(decider_table()),
                 usage: wgpu::BufferUsages::STORAGE,
             }),
             groups: None,
@@ -75,7 +69,6 @@ impl MarchingCubesPass {
                     (bindings::COUNTERS, &mesh.counters),
                     (bindings::ACTIVE_BLOCKS, &mesh.active_blocks),
                     (bindings::BLOCK_SLOTS, &mesh.block_slots),
-                    (bindings::CASE_TABLE, &self.case_table),
                     (bindings::TRIANGLE_TABLE, &self.triangle_table),
                     (bindings::CELL_CASES, &mesh.cell_cases),
                     (bindings::EDGE_VERTICES, &mesh.edge_vertices),

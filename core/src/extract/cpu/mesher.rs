@@ -12,7 +12,7 @@
 use crate::extract::field::{BLOCK_CELLS, Spheres, sample_run};
 use crate::extract::mesh::IndexedMesh;
 use crate::extract::reference::{self, Construction, Grid};
-use crate::extract::tables::{CASE_TRIANGLES, EDGE_TABLE, TRI_TABLE};
+use crate::extract::tables::EDGE_TABLE;
 use crate::scene::params::view::Blend;
 use crate::scene::{BOX_HALF_EXTENT, Sphere};
 use glam::Vec3;
@@ -272,12 +272,22 @@ impl CpuMesher {
                         continue;
                     }
                     self.stats.active_cells += 1;
-                    let row = &TRI_TABLE[case];
-                    for t in 0..CASE_TRIANGLES[case] as usize {
-                        // The table winds clockwise seen from outside; emit counter-clockwise.
+                    let values = [
+                        lo[corners[0]],
+                        lo[corners[1]],
+                        lo[corners[2]],
+                        lo[corners[3]],
+                        hi[corners[0]],
+                        hi[corners[1]],
+                        hi[corners[2]],
+                        hi[corners[3]],
+                    ];
+                    let mut triangles = [[0; 3]; 10];
+                    let count = construction.cell_triangles(case, values, iso, &mut triangles);
+                    for t in &triangles[..count] {
+                        // The tables wind clockwise seen from outside; emit counter-clockwise.
                         for k in [0, 2, 1] {
-                            let edge = row[3 * t + k] as usize;
-                            let id = self.vertex_on(spheres, edge, [x, y, z], iso, grid, construction);
+                            let id = self.vertex_on(spheres, t[k], [x, y, z], iso, grid, construction);
                             self.indices.push(id);
                         }
                     }
