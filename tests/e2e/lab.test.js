@@ -5,7 +5,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import {
-  useServerAndBrowser, openClosedAfterEach, settledTriangles, frameDrawn, screenshot, differingFraction,
+  useServerAndBrowser, openClosedAfterEach, openPanelGroups, settledTriangles, frameDrawn, screenshot, differingFraction,
 } from './helpers.js';
 
 useServerAndBrowser();
@@ -105,11 +105,15 @@ test('table=decider joins the two blobs the interpolant joins, on the CPU and th
   await page.waitForFunction(() => location.search.includes('table=decider'), null, { timeout: 5000 });
   // The GPU's compute passes make the same mesh.
   await page.$eval('metaballs-view', (e) => e.setAttribute('mesher', 'gpu'));
-  await page.waitForFunction(() => document.querySelector('metaballs-view').meshSource === 'gpu', null, { timeout: 30000 })
-    .catch(() => {});
+  await page.waitForFunction(() => document.querySelector('metaballs-view').stats.mesher === 'gpu', null, { timeout: 30000 });
   await frameDrawn(page);
   await frameDrawn(page);
   assert.deepEqual(await shape(), [57, 54408]);
+  await page.selectOption('#table', 'classic');
+  await page.waitForFunction(() => document.querySelector('metaballs-view').stats.triangles === 54404, null, { timeout: 30000 });
+  assert.deepEqual(await shape(), [58, 54404]);
+  await page.selectOption('#table', 'decider');
+  await page.waitForFunction(() => document.querySelector('metaballs-view').stats.triangles === 54408, null, { timeout: 30000 });
   // A bad value keeps the table in use and says what is accepted.
   await page.$eval('metaballs-view', (e) => e.setAttribute('table', 'mc99'));
   await page.waitForFunction(() => document.querySelector('metaballs-view').shadowRoot
