@@ -89,7 +89,7 @@ export class FigureLook {
     this.#poster.addEventListener('load', () => this.#resolvePrintable());
   }
 
-  /** Resolves once the figure has a picture for print: its poster, or a picture of a drawn frame. */
+  /** Resolves once the figure has a picture for print, decoded: its poster, or a picture of a drawn frame. */
   printable() { return this.#printable; }
 
   /** Shows `url` (an image) until the first frame, and in print until a frame is drawn; '' for none. */
@@ -190,13 +190,20 @@ export class FigureLook {
     const picture = copy
       ? copy.then((pixels) => pngOf(pixels, width, height))
       : new Promise((resolve) => this.#canvas.toBlob(resolve));
-    picture.catch(() => null).then((blob) => {
+    picture.catch(() => null).then(async (blob) => {
+      if (blob) {
+        // Decoded before it takes the last one's place, so that the print picture is never blank
+        // while the next one loads, and printable once it can be printed.
+        const url = URL.createObjectURL(blob);
+        const next = new Image();
+        next.src = url;
+        await next.decode().catch(() => {});
+        if (this.#printUrl) URL.revokeObjectURL(this.#printUrl);
+        this.#printUrl = url;
+        this.#print.src = url;
+        this.#resolvePrintable();
+      }
       this.#encoding = false;
-      if (!blob) return;
-      if (this.#printUrl) URL.revokeObjectURL(this.#printUrl);
-      this.#printUrl = URL.createObjectURL(blob);
-      this.#print.src = this.#printUrl;
-      this.#resolvePrintable();
     });
   }
 
