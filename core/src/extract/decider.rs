@@ -31,15 +31,27 @@ pub fn saddle_above(f: [f32; 4], iso: f32) -> bool {
 
 /// Bit `face` set for each ambiguous face of `case` (its inside corners on a diagonal).
 pub fn ambiguous_faces(case: usize) -> u8 {
-    let mut mask = 0;
-    for (face, corners) in FACE_CORNERS.iter().enumerate() {
-        let s = corners.map(|c| (case >> c) & 1);
-        if s[0] == s[2] && s[1] == s[3] && s[0] != s[1] {
-            mask |= 1 << face;
-        }
-    }
-    mask
+    AMBIGUOUS_FACES[case]
 }
+
+/// `ambiguous_faces` of every case.
+const AMBIGUOUS_FACES: [u8; 256] = {
+    let mut table = [0; 256];
+    let mut case = 0;
+    while case < 256 {
+        let mut face = 0;
+        while face < 6 {
+            let c = FACE_CORNERS[face];
+            let s = [(case >> c[0]) & 1, (case >> c[1]) & 1, (case >> c[2]) & 1, (case >> c[3]) & 1];
+            if s[0] == s[2] && s[1] == s[3] && s[0] != s[1] {
+                table[case] |= 1 << face;
+            }
+            face += 1;
+        }
+        case += 1;
+    }
+    table
+};
 
 /// The choices the decider makes on a cell with corner values `values` (corner order) and case `case`:
 /// bit `face` set where an ambiguous face's inside corners are joined.
