@@ -73,7 +73,7 @@ async fn the_renderer_draws_a_non_blank_image_offscreen() {
 fn cpu_mesher_equals_the_oracle_in_wasm() {
     use metaballs::extract::cpu::mesher::CpuMesher;
     use metaballs::extract::reference::Construction;
-    use metaballs::scene::params::view::{Blend, Interpolation};
+    use metaballs::scene::params::view::{Blend, CaseTable, Interpolation};
     // The wasm build vectorises the field loops (simd128): the results must still be the oracle's, bit
     // for bit. Seeded scenes, one mesher reused, both constructions.
     let mut mesher = CpuMesher::new();
@@ -84,7 +84,11 @@ fn cpu_mesher_equals_the_oracle_in_wasm() {
         scene.step(1.7).unwrap();
         for construction in [
             Construction::default(),
-            Construction { interpolation: Interpolation::Midpoint, blend: Blend::Max },
+            Construction {
+                interpolation: Interpolation::Midpoint,
+                blend: Blend::Max,
+                case_table: CaseTable::Decider,
+            },
         ] {
             let grid = Grid { cells_per_axis: resolution };
             mesher.mesh(scene.spheres(), iso, grid, construction);
