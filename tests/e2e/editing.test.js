@@ -160,6 +160,8 @@ test('on touch, a long press drags a sphere or adds one, and a tap selects', asy
   const a = await onScreen(page, 0);
   await touch('touchStart', a.x, a.y);
   await touch('touchEnd');
+  // The tap is taken in the figure's next frame.
+  await page.waitForFunction(() => window.metaballs.element.selectedSphere === 0, null, { timeout: 5000 }).catch(() => {});
   assert.equal(await page.evaluate(() => window.metaballs.element.selectedSphere), 0);
   await context.close();
 });
