@@ -46,7 +46,7 @@ const fn edge_table() -> [u16; 256] {
     table
 }
 
-/// The most triangles a single cell can emit.
+/// The most triangles a single cell emits under the classic table (ten under the decider's).
 pub const MAX_TRIANGLES_PER_CELL: usize = 5;
 
 /// The case table as the shader reads it: crossed-edge mask in bits 0..11, triangle count from bit 16.
