@@ -35,6 +35,8 @@ fn start() {
         console_error_panic_hook::hook(info);
         show_panic(&info.to_string());
     }));
+    // The marching-cubes tables are made now, once, rather than by whichever frame first meshes.
+    crate::extract::decider::decider_table();
 }
 
 /// Resolves in a later browser task (a zero-delay timer), letting the browser run in between.

@@ -86,6 +86,7 @@ pub fn decider_table() -> &'static [u32] {
             }
         }
         words.extend(triangles);
+        words.shrink_to_fit();
         words
     })
 }
