@@ -22,9 +22,13 @@ const FLAG_MIDPOINT: u32 = 1u;
 const FLAG_MAX: u32 = 2u;
 const FLAG_DECIDER: u32 = 4u;
 
-// A cell's word in cell_cases: its case in bits 0..7 and, with the decider, its choices on its
-// ambiguous faces (in face order) from bit 8.
+// A cell's word in cell_cases: its case in bits 0..7; from bit 8 (CHOSEN_SHIFT), with the decider, the
+// choices its triangles follow on its ambiguous faces, one bit per ambiguous face in face order; and
+// from bit 16 (DECIDED_SHIFT), in every mode, the decider's choice on each face (bit 16 + face, set
+// where an ambiguous face's inside corners are joined), for the ambiguous view.
 const CASE_BITS: u32 = 0xffu;
+const CHOSEN_SHIFT: u32 = 8u;
+const DECIDED_SHIFT: u32 = 16u;
 
 fn blend_max() -> bool {
     return (grid.flags & FLAG_MAX) != 0u;

@@ -147,7 +147,7 @@ fn plan_overlays() {
     set_draw(2u, 2u, vertex_count);
     set_draw(3u, 24u, cell_count);
     set_draw(4u, 24u, min(atomicLoad(&counters.active_blocks), grid.max_blocks));
-    set_draw(5u, 24u, cell_count);
+    set_draw(5u, 72u, cell_count);
     set_draw(6u, 2u, min(atomicLoad(&overlays.segment_count), 2u * n * n));
     // Level of detail's kept blocks: 12 edges and two diagonals on each of six faces.
     set_draw(7u, 48u, min(atomicLoad(&counters.active_blocks), grid.max_blocks));

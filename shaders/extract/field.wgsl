@@ -56,8 +56,10 @@ fn classify_cells(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_in
         }
     }
     var entry = case_index;
-    if ((grid.flags & FLAG_DECIDER) != 0u && has_ambiguous_face(case_index)) {
-        entry |= face_choices(slot, at, case_index);
+    if (has_ambiguous_face(case_index)) {
+        let choices = face_choices(slot, at, case_index);
+        let decider = (grid.flags & FLAG_DECIDER) != 0u;
+        entry |= select(choices & (0x3fu << DECIDED_SHIFT), choices, decider);
     }
     cell_cases[slot * 64u + local] = entry;
     if (case_index != 0u && case_index != 255u) {
@@ -97,9 +99,11 @@ fn has_ambiguous_face(case_index: u32) -> bool {
         || diagonal(case_index, 0u, 1u, 2u, 3u) || diagonal(case_index, 4u, 5u, 6u, 7u);
 }
 
-// From bit 8, the decider's choice on each of the cell's ambiguous faces in face order (face
-// 2 · axis + side, corners (u, v) = (0, 0), (1, 0), (1, 1), (0, 1) with u, v the next two axes:
-// FACE_CORNERS in core/src/extract/tables.rs): set where its inside corners are joined.
+// The decider's choice on each of the cell's ambiguous faces (face 2 · axis + side, corners (u, v) =
+// (0, 0), (1, 0), (1, 1), (0, 1) with u, v the next two axes: FACE_CORNERS in
+// core/src/extract/tables.rs), set where its inside corners are joined: from CHOSEN_SHIFT one bit per
+// ambiguous face in face order (the variant marching_cubes.wgsl draws), and from DECIDED_SHIFT one bit
+// per face.
 fn face_choices(slot: u32, at: vec3<u32>, case_index: u32) -> u32 {
     var choices = 0u;
     var ambiguous = 0u;
@@ -123,11 +127,12 @@ fn face_choices(slot: u32, at: vec3<u32>, case_index: u32) -> u32 {
                 let p = at + offsets[k];
                 f[k] = block_values[slot * 125u + p.x + BLOCK_POINTS * (p.y + BLOCK_POINTS * p.z)];
             }
-            choices |= select(0u, 1u << ambiguous, saddle_above(f));
+            let joined = saddle_above(f);
+            choices |= select(0u, (1u << (ambiguous + CHOSEN_SHIFT)) | (1u << (face + DECIDED_SHIFT)), joined);
             ambiguous += 1u;
         }
     }
-    return choices << 8u;
+    return choices;
 }
 
 struct DispatchIndirect {

@@ -140,7 +140,7 @@ fn make_triangles(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_in
     let local = reference % 64u;
     // The cell's case and, with the decider, its choices on its ambiguous faces pick its variant.
     let cell_entry = cell_cases[reference];
-    let variant = triangle_table[triangle_table[cell_entry & CASE_BITS] + (cell_entry >> 8u)];
+    let variant = triangle_table[triangle_table[cell_entry & CASE_BITS] + ((cell_entry >> CHOSEN_SHIFT) & 0x3fu)];
     let first_triangle = variant >> 8u;
     let triangle_count = variant & 255u;
     if (triangle_count == 0u) {

@@ -8,6 +8,7 @@ use crate::common;
 use common::*;
 use glam::{UVec3, Vec3};
 use metaballs::draw::slice;
+use metaballs::extract::decider;
 use metaballs::extract::reference::{self, Construction, Grid};
 use metaballs::offscreen::{Offscreen, write_png};
 use metaballs::scene::params::view::{Blend, Interpolation, Saddle, Slice};
@@ -371,12 +372,13 @@ fn the_inspector_reads_the_picked_cell_as_the_oracle_does() {
     });
 }
 
-/// Faces of crossed cells whose two inside corners sit on a diagonal, by the oracle.
-fn oracle_ambiguous_faces(spheres: &[metaballs::Sphere], iso: f32, grid: Grid) -> usize {
+/// Faces of crossed cells whose two inside corners sit on a diagonal, by the oracle, and how many of
+/// them the asymptotic decider joins.
+fn oracle_ambiguous_faces(spheres: &[metaballs::Sphere], iso: f32, grid: Grid) -> (usize, usize) {
     let n = grid.cells_per_axis;
     let values = reference::sample_field(spheres, grid);
-    let inside = |p: UVec3| values[grid.point_index(p)] > iso;
-    let mut count = 0;
+    let value = |p: UVec3| values[grid.point_index(p)];
+    let (mut count, mut joined) = (0, 0);
     for z in 0..n {
         for y in 0..n {
             for x in 0..n {
@@ -389,16 +391,20 @@ fn oracle_ambiguous_faces(spheres: &[metaballs::Sphere], iso: f32, grid: Grid) -
                             o[axis] = side;
                             o[u] = a;
                             o[v] = b;
-                            inside(cell + UVec3::from_array(o))
+                            value(cell + UVec3::from_array(o))
                         };
-                        let (c00, c10, c11, c01) = (corner(0, 0), corner(1, 0), corner(1, 1), corner(0, 1));
-                        count += (c00 == c11 && c10 == c01 && c00 != c10) as usize;
+                        let f = [corner(0, 0), corner(1, 0), corner(1, 1), corner(0, 1)];
+                        let inside = f.map(|f| f > iso);
+                        if inside[0] == inside[2] && inside[1] == inside[3] && inside[0] != inside[1] {
+                            count += 1;
+                            joined += decider::saddle_above(f, iso) as usize;
+                        }
                     }
                 }
             }
         }
     }
-    count
+    (count, joined)
 }
 
 #[test]
@@ -409,35 +415,50 @@ fn ambiguous_faces_are_marked_where_the_oracle_finds_them() {
     with_renderer(settings, WIDTH, HEIGHT, |o| {
         let grid = Grid { cells_per_axis: 16 };
         let magenta = |p: &[u8]| p[0] > 200 && p[2] > 170 && p[0] as i32 - p[1] as i32 > 80;
+        // The joining the triangles follow: amber where the decider agrees, red where it does not.
+        let amber = |p: &[u8]| p[0] > 200 && p[1] > 130 && p[2] < 60;
+        let red = |p: &[u8]| p[0] > 200 && p[1] < 40 && p[2] < 40;
         let mut marked = Vec::new();
-        for apart in [false, true] {
-            let step = if apart { 6 } else { 1 };
-            let a = grid.point(UVec3::new(8, 8, 8)) + Vec3::splat(0.003);
-            let b = grid.point(UVec3::new(8 + step, 8 + step, 8)) + Vec3::splat(0.003);
-            let spheres = vec![sphere(a.to_array(), 0.07), sphere(b.to_array(), 0.07)];
+        // Apart; on two diagonal corners of a face, which the decider joins and the classic table
+        // cuts; and off those corners, away from the face, each corner barely inside its sphere,
+        // which the decider cuts too (the face's saddle, the mean of its values, is below the level).
+        let h = grid.cell_size();
+        let corner = |x, y| grid.point(UVec3::new(x, y, 8));
+        let off = Vec3::new(0.5, 0.5, 0.0) * h;
+        let scenes = [
+            ("apart", corner(8, 8) + 0.003, corner(14, 14) + 0.003, 0.07),
+            ("on corners", corner(8, 8) + 0.003, corner(9, 9) + 0.003, 0.07),
+            ("off corners", corner(8, 8) - off, corner(9, 9) + off, 0.5 * 2f32.sqrt() * h * 1.02),
+        ];
+        for (scene, a, b, radius) in scenes {
+            let spheres = vec![sphere(a.to_array(), radius), sphere(b.to_array(), radius)];
             o.renderer.set_scene(Scene::from_spheres(spheres.clone()).unwrap());
-            let faces = oracle_ambiguous_faces(&spheres, 1.0, grid);
-            o.renderer
-                .set_settings(o.renderer.settings().with_parameter("ambiguous", "on").unwrap())
-                .unwrap();
-            let pixels = o.render_rgba();
-            write_png(
-                &output_dir().join(format!("view_ambiguous_apart_{apart}.png")),
-                WIDTH,
-                HEIGHT,
-                &pixels,
-            )
-            .unwrap();
-            marked.push((faces, fraction(&pixels, magenta)));
+            let (faces, joined) = oracle_ambiguous_faces(&spheres, 1.0, grid);
+            for table in ["classic", "decider"] {
+                let settings = o.renderer.settings().with_parameter("ambiguous", "on").unwrap();
+                o.renderer.set_settings(settings.with_parameter("table", table).unwrap()).unwrap();
+                let pixels = o.render_rgba();
+                let name = format!("view_ambiguous_{}_{table}.png", scene.replace(' ', "_"));
+                write_png(&output_dir().join(name), WIDTH, HEIGHT, &pixels).unwrap();
+                let seen = [magenta, amber, red].map(|test| fraction(&pixels, test));
+                marked.push((scene, radius, table, faces, joined, seen));
+            }
         }
-        let (near, apart) = (marked[0], marked[1]);
+        for &(scene, radius, table, faces, joined, [crosses, agreed, disagreed]) in &marked {
+            let what = format!(
+                "{scene}, radius {radius}, {table}: {faces} ambiguous faces, {joined} joined \
+                 by the decider; crosses {crosses}, agreeing {agreed}, disagreeing {disagreed}"
+            );
+            assert_eq!(faces == 0, crosses == 0.0, "{what}");
+            // Classic cuts every face apart: red exactly where the decider would join.
+            let wrong = if table == "classic" { joined } else { 0 };
+            assert_eq!(wrong > 0, disagreed > 0.0, "{what}");
+            assert_eq!(faces > wrong, agreed > 0.0, "{what}");
+        }
+        assert_eq!(marked[0].3, 0, "separate spheres have no ambiguous face");
         assert!(
-            near.0 > 0 && near.1 > 0.0,
-            "diagonal spheres: {} ambiguous faces, {} marked",
-            near.0,
-            near.1
+            marked[2].4 > 0 && marked[4].4 < marked[4].3,
+            "the scenes hold faces the decider joins and faces it cuts: {marked:?}"
         );
-        assert_eq!(apart.0, 0, "separate spheres have no ambiguous face");
-        assert_eq!(apart.1, 0.0, "and none is marked");
     });
 }
