@@ -33,6 +33,7 @@ import { Playback } from './lib/features/playback.js';
 import { SceneFiles, spheresText } from './lib/features/scene-files.js';
 import { SphereEditor } from './lib/features/editor.js';
 import { Sync } from './lib/features/sync.js';
+import { TableChange } from './lib/features/table-change.js';
 import { TopologyWatch } from './lib/features/topology.js';
 
 // The setting that holds spheres placed by hand, as text.
@@ -40,7 +41,7 @@ const SPHERE_LIST = nameOfKind('spheres');
 
 // The features every figure has, in the order they hear of changes and frames.
 const FEATURES = [FigureSize, FigureDetail, Look, Guard, Hud, Playback, Camera, Inspector, SphereEditor,
-  SceneFiles, TopologyWatch, Sync, ErrorPlot, Panel];
+  SceneFiles, TopologyWatch, TableChange, Sync, ErrorPlot, Panel];
 
 export class MetaballsView extends FigureBase {
   /** GPU memory held by every element's buffers and targets, in bytes. */

@@ -104,6 +104,11 @@ impl Renderer {
             .then(|| elsewhere::pack(capabilities.method, &self.job_of(self.scene.spheres())))
     }
 
+    /// The frame's scene as a job for the CPU's marching cubes, whichever extractor runs.
+    pub fn scene_job(&self) -> Vec<f32> {
+        elsewhere::pack(Method::MarchingCubes, &self.job_of(self.scene.spheres()))
+    }
+
     /// A mesh made elsewhere for the job `cpu_job` gave: the next frame draws it where its job is still
     /// the frame's (else that frame meshes on its own).
     pub fn give_mesh(&mut self, mesh: GivenMesh) {

@@ -4,9 +4,11 @@
 //! from the spheres with the oracle's field, on a click and for the selected cell only: nothing is
 //! read back from the GPU.
 
+use crate::extract::decider::{ambiguous_faces, decided_triangles, saddle_above};
 use crate::extract::reference::{Construction, Grid, blended_field_at};
-use crate::extract::tables::{CORNER_OFFSETS, EDGE_CORNERS, EDGE_TABLE, TRI_TABLE};
+use crate::extract::tables::{CORNER_OFFSETS, EDGE_CORNERS, EDGE_TABLE, FACE_CORNERS};
 use crate::scene::Sphere;
+use crate::scene::params::view::CaseTable;
 use crate::teach::case_classes::case_classes;
 use glam::{UVec3, Vec3};
 
@@ -21,6 +23,20 @@ pub struct EdgeCrossing {
     pub vertex: Vec3,
 }
 
+/// An ambiguous face of the inspected cell (its inside corners on a diagonal) and how it is joined.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FaceDecision {
+    /// Face number, 2 · axis + side (`FACE_CORNERS` in core/src/extract/tables.rs).
+    pub face: u8,
+    /// The saddle value of the bilinear interpolant of the face's four values, (f00 f11 − f10 f01) /
+    /// (f00 + f11 − f10 − f01); `None` where the denominator is 0 (no saddle: never joined).
+    pub saddle: Option<f32>,
+    /// The asymptotic decider's choice: the inside corners joined across the face (saddle above iso).
+    pub decider_joins: bool,
+    /// The choice the cell's triangles follow (the decider's, or cut apart under the classic table).
+    pub joined: bool,
+}
+
 /// What marching cubes decides in one cell.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CellReport {
@@ -32,9 +48,12 @@ pub struct CellReport {
     pub case: u8,
     /// Its class among the 15 (src/teach/case_classes.rs).
     pub class: u8,
-    /// The triangles the case emits, as edge numbers, wound as drawn.
+    /// The triangles the cell emits under the construction's case table, as edge numbers, wound as
+    /// drawn.
     pub triangles: Vec<[u8; 3]>,
     pub edges: Vec<EdgeCrossing>,
+    /// Its ambiguous faces, in face order.
+    pub faces: Vec<FaceDecision>,
 }
 
 /// Inspects `cell` (its coordinates must be below `grid.cells_per_axis`).
@@ -51,11 +70,28 @@ pub fn inspect(
         if grid.is_boundary(id) { 0.0 } else { blended_field_at(spheres, grid.point(id), construction.blend) }
     });
     let case = (0..8).fold(0u8, |m, c| m | ((corners[c] > iso) as u8) << c);
-    let triangles = TRI_TABLE[case as usize]
-        .chunks(3)
-        .take_while(|t| t[0] >= 0)
-        .map(|t| [t[0] as u8, t[2] as u8, t[1] as u8])
-        .collect();
+    let decided = construction.case_table == CaseTable::Decider;
+    let mut faces = Vec::new();
+    let mut joined = 0;
+    for (face, c) in FACE_CORNERS.iter().enumerate() {
+        if ambiguous_faces(case as usize) & (1 << face) == 0 {
+            continue;
+        }
+        let f = [corners[c[0]], corners[c[1]], corners[c[2]], corners[c[3]]];
+        let denominator = (f[0] + f[2]) - (f[1] + f[3]);
+        let saddle = (denominator != 0.0).then(|| (f[0] * f[2] - f[1] * f[3]) / denominator);
+        let decider_joins = saddle_above(f, iso);
+        joined |= ((decided && decider_joins) as u8) << face;
+        faces.push(FaceDecision {
+            face: face as u8,
+            saddle,
+            decider_joins,
+            joined: decided && decider_joins,
+        });
+    }
+    // The triangles `Construction::cell_triangles` gives for these choices.
+    let triangles =
+        decided_triangles(case as usize, joined).map(|t| [t[0] as u8, t[2] as u8, t[1] as u8]).collect();
     let edges = (0..12)
         .filter(|&e| EDGE_TABLE[case as usize] >> e & 1 == 1)
         .map(|e| {
@@ -65,7 +101,7 @@ pub fn inspect(
             EdgeCrossing { edge: e as u8, t, vertex: pa + (pb - pa) * t }
         })
         .collect();
-    CellReport { cell, corners, case, class: case_classes()[case as usize], triangles, edges }
+    CellReport { cell, corners, case, class: case_classes()[case as usize], triangles, edges, faces }
 }
 
 /// What a ray picks.
@@ -202,6 +238,50 @@ mod tests {
         let miss = Vec3::new(0.9, 0.9, 3.0);
         for target in [Target::Surface, Target::CrossedCell] {
             assert_eq!(pick(&spheres, 1.0, grid, Construction::default(), miss, -Vec3::Z, target), None);
+        }
+    }
+
+    /// The inspector shows the triangles the mesher draws: over every cell, its triangles are the
+    /// oracle mesh's, under both case tables, in a scene whose ambiguous faces the decider joins.
+    #[test]
+    fn the_inspected_triangles_are_the_drawn_ones_under_both_tables() {
+        use crate::extract::reference::extract_with;
+        use std::collections::BTreeSet;
+        let grid = Grid { cells_per_axis: 16 };
+        let at = |x, y| grid.point(UVec3::new(x, y, 8)) + 0.003;
+        let sphere = |center| Sphere { center, radius: 0.07, velocity: Vec3::ZERO, charge: 1.0 };
+        let spheres = [sphere(at(8, 8)), sphere(at(9, 9))];
+        // A triangle as its edges' ids, turned to start at its least (winding kept).
+        let key = |t: [u64; 3]| {
+            let k = (0..3).min_by_key(|&k| t[k]).unwrap();
+            [t[k], t[(k + 1) % 3], t[(k + 2) % 3]]
+        };
+        for case_table in [CaseTable::Classic, CaseTable::Decider] {
+            let construction = Construction { case_table, ..Construction::default() };
+            let mesh = extract_with(&spheres, 1.0, grid, construction);
+            let drawn: BTreeSet<_> = mesh.edge_ids.chunks(3).map(|t| key([t[0], t[1], t[2]])).collect();
+            let mut inspected = BTreeSet::new();
+            let mut joined = 0;
+            for id in (0..16u32.pow(3)).map(|i| UVec3::new(i % 16, i / 16 % 16, i / 256)) {
+                let report = inspect(&spheres, 1.0, grid, construction, id);
+                let edge_id = |e: u8| {
+                    let [a, b] = EDGE_CORNERS[e as usize];
+                    let (ia, ib) = (
+                        id + UVec3::from_array(CORNER_OFFSETS[a]),
+                        id + UVec3::from_array(CORNER_OFFSETS[b]),
+                    );
+                    let axis = (0..3).find(|&i| ia[i] != ib[i]).unwrap() as u64;
+                    grid.point_index(ia) as u64 * 3 + axis
+                };
+                inspected.extend(report.triangles.iter().map(|t| key(t.map(edge_id))));
+                for face in &report.faces {
+                    assert!(face.saddle.is_some_and(|s| s > 1.0) && face.decider_joins, "{face:?}");
+                    assert_eq!(face.joined, case_table == CaseTable::Decider);
+                    joined += 1;
+                }
+            }
+            assert!(joined > 0, "the scene has ambiguous faces");
+            assert_eq!(inspected, drawn, "{case_table:?}");
         }
     }
 }

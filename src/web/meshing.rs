@@ -13,18 +13,25 @@ thread_local! {
     static MESHERS: RefCell<Meshers> = RefCell::default();
 }
 
-/// Meshes a job `View::cpu_job` packed: `[vertices (Float32Array), indices (Uint32Array), active
-/// blocks, active cells]`, for `View::give_mesh`.
+/// Meshes a job `View::cpu_job` packed: `[vertices (Float32Array), indices
+/// (Uint32Array), active blocks, active cells, decided cells]`, the first four for `View::give_mesh`;
+/// the last (Uint32Array, x, y, z of each in turn), with marching cubes, the cells whose triangles the
+/// asymptotic decider changes (`CpuMesher::decided_cells`).
 #[wasm_bindgen]
 pub fn mesh_job(packed: &[f32]) -> Result<js_sys::Array, JsError> {
-    let mesh = MESHERS.with(|meshers| meshers.borrow_mut().mesh(packed)).map_err(js_error)?;
-    let [blocks, cells] = mesh.counts;
-    Ok(js_sys::Array::of4(
-        &js_sys::Float32Array::from(mesh.vertices.as_slice()),
-        &js_sys::Uint32Array::from(mesh.indices.as_slice()),
-        &blocks.into(),
-        &cells.into(),
-    ))
+    MESHERS.with(|meshers| {
+        let mut meshers = meshers.borrow_mut();
+        let mesh = meshers.mesh(packed).map_err(js_error)?;
+        let [blocks, cells] = mesh.counts;
+        let out = js_sys::Array::of4(
+            &js_sys::Float32Array::from(mesh.vertices.as_slice()),
+            &js_sys::Uint32Array::from(mesh.indices.as_slice()),
+            &blocks.into(),
+            &cells.into(),
+        );
+        out.push(&js_sys::Uint32Array::from(meshers.decided_cells().as_flattened()));
+        Ok(out)
+    })
 }
 
 /// The shape of a mesh of `vertex_count` vertices and `triangles` (three indices each, as
@@ -46,9 +53,11 @@ impl View {
         self.renderer.update(dt).map_err(js_error)
     }
 
-    /// The next frame's mesh job as numbers, when a mesher on the CPU makes it (else none).
-    pub fn cpu_job(&self) -> Option<Vec<f32>> {
-        self.renderer.cpu_job()
+    /// The next frame's mesh job as numbers, when a mesher on the CPU makes it (else none); with
+    /// `any`, the frame's scene as a job for marching cubes on the CPU whichever mesher draws it (for
+    /// the cells the decider changes, from `mesh_job`).
+    pub fn cpu_job(&self, any: bool) -> Option<Vec<f32>> {
+        if any { Some(self.renderer.scene_job()) } else { self.renderer.cpu_job() }
     }
 
     /// The mesh `mesh_job` made of `job`: the next frame draws it while its job is still the frame's.

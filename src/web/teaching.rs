@@ -2,8 +2,9 @@
 //! report) and the case gallery's data.
 
 use super::{View, js_error};
+use crate::extract::decider::decided_triangles;
 use crate::extract::reference::Construction;
-use crate::extract::tables::{CASE_TRIANGLES, CORNER_OFFSETS, EDGE_CORNERS, TRI_TABLE};
+use crate::extract::tables::{CASE_TRIANGLES, CORNER_OFFSETS, EDGE_CORNERS};
 use crate::scene::params::view::Interpolation;
 use crate::teach::case_classes::{CLASS_NAMES, CLASS_REPRESENTATIVES, case_classes};
 use crate::teach::error::error_at;
@@ -21,12 +22,11 @@ fn numbers<T: Into<JsValue> + Copy>(values: &[T]) -> JsValue {
 
 /// The triangles of `case` as edge numbers, wound as drawn.
 fn case_triangles(case: u8) -> JsValue {
-    TRI_TABLE[case as usize]
-        .chunks(3)
-        .take_while(|t| t[0] >= 0)
-        .map(|t| numbers(&[t[0] as u32, t[2] as u32, t[1] as u32]))
-        .collect::<js_sys::Array>()
-        .into()
+    let triangles = js_sys::Array::new();
+    for t in decided_triangles(case as usize, 0) {
+        triangles.push(&numbers(&[t[0] as u32, t[2] as u32, t[1] as u32]));
+    }
+    triangles.into()
 }
 
 fn report_object(report: &CellReport) -> JsValue {
@@ -37,7 +37,20 @@ fn report_object(report: &CellReport) -> JsValue {
     set(&object, "bits", format!("{:08b}", report.case).into());
     set(&object, "class", report.class.into());
     set(&object, "className", CLASS_NAMES[report.class as usize].into());
-    set(&object, "triangles", case_triangles(report.case));
+    let (triangles, faces) = (js_sys::Array::new(), js_sys::Array::new());
+    for t in &report.triangles {
+        triangles.push(&numbers(t));
+    }
+    for f in &report.faces {
+        let face = js_sys::Object::new();
+        set(&face, "face", f.face.into());
+        set(&face, "saddle", f.saddle.map_or(JsValue::NULL, JsValue::from));
+        set(&face, "deciderJoins", f.decider_joins.into());
+        set(&face, "joined", f.joined.into());
+        faces.push(&face);
+    }
+    set(&object, "triangles", triangles.into());
+    set(&object, "faces", faces.into());
     let edges: js_sys::Array = report
         .edges
         .iter()

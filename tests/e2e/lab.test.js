@@ -103,6 +103,20 @@ test('table=decider joins the two blobs the interpolant joins, on the CPU and th
   await page.waitForFunction(() => document.querySelector('metaballs-view').stats.triangles === 54408, null, { timeout: 30000 });
   assert.deepEqual(await shape(), [57, 54408]);
   await page.waitForFunction(() => location.search.includes('table=decider'), null, { timeout: 5000 });
+  // A notice names the cells that changed and says how the blob count went.
+  const told = (table) => page.waitForFunction((t) => {
+    const text = document.querySelector('metaballs-view').shadowRoot.getElementById('notice').textContent;
+    return text.startsWith(`table=${t}:`) && text;
+  }, table, { timeout: 30000 }).then((handle) => handle.jsonValue());
+  const decided = await told('decider');
+  assert.match(decided, /^table=decider: \d+ cells? changed, each with a face the decider joins and the classic table cuts: \(\d+, \d+, \d+\)/);
+  assert.match(decided, /blobs 58 → 57$/);
+  // The inspector shows the cell's ambiguous face: its saddle, the decider's choice, the joining drawn.
+  const cell = decided.match(/\((\d+), (\d+), (\d+)\)/).slice(1).map(Number);
+  const report = await page.$eval('metaballs-view', (e, c) => e.inspectCell(...c), cell);
+  assert.ok(report.faces.some((f) => f.deciderJoins && f.joined && f.saddle > 1.5), JSON.stringify(report.faces));
+  const faces = () => page.$eval('metaballs-view', (e) => e.shadowRoot.querySelector('#inspector .faces').textContent);
+  assert.match(await faces(), /saddle [\d.]+ > 1\.50: the decider joins its inside corners; drawn joined/);
   // The GPU's compute passes make the same mesh.
   await page.$eval('metaballs-view', (e) => e.setAttribute('mesher', 'gpu'));
   await page.waitForFunction(() => document.querySelector('metaballs-view').stats.mesher === 'gpu', null, { timeout: 30000 });
@@ -112,6 +126,11 @@ test('table=decider joins the two blobs the interpolant joins, on the CPU and th
   await page.selectOption('#table', 'classic');
   await page.waitForFunction(() => document.querySelector('metaballs-view').stats.triangles === 54404, null, { timeout: 30000 });
   assert.deepEqual(await shape(), [58, 54404]);
+  assert.match(await told('classic'), /cells? changed.*blobs 57 → 58$/);
+  // Under the classic table the inspected face is cut apart, against the decider: marked.
+  await page.$eval('metaballs-view', (e, c) => e.inspectCell(...c), cell);
+  assert.match(await faces(), /the decider joins its inside corners; drawn cut apart/);
+  assert.equal(await page.$eval('metaballs-view', (e) => e.shadowRoot.querySelectorAll('#inspector .faces .disagrees').length > 0), true);
   await page.selectOption('#table', 'decider');
   await page.waitForFunction(() => document.querySelector('metaballs-view').stats.triangles === 54408, null, { timeout: 30000 });
   // A bad value keeps the table in use and says what is accepted.

@@ -55,6 +55,12 @@ impl Meshers {
         mesher.mesh_it(&job);
         Ok(mesher.given(packed.to_vec()))
     }
+
+    /// The cells of the last marching-cubes mesh whose triangles the asymptotic decider changes
+    /// (`CpuMesher::decided_cells`), whatever that job's table.
+    pub fn decided_cells(&self) -> &[[u32; 3]] {
+        self.marching_cubes.decided_cells()
+    }
 }
 
 /// A CPU mesher as the job runner sees it.

@@ -6,7 +6,9 @@
 // failed), then answers each `{ id, job }` (a view's packed mesh job) with the mesh's vertices and
 // indices, handed over without a copy, each `{ id, shape: [vertex count, triangles] }` with the
 // mesh's shape (`mesh_shape`: blobs, genus, closed, manifold) and each `{ id, png: [pixels, width,
-// height] }` (RGBA8 rows, top first) with the picture as a PNG blob, or with what went wrong.
+// height] }` (RGBA8 rows, top first) with the picture as a PNG blob, each `{ id, decided: job }` (a
+// view's `cpu_job(true)`) with the cells whose triangles the asymptotic decider changes (`mesh_job`'s
+// last part), or with what went wrong.
 
 let started = null;
 // A Rust panic in this instance: the job that raised it is answered with it.
@@ -35,7 +37,7 @@ self.onmessage = async ({ data }) => {
     started.then(() => self.postMessage({ ready: true }), (error) => self.postMessage({ failed: String(error?.message ?? error) }));
     return;
   }
-  const { id, job, shape, png } = data;
+  const { id, job, shape, png, decided } = data;
   try {
     if (png) {
       self.postMessage({ id, png: await encodePng(...png) });
@@ -44,6 +46,11 @@ self.onmessage = async ({ data }) => {
     const module = await started;
     if (shape) {
       self.postMessage({ id, shape: module.mesh_shape(...shape) });
+      return;
+    }
+    if (decided) {
+      const cells = module.mesh_job(decided)[4];
+      self.postMessage({ id, decided: cells }, [cells.buffer]);
       return;
     }
     const [vertices, indices, blocks, cells] = module.mesh_job(job);

@@ -32,7 +32,7 @@ function make() {
       waiting.delete(data.id);
       if (!job) return;
       if (data.error) job.reject(new Error(data.error));
-      else job.resolve(data.shape ?? data.png ?? [data.vertices, data.indices, data.blocks, data.cells]);
+      else job.resolve(data.shape ?? data.png ?? data.decided ?? [data.vertices, data.indices, data.blocks, data.cells]);
     };
     made.onerror = (event) => {
       event.preventDefault?.();
@@ -50,7 +50,8 @@ function make() {
  * or, unless `starting` is true, while it is still starting (what is asked of it meanwhile waits until it
  * has):
  * `{ mesh(job) }` resolves with `[vertices, indices, activeBlocks, activeCells]` for `View.give_mesh`;
- * `{ shape(vertices, triangles) }` and `{ png(pixels, width, height) }` as `meshShape` and `pngOf` (look.js).
+ * `{ shape(vertices, triangles) }`, `{ png(pixels, width, height) }` and `{ decided(job) }` as `meshShape`,
+ * `pngOf` (look.js) and `decidedCells`.
  */
 export function meshWorker(starting = false) {
   if (worker === undefined) worker = typeof Worker === 'function' && wasmBesideModule() ? make() : null;
@@ -64,6 +65,7 @@ export function meshWorker(starting = false) {
     mesh: (job) => ask({ job }),
     shape: (vertices, triangles) => ask({ shape: [vertices, triangles] }, [triangles.buffer]),
     png: (pixels, width, height) => ask({ png: [pixels, width, height] }, [pixels.buffer]),
+    decided: (job) => ask({ decided: job }),
   };
 }
 
@@ -75,6 +77,17 @@ export function meshWorker(starting = false) {
 export function meshShape(vertices, triangles) {
   const worker = meshWorker(true);
   return worker ? worker.shape(vertices, triangles) : Promise.resolve(wasmModule().mesh_shape(vertices, triangles));
+}
+
+/**
+ * The cells whose triangles the asymptotic decider changes in the scene of `job` (`View.cpu_job(true)`):
+ * resolves to an array of [x, y, z], worked out on the mesher worker or, where there is none, on the
+ * page's thread.
+ */
+export async function decidedCells(job) {
+  const worker = meshWorker(true);
+  const flat = worker ? await worker.decided(job) : wasmModule().mesh_job(job)[4];
+  return Array.from({ length: flat.length / 3 }, (_, k) => [flat[3 * k], flat[3 * k + 1], flat[3 * k + 2]]);
 }
 
 /** Whether the figures' meshes are made off the page's thread (false until a figure has asked). */

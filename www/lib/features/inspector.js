@@ -138,6 +138,15 @@ export class Inspector {
       return `<tr><td>${e.edge} (${a}–${b})</td><td>${e.t.toFixed(3)}</td><td>(${p})</td></tr>`;
     }).join('');
     const triangles = report.triangles.map((tri) => tri.join('–')).join(', ') || 'none';
+    const faces = (report.faces ?? []).map((f) => {
+      const plane = `${'xyz'[f.face >> 1]} = ${f.face & 1}`;
+      const saddle = f.saddle === null ? 'no saddle' : `saddle ${format(f.saddle)} ${f.deciderJoins ? '&gt;' : '≤'} ${format(iso, 2)}`;
+      const decider = f.deciderJoins ? 'the decider joins its inside corners' : 'the decider cuts them apart';
+      const drawn = f.joined ? 'joined' : 'cut apart';
+      const agree = f.joined === f.deciderJoins ? '' : ' class="disagrees"';
+      return `<li${agree} data-face="${f.face}">Face ${plane}: ${saddle}: ${decider}; drawn ${drawn}</li>`;
+    }).join('');
+    const ambiguous = faces ? `<p>Ambiguous faces (inside corners on a diagonal):</p><ul class="faces">${faces}</ul>` : '';
     this.#box.innerHTML = `
       <header><h3>Cell (${x}, ${y}, ${z})</h3>
         <button type="button" class="close" aria-label="Deselect the cell (Esc)">×</button></header>
@@ -148,7 +157,7 @@ export class Inspector {
           <tbody>${rows}</tbody></table>
         <div class="drawing"></div>
       </div>
-      <p>Triangles (edges): ${triangles}</p>
+      <p>Triangles (edges): ${triangles}</p>${ambiguous}
       <table class="crossings"><thead><tr><th>edge</th><th>t</th><th>vertex</th></tr></thead>
         <tbody>${edges}</tbody></table>`;
     this.#box.querySelector('.drawing').append(cellDrawing(this.#cube(), inside, report.triangles,

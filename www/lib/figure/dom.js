@@ -257,6 +257,8 @@ svg .corner-number { fill: var(--muted); font-size: 9px; }
 #inspector .inspector-body { display: flex; gap: 8px; align-items: flex-start; }
 #inspector .in { color: #ff9a3d; }
 #inspector .out { color: #7aa7ff; }
+#inspector .faces { margin: 2px 0; padding-left: 16px; }
+#inspector .faces .disagrees { color: #ff6b5e; }
 
 /* Edit mode: rings around the hovered and the selected sphere, and the selected sphere's box. */
 canvas.editing { cursor: crosshair; }

@@ -40,7 +40,7 @@ export class MeshElsewhere {
     }
     if (request) {
       this.#request = null;
-      const job = within(this.#element, () => view.cpu_job());
+      const job = within(this.#element, () => view.cpu_job(false));
       if (request.mesh && sameJob(job, request.job)) {
         within(this.#element, () => view.give_mesh(request.job, ...request.mesh));
         return 0;
@@ -56,7 +56,7 @@ export class MeshElsewhere {
     const worker = this.#failed || here ? null : meshWorker(true);
     if (!worker) return step;
     within(this.#element, () => view.advance(step));
-    const job = within(this.#element, () => view.cpu_job());
+    const job = within(this.#element, () => view.cpu_job(false));
     if (!job) return 0;
     const made = { job, busy: true, mesh: null };
     this.#request = made;

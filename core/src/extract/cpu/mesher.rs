@@ -9,6 +9,7 @@
 //! classified and their triangles emitted, each vertex made once on first use and found again through
 //! the edge it lies on. Every array is kept between frames: after warm-up a frame allocates nothing.
 
+use crate::extract::decider::{ambiguous_faces, face_choices};
 use crate::extract::field::{BLOCK_CELLS, Spheres, sample_run};
 use crate::extract::mesh::IndexedMesh;
 use crate::extract::reference::{self, Construction, Grid};
@@ -77,6 +78,8 @@ pub struct CpuMesher {
     z_edges: Vec<u32>,
     /// The grid edge of each vertex, so a stale entry in the edge arrays is told from a current one.
     vertex_edges: Vec<u32>,
+    /// The crossed cells with an ambiguous face the asymptotic decider joins, whatever the table.
+    decided: Vec<[u32; 3]>,
 }
 
 impl CpuMesher {
@@ -102,6 +105,12 @@ impl CpuMesher {
     /// The last mesh as positions, normals and triangles.
     pub fn to_indexed(&self) -> IndexedMesh {
         IndexedMesh::from_interleaved(&self.vertices, &self.indices)
+    }
+
+    /// The cells of the last mesh with an ambiguous face that the asymptotic decider joins: the cells
+    /// whose triangles differ between the classic table and the decider's.
+    pub fn decided_cells(&self) -> &[[u32; 3]] {
+        &self.decided
     }
 
     /// Takes a mesh made by another mesher of its kind as its last one, with what that one counted.
@@ -130,6 +139,7 @@ impl CpuMesher {
         self.vertices.clear();
         self.indices.clear();
         self.vertex_edges.clear();
+        self.decided.clear();
         self.stats.active_cells = 0;
         self.sample_plane(0, n, construction.blend);
         for z in 0..n {
@@ -282,6 +292,9 @@ impl CpuMesher {
                         hi[corners[2]],
                         hi[corners[3]],
                     ];
+                    if ambiguous_faces(case) != 0 && face_choices(case, values, iso) != 0 {
+                        self.decided.push([x, y, z]);
+                    }
                     let mut triangles = [[0; 3]; 10];
                     let count = construction.cell_triangles(case, values, iso, &mut triangles);
                     for t in &triangles[..count] {
@@ -364,5 +377,43 @@ mod tests {
             let scene = Scene::new(seed, count).unwrap();
             assert_matches_oracle(scene.spheres(), 1.0, n, Construction::default());
         }
+    }
+
+    /// The decided cells are exactly those whose triangles the decider changes.
+    #[test]
+    fn the_decided_cells_are_those_the_decider_changes() {
+        use crate::scene::params::view::CaseTable;
+        let scene = Scene::new(11, 64).unwrap();
+        let grid = Grid { cells_per_axis: 96 };
+        let mut mesher = CpuMesher::new();
+        let decider = Construction { case_table: CaseTable::Decider, ..Construction::default() };
+        mesher.mesh(scene.spheres(), 1.5, grid, decider);
+        let mut decided = mesher.decided_cells().to_vec();
+        mesher.mesh(scene.spheres(), 1.5, grid, Construction::default());
+        assert_eq!(mesher.decided_cells(), decided, "the same cells under either table");
+        decided.sort_by_key(|&[x, y, z]| [z, y, x]);
+        let values = reference::sample_field(scene.spheres(), grid);
+        let mut changed = Vec::new();
+        for z in 0..96 {
+            for y in 0..96 {
+                for x in 0..96 {
+                    let corner = |c: usize| {
+                        let o = crate::extract::tables::CORNER_OFFSETS[c];
+                        let p = glam::UVec3::new(x + o[0], y + o[1], z + o[2]);
+                        values[grid.point_index(p)]
+                    };
+                    let f: [f32; 8] = std::array::from_fn(corner);
+                    let case = (0..8).fold(0, |m, c| m | ((f[c] > 1.5) as usize) << c);
+                    let (mut classic, mut decided) = ([[0; 3]; 10], [[0; 3]; 10]);
+                    let a = Construction::default().cell_triangles(case, f, 1.5, &mut classic);
+                    let b = decider.cell_triangles(case, f, 1.5, &mut decided);
+                    if classic[..a] != decided[..b] {
+                        changed.push([x, y, z]);
+                    }
+                }
+            }
+        }
+        assert!(!changed.is_empty(), "the scene has faces the decider joins");
+        assert_eq!(decided, changed);
     }
 }
