@@ -32,6 +32,7 @@ const SHARED = [
   'book.test.js', // 12
   'assets.test.js', // 10
   'size.test.js', // 0.1
+  'interpolant.test.js', // 7
   'frame-cost.test.js', // 0.3
 ];
 // A click on a figure drawing a heavy frame must be handled within a second, and the page's long tasks

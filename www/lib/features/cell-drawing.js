@@ -1,15 +1,10 @@
 // Small drawings of a cell (corners inside filled, triangles where the case puts them), for the cell
 // inspector's box and the gallery of the 15 case classes.
 
+import { project } from './interpolant.js';
 import { classColor } from './legends.js';
 
 const SVG = 'http://www.w3.org/2000/svg';
-
-// An oblique view of the unit cube, `size` pixels square.
-function project([x, y, z], size) {
-  const s = size / 64;
-  return [s * (10 + 34 * x + 16 * z), s * (54 - 34 * y - 12 * z)];
-}
 
 /**
  * A drawing of a cell: its edges, the triangles (edge-number triples) with vertex `t` along each edge

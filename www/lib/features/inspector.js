@@ -4,6 +4,7 @@
 import { PICTURE_FRAMES } from '../core/redraw.js';
 import { caseGallery } from '../engine/wasm.js';
 import { buildGallery, cellDrawing } from './cell-drawing.js';
+import { interpolantDrawing } from './interpolant.js';
 import { classColor } from './legends.js';
 
 // How often the inspector's figures are refreshed while the spheres move, in ms.
@@ -160,8 +161,11 @@ export class Inspector {
       <p>Triangles (edges): ${triangles}</p>${ambiguous}
       <table class="crossings"><thead><tr><th>edge</th><th>t</th><th>vertex</th></tr></thead>
         <tbody>${edges}</tbody></table>`;
-    this.#box.querySelector('.drawing').append(cellDrawing(this.#cube(), inside, report.triangles,
-      (e) => t.get(e) ?? 0.5, { size: 96, color: classColor(report.class), label: `case ${report.case}` }));
+    this.#box.querySelector('.drawing').append(
+      cellDrawing(this.#cube(), inside, report.triangles, (e) => t.get(e) ?? 0.5,
+        { size: 96, color: classColor(report.class), label: `case ${report.case}: its triangles` }),
+      interpolantDrawing(this.#cube(), report.corners, iso,
+        { size: 96, label: `case ${report.case}: the trilinear interpolant of its corner values, ray cast` }));
     this.#box.hidden = false;
     this.#onClass(report.class);
   }

@@ -255,6 +255,8 @@ svg .corner-number { fill: var(--muted); font-size: 9px; }
 #inspector td, #inspector th { padding: 0 6px 0 0; text-align: left; font-weight: normal; color: var(--text); }
 #inspector th { color: var(--muted); }
 #inspector .inspector-body { display: flex; gap: 8px; align-items: flex-start; }
+#inspector .drawing { display: flex; flex-wrap: wrap; gap: 4px; }
+#inspector canvas.interpolant { position: static; width: 96px; height: 96px; cursor: default; }
 #inspector .in { color: #ff9a3d; }
 #inspector .out { color: #7aa7ff; }
 #inspector .faces { margin: 2px 0; padding-left: 16px; }
