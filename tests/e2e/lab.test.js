@@ -117,6 +117,20 @@ test('table=decider joins the two blobs the interpolant joins, on the CPU and th
   assert.ok(report.faces.some((f) => f.deciderJoins && f.joined && f.saddle > 1.5), JSON.stringify(report.faces));
   const faces = () => page.$eval('metaballs-view', (e) => e.shadowRoot.querySelector('#inspector .faces').textContent);
   assert.match(await faces(), /saddle [\d.]+ > 1\.50: the decider joins its inside corners; drawn joined/);
+  // Beside the triangles, the cell's trilinear interpolant, ray cast: a surface with both sides in view.
+  const drawn = await page.$eval('metaballs-view', (e) => {
+    const canvas = e.shadowRoot.querySelector('#inspector canvas.interpolant');
+    const data = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height).data;
+    let [outside, inside] = [0, 0];
+    for (let k = 0; k < data.length; k += 4) {
+      // The surface's two sides as lit (the corner dots are lighter: green above 150).
+      if (data[k] > 150 && data[k + 1] < 125 && data[k + 2] < 110) outside += 1;
+      if (data[k + 2] > 150 && data[k + 1] < 145 && data[k] < 95) inside += 1;
+    }
+    return { outside, inside, label: canvas.getAttribute('aria-label') };
+  });
+  assert.ok(drawn.outside > 200 && drawn.inside > 200, JSON.stringify(drawn));
+  assert.match(drawn.label, /trilinear interpolant/);
   // The GPU's compute passes make the same mesh.
   await page.$eval('metaballs-view', (e) => e.setAttribute('mesher', 'gpu'));
   await page.waitForFunction(() => document.querySelector('metaballs-view').stats.mesher === 'gpu', null, { timeout: 30000 });
