@@ -1,11 +1,13 @@
 // End-to-end tests of the lab in headless Chromium (SwiftShader): the error colouring with its HUD
 // figures and shape histogram, the error-vs-resolution plot with its slopes, the live topology with
-// pause_on=merge stopping the animation when two blobs touch, and a subtracting sphere from a link.
+// pause_on=merge stopping the animation when two blobs touch, a subtracting sphere from a link, and the
+// case tables: the decider's join on the CPU and the GPU, its notice, inspector and lecture section.
 
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
+import path from 'node:path';
 import {
-  useServerAndBrowser, openClosedAfterEach, openPanelGroups, settledTriangles, frameDrawn, screenshot, differingFraction,
+  outputDir, useServerAndBrowser, openClosedAfterEach, openPanelGroups, settledTriangles, frameDrawn, screenshot, differingFraction,
 } from './helpers.js';
 
 useServerAndBrowser();
@@ -154,5 +156,36 @@ test('table=decider joins the two blobs the interpolant joins, on the CPU and th
   const notice = await page.$eval('metaballs-view', (e) => e.shadowRoot.getElementById('notice').textContent);
   assert.ok(notice.includes('classic, decider'), notice);
   assert.equal(await page.evaluate(() => document.querySelector('metaballs-view').table), 'decider');
+  assert.deepEqual(errors, []);
+});
+
+test('the lecture shows two touching spheres apart under the classic table and joined under the decider', async () => {
+  const { page, errors } = await open('www/examples/lecture.html');
+  await page.locator('figure#ambiguity').scrollIntoViewIfNeeded();
+  const figures = 'figure#ambiguity metaballs-view';
+  await page.waitForFunction((s) => [...document.querySelectorAll(s)].every((e) => e.framesDrawn > 1), figures, { timeout: 60000 });
+  const shapes = await page.$$eval(figures, (views) => Promise.all(views.map(async (e) => [e.table, (await e.topology()).components])));
+  assert.deepEqual(shapes, [['classic', 2], ['decider', 1]]);
+  // The ambiguous face's joining: red where the classic table cuts what the decider joins, amber where
+  // the triangles follow the decider.
+  const colours = [];
+  for (const [k, view] of (await page.$$(figures)).entries()) {
+    const shot = await view.screenshot({ path: path.join(outputDir, `e2e-lecture-ambiguity-${k}.png`) });
+    colours.push(await page.evaluate(async (png) => {
+      const image = await createImageBitmap(new Blob([new Uint8Array(png)], { type: 'image/png' }));
+      const canvas = new OffscreenCanvas(image.width, image.height);
+      const context = canvas.getContext('2d');
+      context.drawImage(image, 0, 0);
+      const data = context.getImageData(0, 0, image.width, image.height).data;
+      let [red, amber] = [0, 0];
+      for (let i = 0; i < data.length; i += 4) {
+        if (data[i] > 200 && data[i + 1] < 40 && data[i + 2] < 40) red += 1;
+        if (data[i] > 200 && data[i + 1] > 130 && data[i + 1] < 215 && data[i + 2] < 60) amber += 1;
+      }
+      return { red, amber };
+    }, [...shot]));
+  }
+  assert.ok(colours[0].red > 0 && colours[0].amber === 0, `classic: ${JSON.stringify(colours[0])}`);
+  assert.ok(colours[1].red === 0 && colours[1].amber > 0, `decider: ${JSON.stringify(colours[1])}`);
   assert.deepEqual(errors, []);
 });
