@@ -10,6 +10,7 @@ mod common;
 mod animation;
 mod architecture;
 mod bindings;
+mod cell_topology;
 mod cpu_mesher;
 mod decider;
 mod editing;
