@@ -170,7 +170,7 @@ fn the_deciders_patch_has_the_interpolants_topology_where_no_tunnel_can_change_i
     // Per class: cells compared, and cells whose topology differs.
     let mut tally = [(0usize, 0usize); 15];
     let mut skipped = 0;
-    for case in 1..255usize {
+    for (case, &class) in classes.iter().enumerate().take(255).skip(1) {
         let mut done = 0;
         while done < PER_CASE {
             // Inside corners in (1, 2], outside ones in [0, 1).
@@ -187,7 +187,7 @@ fn the_deciders_patch_has_the_interpolants_topology_where_no_tunnel_can_change_i
                 decided_triangles(case, face_choices(case, f, ISO)).map(|t| t.map(|e| e as u64)).collect();
             let ours = shape(&patch);
             let interpolant = shape(&fine_patch(&f));
-            let class = classes[case] as usize;
+            let class = class as usize;
             tally[class].0 += 1;
             if ours != interpolant {
                 tally[class].1 += 1;
