@@ -31,8 +31,8 @@ const SHARED = [
   'widget.test.js', // 12
   'book.test.js', // 12
   'assets.test.js', // 10
-  'size.test.js', // 0.1
   'interpolant.test.js', // 7
+  'size.test.js', // 0.1
   'frame-cost.test.js', // 0.3
 ];
 // A click on a figure drawing a heavy frame must be handled within a second, and the page's long tasks

@@ -4,11 +4,24 @@
 
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { castInterpolant, trilinear, project } from '../../www/lib/features/interpolant.js';
+import { castInterpolant, project } from '../../www/lib/features/interpolant.js';
 
 // Corner c at offset (x, y, z) as core/src/extract/tables.rs numbers them.
 const CORNERS = [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]];
 const SIZE = 64;
+
+// The trilinear interpolant in its polynomial form, a + bx + cy + dz + exy + fyz + gxz + hxyz, written
+// apart from the module's weighted sum.
+function trilinear(v, _corners, [x, y, z]) {
+  const [f000, f100, f110, f010, f001, f101, f111, f011] = v;
+  const a = f000;
+  const [b, c, d] = [f100 - f000, f010 - f000, f001 - f000];
+  const e = f110 - f100 - f010 + f000;
+  const f = f011 - f010 - f001 + f000;
+  const g = f101 - f100 - f001 + f000;
+  const h = f111 - f110 - f101 - f011 + f100 + f010 + f001 - f000;
+  return a + b * x + c * y + d * z + e * x * y + f * y * z + g * x * z + h * x * y * z;
+}
 const RAY = [-16 / 34, -12 / 34, 1];
 
 function random(seed) {

@@ -125,9 +125,11 @@ test('table=decider joins the two blobs the interpolant joins, on the CPU and th
     const data = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height).data;
     let [outside, inside] = [0, 0];
     for (let k = 0; k < data.length; k += 4) {
-      // The surface's two sides as lit (the corner dots are lighter: green above 150).
-      if (data[k] > 150 && data[k + 1] < 125 && data[k + 2] < 110) outside += 1;
-      if (data[k + 2] > 150 && data[k + 1] < 145 && data[k] < 95) inside += 1;
+      // The surface's two sides as lit: the mesh's salmon outside, teal inside (not the orange and blue
+      // corner dots, nor the grey edges).
+      const [r, g, b] = [data[k], data[k + 1], data[k + 2]];
+      if (r > 90 && r > 1.6 * g && b < g && b > 0.6 * g) outside += 1;
+      if (g > 60 && g > 1.4 * r && b > 1.3 * r && b < 1.1 * g) inside += 1;
     }
     return { outside, inside, label: canvas.getAttribute('aria-label') };
   });
@@ -145,7 +147,7 @@ test('table=decider joins the two blobs the interpolant joins, on the CPU and th
   assert.match(await told('classic'), /cells? changed.*blobs 57 → 58$/);
   // Under the classic table the inspected face is cut apart, against the decider: marked.
   await page.$eval('metaballs-view', (e, c) => e.inspectCell(...c), cell);
-  assert.match(await faces(), /the decider joins its inside corners; drawn cut apart/);
+  assert.match(await faces(), /the decider joins its inside corners; drawn cut apart \(against the decider\)/);
   assert.equal(await page.$eval('metaballs-view', (e) => e.shadowRoot.querySelectorAll('#inspector .faces .disagrees').length > 0), true);
   await page.selectOption('#table', 'decider');
   await page.waitForFunction(() => document.querySelector('metaballs-view').stats.triangles === 54408, null, { timeout: 30000 });
@@ -187,5 +189,17 @@ test('the lecture shows two touching spheres apart under the classic table and j
   }
   assert.ok(colours[0].red > 0 && colours[0].amber === 0, `classic: ${JSON.stringify(colours[0])}`);
   assert.ok(colours[1].red === 0 && colours[1].amber > 0, `decider: ${JSON.stringify(colours[1])}`);
+  assert.deepEqual(errors, []);
+});
+
+test('changing the table under surface nets says the mesh keeps the classic table', async () => {
+  const { page, errors } = await open('?res=32&method=surface_nets&paused=1');
+  await settledTriangles(page);
+  const triangles = await page.$eval('metaballs-view', (e) => e.stats.triangles);
+  await page.$eval('metaballs-view', (e) => e.setAttribute('table', 'decider'));
+  await page.waitForFunction(() => document.querySelector('metaballs-view').shadowRoot.getElementById('notice')
+    .textContent === 'table=decider: surface nets keeps the classic table; the mesh is unchanged', null, { timeout: 10000 });
+  await frameDrawn(page);
+  assert.equal(await page.$eval('metaballs-view', (e) => e.stats.triangles), triangles);
   assert.deepEqual(errors, []);
 });

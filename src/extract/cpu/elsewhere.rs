@@ -41,6 +41,8 @@ pub fn pack(method: Method, job: &Job) -> Vec<f32> {
 pub struct Meshers {
     marching_cubes: CpuMesher,
     surface_nets: SurfaceNetsMesher,
+    /// The last job was marching cubes.
+    marched: bool,
 }
 
 impl Meshers {
@@ -48,6 +50,7 @@ impl Meshers {
     pub fn mesh(&mut self, packed: &[f32]) -> Result<GivenMesh, String> {
         let (method, spheres, iso, grid, construction) = unpack(packed)?;
         let job = Job { spheres: &spheres, iso, grid, construction, lod: None };
+        self.marched = method == Method::MarchingCubes;
         let mesher: &mut dyn CpuMeshed = match method {
             Method::MarchingCubes => &mut self.marching_cubes,
             Method::SurfaceNets => &mut self.surface_nets,
@@ -56,10 +59,10 @@ impl Meshers {
         Ok(mesher.given(packed.to_vec()))
     }
 
-    /// The cells of the last marching-cubes mesh whose triangles the asymptotic decider changes
-    /// (`CpuMesher::decided_cells`), whatever that job's table.
+    /// The cells of the last job's mesh whose triangles the asymptotic decider changes
+    /// (`CpuMesher::decided_cells`), whatever its table; none after a surface-nets job.
     pub fn decided_cells(&self) -> &[[u32; 3]] {
-        self.marching_cubes.decided_cells()
+        if self.marched { self.marching_cubes.decided_cells() } else { &[] }
     }
 }
 

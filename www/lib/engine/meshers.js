@@ -81,12 +81,13 @@ export function meshShape(vertices, triangles) {
 
 /**
  * The cells whose triangles the asymptotic decider changes in the scene of `job` (`View.cpu_job(true)`):
- * resolves to an array of [x, y, z], worked out on the mesher worker or, where there is none, on the
- * page's thread.
+ * resolves to an array of [x, y, z], worked out on the mesher worker; rejects where there is none (a
+ * whole mesh is made for it, too long for the page's thread).
  */
 export async function decidedCells(job) {
   const worker = meshWorker(true);
-  const flat = worker ? await worker.decided(job) : wasmModule().mesh_job(job)[4];
+  if (!worker) throw new Error('no mesher worker on this page');
+  const flat = await worker.decided(job);
   return Array.from({ length: flat.length / 3 }, (_, k) => [flat[3 * k], flat[3 * k + 1], flat[3 * k + 2]]);
 }
 

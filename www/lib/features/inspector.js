@@ -144,8 +144,9 @@ export class Inspector {
       const saddle = f.saddle === null ? 'no saddle' : `saddle ${format(f.saddle)} ${f.deciderJoins ? '&gt;' : '≤'} ${format(iso, 2)}`;
       const decider = f.deciderJoins ? 'the decider joins its inside corners' : 'the decider cuts them apart';
       const drawn = f.joined ? 'joined' : 'cut apart';
-      const agree = f.joined === f.deciderJoins ? '' : ' class="disagrees"';
-      return `<li${agree} data-face="${f.face}">Face ${plane}: ${saddle}: ${decider}; drawn ${drawn}</li>`;
+      const agree = f.joined === f.deciderJoins;
+      const mark = agree ? '' : ' (against the decider)';
+      return `<li${agree ? '' : ' class="disagrees"'} data-face="${f.face}">Face ${plane}: ${saddle}: ${decider}; drawn ${drawn}${mark}</li>`;
     }).join('');
     const ambiguous = faces ? `<p>Ambiguous faces (inside corners on a diagonal):</p><ul class="faces">${faces}</ul>` : '';
     this.#box.innerHTML = `

@@ -114,8 +114,8 @@ export function castInterpolant(f, iso, corners, size) {
 
 /**
  * A canvas of the interpolant of corner values `f` inside the cell, lit from the eye (the outside of
- * the surface in `color`, its inside blue), with the cell's edges and corners over it as in the
- * drawing beside it.
+ * the surface in `color`, the mesh's colour; its inside teal), with the cell's edges and corners over
+ * it as in the drawing beside it (corners orange inside, blue outside).
  */
 export function interpolantDrawing(cube, f, iso, { size = 96, color = [231, 118, 97], label = '' } = {}) {
   const canvas = document.createElement('canvas');
@@ -131,7 +131,7 @@ export function interpolantDrawing(cube, f, iso, { size = 96, color = [231, 118,
     if (!hit) return;
     const n = trilinearGradient(f, cube.corners, hit);
     const light = Math.abs(n[0] * RAY[0] + n[1] * RAY[1] + n[2] * RAY[2]) / ((Math.hypot(...n) || 1) * length);
-    const base = front ? color : [90, 140, 230];
+    const base = front ? color : [70, 175, 160];
     image.data.set([...base.map((c) => Math.round(c * (0.35 + 0.65 * light))), 255], 4 * k);
   });
   context.putImageData(image, 0, 0);

@@ -1,12 +1,15 @@
 // When the case table changes, a notice names the cells whose triangles changed and says how the blob
 // count went. Those cells are the ones with an ambiguous face that the asymptotic decider joins (the
-// classic table cuts every such face apart), found by the CPU's marching cubes on the mesher worker
-// for the frame's spheres, whichever mesher draws.
+// classic table cuts every such face apart), found for the first frame drawn under the new table by
+// the CPU's marching cubes on the page's mesher worker, whichever mesher draws; up to LISTED_CELLS
+// cells per axis, and only off the page's thread (else the notice gives the blob counts alone).
 
 import { decidedCells, meshShape } from '../engine/meshers.js';
 
 // Cells named in the notice; the rest are counted.
 const NAMED = 4;
+// The finest grid whose changed cells are listed (a CPU mesh of it on the worker).
+const LISTED_CELLS = 256;
 
 const plural = (n, word) => `${n} ${word}${n === 1 ? '' : 's'}`;
 
@@ -25,31 +28,43 @@ export class TableChange {
 
   changed(name, value) {
     const view = this.#ctx.view;
+    const { lod, method } = this.#ctx.state;
     if (!view) return;
-    // The blobs under the table left (the mesh on screen), and the cells that differ.
-    this.#pending = { value, before: blobsOf(view), cells: decidedCells(view.cpu_job(true)) };
+    if (lod || method === 'surface_nets') {
+      this.#pending = null;
+      this.#ctx.notice(`table=${value}: ${lod ? 'level of detail' : 'surface nets'} keeps the classic table; the mesh is unchanged`);
+      return;
+    }
+    // The blobs under the table left (the mesh on screen).
+    this.#pending = { value, before: blobsOf(view) };
   }
 
-  // The first frame drawn under the new table: its blobs, then the notice.
+  // The first frame drawn under the new table: its changed cells and blobs, then the notice.
   frameDrawn() {
     const pending = this.#pending;
     const view = this.#ctx.view;
     if (!pending || !view) return;
     this.#pending = null;
-    Promise.all([pending.cells, pending.before, blobsOf(view)]).then(([cells, before, after]) => {
+    const listed = this.#ctx.state.resolution <= LISTED_CELLS;
+    const cells = listed ? decidedCells(view.cpu_job(true)).catch(() => null) : Promise.resolve(null);
+    Promise.all([cells, pending.before, blobsOf(view)]).then(([changed, before, after]) => {
       if (this.#ctx.state.table !== pending.value) return;
-      this.#ctx.notice(tableNotice(pending.value, cells, before, after), 12000);
-    }, (error) => this.#ctx.notice(`table=${pending.value}: ${error?.message ?? error}`));
+      this.#ctx.notice(tableNotice(pending.value, changed, before, after), 12000);
+    });
   }
 }
 
-/** The notice for a change to `table` where `cells` differ, with the blob counts before and after. */
+/**
+ * The notice for a change to `table` where `cells` differ (null where they were not listed), with the
+ * blob counts before and after (null where unknown).
+ */
 export function tableNotice(table, cells, before, after) {
+  const blobs = before !== null && after !== null ? `blobs ${before} → ${after}` : '';
+  if (cells === null) return `table=${table}${blobs ? `: ${blobs}` : ''}`;
   if (cells.length === 0) {
     return `table=${table}: no cell here has a face the asymptotic decider joins; both tables give this mesh`;
   }
   const named = cells.slice(0, NAMED).map((c) => `(${c.join(', ')})`).join(', ');
   const more = cells.length > NAMED ? ` and ${cells.length - NAMED} more` : '';
-  const blobs = before !== null && after !== null ? `; blobs ${before} → ${after}` : '';
-  return `table=${table}: ${plural(cells.length, 'cell')} changed, each with a face the decider joins and the classic table cuts: ${named}${more}${blobs}`;
+  return `table=${table}: ${plural(cells.length, 'cell')} changed, each with a face the decider joins and the classic table cuts: ${named}${more}${blobs ? `; ${blobs}` : ''}`;
 }

@@ -116,6 +116,7 @@ impl CpuMesher {
     /// Takes a mesh made by another mesher of its kind as its last one, with what that one counted.
     pub fn install(&mut self, vertices: Vec<f32>, indices: Vec<u32>, counts: [u32; 2], grid: Grid) {
         let [active_blocks, active_cells] = counts;
+        self.decided.clear();
         self.vertices = vertices;
         self.indices = indices;
         self.stats = CpuMeshStats {
