@@ -51,11 +51,19 @@ test('printed to PDF right after load, every figure on the first page is a pictu
   await page.evaluate(() => Promise.all([...document.querySelectorAll('metaballs-view')].map((e) => e.printable())));
   console.log(`every figure of the lecture had a picture for print ${Date.now() - started} ms after navigation`);
   await page.emulateMedia({ media: 'print' });
+  // A while in print layout, where the canvases are hidden: the pictures taken before stand.
+  await page.evaluate(() => new Promise((resolve) => setTimeout(resolve, 1500)));
   const boxes = await page.$$eval('metaballs-view', (figures) => figures.map((e) => {
     const r = e.getBoundingClientRect();
     const hidden = ['panel', 'hud', 'play', 'notice', 'view'].map((id) => getComputedStyle(e.shadowRoot.getElementById(id)).display);
-    return { x: r.x, y: r.y + scrollY, width: r.width, height: r.height, hidden, id: e.closest('figure')?.id };
+    const picture = e.shadowRoot.getElementById('print-frame');
+    return { x: r.x, y: r.y + scrollY, width: r.width, height: r.height, hidden, id: e.closest('figure')?.id,
+      picture: [picture.naturalWidth, picture.naturalHeight] };
   }));
+  for (const box of boxes.filter((b) => b.picture[0] > 0)) {
+    assert.ok(box.picture[0] >= box.width / 2 && box.picture[1] >= box.height / 2,
+      `${box.id}: the picture for print is ${box.picture.join(' × ')} pixels in a box of ${box.width} × ${box.height}`);
+  }
   const directory = mkdtempSync(path.join(os.tmpdir(), 'metaballs-print-'));
   try {
     const pdf = path.join(directory, 'lecture.pdf');

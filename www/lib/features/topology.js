@@ -12,6 +12,9 @@ const HUD_EVERY_MS = 1000;
 export class TopologyWatch {
   #ctx;
   #pending = null;
+  // The frames drawn when the pending question was asked, and when the answer taken last was.
+  #pendingFrame = -1;
+  #takenFrame = -1;
   #last = null;
   #askedAt = -Infinity;
 
@@ -46,19 +49,29 @@ export class TopologyWatch {
     this.check().catch(() => {});
   }
 
-  /** Asks the view now; resolves to the answer. */
+  /**
+   * Asks the view now; resolves to the answer for the mesh drawn now. A question asked since the
+   * last frame shares its answer; one asked before it was of an older mesh, so a new one is asked.
+   */
   check() {
     const view = this.#ctx.view;
     if (!view) return Promise.reject(new Error('the figure is not drawing'));
-    this.#pending ??= view.mesh_triangles().then(([vertices, triangles]) => meshShape(vertices, triangles))
-      .then((a) => this.#take(a)).finally(() => {
-      this.#pending = null;
-    });
-    return this.#pending;
+    const frame = this.#ctx.frames.framesDrawn;
+    if (this.#pending && this.#pendingFrame === frame) return this.#pending;
+    const answer = view.mesh_triangles().then(([vertices, triangles]) => meshShape(vertices, triangles))
+      .then((a) => this.#take(a, frame)).finally(() => {
+        if (this.#pending === answer) this.#pending = null;
+      });
+    this.#pending = answer;
+    this.#pendingFrame = frame;
+    return answer;
   }
 
-  #take([components, genus, closed, manifold]) {
+  #take([components, genus, closed, manifold], frame) {
     const shape = { components, genus, closed: closed === 1, manifold: manifold === 1 };
+    // An answer about an older mesh than the last one taken (overtaken on the way) is not the news.
+    if (frame < this.#takenFrame) return shape;
+    this.#takenFrame = frame;
     const before = this.#last;
     this.#last = shape;
     this.#ctx.each('shape', shape);

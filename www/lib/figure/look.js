@@ -149,11 +149,12 @@ export class FigureLook {
   /**
    * Whether the picture for print is taken of the frame about to be drawn: every few seconds while
    * animating, else once no more frames are due (`settled`); at once for a frame drawn only for print
-   * (`forPrint`), else not in the first second after the first frame.
+   * (`forPrint`), else not in the first second after the first frame; never while the canvas is not
+   * shown (as in print, where the picture taken before stands in for it).
    */
   #due(now, { animating, settled, forPrint }) {
     if (this.#firstPictureAt === Infinity) this.#firstPictureAt = forPrint ? now : now + FIRST_PICTURE_MS;
-    return !this.#encoding && (forPrint || (now >= this.#firstPictureAt
+    return !this.#encoding && this.#canvas.checkVisibility() && (forPrint || (now >= this.#firstPictureAt
       && (animating ? now - this.#printedAt >= PRINT_EVERY_MS : settled)));
   }
 
@@ -209,7 +210,8 @@ export class FigureLook {
 
   /** True when the print picture is older than the last frame (the figure then draws once more). */
   get printStale() {
-    return this.#printStale && !this.#encoding && performance.now() >= this.#firstPictureAt;
+    return this.#printStale && !this.#encoding && performance.now() >= this.#firstPictureAt
+      && this.#canvas.checkVisibility();
   }
 
   /** A new renderer starts from the theme's background: the page's colours are sent again. */

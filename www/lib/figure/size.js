@@ -17,7 +17,10 @@ function pixelRatio(cap, software, exact = false) {
   return Math.min(devicePixelRatio, cap, software ? (exact ? SOFTWARE_EXACT_RATIO : 1) : Infinity);
 }
 
-/** [width, height] in pixels for `canvas` at `ratio`, from a ResizeObserver `entry` when there is one. */
+/**
+ * [width, height] in pixels for `canvas` at `ratio`, from a ResizeObserver `entry` when there is one;
+ * null while its box is empty (the canvas is not shown: in print, in a closed container).
+ */
 function canvasPixels(canvas, ratio, entry = null) {
   const box = entry?.devicePixelContentBoxSize?.[0];
   let width;
@@ -30,6 +33,7 @@ function canvasPixels(canvas, ratio, entry = null) {
     width = rect.width * ratio;
     height = rect.height * ratio;
   }
+  if (!(width > 0 && height > 0)) return null;
   return [Math.max(1, Math.round(width)), Math.max(1, Math.round(height))];
 }
 
@@ -56,11 +60,14 @@ export class FigureSize {
 
   /**
    * Sizes the canvas for its box now (a ResizeObserver `entry` when there is one); returns the new
-   * [width, height] in pixels, or null when it kept its size.
+   * [width, height] in pixels, or null when it kept its size (also while its box is empty: the
+   * frames drawn meanwhile keep the size they had).
    */
   fit(entry = null) {
     const { canvas } = this.#ctx;
-    const [width, height] = canvasPixels(canvas, this.#ratio(), entry);
+    const pixels = canvasPixels(canvas, this.#ratio(), entry);
+    if (!pixels) return null;
+    const [width, height] = pixels;
     this.#ctx.each('scaled', this.renderScale, width, height);
     if (canvas.width === width && canvas.height === height) return null;
     canvas.width = width;
