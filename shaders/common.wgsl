@@ -14,21 +14,27 @@ struct Grid {
     max_indices: u32,
     max_cells: u32,
     // Bit 0: vertices at edge midpoints (else interpolated); bit 1: blend by max (else sum); bit 2:
-    // ambiguous faces joined by the asymptotic decider (else the classic table).
+    // ambiguous faces joined by the asymptotic decider (else the classic table); bit 3: and the cell's
+    // interior resolved too (MC33).
     flags: u32,
 }
 
 const FLAG_MIDPOINT: u32 = 1u;
 const FLAG_MAX: u32 = 2u;
 const FLAG_DECIDER: u32 = 4u;
+const FLAG_MC33: u32 = 8u;
 
 // A cell's word in cell_cases: its case in bits 0..7; from bit 8 (CHOSEN_SHIFT), with the decider, the
-// choices its triangles follow on its ambiguous faces, one bit per ambiguous face in face order; and
-// from bit 16 (DECIDED_SHIFT), in every mode, the decider's choice on each face (bit 16 + face, set
-// where an ambiguous face's inside corners are joined), for the ambiguous view.
+// choices its triangles follow on its ambiguous faces, one bit per ambiguous face in face order; from
+// bit 16 (DECIDED_SHIFT), in every mode, the decider's choice on each face (bit 16 + face, set where an
+// ambiguous face's inside corners are joined), for the ambiguous view; and from bit 22
+// (INTERIOR_SHIFT), with MC33, the interior's join (core/src/extract/interior.rs, 0 to 4).
 const CASE_BITS: u32 = 0xffu;
 const CHOSEN_SHIFT: u32 = 8u;
 const DECIDED_SHIFT: u32 = 16u;
+const INTERIOR_SHIFT: u32 = 22u;
+// Interior codes per choice of faces in the table of variants (INTERIOR_CODES).
+const INTERIOR_CODES: u32 = 5u;
 
 fn blend_max() -> bool {
     return (grid.flags & FLAG_MAX) != 0u;

@@ -13,11 +13,11 @@
 
 use super::checks::cut;
 use super::decimal::{Fixed, num};
+use super::json::{Json, Kind};
 use super::number::{parse_f32, parse_f64};
 use super::params::{Settings, Value, parameter};
 use super::sphere::{SceneError, Sphere, at, check_count, check_sphere};
 use glam::Vec3;
-use serde_json::{Map, Number, json};
 
 /// The `format` field of every scene document.
 pub const FORMAT: &str = "metaballs-scene";
@@ -51,30 +51,30 @@ pub fn scene_parameters() -> impl Iterator<Item = &'static super::params::Parame
 }
 
 /// Describes a JSON value for messages: short values whole, long ones by kind.
-fn describe(value: &serde_json::Value) -> String {
-    let text = value.to_string();
+fn describe(value: &Json) -> String {
+    let text = value.compact();
     if text.len() <= 40 {
         return text;
     }
-    match value {
-        serde_json::Value::Array(a) => format!("an array of {} items", a.len()),
-        serde_json::Value::Object(o) => format!("an object with {} fields", o.len()),
+    match value.kind() {
+        Kind::Array(a) => format!("an array of {} items", a.len()),
+        Kind::Object(o) => format!("an object with {} fields", o.len()),
         _ => format!("{}…", text.chars().take(37).collect::<String>()),
     }
 }
 
-fn number(value: &serde_json::Value, field: &str) -> Result<f32, SceneError> {
-    match value {
+fn number(value: &Json, field: &str) -> Result<f32, SceneError> {
+    match value.kind() {
         // Through the shortest decimal text, so that an f32 written by `to_json` reads back exactly.
-        serde_json::Value::Number(n) => {
-            parse_f32(&n.to_string()).ok_or_else(|| SceneError(format!("{field} must be a number, got {n}")))
+        Kind::Number(_, n) => {
+            parse_f32(&n).ok_or_else(|| SceneError(format!("{field} must be a number, got {n}")))
         }
-        other => Err(SceneError(format!("{field} must be a number, got {}", describe(other)))),
+        _ => Err(SceneError(format!("{field} must be a number, got {}", describe(value)))),
     }
 }
 
-fn vector(value: &serde_json::Value, field: &str) -> Result<Vec3, SceneError> {
-    match value.as_array() {
+fn vector(value: &Json, field: &str) -> Result<Vec3, SceneError> {
+    match value.items() {
         Some(items) if items.len() == 3 => {
             let c = |k: usize| number(&items[k], &format!("{field}[{k}]"));
             Ok(Vec3::new(c(0)?, c(1)?, c(2)?))
@@ -83,16 +83,22 @@ fn vector(value: &serde_json::Value, field: &str) -> Result<Vec3, SceneError> {
     }
 }
 
-fn sphere(value: &serde_json::Value, field: &str) -> Result<Sphere, SceneError> {
-    let object = value.as_object().ok_or_else(|| {
+/// The member `name` of an object's `fields`, if there.
+fn member<'a>(fields: &'a [(String, Json)], name: &str) -> Option<&'a Json> {
+    fields.iter().find(|(k, _)| k == name).map(|(_, v)| v)
+}
+
+fn sphere(value: &Json, field: &str) -> Result<Sphere, SceneError> {
+    let object = value.fields().ok_or_else(|| {
         SceneError(format!("{field} must be an object with center and radius, got {}", describe(value)))
     })?;
-    let get = |name: &str| object.get(name).ok_or_else(|| SceneError(format!("{field}.{name} is missing")));
-    let velocity = match object.get("velocity") {
+    let get =
+        |name: &str| member(&object, name).ok_or_else(|| SceneError(format!("{field}.{name} is missing")));
+    let velocity = match member(&object, "velocity") {
         Some(v) => vector(v, &format!("{field}.velocity"))?,
         None => Vec3::ZERO,
     };
-    let charge = match object.get("charge") {
+    let charge = match member(&object, "charge") {
         Some(c) => number(c, &format!("{field}.charge"))?,
         None => 1.0,
     };
@@ -105,23 +111,21 @@ fn sphere(value: &serde_json::Value, field: &str) -> Result<Sphere, SceneError> 
     check_sphere(field, s)
 }
 
-fn setting(name: &str, value: &serde_json::Value) -> Result<(&'static str, Value), SceneError> {
+fn setting(name: &str, value: &Json) -> Result<(&'static str, Value), SceneError> {
     let field = format!("settings.{}", cut(name));
     let spec = parameter(name)
         .filter(|p| p.in_scene)
         .ok_or_else(|| SceneError(format!("{field}: not a setting a scene holds")))?;
-    let text = match value {
+    let text = match value.kind() {
         // Whole numbers written with a fraction (`64.0`) read as whole numbers.
-        serde_json::Value::Number(n) => match n.as_f64() {
-            Some(x) if x.fract() == 0.0 && x.abs() < 1e15 => (x as i64).to_string(),
-            _ => n.to_string(),
-        },
-        serde_json::Value::Bool(b) => b.to_string(),
-        serde_json::Value::String(s) => s.clone(),
-        other => {
+        Kind::Number(x, _) if x.fract() == 0.0 && x.abs() < 1e15 => (x as i64).to_string(),
+        Kind::Number(_, n) => n,
+        Kind::Bool(b) => b.to_string(),
+        Kind::Text(s) => s,
+        _ => {
             return Err(SceneError(format!(
                 "{field} must be a number, true/false or text, got {}",
-                describe(other)
+                describe(value)
             )));
         }
     };
@@ -142,23 +146,23 @@ impl SceneFile {
     /// Reads and checks a scene document.
     pub fn parse(text: &str) -> Result<SceneFile, SceneError> {
         check_size(text.len() as u64)?;
-        let document: serde_json::Value = serde_json::from_str(text).map_err(|e| {
-            let what = if e.is_eof() { "the file ends early (is it cut short?)" } else { "not valid JSON" };
-            SceneError(format!("{what}: {e}"))
+        let document = Json::parse(text).map_err(|e| {
+            let what = if e.ends_early { "the file ends early (is it cut short?)" } else { "not valid JSON" };
+            SceneError(format!("{what}: {}", e.message))
         })?;
         let object = document
-            .as_object()
+            .fields()
             .ok_or_else(|| SceneError(format!("a scene is a JSON object, got {}", describe(&document))))?;
-        match object.get("format") {
-            Some(serde_json::Value::String(f)) if f == FORMAT => {}
-            Some(other) => {
+        match member(&object, "format").map(|f| (f, f.kind())) {
+            Some((_, Kind::Text(f))) if f == FORMAT => {}
+            Some((other, _)) => {
                 return Err(SceneError(format!("format must be \"{FORMAT}\", got {}", describe(other))));
             }
             None => return Err(SceneError(format!("format is missing: this is not a {FORMAT} document"))),
         }
-        match object.get("version") {
-            Some(v) if v.as_u64() == Some(VERSION) => {}
-            Some(other) => {
+        match member(&object, "version").map(|v| (v, v.kind())) {
+            Some((_, Kind::Number(v, _))) if v == VERSION as f64 => {}
+            Some((other, _)) => {
                 return Err(SceneError(format!(
                     "version {} is not one this build reads (it reads version {VERSION})",
                     describe(other)
@@ -166,36 +170,36 @@ impl SceneFile {
             }
             None => return Err(SceneError("version is missing".into())),
         }
-        let list = object
-            .get("spheres")
-            .ok_or_else(|| SceneError("spheres is missing".into()))?
-            .as_array()
-            .ok_or_else(|| {
-            SceneError(format!("spheres must be an array, got {}", describe(&object["spheres"])))
-        })?;
+        let listed = member(&object, "spheres").ok_or_else(|| SceneError("spheres is missing".into()))?;
+        let list = listed
+            .items()
+            .ok_or_else(|| SceneError(format!("spheres must be an array, got {}", describe(listed))))?;
         check_count("spheres", list.len())?;
         let spheres = list
             .iter()
             .enumerate()
             .map(|(i, s)| sphere(s, &format!("spheres[{i}]")))
             .collect::<Result<_, _>>()?;
-        let settings = match object.get("settings") {
+        let settings = match member(&object, "settings") {
             None => Vec::new(),
-            Some(serde_json::Value::Object(map)) => {
-                once_each(map.iter().map(|(name, value)| setting(name, value)).collect::<Result<_, _>>()?)?
-            }
-            Some(other) => {
-                return Err(SceneError(format!("settings must be an object, got {}", describe(other))));
-            }
+            Some(given) => match given.fields() {
+                Some(fields) => once_each(
+                    fields.iter().map(|(name, value)| setting(name, value)).collect::<Result<_, _>>()?,
+                )?,
+                None => {
+                    return Err(SceneError(format!("settings must be an object, got {}", describe(given))));
+                }
+            },
         };
         Ok(SceneFile { spheres, settings })
     }
 
-    /// Checks spheres and settings given by name (a page's state) and makes them a scene.
-    pub fn new(
-        spheres: Vec<Sphere>,
-        settings: &Map<String, serde_json::Value>,
-    ) -> Result<SceneFile, SceneError> {
+    /// Checks spheres and settings given by name (a page's state, a JSON object) and makes them a
+    /// scene.
+    pub fn new(spheres: Vec<Sphere>, settings: &Json) -> Result<SceneFile, SceneError> {
+        let settings = settings.fields().ok_or_else(|| {
+            SceneError(format!("the settings must be a JSON object, got {}", describe(settings)))
+        })?;
         check_count("spheres", spheres.len())?;
         for (i, s) in spheres.iter().enumerate() {
             check_sphere(&format!("spheres[{i}]"), *s)?;
@@ -210,37 +214,42 @@ impl SceneFile {
 
     /// The document, indented, with numbers written as short as they read back exactly.
     pub fn to_json(&self) -> String {
-        let spheres: Vec<serde_json::Value> = self
+        let vector = |v: Vec3| Json::array(v.to_array().map(short).into());
+        let spheres = self
             .spheres
             .iter()
             .map(|s| {
-                let mut sphere = json!({
-                    "center": s.center.to_array().map(short),
-                    "radius": short(s.radius),
-                    "velocity": s.velocity.to_array().map(short),
-                });
+                let mut sphere = vec![
+                    ("center".to_string(), vector(s.center)),
+                    ("radius".to_string(), short(s.radius)),
+                    ("velocity".to_string(), vector(s.velocity)),
+                ];
                 if s.is_subtractive() {
-                    sphere["charge"] = json!(-1);
+                    sphere.push(("charge".to_string(), Json::whole(-1)));
                 }
-                sphere
+                Json::object(sphere)
             })
             .collect();
-        let settings: Map<String, serde_json::Value> = self
+        let settings = self
             .settings
             .iter()
             .map(|(name, value)| {
                 let v = match value {
-                    Value::Number(n) if n.fract() == 0.0 && n.abs() < 1e15 => (*n as i64).into(),
-                    Value::Number(n) => Number::from_f64(*n).map_or(serde_json::Value::Null, Into::into),
-                    Value::Boolean(b) => (*b).into(),
-                    Value::Text(t) => t.clone().into(),
+                    Value::Number(n) if n.fract() == 0.0 && n.abs() < 1e15 => Json::whole(*n as i64),
+                    Value::Number(n) => Json::number(*n),
+                    Value::Boolean(b) => Json::boolean(*b),
+                    Value::Text(t) => Json::text(t),
                 };
                 (name.to_string(), v)
             })
             .collect();
-        let document =
-            json!({ "format": FORMAT, "version": VERSION, "spheres": spheres, "settings": settings });
-        serde_json::to_string_pretty(&document).expect("a scene always serialises")
+        Json::object(vec![
+            ("format".to_string(), Json::text(FORMAT)),
+            ("version".to_string(), Json::whole(VERSION as i64)),
+            ("spheres".to_string(), Json::array(spheres)),
+            ("settings".to_string(), Json::object(settings)),
+        ])
+        .pretty()
     }
 
     /// A setting's value, if the scene holds it.
@@ -269,7 +278,6 @@ impl SceneFile {
 }
 
 /// An f32 as the JSON number with the shortest decimal text that reads back as the same f32.
-fn short(x: f32) -> serde_json::Value {
-    let text = num(x).to_string();
-    parse_f64(&text).and_then(Number::from_f64).map_or(serde_json::Value::Null, Into::into)
+fn short(x: f32) -> Json {
+    parse_f64(&num(x).to_string()).map_or(Json::number(f64::NAN), Json::number)
 }

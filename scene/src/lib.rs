@@ -9,6 +9,7 @@
 pub mod checks;
 pub mod decimal;
 pub mod file;
+pub mod json;
 pub mod math;
 pub mod motion;
 pub mod number;

@@ -48,10 +48,12 @@ fn classify_cells(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_in
     let origin = block_coords(active_blocks[slot]) * BLOCK_CELLS;
     let at = vec3<u32>(local % BLOCK_CELLS, (local / BLOCK_CELLS) % BLOCK_CELLS, local / (BLOCK_CELLS * BLOCK_CELLS));
     var case_index = 0u;
+    var values: array<f32, 8>;
     if (all(origin + at < vec3<u32>(grid.cells_per_axis))) {
         for (var c = 0u; c < 8u; c++) {
             let p = at + corner_offset(c);
             let v = block_values[slot * 125u + p.x + BLOCK_POINTS * (p.y + BLOCK_POINTS * p.z)];
+            values[c] = v;
             case_index |= select(0u, 1u << c, v > grid.iso);
         }
     }
@@ -60,6 +62,9 @@ fn classify_cells(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_in
         let choices = face_choices(slot, at, case_index);
         let decider = (grid.flags & FLAG_DECIDER) != 0u;
         entry |= select(choices & (0x3fu << DECIDED_SHIFT), choices, decider);
+    }
+    if ((grid.flags & FLAG_MC33) != 0u && case_index != 0u && case_index != 255u) {
+        entry |= interior_code(values) << INTERIOR_SHIFT;
     }
     cell_cases[slot * 64u + local] = entry;
     if (case_index != 0u && case_index != 255u) {
@@ -133,6 +138,43 @@ fn face_choices(slot: u32, at: vec3<u32>, case_index: u32) -> u32 {
         }
     }
     return choices;
+}
+
+// The interior's join of a cell with corner values `u` (interior_code in core/src/extract/interior.rs,
+// in the same order): 0 for none, else 1 + 2 · pair + side. The slice at the height t* where A·C − B·D
+// on the vertical edges A (0–4), B (1–5), C (2–6), D (3–7) peaks says which pair of edges the body
+// saddle joins, and on which side.
+fn interior_code(f: array<f32, 8>) -> u32 {
+    var u: array<f32, 8>;
+    for (var c = 0u; c < 8u; c++) {
+        u[c] = f[c] - grid.iso;
+    }
+    let da = u[4] - u[0];
+    let db = u[5] - u[1];
+    let dc = u[6] - u[2];
+    let dd = u[7] - u[3];
+    let qa = da * dc - db * dd;
+    let qb = (u[0] * dc + u[2] * da) - (u[1] * dd + u[3] * db);
+    if (qa == 0.0) {
+        return 0u;
+    }
+    let t = -qb / (2.0 * qa);
+    if (!(t > 0.0 && t < 1.0)) {
+        return 0u;
+    }
+    let a = u[0] + da * t;
+    let b = u[1] + db * t;
+    let c = u[2] + dc * t;
+    let d = u[3] + dd * t;
+    let ac = a * c;
+    let bd = b * d;
+    if (ac > bd && ac > 0.0) {
+        return 1u + select(0u, 1u, a <= 0.0);
+    }
+    if (bd > ac && bd > 0.0) {
+        return 3u + select(0u, 1u, b <= 0.0);
+    }
+    return 0u;
 }
 
 struct DispatchIndirect {

@@ -14,9 +14,10 @@
 // The active cells, each as slot * 64 + cell.
 @group(0) @binding(8) var<storage, read> active_cells: array<u32>;
 @group(0) @binding(6) var<storage, read> block_values: array<f32>;
-// Every case's triangles under every choice on its ambiguous faces (decider_table in
-// core/src/extract/decider.rs): per case, its first variant; per variant, its first triangle << 8 | its
-// triangle count; per triangle, its three edges in 4 bits each. Variant 0 is the classic table's.
+// Every case's triangles under every choice on its ambiguous faces and every join of its interior
+// (variant_table in core/src/extract/decider.rs): per case, its first variant; per variant (choices ×
+// INTERIOR_CODES + interior code), its first triangle << 8 | its triangle count; per triangle, its three
+// edges in 4 bits each. Variant 0 is the classic table's.
 @group(0) @binding(17) var<storage, read> triangle_table: array<u32>;
 // Slot s, cell c: the case at s * 64 + c.
 @group(0) @binding(7) var<storage, read> cell_cases: array<u32>;
@@ -138,9 +139,11 @@ fn make_triangles(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_in
     }
     let slot = reference / 64u;
     let local = reference % 64u;
-    // The cell's case and, with the decider, its choices on its ambiguous faces pick its variant.
+    // The cell's case and, with the decider, its choices on its ambiguous faces and, with MC33, its
+    // interior's join pick its variant.
     let cell_entry = cell_cases[reference];
-    let variant = triangle_table[triangle_table[cell_entry & CASE_BITS] + ((cell_entry >> CHOSEN_SHIFT) & 0x3fu)];
+    let chosen = ((cell_entry >> CHOSEN_SHIFT) & 0x3fu) * INTERIOR_CODES + ((cell_entry >> INTERIOR_SHIFT) & 7u);
+    let variant = triangle_table[triangle_table[cell_entry & CASE_BITS] + chosen];
     let first_triangle = variant >> 8u;
     let triangle_count = variant & 255u;
     if (triangle_count == 0u) {

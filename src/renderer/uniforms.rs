@@ -28,7 +28,8 @@ impl Renderer {
             max_cells: capacity.cells,
             flags: (self.settings.view.interpolation == Interpolation::Midpoint) as u32
                 | ((self.settings.view.blend == Blend::Max) as u32) << 1
-                | ((self.settings.view.case_table == CaseTable::Decider) as u32) << 2,
+                | ((self.settings.view.case_table != CaseTable::Classic) as u32) << 2
+                | ((self.settings.view.case_table == CaseTable::Mc33) as u32) << 3,
         };
         self.queue.write_buffer(&self.scene_buffers.grid, 0, bytemuck::bytes_of(&grid_uniform));
         let packed: Vec<[f32; 4]> = spheres.iter().map(|s| s.to_gpu()).collect();

@@ -5,6 +5,7 @@
 //! read back from the GPU.
 
 use crate::extract::decider::{ambiguous_faces, decided_triangles, saddle_above};
+use crate::extract::interior::{interior_code, joined_corners};
 use crate::extract::reference::{Construction, Grid, blended_field_at};
 use crate::extract::tables::{CORNER_OFFSETS, EDGE_CORNERS, EDGE_TABLE, FACE_CORNERS};
 use crate::scene::Sphere;
@@ -54,6 +55,11 @@ pub struct CellReport {
     pub edges: Vec<EdgeCrossing>,
     /// Its ambiguous faces, in face order.
     pub faces: Vec<FaceDecision>,
+    /// The corners (bit per corner) the interior test joins through the cell's inside
+    /// (`extract::interior`), whatever the table; 0 for none.
+    pub interior: u8,
+    /// True when the triangles drawn join two of the cell's loops by a tunnel (`table=mc33`).
+    pub tunnel: bool,
 }
 
 /// Inspects `cell` (its coordinates must be below `grid.cells_per_axis`).
@@ -70,7 +76,7 @@ pub fn inspect(
         if grid.is_boundary(id) { 0.0 } else { blended_field_at(spheres, grid.point(id), construction.blend) }
     });
     let case = (0..8).fold(0u8, |m, c| m | ((corners[c] > iso) as u8) << c);
-    let decided = construction.case_table == CaseTable::Decider;
+    let decided = construction.case_table != CaseTable::Classic;
     let mut faces = Vec::new();
     let mut joined = 0;
     for (face, c) in FACE_CORNERS.iter().enumerate() {
@@ -90,8 +96,12 @@ pub fn inspect(
         });
     }
     // The triangles `Construction::cell_triangles` gives for these choices.
-    let triangles =
-        decided_triangles(case as usize, joined).map(|t| [t[0] as u8, t[2] as u8, t[1] as u8]).collect();
+    let code = interior_code(corners, iso);
+    let drawn_code = if construction.case_table == CaseTable::Mc33 { code } else { 0 };
+    let triangles: Vec<[u8; 3]> = decided_triangles(case as usize, joined, drawn_code)
+        .map(|t| [t[0] as u8, t[2] as u8, t[1] as u8])
+        .collect();
+    let tunnel = drawn_code != 0 && triangles.len() != decided_triangles(case as usize, joined, 0).count();
     let edges = (0..12)
         .filter(|&e| EDGE_TABLE[case as usize] >> e & 1 == 1)
         .map(|e| {
@@ -101,7 +111,18 @@ pub fn inspect(
             EdgeCrossing { edge: e as u8, t, vertex: pa + (pb - pa) * t }
         })
         .collect();
-    CellReport { cell, corners, case, class: case_classes()[case as usize], triangles, edges, faces }
+    let interior = joined_corners(case as usize, code);
+    CellReport {
+        cell,
+        corners,
+        case,
+        class: case_classes()[case as usize],
+        triangles,
+        edges,
+        faces,
+        interior,
+        tunnel,
+    }
 }
 
 /// What a ray picks.

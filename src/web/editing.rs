@@ -6,6 +6,7 @@ use super::{Polling, View, js_error, pack_spheres, unpack_spheres};
 use crate::device::{read_texture, render_target};
 use crate::export::{MeshFormat, encode};
 use crate::scene::file::{self as scene_file, SceneFile};
+use crate::scene::json::Json;
 use crate::scene::sphere::{self, SceneError};
 use crate::{Scene, Sphere};
 use glam::Vec3;
@@ -15,12 +16,7 @@ use wasm_bindgen::prelude::*;
 /// of parameter names and values); throws with what is wrong.
 #[wasm_bindgen]
 pub fn save_scene(spheres: Vec<f32>, settings_json: &str) -> Result<String, JsError> {
-    // Read as any JSON value and then required to be an object: reading into a map directly would
-    // bring serde's messages for values of the wrong type, and with them core's float formatting.
-    let settings = match serde_json::from_str(settings_json).map_err(js_error)? {
-        serde_json::Value::Object(settings) => settings,
-        _ => return Err(JsError::new("the page's settings must be a JSON object")),
-    };
+    let settings = Json::parse(settings_json).map_err(|e| js_error(e.message))?;
     Ok(SceneFile::new(unpack_spheres(&spheres)?, &settings).map_err(js_error)?.to_json())
 }
 

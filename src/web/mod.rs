@@ -36,7 +36,7 @@ fn start() {
         show_panic(&info.to_string());
     }));
     // The marching-cubes tables are made now, once, rather than by whichever frame first meshes.
-    crate::extract::decider::decider_table();
+    crate::extract::decider::variant_table();
 }
 
 /// Resolves in a later browser task (a zero-delay timer), letting the browser run in between.

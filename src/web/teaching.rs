@@ -23,7 +23,7 @@ fn numbers<T: Into<JsValue> + Copy>(values: &[T]) -> JsValue {
 /// The triangles of `case` as edge numbers, wound as drawn.
 fn case_triangles(case: u8) -> JsValue {
     let triangles = js_sys::Array::new();
-    for t in decided_triangles(case as usize, 0) {
+    for t in decided_triangles(case as usize, 0, 0) {
         triangles.push(&numbers(&[t[0] as u32, t[2] as u32, t[1] as u32]));
     }
     triangles.into()

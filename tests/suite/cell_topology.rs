@@ -7,12 +7,9 @@
 //! the iso level are skipped, so that a sub-cell's interior is unlikely to need a tunnel (the margin is
 //! a heuristic: the check is that no class without a tunnel ever differs).
 //!
-//! The rule for the cell's interior that a topologically correct table (MC33) needs is checked here
-//! too, on its own: the faces as the decider joins them, and each body saddle of the interpolant (a
-//! critical point inside the cell) that is a pass between two high regions above the level, or between
-//! two low regions below it, joining the two corners its rising (or falling) paths reach. The sheets
-//! this predicts, one per pair of solid regions that meet, with as many holes as loops between them,
-//! have the interpolant's components and Euler characteristic in every cell.
+//! MC33 (`table=mc33`: the faces as the decider joins them, and a tunnel where the interior test of
+//! `extract::interior` finds the interpolant joining two loops inside the cell) must have the
+//! interpolant's components and Euler characteristic in every cell.
 //!
 //! The asymptotic decider resolves faces only. Its patches must have the interpolant's topology in
 //! every class without an interior ambiguity, and wherever the interpolant has no saddle inside the
@@ -20,6 +17,7 @@
 //! join loops the faces leave apart) that differ are counted.
 
 use metaballs::extract::decider::{decided_triangles, face_choices};
+use metaballs::extract::interior::interior_code;
 use metaballs::extract::tables::{CORNER_OFFSETS, EDGE_CORNERS};
 use metaballs::teach::case_classes::case_classes;
 use std::collections::{BTreeMap, BTreeSet};
@@ -104,7 +102,7 @@ fn fine_patch(f: &[f32; 8]) -> Vec<[u64; 3]> {
                     let axis = (0..3).find(|&i| pa[i] != pb[i]).unwrap() as u64;
                     at([0, 1, 2].map(|i| pa[i].min(pb[i]))) as u64 * 3 + axis
                 };
-                for t in decided_triangles(case, face_choices(case, v, ISO)) {
+                for t in decided_triangles(case, face_choices(case, v, ISO), 0) {
                     triangles.push(t.map(edge));
                 }
             }
@@ -209,7 +207,7 @@ fn the_deciders_patch_has_the_interpolants_topology_where_no_tunnel_can_change_i
             }
             done += 1;
             let patch: Vec<[u64; 3]> =
-                decided_triangles(case, face_choices(case, f, ISO)).map(|t| t.map(|e| e as u64)).collect();
+                decided_triangles(case, face_choices(case, f, ISO), 0).map(|t| t.map(|e| e as u64)).collect();
             let ours = shape(&patch);
             let interpolant = shape(&fine_patch(&f));
             let class = class as usize;
@@ -234,142 +232,41 @@ fn the_deciders_patch_has_the_interpolants_topology_where_no_tunnel_can_change_i
     assert!(differing > 0, "no cell needs a tunnel: {tally:?}");
 }
 
-/// The interpolant's gradient and Hessian (zero diagonal: [F_xy, F_xz, F_yz]) at p.
-fn derivatives(f: &[f32; 8], [x, y, z]: [f64; 3]) -> ([f64; 3], [f64; 3]) {
-    let [_, b, c, d, e, g, k, h] = coefficients(f);
-    let gradient =
-        [b + e * y + g * z + h * y * z, c + e * x + k * z + h * x * z, d + k * y + g * x + h * x * y];
-    (gradient, [e + h * z, g + h * y, k + h * x])
-}
-
-/// The eigenvector of the symmetric zero-diagonal matrix [[0, p, q], [p, 0, r], [q, r, 0]] whose
-/// eigenvalue is the largest (sign 1) or the smallest (sign −1), by power iteration.
-fn extreme_eigenvector([p, q, r]: [f64; 3], sign: f64) -> [f64; 3] {
-    let shift = (p * p + q * q + r * r).sqrt() * 2.0 + 1e-12;
-    let mut v = [0.57, 0.61, 0.55];
-    for _ in 0..500 {
-        let m = [
-            sign * (p * v[1] + q * v[2]) + shift * v[0],
-            sign * (p * v[0] + r * v[2]) + shift * v[1],
-            sign * (q * v[0] + r * v[1]) + shift * v[2],
-        ];
-        let n = (m[0] * m[0] + m[1] * m[1] + m[2] * m[2]).sqrt();
-        v = m.map(|t| t / n);
-    }
-    v
-}
-
-/// The corner a path from `start` reaches climbing (sign 1) or descending (sign −1) the interpolant
-/// inside the cell.
-fn corner_reached(f: &[f32; 8], start: [f64; 3], sign: f64) -> usize {
-    let mut p = start;
-    for _ in 0..20000 {
-        let (gradient, _) = derivatives(f, p);
-        let n = (gradient[0].powi(2) + gradient[1].powi(2) + gradient[2].powi(2)).sqrt().max(1e-12);
-        let next = [0, 1, 2].map(|i| (p[i] + sign * 2e-4 * gradient[i] / n).clamp(0.0, 1.0));
-        if next == p {
-            break;
-        }
-        p = next;
-    }
-    let o = p.map(|t| t.round() as u32);
-    CORNER_OFFSETS.iter().position(|&c| c == o).unwrap()
-}
-
-/// The topology the faces and the body saddles give: inside corners grouped by the cube's edges, the
-/// faces whose inside corners the decider joins and the body saddles above the level whose two climbing
-/// paths end at them; outside corners likewise (faces left apart, saddles below the level, paths
-/// descending). A loop on the cell's boundary separates an inside group from an outside one; the loops
-/// between the same two solid regions bound one sheet, a sphere with that many holes.
-fn predicted_shape(f: &[f32; 8]) -> (usize, i64) {
-    use metaballs::extract::tables::FACE_CORNERS;
-    let inside: [bool; 8] = std::array::from_fn(|c| f[c] > ISO);
-    let mut parent: Vec<usize> = (0..8).collect();
-    fn root(parent: &mut [usize], mut i: usize) -> usize {
-        while parent[i] != i {
-            i = parent[i];
-        }
-        i
-    }
-    let join = |parent: &mut Vec<usize>, a: usize, b: usize| {
-        let (ra, rb) = (root(parent, a), root(parent, b));
-        parent[ra] = rb;
-    };
-    for [a, b] in EDGE_CORNERS {
-        if inside[a] == inside[b] {
-            join(&mut parent, a, b);
-        }
-    }
-    for corners in FACE_CORNERS {
-        let q = corners.map(|c| f[c]);
-        let s = corners.map(|c| inside[c]);
-        if s[0] == s[2] && s[1] == s[3] && s[0] != s[1] {
-            let joined = metaballs::extract::decider::saddle_above(q, ISO);
-            // The diagonal whose corners the face joins: the inside ones, or else the outside ones.
-            let inside_diagonal = if s[0] { [corners[0], corners[2]] } else { [corners[1], corners[3]] };
-            let outside_diagonal = if s[0] { [corners[1], corners[3]] } else { [corners[0], corners[2]] };
-            let [a, b] = if joined { inside_diagonal } else { outside_diagonal };
-            join(&mut parent, a, b);
-        }
-    }
-    // The patches on the boundary, before the interior joins any.
-    let patch: [usize; 8] = std::array::from_fn(|c| root(&mut parent, c));
-    for p in body_saddles(f) {
-        let value = trilinear(f, p);
-        let (_, hessian) = derivatives(f, p);
-        let det = 2.0 * hessian[0] * hessian[1] * hessian[2];
-        // A pass between two high regions (one rising direction) above the level joins them; one
-        // between two low regions (one falling direction) below it joins those.
-        let sign = if det > 0.0 && value > ISO as f64 {
-            1.0
-        } else if det < 0.0 && value < ISO as f64 {
-            -1.0
-        } else {
-            continue;
-        };
-        let v = extreme_eigenvector(hessian, sign);
-        let ends = [1.0, -1.0].map(|s| corner_reached(f, [0, 1, 2].map(|i| p[i] + s * 1e-3 * v[i]), sign));
-        join(&mut parent, ends[0], ends[1]);
-    }
-    let region: [usize; 8] = std::array::from_fn(|c| root(&mut parent, c));
-    // Loops: pairs of adjacent patches across a crossed edge.
-    let loops: BTreeSet<(usize, usize)> = EDGE_CORNERS
-        .iter()
-        .filter(|[a, b]| inside[*a] != inside[*b])
-        .map(|&[a, b]| if inside[a] { (patch[a], patch[b]) } else { (patch[b], patch[a]) })
-        .collect();
-    let mut sheets: BTreeMap<(usize, usize), i64> = BTreeMap::new();
-    for &(p, q) in &loops {
-        *sheets.entry((region[p], region[q])).or_default() += 1;
-    }
-    (sheets.len(), sheets.values().map(|holes| 2 - holes).sum())
-}
-
+/// Every sign pattern with corner values drawn two ways: within one of the level (inside in (1, 2],
+/// outside in [0, 1)), and spread from 0.01 to 100 away from it on either side.
 #[test]
-fn faces_and_body_saddles_give_the_interpolants_topology() {
+fn the_mc33_patch_has_the_interpolants_topology_in_every_cell() {
     let mut rng = Rng(0x2545_f491_4f6c_dd1d);
     let (mut compared, mut wrong, mut tunnels) = (0, Vec::new(), 0);
-    for case in 1..255usize {
+    for (case, spread) in (1..255usize).flat_map(|case| [(case, false), (case, true)]) {
         let mut done = 0;
         while done < PER_CASE {
             let f: [f32; 8] = std::array::from_fn(|c| {
                 let r = rng.next();
-                if case >> c & 1 == 1 { ISO + (1.0 - r).max(1e-3) } else { ISO * r }
+                let inside = case >> c & 1 == 1;
+                match (spread, inside) {
+                    (false, true) => ISO + (1.0 - r).max(1e-3),
+                    (false, false) => ISO * r,
+                    (true, side) => ISO + if side { 1.0 } else { -1.0 } * 10f32.powf(4.0 * r - 2.0),
+                }
             });
             if critical_values(&f).0.iter().any(|&v| (v - ISO as f64).abs() < MARGIN as f64) {
                 continue;
             }
             done += 1;
             compared += 1;
-            let (predicted, interpolant) = (predicted_shape(&f), shape(&fine_patch(&f)));
-            // A sheet with holes h has χ = 2 − h: disks give χ = components.
-            tunnels += (predicted.0 as i64 - predicted.1) as usize;
-            if predicted != interpolant {
-                wrong.push((case, f, predicted, interpolant));
+            let (joined, code) = (face_choices(case, f, ISO), interior_code(f, ISO));
+            let patch: Vec<[u64; 3]> =
+                decided_triangles(case, joined, code).map(|t| t.map(|e| e as u64)).collect();
+            let (ours, interpolant) = (shape(&patch), shape(&fine_patch(&f)));
+            // A sheet with h holes has χ = 2 − h: disks give χ = components.
+            tunnels += (ours.0 as i64 - ours.1) as usize;
+            if ours != interpolant {
+                wrong.push((case, f, ours, interpolant));
             }
         }
     }
-    eprintln!("{compared} cells, {tunnels} holes beyond one per sheet (tunnels)");
+    eprintln!("{compared} cells, {tunnels} of them with a tunnel");
     assert!(wrong.is_empty(), "{} of {compared} cells: {:?}", wrong.len(), &wrong[..wrong.len().min(6)]);
     assert!(tunnels > 0, "the cells hold tunnels");
 }

@@ -9,7 +9,7 @@ use metaballs::scene::params::{
     Group, Kind, PARAMETERS, Parameter, Scope, Value, control, control_names, parameter, parse_parameter,
 };
 use metaballs::{Settings, Sphere};
-use serde_json::{Map, Value as Json};
+use serde_json::Value as Json;
 
 /// A value of `p` other than its default, as text.
 fn other_value(p: &Parameter) -> String {
@@ -108,8 +108,10 @@ fn every_row_a_scene_holds_is_saved_and_read_back_by_each_of_its_names() {
         let text = other_value(p);
         let value = p.parse(&text).unwrap();
         for name in p.names() {
-            let mut given = Map::new();
-            given.insert(name.to_string(), Json::String(text.clone()));
+            let given = metaballs::scene::json::Json::object(vec![(
+                name.to_string(),
+                metaballs::scene::json::Json::text(&text),
+            )]);
             let scene = SceneFile::new(spheres.clone(), &given).unwrap_or_else(|e| panic!("{name}: {e}"));
             if !p.in_scene {
                 assert_eq!(scene.setting(p.name), None, "{name} belongs to the page, not the scene");

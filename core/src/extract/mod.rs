@@ -2,6 +2,7 @@
 //!
 //! - [`tables`]: the 256-case marching-cubes tables, once, for the GPU and every CPU path.
 //! - [`decider`]: the triangles of cells whose ambiguous faces the asymptotic decider resolves.
+//! - [`interior`]: the joins inside a cell that MC33 makes (tunnels between loops).
 //! - [`reference`]: the CPU oracle every extractor must equal exactly.
 //! - [`field`]: the field on the CPU as the passes evaluate it (bounds, rows of samples).
 //! - [`mesh`]: triangle meshes and the properties the tests hold them to.
@@ -10,6 +11,7 @@
 pub mod cpu;
 pub mod decider;
 pub mod field;
+pub mod interior;
 pub mod mesh;
 pub mod reference;
 pub mod tables;

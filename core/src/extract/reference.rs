@@ -1,7 +1,8 @@
 //! The CPU oracle: the same field, tables and interpolation as the GPU passes, in plain Rust, for tests
 //! and tools. It favours being obviously right over being fast.
 
-use crate::extract::decider::{decided_triangles, face_choices};
+use crate::extract::decider::{MAX_DECIDED_TRIANGLES, decided_triangles, face_choices};
+use crate::extract::interior::interior_code;
 use crate::extract::mesh::Mesh;
 use crate::extract::tables::{CORNER_OFFSETS, EDGE_CORNERS, EDGE_TABLE};
 use crate::scene::params::view::{Blend, CaseTable, Interpolation};
@@ -66,19 +67,21 @@ pub struct Construction {
 
 impl Construction {
     /// The triangles of a cell of case `case` with corner values `values` (corner order), as edge
-    /// triples wound clockwise seen from outside: the classic table's, or with `CaseTable::Decider` the
-    /// asymptotic decider's where the cell has an ambiguous face. Returns how many of `out` it filled.
+    /// triples wound clockwise seen from outside: the classic table's; with `CaseTable::Decider` the
+    /// asymptotic decider's where the cell has an ambiguous face; with `CaseTable::Mc33` those and a
+    /// tunnel where the cell's interior joins two of its loops. Returns how many of `out` it filled.
     pub fn cell_triangles(
         &self,
         case: usize,
         values: [f32; 8],
         iso: f32,
-        out: &mut [[usize; 3]; 10],
+        out: &mut [[usize; 3]; MAX_DECIDED_TRIANGLES],
     ) -> usize {
-        let decided = self.case_table == CaseTable::Decider;
+        let decided = self.case_table != CaseTable::Classic;
         let joined = if decided { face_choices(case, values, iso) } else { 0 };
+        let code = if self.case_table == CaseTable::Mc33 { interior_code(values, iso) } else { 0 };
         let mut n = 0;
-        for t in decided_triangles(case, joined) {
+        for t in decided_triangles(case, joined, code) {
             out[n] = t;
             n += 1;
         }
@@ -272,7 +275,7 @@ pub fn extract_with(spheres: &[Sphere], iso: f32, grid: Grid, construction: Cons
                     let axis = (0..3).find(|&i| ia[i] != ib[i]).unwrap() as u64;
                     (p, normal, grid.point_index(ia) as u64 * 3 + axis)
                 };
-                let mut triangles = [[0; 3]; 10];
+                let mut triangles = [[0; 3]; MAX_DECIDED_TRIANGLES];
                 let count =
                     construction.cell_triangles(case, std::array::from_fn(value), iso, &mut triangles);
                 for tri in &triangles[..count] {

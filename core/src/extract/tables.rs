@@ -12,6 +12,7 @@
 //! corners `EDGE_CORNERS[e]`. Seen from outside, the table's triangles wind clockwise; meshes reverse
 //! them so that front faces wind counter-clockwise, the usual convention.
 
+use super::interior;
 use std::sync::LazyLock;
 
 /// Offsets of the eight corners of a cell from its minimum corner, in cells.
@@ -66,7 +67,7 @@ pub static TRI_TABLE: LazyLock<[[i8; 16]; 256]> = LazyLock::new(|| {
     let mut triangles = Vec::new();
     for (case, row) in table.iter_mut().enumerate() {
         triangles.clear();
-        triangulate(case, 0, &mut triangles);
+        triangulate(case, 0, 0, &mut triangles);
         for (k, &t) in triangles.iter().enumerate() {
             row[3 * k..3 * k + 3].copy_from_slice(&[t & 15, (t >> 4) & 15, (t >> 8) & 15].map(|e| e as i8));
         }
@@ -118,9 +119,10 @@ pub fn edge_between(a: usize, b: usize) -> usize {
 
 /// Appends the triangles of `case` to `out`, one word each (edges in bits 0..3, 4..7 and 8..11,
 /// clockwise seen from outside), with bit `face` of `joined` set where that
-/// ambiguous face joins its inside corners.
+/// ambiguous face joins its inside corners, and the corners `interior` joined inside the cell (see
+/// `interior`: two loops it makes one sheet are joined by a band).
 #[inline(never)]
-pub fn triangulate(case: usize, joined: u8, out: &mut Vec<u32>) {
+pub fn triangulate(case: usize, joined: u8, interior: u8, out: &mut Vec<u32>) {
     let inside = |c: usize| (case >> c) & 1 == 1;
     // next[e]: the crossing after the one on edge e, going round its loop (12: none).
     let mut next = [12; 13];
@@ -141,19 +143,31 @@ pub fn triangulate(case: usize, joined: u8, out: &mut Vec<u32>) {
             }
         }
     }
-    let mut seen = [false; 13];
+    // The loops, one after another in `order`, each ending where `ends` says.
+    let (mut seen, mut order, mut ends, mut n) = ([false; 13], [0; 12], [0; 5], 0);
+    let mut loops = 0;
     for start in 0..12 {
         if next[start] == 12 || seen[start] {
             continue;
         }
-        let (mut ring, mut n, mut e) = ([0; 12], 0, start);
+        let mut e = start;
         while !seen[e] {
             seen[e] = true;
-            ring[n] = e;
+            order[n] = e;
             n += 1;
             e = next[e];
         }
-        fill(&ring[..n], out);
+        loops += 1;
+        ends[loops] = n;
+    }
+    let rings: [&[usize]; 4] = std::array::from_fn(|k| &order[ends[k.min(loops)]..ends[(k + 1).min(loops)]]);
+    let joined_loops = interior::tunnel(case, joined, interior, &rings[..loops]);
+    for (k, ring) in rings[..loops].iter().enumerate() {
+        match joined_loops {
+            Some((a, b)) if k == a => interior::band(ring, rings[b], out),
+            Some((_, b)) if k == b => {}
+            _ => fill(ring, out),
+        }
     }
 }
 

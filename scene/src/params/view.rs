@@ -116,6 +116,9 @@ choice!(
         /// The asymptotic decider: the bilinear interpolant's saddle on each such face decides, so the
         /// surface meets every cell face as the interpolant does (the cell's interior is not resolved).
         Decider = "decider",
+        /// MC33: the faces as the decider joins them, and a tunnel through the cell where the
+        /// trilinear interpolant joins two loops inside it, so each cell has the interpolant's topology.
+        Mc33 = "mc33",
     }
 );
 

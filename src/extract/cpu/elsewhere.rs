@@ -105,7 +105,7 @@ fn unpack(packed: &[f32]) -> Result<Unpacked, String> {
     let method = [Method::MarchingCubes, Method::SurfaceNets][word(0, Method::WORDS)?];
     let interpolation = [Interpolation::Linear, Interpolation::Midpoint][word(3, Interpolation::WORDS)?];
     let blend = [Blend::Sum, Blend::Max][word(4, Blend::WORDS)?];
-    let case_table = [CaseTable::Classic, CaseTable::Decider][word(5, CaseTable::WORDS)?];
+    let case_table = [CaseTable::Classic, CaseTable::Decider, CaseTable::Mc33][word(5, CaseTable::WORDS)?];
     let cells = packed[2];
     if !((1.0..=MAX_CELLS).contains(&cells) && cells.fract() == 0.0) {
         return Err(format!("a packed mesh job has {} cells per axis", num(cells)));

@@ -3,7 +3,7 @@
 
 use crate::device::{bind_buffers, bindings, compute_module, compute_pipeline, wgsl};
 use crate::extract::buffers::MeshBuffers;
-use crate::extract::decider::decider_table;
+use crate::extract::decider::variant_table;
 use crate::extract::gpu::scene_buffers::SceneBuffers;
 use wgpu::util::DeviceExt;
 
@@ -35,7 +35,7 @@ impl MarchingCubesPass {
             finalize: compute_pipeline(device, "marching cubes: finalize pipeline", &module, "finalize_draw"),
             triangle_table: device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
                 label: Some("marching cubes: triangle table"),
-                contents: bytemuck::cast_slice(decider_table()),
+                contents: bytemuck::cast_slice(variant_table()),
                 usage: wgpu::BufferUsages::STORAGE,
             }),
             groups: None,

@@ -9,7 +9,7 @@
 //! classified and their triangles emitted, each vertex made once on first use and found again through
 //! the edge it lies on. Every array is kept between frames: after warm-up a frame allocates nothing.
 
-use crate::extract::decider::{ambiguous_faces, face_choices};
+use crate::extract::decider::{MAX_DECIDED_TRIANGLES, ambiguous_faces, face_choices};
 use crate::extract::field::{BLOCK_CELLS, Spheres, sample_run};
 use crate::extract::mesh::IndexedMesh;
 use crate::extract::reference::{self, Construction, Grid};
@@ -296,7 +296,7 @@ impl CpuMesher {
                     if ambiguous_faces(case) != 0 && face_choices(case, values, iso) != 0 {
                         self.decided.push([x, y, z]);
                     }
-                    let mut triangles = [[0; 3]; 10];
+                    let mut triangles = [[0; 3]; MAX_DECIDED_TRIANGLES];
                     let count = construction.cell_triangles(case, values, iso, &mut triangles);
                     for t in &triangles[..count] {
                         // The tables wind clockwise seen from outside; emit counter-clockwise.
@@ -405,7 +405,8 @@ mod tests {
                     };
                     let f: [f32; 8] = std::array::from_fn(corner);
                     let case = (0..8).fold(0, |m, c| m | ((f[c] > 1.5) as usize) << c);
-                    let (mut classic, mut decided) = ([[0; 3]; 10], [[0; 3]; 10]);
+                    let (mut classic, mut decided) =
+                        ([[0; 3]; MAX_DECIDED_TRIANGLES], [[0; 3]; MAX_DECIDED_TRIANGLES]);
                     let a = Construction::default().cell_triangles(case, f, 1.5, &mut classic);
                     let b = decider.cell_triangles(case, f, 1.5, &mut decided);
                     if classic[..a] != decided[..b] {
