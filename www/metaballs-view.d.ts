@@ -67,8 +67,8 @@ export declare class MetaballsView extends HTMLElement {
   slice: string;
   /** Interpolation: linear, midpoint. Attribute `interpolation`; default "linear". */
   interpolation: 'linear' | 'midpoint';
-  /** Table: classic, decider. Attribute `table`; default "classic". */
-  table: 'classic' | 'decider';
+  /** Table: classic, decider, mc33. Attribute `table`; default "classic". */
+  table: 'classic' | 'decider' | 'mc33';
   /** Blend: sum, max. Attribute `blend`; default "sum". */
   blend: 'sum' | 'max';
   /** Saddle: table, center, decider. Attribute `saddle`; default "table". */

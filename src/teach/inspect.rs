@@ -55,8 +55,9 @@ pub struct CellReport {
     pub edges: Vec<EdgeCrossing>,
     /// Its ambiguous faces, in face order.
     pub faces: Vec<FaceDecision>,
-    /// The corners (bit per corner) the interior test joins through the cell's inside
-    /// (`extract::interior`), whatever the table; 0 for none.
+    /// The corners (bit per corner) that MC33 joins by a tunnel through the cell's inside, between
+    /// two of the loops the decider's faces leave apart (`extract::interior`), whatever the table; 0
+    /// for none.
     pub interior: u8,
     /// True when the triangles drawn join two of the cell's loops by a tunnel (`table=mc33`).
     pub tunnel: bool,
@@ -78,7 +79,7 @@ pub fn inspect(
     let case = (0..8).fold(0u8, |m, c| m | ((corners[c] > iso) as u8) << c);
     let decided = construction.case_table != CaseTable::Classic;
     let mut faces = Vec::new();
-    let mut joined = 0;
+    let (mut joined, mut decider_joined) = (0, 0);
     for (face, c) in FACE_CORNERS.iter().enumerate() {
         if ambiguous_faces(case as usize) & (1 << face) == 0 {
             continue;
@@ -88,6 +89,7 @@ pub fn inspect(
         let saddle = (denominator != 0.0).then(|| (f[0] * f[2] - f[1] * f[3]) / denominator);
         let decider_joins = saddle_above(f, iso);
         joined |= ((decided && decider_joins) as u8) << face;
+        decider_joined |= (decider_joins as u8) << face;
         faces.push(FaceDecision {
             face: face as u8,
             saddle,
@@ -97,11 +99,13 @@ pub fn inspect(
     }
     // The triangles `Construction::cell_triangles` gives for these choices.
     let code = interior_code(corners, iso);
-    let drawn_code = if construction.case_table == CaseTable::Mc33 { code } else { 0 };
-    let triangles: Vec<[u8; 3]> = decided_triangles(case as usize, joined, drawn_code)
+    let mc33 = construction.case_table == CaseTable::Mc33;
+    let triangles: Vec<[u8; 3]> = decided_triangles(case as usize, joined, if mc33 { code } else { 0 })
         .map(|t| [t[0] as u8, t[2] as u8, t[1] as u8])
         .collect();
-    let tunnel = drawn_code != 0 && triangles.len() != decided_triangles(case as usize, joined, 0).count();
+    // A tunnel's band has four triangles more than the two loops' fills.
+    let count = |code| decided_triangles(case as usize, decider_joined, code).count();
+    let has_tunnel = count(code) != count(0);
     let edges = (0..12)
         .filter(|&e| EDGE_TABLE[case as usize] >> e & 1 == 1)
         .map(|e| {
@@ -111,7 +115,8 @@ pub fn inspect(
             EdgeCrossing { edge: e as u8, t, vertex: pa + (pb - pa) * t }
         })
         .collect();
-    let interior = joined_corners(case as usize, code);
+    let interior = if has_tunnel { joined_corners(case as usize, code) } else { 0 };
+    let tunnel = has_tunnel && mc33;
     CellReport {
         cell,
         corners,

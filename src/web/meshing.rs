@@ -15,8 +15,8 @@ thread_local! {
 
 /// Meshes a job `View::cpu_job` packed: `[vertices (Float32Array), indices
 /// (Uint32Array), active blocks, active cells, decided cells]`, the first four for `View::give_mesh`;
-/// the last (Uint32Array, x, y, z of each in turn), with marching cubes, the cells whose triangles the
-/// asymptotic decider changes (`CpuMesher::decided_cells`).
+/// the last (Uint32Array, x, y, z and kind of each in turn), with marching cubes, the cells whose
+/// triangles the asymptotic decider or MC33 changes (`CpuMesher::decided_cells`).
 #[wasm_bindgen]
 pub fn mesh_job(packed: &[f32]) -> Result<js_sys::Array, JsError> {
     MESHERS.with(|meshers| {

@@ -51,6 +51,9 @@ fn report_object(report: &CellReport) -> JsValue {
     }
     set(&object, "triangles", triangles.into());
     set(&object, "faces", faces.into());
+    let interior: Vec<u8> = (0..8).filter(|c| report.interior >> c & 1 == 1).collect();
+    set(&object, "interior", numbers(&interior));
+    set(&object, "tunnel", report.tunnel.into());
     let edges: js_sys::Array = report
         .edges
         .iter()

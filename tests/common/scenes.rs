@@ -81,9 +81,9 @@ pub fn subtractive_scenes(how_many: usize) -> Vec<OracleScene> {
         .collect()
 }
 
-/// The classic table for even `k`, the asymptotic decider for odd.
+/// The classic table, the asymptotic decider and MC33 in turn.
 pub fn alternate(k: usize) -> CaseTable {
-    if k.is_multiple_of(2) { CaseTable::Classic } else { CaseTable::Decider }
+    [CaseTable::Classic, CaseTable::Decider, CaseTable::Mc33][k % 3]
 }
 
 /// A sphere with a subtracting sphere inside it, off its centre: a dented blob.

@@ -199,6 +199,22 @@ test('the lecture shows two touching spheres apart under the classic table and j
   assert.deepEqual(errors, []);
 });
 
+test('the lecture shows two spheres on a cell\'s body diagonal joined only under MC33, with the tunnel in the inspector', async () => {
+  const { page, errors } = await open('www/examples/lecture.html');
+  await page.locator('figure#interior').scrollIntoViewIfNeeded();
+  const figures = 'figure#interior metaballs-view';
+  await page.waitForFunction((s) => [...document.querySelectorAll(s)].every((e) => e.framesDrawn > 1), figures, { timeout: 60000 });
+  const shapes = await page.$$eval(figures, (views) => Promise.all(views.map(async (e) => [e.table, (await e.topology()).components])));
+  assert.deepEqual(shapes, [['classic', 2], ['decider', 2], ['mc33', 1]]);
+  // The cell between the spheres: the interpolant joins corners 0 and 6 through it; a tunnel is drawn
+  // only under MC33, and its triangles join the two loops (four more than their two fills).
+  const reports = await page.$$eval(figures, (views) => views.map((e) => e.inspectCell(4, 4, 4)));
+  assert.deepEqual(reports.map((r) => [r.interior, r.tunnel, r.triangles.length]), [[[0, 6], false, 2], [[0, 6], false, 2], [[0, 6], true, 6]]);
+  const said = await page.$eval('figure#interior metaballs-view:last-of-type', (e) => e.shadowRoot.querySelector('#inspector .interior').textContent);
+  assert.match(said, /joins corners 0 and 6 through a saddle; drawn as a tunnel \(table=mc33\)/);
+  assert.deepEqual(errors, []);
+});
+
 test('changing the table under surface nets says the mesh keeps the classic table', async () => {
   const { page, errors } = await open('?res=32&method=surface_nets&paused=1');
   await settledTriangles(page);

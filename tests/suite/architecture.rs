@@ -14,7 +14,8 @@ use std::path::Path;
 const LAYERS: &[&str] = &["scene", "device", "extract", "teach", "view", "draw", "renderer"];
 const SHELLS: &[&str] = &["web"];
 /// The scene's modules, in the only order they may import each other.
-const SCENE_ORDER: &[&str] = &["math", "number", "decimal", "checks", "sphere", "params", "motion", "file"];
+const SCENE_ORDER: &[&str] =
+    &["math", "number", "decimal", "checks", "sphere", "params", "motion", "json", "file"];
 
 /// Every source file of the crate, relative to `src/`, with its code (line comments removed). The
 /// GPU-free modules built in crates of their own are read where the crate re-exports them: the

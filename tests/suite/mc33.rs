@@ -64,3 +64,23 @@ fn mc33_meshes_are_closed_by_position_and_the_gpu_equals_the_oracle() {
     assert!(scenes >= 30, "{scenes} scenes with a surface");
     assert!(tunnels > 0, "no scene has a tunnel");
 }
+
+/// Two spheres on the ends of one cell's body diagonal at 9³, their field above the level all the way
+/// between them, and no face with two inside corners: the classic table and the decider leave the
+/// blobs apart, MC33 joins them through the cell as the field does, on the GPU as in the oracle (the
+/// lecture's figure).
+#[test]
+fn two_spheres_on_a_cells_body_diagonal_are_one_blob_only_under_mc33() {
+    let spheres = vec![sphere([-0.106, -0.106, -0.106], 0.14), sphere([0.116, 0.116, 0.116], 0.14)];
+    let midpoint = reference::field_at(&spheres, glam::Vec3::splat(0.005));
+    assert!(midpoint > 1.0, "the field joins them: {midpoint} at the midpoint");
+    let scene = Scene::from_spheres(spheres).unwrap();
+    for (case_table, blobs) in [(CaseTable::Classic, 2), (CaseTable::Decider, 2), (CaseTable::Mc33, 1)] {
+        let mesh = oracle(&scene, 1.0, 9, case_table).weld_by_position();
+        assert_closed(&mesh, &format!("{case_table:?}"));
+        assert_eq!(mesh.topology().component_euler.len(), blobs, "{case_table:?}: blobs");
+    }
+    let mc33 = oracle(&scene, 1.0, 9, CaseTable::Mc33);
+    let tolerance = 1e-4 * Grid { cells_per_axis: 9 }.cell_size();
+    gpu(&scene, 1.0, 9).to_soup().matches(&mc33, tolerance, 0.01f32.to_radians()).unwrap();
+}

@@ -125,7 +125,7 @@ pub fn tunnel(case: usize, joined: u8, interior: u8, rings: &[&[usize]]) -> Opti
 }
 
 /// Joins the loops `a` and `b` (crossed edges, each in the order its fill would wind it) with a band
-/// of triangles, one word each like `tables::triangulate`'s: walking `a` forward and `b` backward,
+/// of triangles, one word each like `decider::triangulate`'s: walking `a` forward and `b` backward,
 /// each step taking the shorter of the two next rungs between edge midpoints.
 pub fn band(a: &[usize], b: &[usize], out: &mut Vec<u32>) {
     use super::tables::{CORNER_OFFSETS, EDGE_CORNERS};

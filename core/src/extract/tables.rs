@@ -3,7 +3,7 @@
 //! definition, never typed: for a case, each face contributes the segments that separate its inside
 //! corners from its outside ones (a segment from each crossing where a walk round the face leaves the
 //! inside to the crossing where it comes back in); the segments of the six faces close into loops on
-//! the cell's boundary, and each loop is filled with triangles (`triangulate`). A face whose inside
+//! the cell's boundary (`loops`), and each loop is filled with triangles (`fill`). A face whose inside
 //! corners sit on a diagonal (an ambiguous face) may join them or cut them off one by one: the classic
 //! table cuts them off, and the asymptotic decider (`decider`) chooses per face from the samples.
 //!
@@ -12,7 +12,6 @@
 //! corners `EDGE_CORNERS[e]`. Seen from outside, the table's triangles wind clockwise; meshes reverse
 //! them so that front faces wind counter-clockwise, the usual convention.
 
-use super::interior;
 use std::sync::LazyLock;
 
 /// Offsets of the eight corners of a cell from its minimum corner, in cells.
@@ -60,14 +59,16 @@ pub fn flat_triangle_table() -> Vec<i32> {
     TRI_TABLE.iter().flatten().map(|&e| e as i32).collect()
 }
 
-/// For each case, the triangles as triples of edge numbers, ended by -1: `triangulate(case, 0)`, each
+/// For each case, the triangles as triples of edge numbers, ended by -1: its loops (`loops(case, 0)`) filled, each
 /// ambiguous face's inside corners cut off one by one (the classic table's choice).
 pub static TRI_TABLE: LazyLock<[[i8; 16]; 256]> = LazyLock::new(|| {
     let mut table = [[-1; 16]; 256];
     let mut triangles = Vec::new();
     for (case, row) in table.iter_mut().enumerate() {
         triangles.clear();
-        triangulate(case, 0, 0, &mut triangles);
+        for ring in loops(case, 0).rings() {
+            fill(ring, &mut triangles);
+        }
         for (k, &t) in triangles.iter().enumerate() {
             row[3 * k..3 * k + 3].copy_from_slice(&[t & 15, (t >> 4) & 15, (t >> 8) & 15].map(|e| e as i8));
         }
@@ -117,12 +118,25 @@ pub fn edge_between(a: usize, b: usize) -> usize {
     e
 }
 
-/// Appends the triangles of `case` to `out`, one word each (edges in bits 0..3, 4..7 and 8..11,
-/// clockwise seen from outside), with bit `face` of `joined` set where that
-/// ambiguous face joins its inside corners, and the corners `interior` joined inside the cell (see
-/// `interior`: two loops it makes one sheet are joined by a band).
+/// The loops of crossed edges on a cell's boundary, one after another in `order`, loop k ending at
+/// `ends[k + 1]`.
+pub struct Loops {
+    order: [usize; 12],
+    ends: [usize; 5],
+    count: usize,
+}
+
+impl Loops {
+    /// Each loop's crossed edges in order, wound as `fill` winds them (at most four loops).
+    pub fn rings(&self) -> impl Iterator<Item = &[usize]> {
+        (0..self.count).map(|k| &self.order[self.ends[k]..self.ends[k + 1]])
+    }
+}
+
+/// The loops of `case` on the cell's boundary, with bit `face` of `joined` set where that ambiguous
+/// face joins its inside corners.
 #[inline(never)]
-pub fn triangulate(case: usize, joined: u8, interior: u8, out: &mut Vec<u32>) {
+pub fn loops(case: usize, joined: u8) -> Loops {
     let inside = |c: usize| (case >> c) & 1 == 1;
     // next[e]: the crossing after the one on edge e, going round its loop (12: none).
     let mut next = [12; 13];
@@ -143,9 +157,8 @@ pub fn triangulate(case: usize, joined: u8, interior: u8, out: &mut Vec<u32>) {
             }
         }
     }
-    // The loops, one after another in `order`, each ending where `ends` says.
-    let (mut seen, mut order, mut ends, mut n) = ([false; 13], [0; 12], [0; 5], 0);
-    let mut loops = 0;
+    let mut loops = Loops { order: [0; 12], ends: [0; 5], count: 0 };
+    let (mut seen, mut n) = ([false; 13], 0);
     for start in 0..12 {
         if next[start] == 12 || seen[start] {
             continue;
@@ -153,22 +166,14 @@ pub fn triangulate(case: usize, joined: u8, interior: u8, out: &mut Vec<u32>) {
         let mut e = start;
         while !seen[e] {
             seen[e] = true;
-            order[n] = e;
+            loops.order[n] = e;
             n += 1;
             e = next[e];
         }
-        loops += 1;
-        ends[loops] = n;
+        loops.count += 1;
+        loops.ends[loops.count] = n;
     }
-    let rings: [&[usize]; 4] = std::array::from_fn(|k| &order[ends[k.min(loops)]..ends[(k + 1).min(loops)]]);
-    let joined_loops = interior::tunnel(case, joined, interior, &rings[..loops]);
-    for (k, ring) in rings[..loops].iter().enumerate() {
-        match joined_loops {
-            Some((a, b)) if k == a => interior::band(ring, rings[b], out),
-            Some((_, b)) if k == b => {}
-            _ => fill(ring, out),
-        }
-    }
+    loops
 }
 
 /// True when edges `a` and `b` lie on one face of the cell.
@@ -179,7 +184,7 @@ fn on_one_face(a: usize, b: usize) -> bool {
 /// Fills the loop `ring` with triangles, with as few inner sides as it can that join two crossings on
 /// one face (such a side lies in the face; some loops of nine or more crossings need one).
 #[inline(never)]
-fn fill(ring: &[usize], out: &mut Vec<u32>) {
+pub fn fill(ring: &[usize], out: &mut Vec<u32>) {
     let n = ring.len();
     let cost = |i: usize, j: usize| (j > i + 1 && j + 1 - i < n && on_one_face(ring[i], ring[j])) as u32;
     // best[i][j]: the fewest such sides filling ring[i..=j] closed by the side i–j, and the apex k of the

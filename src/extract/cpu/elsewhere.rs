@@ -61,7 +61,7 @@ impl Meshers {
 
     /// The cells of the last job's mesh whose triangles the asymptotic decider changes
     /// (`CpuMesher::decided_cells`), whatever its table; none after a surface-nets job.
-    pub fn decided_cells(&self) -> &[[u32; 3]] {
+    pub fn decided_cells(&self) -> &[[u32; 4]] {
         if self.marched { self.marching_cubes.decided_cells() } else { &[] }
     }
 }
@@ -161,7 +161,9 @@ mod tests {
         let mut meshers = Meshers::default();
         assert!(meshers.mesh(&[0.0, 1.0]).unwrap_err().contains("2 numbers"));
         assert!(meshers.mesh(&[7.0, 1.0, 8.0, 0.0, 0.0, 0.0]).unwrap_err().contains("marching_cubes"));
-        assert!(meshers.mesh(&[0.0, 1.0, 8.0, 0.0, 0.0, 2.0]).unwrap_err().contains("classic, decider"));
+        assert!(
+            meshers.mesh(&[0.0, 1.0, 8.0, 0.0, 0.0, 3.0]).unwrap_err().contains("classic, decider, mc33")
+        );
         assert!(meshers.mesh(&[0.0, 1.0, 0.5, 0.0, 0.0, 0.0]).unwrap_err().contains("cells per axis"));
     }
 }

@@ -80,15 +80,16 @@ export function meshShape(vertices, triangles) {
 }
 
 /**
- * The cells whose triangles the asymptotic decider changes in the scene of `job` (`View.cpu_job(true)`):
- * resolves to an array of [x, y, z], worked out on the mesher worker; rejects where there is none (a
- * whole mesh is made for it, too long for the page's thread).
+ * The cells whose triangles a case table changes in the scene of `job` (`View.cpu_job(true)`): resolves
+ * to an array of [x, y, z, kind], kind bit 0 where the asymptotic decider joins a face the classic
+ * table cuts, bit 1 where MC33 draws a tunnel; worked out on the mesher worker; rejects where there is
+ * none (a whole mesh is made for it, too long for the page's thread).
  */
 export async function decidedCells(job) {
   const worker = meshWorker(true);
   if (!worker) throw new Error('no mesher worker on this page');
   const flat = await worker.decided(job);
-  return Array.from({ length: flat.length / 3 }, (_, k) => [flat[3 * k], flat[3 * k + 1], flat[3 * k + 2]]);
+  return Array.from({ length: flat.length / 4 }, (_, k) => [...flat.subarray(4 * k, 4 * k + 4)]);
 }
 
 /** Whether the figures' meshes are made off the page's thread (false until a figure has asked). */

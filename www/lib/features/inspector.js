@@ -149,6 +149,12 @@ export class Inspector {
       return `<li${agree ? '' : ' class="disagrees"'} data-face="${f.face}">Face ${plane}: ${saddle}: ${decider}; drawn ${drawn}${mark}</li>`;
     }).join('');
     const ambiguous = faces ? `<p>Ambiguous faces (inside corners on a diagonal):</p><ul class="faces">${faces}</ul>` : '';
+    // The interior test (MC33): a tunnel joining two loops the faces leave apart.
+    const corners = (report.interior ?? []).join(' and ');
+    const through = corners
+      ? `<p class="interior">Inside the cell: the trilinear interpolant joins corners ${corners} through a saddle; ${report.tunnel
+        ? 'drawn as a tunnel (table=mc33)' : 'drawn apart (only table=mc33 draws the tunnel)'}</p>`
+      : '';
     this.#box.innerHTML = `
       <header><h3>Cell (${x}, ${y}, ${z})</h3>
         <button type="button" class="close" aria-label="Deselect the cell (Esc)">×</button></header>
@@ -159,7 +165,7 @@ export class Inspector {
           <tbody>${rows}</tbody></table>
         <div class="drawing"></div>
       </div>
-      <p>Triangles (edges): ${triangles}</p>${ambiguous}
+      <p>Triangles (edges): ${triangles}</p>${ambiguous}${through}
       <table class="crossings"><thead><tr><th>edge</th><th>t</th><th>vertex</th></tr></thead>
         <tbody>${edges}</tbody></table>`;
     this.#box.querySelector('.drawing').append(

@@ -9,8 +9,11 @@
 //! classified and their triangles emitted, each vertex made once on first use and found again through
 //! the edge it lies on. Every array is kept between frames: after warm-up a frame allocates nothing.
 
-use crate::extract::decider::{MAX_DECIDED_TRIANGLES, ambiguous_faces, face_choices};
+use crate::extract::decider::{
+    MAX_DECIDED_TRIANGLES, ambiguous_faces, face_choices, has_tunnel, tunnel_possible,
+};
 use crate::extract::field::{BLOCK_CELLS, Spheres, sample_run};
+use crate::extract::interior::interior_code;
 use crate::extract::mesh::IndexedMesh;
 use crate::extract::reference::{self, Construction, Grid};
 use crate::extract::tables::EDGE_TABLE;
@@ -79,7 +82,7 @@ pub struct CpuMesher {
     /// The grid edge of each vertex, so a stale entry in the edge arrays is told from a current one.
     vertex_edges: Vec<u32>,
     /// The crossed cells with an ambiguous face the asymptotic decider joins, whatever the table.
-    decided: Vec<[u32; 3]>,
+    decided: Vec<[u32; 4]>,
 }
 
 impl CpuMesher {
@@ -107,9 +110,10 @@ impl CpuMesher {
         IndexedMesh::from_interleaved(&self.vertices, &self.indices)
     }
 
-    /// The cells of the last mesh with an ambiguous face that the asymptotic decider joins: the cells
-    /// whose triangles differ between the classic table and the decider's.
-    pub fn decided_cells(&self) -> &[[u32; 3]] {
+    /// The cells of the last mesh whose triangles a table changes, each as x, y, z and a kind: bit 0
+    /// where the asymptotic decider joins an ambiguous face (the classic table's triangles and the
+    /// decider's differ), bit 1 where MC33 draws a tunnel (the decider's and MC33's differ).
+    pub fn decided_cells(&self) -> &[[u32; 4]] {
         &self.decided
     }
 
@@ -293,8 +297,14 @@ impl CpuMesher {
                         hi[corners[2]],
                         hi[corners[3]],
                     ];
-                    if ambiguous_faces(case) != 0 && face_choices(case, values, iso) != 0 {
-                        self.decided.push([x, y, z]);
+                    // What the decider changes (its faces) and what MC33 changes beyond them (a
+                    // tunnel), whatever the table drawn.
+                    let joined = if ambiguous_faces(case) != 0 { face_choices(case, values, iso) } else { 0 };
+                    let tunnel =
+                        tunnel_possible(case) && has_tunnel(case, joined, interior_code(values, iso));
+                    let kind = (joined != 0) as u32 | (tunnel as u32) << 1;
+                    if kind != 0 {
+                        self.decided.push([x, y, z, kind]);
                     }
                     let mut triangles = [[0; 3]; MAX_DECIDED_TRIANGLES];
                     let count = construction.cell_triangles(case, values, iso, &mut triangles);
@@ -380,42 +390,52 @@ mod tests {
         }
     }
 
-    /// The decided cells are exactly those whose triangles the decider changes.
+    /// The decided cells are exactly those whose triangles the decider changes (kind 1), and those
+    /// whose triangles MC33 changes beyond the decider's (kind 2).
     #[test]
-    fn the_decided_cells_are_those_the_decider_changes() {
+    fn the_decided_cells_are_those_the_decider_or_mc33_changes() {
+        // Seed 11 at 96³ has faces the decider joins; seed 1 at 17³, iso 2.5, a tunnel.
+        for (seed, count, n, iso) in [(11, 64, 96, 1.5), (1, 16, 17, 2.5), (4, 64, 24, 1.0)] {
+            check_decided_cells(Scene::new(seed, count).unwrap(), Grid { cells_per_axis: n }, iso);
+        }
+    }
+
+    fn check_decided_cells(scene: Scene, grid: Grid, iso: f32) {
         use crate::scene::params::view::CaseTable;
-        let scene = Scene::new(11, 64).unwrap();
-        let grid = Grid { cells_per_axis: 96 };
+        let n = grid.cells_per_axis;
         let mut mesher = CpuMesher::new();
-        let decider = Construction { case_table: CaseTable::Decider, ..Construction::default() };
-        mesher.mesh(scene.spheres(), 1.5, grid, decider);
+        let tables = [CaseTable::Classic, CaseTable::Decider, CaseTable::Mc33]
+            .map(|case_table| Construction { case_table, ..Construction::default() });
+        mesher.mesh(scene.spheres(), iso, grid, tables[2]);
         let mut decided = mesher.decided_cells().to_vec();
-        mesher.mesh(scene.spheres(), 1.5, grid, Construction::default());
+        mesher.mesh(scene.spheres(), iso, grid, tables[0]);
         assert_eq!(mesher.decided_cells(), decided, "the same cells under either table");
-        decided.sort_by_key(|&[x, y, z]| [z, y, x]);
+        decided.sort_by_key(|&[x, y, z, _]| [z, y, x]);
         let values = reference::sample_field(scene.spheres(), grid);
         let mut changed = Vec::new();
-        for z in 0..96 {
-            for y in 0..96 {
-                for x in 0..96 {
+        for z in 0..n {
+            for y in 0..n {
+                for x in 0..n {
                     let corner = |c: usize| {
                         let o = crate::extract::tables::CORNER_OFFSETS[c];
                         let p = glam::UVec3::new(x + o[0], y + o[1], z + o[2]);
                         values[grid.point_index(p)]
                     };
                     let f: [f32; 8] = std::array::from_fn(corner);
-                    let case = (0..8).fold(0, |m, c| m | ((f[c] > 1.5) as usize) << c);
-                    let (mut classic, mut decided) =
-                        ([[0; 3]; MAX_DECIDED_TRIANGLES], [[0; 3]; MAX_DECIDED_TRIANGLES]);
-                    let a = Construction::default().cell_triangles(case, f, 1.5, &mut classic);
-                    let b = decider.cell_triangles(case, f, 1.5, &mut decided);
-                    if classic[..a] != decided[..b] {
-                        changed.push([x, y, z]);
+                    let case = (0..8).fold(0, |m, c| m | ((f[c] > iso) as usize) << c);
+                    let triangles = |t: &Construction| {
+                        let mut out = [[0; 3]; MAX_DECIDED_TRIANGLES];
+                        let k = t.cell_triangles(case, f, iso, &mut out);
+                        out[..k].to_vec()
+                    };
+                    let [classic, decider, mc33] = [0, 1, 2].map(|k| triangles(&tables[k]));
+                    let kind = (classic != decider) as u32 | ((decider != mc33) as u32) << 1;
+                    if kind != 0 {
+                        changed.push([x, y, z, kind]);
                     }
                 }
             }
         }
-        assert!(!changed.is_empty(), "the scene has faces the decider joins");
         assert_eq!(decided, changed);
     }
 }
