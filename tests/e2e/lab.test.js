@@ -212,6 +212,13 @@ test('the lecture shows two spheres on a cell\'s body diagonal joined only under
   assert.deepEqual(reports.map((r) => [r.interior, r.tunnel, r.triangles.length]), [[[0, 6], false, 2], [[0, 6], false, 2], [[0, 6], true, 6]]);
   const said = await page.$eval('figure#interior metaballs-view:last-of-type', (e) => e.shadowRoot.querySelector('#inspector .interior').textContent);
   assert.match(said, /joins corners 0 and 6 through a saddle; drawn as a tunnel \(table=mc33\)/);
+  // Switching the decider's figure to MC33 names the cell that changed: the tunnel joins the blobs.
+  await page.$eval('figure#interior metaballs-view:nth-of-type(2)', (e) => e.setAttribute('table', 'mc33'));
+  const notice = await page.waitForFunction(() => {
+    const text = document.querySelector('figure#interior metaballs-view:nth-of-type(2)').shadowRoot.getElementById('notice').textContent;
+    return text.startsWith('table=mc33:') && text;
+  }, null, { timeout: 30000 }).then((handle) => handle.jsonValue());
+  assert.equal(notice, 'table=mc33: 1 cell changed, each with a tunnel through its inside that MC33 draws: (4, 4, 4); blobs 2 → 1');
   assert.deepEqual(errors, []);
 });
 
