@@ -75,7 +75,7 @@ fn cpu_mesher_equals_the_oracle_in_wasm() {
     use metaballs::extract::reference::Construction;
     use metaballs::scene::params::view::{Blend, CaseTable, Interpolation};
     // The wasm build vectorises the field loops (simd128): the results must still be the oracle's, bit
-    // for bit. Seeded scenes, one mesher reused, both constructions.
+    // for bit. Seeded scenes, one mesher reused, three constructions.
     let mut mesher = CpuMesher::new();
     for (seed, count, resolution, iso) in
         [(11, 1, 16, 1.0), (12, 5, 29, 0.4), (13, 16, 32, 1.0), (14, 64, 40, 3.0)]
@@ -89,6 +89,7 @@ fn cpu_mesher_equals_the_oracle_in_wasm() {
                 blend: Blend::Max,
                 case_table: CaseTable::Decider,
             },
+            Construction { case_table: CaseTable::Mc33, ..Construction::default() },
         ] {
             let grid = Grid { cells_per_axis: resolution };
             mesher.mesh(scene.spheres(), iso, grid, construction);
