@@ -168,12 +168,18 @@ test('table=decider joins the two blobs the interpolant joins, on the CPU and th
   assert.deepEqual(errors, []);
 });
 
-test('the lecture shows two touching spheres apart under the classic table and joined under the decider', async () => {
+// The lecture's figures in `figure#id`, drawn: their selector, and each one's table and blob count.
+async function lectureFigures(id) {
   const { page, errors } = await open('www/examples/lecture.html');
-  await page.locator('figure#ambiguity').scrollIntoViewIfNeeded();
-  const figures = 'figure#ambiguity metaballs-view';
+  await page.locator(`figure#${id}`).scrollIntoViewIfNeeded();
+  const figures = `figure#${id} metaballs-view`;
   await page.waitForFunction((s) => [...document.querySelectorAll(s)].every((e) => e.framesDrawn > 1), figures, { timeout: 60000 });
   const shapes = await page.$$eval(figures, (views) => Promise.all(views.map(async (e) => [e.table, (await e.topology()).components])));
+  return { page, errors, figures, shapes };
+}
+
+test('the lecture shows two touching spheres apart under the classic table and joined under the decider', async () => {
+  const { page, errors, figures, shapes } = await lectureFigures('ambiguity');
   assert.deepEqual(shapes, [['classic', 2], ['decider', 1]]);
   // The ambiguous face's joining: red where the classic table cuts what the decider joins, amber where
   // the triangles follow the decider.
@@ -200,11 +206,7 @@ test('the lecture shows two touching spheres apart under the classic table and j
 });
 
 test('the lecture shows two spheres on a cell\'s body diagonal joined only under MC33, with the tunnel in the inspector', async () => {
-  const { page, errors } = await open('www/examples/lecture.html');
-  await page.locator('figure#interior').scrollIntoViewIfNeeded();
-  const figures = 'figure#interior metaballs-view';
-  await page.waitForFunction((s) => [...document.querySelectorAll(s)].every((e) => e.framesDrawn > 1), figures, { timeout: 60000 });
-  const shapes = await page.$$eval(figures, (views) => Promise.all(views.map(async (e) => [e.table, (await e.topology()).components])));
+  const { page, errors, figures, shapes } = await lectureFigures('interior');
   assert.deepEqual(shapes, [['classic', 2], ['decider', 2], ['mc33', 1]]);
   // The cell between the spheres: the interpolant joins corners 0 and 6 through it; a tunnel is drawn
   // only under MC33, and its triangles join the two loops (four more than their two fills).

@@ -10,12 +10,12 @@ use metaballs::extract::reference::{self, Construction, Grid};
 use metaballs::scene::params::view::CaseTable;
 use metaballs::{Scene, Settings};
 
-fn oracle(scene: &Scene, iso: f32, resolution: u32, case_table: CaseTable) -> Mesh {
+pub(crate) fn oracle(scene: &Scene, iso: f32, resolution: u32, case_table: CaseTable) -> Mesh {
     let construction = Construction { case_table, ..Construction::default() };
     reference::extract_with(scene.spheres(), iso, Grid { cells_per_axis: resolution }, construction)
 }
 
-fn gpu(scene: &Scene, iso: f32, resolution: u32, case_table: CaseTable) -> IndexedMesh {
+pub(crate) fn gpu(scene: &Scene, iso: f32, resolution: u32, case_table: CaseTable) -> IndexedMesh {
     let mut settings =
         Settings { resolution, iso, ..Settings::default() }.with_parameter("mesher", "gpu").unwrap();
     settings.view.case_table = case_table;
@@ -25,7 +25,7 @@ fn gpu(scene: &Scene, iso: f32, resolution: u32, case_table: CaseTable) -> Index
     })
 }
 
-fn assert_closed(mesh: &IndexedMesh, what: &str) {
+pub(crate) fn assert_closed(mesh: &IndexedMesh, what: &str) {
     let t = mesh.topology();
     assert_eq!(t.open_or_nonmanifold_edges, 0, "{what}: open or non-manifold edges");
     assert_eq!(t.misoriented_edges, 0, "{what}: inconsistent winding");

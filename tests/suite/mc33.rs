@@ -4,34 +4,12 @@
 //! triangle; and where the interior joins loops, the blob count and genus follow the interpolant.
 
 use crate::common;
+use crate::decider::{assert_closed, gpu, oracle};
 
 use common::*;
-use metaballs::extract::mesh::{IndexedMesh, Mesh};
-use metaballs::extract::reference::{self, Construction, Grid};
+use metaballs::Scene;
+use metaballs::extract::reference::{self, Grid};
 use metaballs::scene::params::view::CaseTable;
-use metaballs::{Scene, Settings};
-
-fn oracle(scene: &Scene, iso: f32, resolution: u32, case_table: CaseTable) -> Mesh {
-    let construction = Construction { case_table, ..Construction::default() };
-    reference::extract_with(scene.spheres(), iso, Grid { cells_per_axis: resolution }, construction)
-}
-
-fn gpu(scene: &Scene, iso: f32, resolution: u32) -> IndexedMesh {
-    let settings = Settings { resolution, iso, ..Settings::default() }
-        .with_parameter("mesher", "gpu")
-        .and_then(|s| s.with_parameter("table", "mc33"))
-        .unwrap();
-    with_renderer(settings, 16, 16, |o| {
-        o.renderer.set_scene(scene.clone());
-        pollster::block_on(o.renderer.extract_mesh())
-    })
-}
-
-fn assert_closed(mesh: &IndexedMesh, what: &str) {
-    let t = mesh.topology();
-    assert_eq!(t.open_or_nonmanifold_edges, 0, "{what}: open or non-manifold edges");
-    assert_eq!(t.misoriented_edges, 0, "{what}: inconsistent winding");
-}
 
 /// On seeded scenes of 16 and 64 spheres at iso levels near merges and coarse grids, MC33's meshes
 /// are closed and oriented by position; the GPU's equal the oracle's; and the scenes hold tunnels (a
@@ -52,7 +30,7 @@ fn mc33_meshes_are_closed_by_position_and_the_gpu_equals_the_oracle() {
                 assert_closed(&mc33.weld_by_position(), &what);
                 let decided = oracle(&scene, iso, resolution, CaseTable::Decider);
                 tunnels += (mc33.triangle_count() - decided.triangle_count()) / 4;
-                let gpu = gpu(&scene, iso, resolution);
+                let gpu = gpu(&scene, iso, resolution, CaseTable::Mc33);
                 let tolerance = 1e-4 * Grid { cells_per_axis: resolution }.cell_size();
                 gpu.to_soup()
                     .matches(&mc33, tolerance, 0.01f32.to_radians())
@@ -82,5 +60,5 @@ fn two_spheres_on_a_cells_body_diagonal_are_one_blob_only_under_mc33() {
     }
     let mc33 = oracle(&scene, 1.0, 9, CaseTable::Mc33);
     let tolerance = 1e-4 * Grid { cells_per_axis: 9 }.cell_size();
-    gpu(&scene, 1.0, 9).to_soup().matches(&mc33, tolerance, 0.01f32.to_radians()).unwrap();
+    gpu(&scene, 1.0, 9, CaseTable::Mc33).to_soup().matches(&mc33, tolerance, 0.01f32.to_radians()).unwrap();
 }
