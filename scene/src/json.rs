@@ -121,14 +121,19 @@ mod platform {
                     .ok()
                     .and_then(|m| m.as_string())
                     .unwrap_or_else(|| "not JSON".into());
-                // "Unexpected end of JSON input", or an error at the position just past the text.
+                // What each engine says of text that ends early: "Unexpected end of JSON input" or an
+                // error at the position just past the text (Chromium), "unexpected end of data"
+                // (Firefox), "Unexpected EOF" (Safari).
                 let length = text.encode_utf16().count();
                 let at = message
                     .split("at position ")
                     .nth(1)
                     .and_then(|rest| rest.split(|c: char| !c.is_ascii_digit()).next())
                     .and_then(|digits| digits.parse::<usize>().ok());
-                let ends_early = message.contains("end of JSON input") || at.is_some_and(|p| p >= length);
+                let lower = message.to_ascii_lowercase();
+                let ends_early =
+                    ["end of json input", "end of data", "unexpected eof"].iter().any(|w| lower.contains(w))
+                        || at.is_some_and(|p| p >= length);
                 NotJson { message, ends_early }
             })
         }

@@ -141,9 +141,9 @@ fn face_choices(slot: u32, at: vec3<u32>, case_index: u32) -> u32 {
 }
 
 // The interior's join of a cell with corner values `u` (interior_code in core/src/extract/interior.rs,
-// in the same order): 0 for none, else 1 + 2 · pair + side. The slice at the height t* where A·C − B·D
-// on the vertical edges A (0–4), B (1–5), C (2–6), D (3–7) peaks says which pair of edges the body
-// saddle joins, and on which side.
+// in the same order): 0 for none, else 1 + 2 · pair + side. The slice at the height t* of the vertex
+// of A·C − B·D on the vertical edges A (0–4), B (1–5), C (2–6), D (3–7) says which pair of edges the
+// body saddle joins, and on which side.
 fn interior_code(f: array<f32, 8>) -> u32 {
     var u: array<f32, 8>;
     for (var c = 0u; c < 8u; c++) {
@@ -155,13 +155,12 @@ fn interior_code(f: array<f32, 8>) -> u32 {
     let dd = u[7] - u[3];
     let qa = da * dc - db * dd;
     let qb = (u[0] * dc + u[2] * da) - (u[1] * dd + u[3] * db);
-    if (qa == 0.0) {
+    // t* inside (0, 1), decided without the division.
+    let w = 2.0 * qa;
+    if (!((-qb > 0.0) == (w > 0.0) && qb != 0.0 && abs(qb) < abs(w))) {
         return 0u;
     }
-    let t = -qb / (2.0 * qa);
-    if (!(t > 0.0 && t < 1.0)) {
-        return 0u;
-    }
+    let t = -qb / w;
     let a = u[0] + da * t;
     let b = u[1] + db * t;
     let c = u[2] + dc * t;

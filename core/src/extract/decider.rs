@@ -257,6 +257,23 @@ mod tests {
         );
     }
 
+    /// A triangle lying in a face of the cell could meet the neighbour's across it: none does, the
+    /// tunnels' bands included.
+    #[test]
+    fn no_triangle_lies_in_a_face() {
+        let mut bands = 0;
+        for (case, joined, code, triangles) in all_variants() {
+            bands += (code > 0 && has_tunnel(case, joined, code)) as usize;
+            for t in &triangles {
+                let flat = FACE_CORNERS
+                    .iter()
+                    .any(|f| t.iter().all(|&e| EDGE_CORNERS[e].iter().all(|c| f.contains(c))));
+                assert!(!flat, "case {case} choices {joined:06b} interior {code}: {t:?} lies in a face");
+            }
+        }
+        assert!(bands > 50, "{bands} variants with a tunnel");
+    }
+
     #[test]
     fn triangles_wind_clockwise_seen_from_outside() {
         let corner = |c: usize| CORNER_OFFSETS[c].map(|v| v as f32);

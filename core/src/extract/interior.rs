@@ -9,7 +9,8 @@
 //! needs A·C − B·D > 0 at some height between two where it is not; that product is a quadratic in t,
 //! so its vertex t* (inside the cell) is the slice to look at. This is the interior test of Lewiner et
 //! al. (2003) and Vega et al. (2019), applied to every cell rather than chosen per case. It needs no
-//! square root, and a cell whose interpolant has no body saddle (h = 0) needs no special handling.
+//! square root, and a cell whose interpolant has no xyz term (so no body saddle) needs no special
+//! handling.
 //!
 //! What the test finds is a code: 0 for no join, else 1 + 2·pair + side, where pair 0 joins the
 //! corners among 0, 2, 4, 6 and pair 1 those among 1, 3, 5, 7, on the inside (side 0) or the outside
@@ -28,13 +29,13 @@ pub fn interior_code(values: [f32; 8], iso: f32) -> u32 {
     // A(t)·C(t) − B(t)·D(t) = qa t² + qb t + qc.
     let qa = da * dc - db * dd;
     let qb = (u[0] * dc + u[2] * da) - (u[1] * dd + u[3] * db);
-    if qa == 0.0 {
+    // The vertex t* = −qb / (2 qa) inside (0, 1), decided without the division (which a GPU may
+    // round differently): −qb and 2 qa of one sign, and |qb| < |2 qa|.
+    let w = 2.0 * qa;
+    if !((-qb > 0.0) == (w > 0.0) && qb != 0.0 && qb.abs() < w.abs()) {
         return 0;
     }
-    let t = -qb / (2.0 * qa);
-    if !(t > 0.0 && t < 1.0) {
-        return 0;
-    }
+    let t = -qb / w;
     let (a, b, c, d) = (u[0] + da * t, u[1] + db * t, u[2] + dc * t, u[3] + dd * t);
     let (ac, bd) = (a * c, b * d);
     if ac > bd && ac > 0.0 {
@@ -125,40 +126,95 @@ pub fn tunnel(case: usize, joined: u8, interior: u8, rings: &[&[usize]]) -> Opti
 }
 
 /// Joins the loops `a` and `b` (crossed edges, each in the order its fill would wind it) with a band
-/// of triangles, one word each like `decider::triangulate`'s: walking `a` forward and `b` backward,
-/// each step taking the shorter of the two next rungs between edge midpoints.
+/// of triangles, one word each like `decider::triangulate`'s: walking `a` forward and `b` backward
+/// from some rung, the walk with the fewest triangles lying in a face of the cell (a neighbour may draw
+/// on that face too), then the shortest rungs between edge midpoints.
 pub fn band(a: &[usize], b: &[usize], out: &mut Vec<u32>) {
-    use super::tables::{CORNER_OFFSETS, EDGE_CORNERS};
+    use super::tables::{CORNER_OFFSETS, EDGE_CORNERS, FACE_CORNERS};
     let mid = |e: usize| {
         let [p, q] = EDGE_CORNERS[e].map(|c| CORNER_OFFSETS[c]);
-        [0, 1, 2].map(|i| (p[i] + q[i]) as i32)
+        [0, 1, 2].map(|i| p[i] + q[i])
     };
     let apart = |x: usize, y: usize| {
         let (p, q) = (mid(x), mid(y));
-        (0..3).map(|i| (p[i] - q[i]).pow(2)).sum::<i32>()
+        (0..3).map(|i| p[i].abs_diff(q[i]).pow(2)).sum::<u32>()
+    };
+    let flat = |t: [usize; 3]| {
+        FACE_CORNERS.iter().any(|f| t.iter().all(|&e| EDGE_CORNERS[e].iter().all(|c| f.contains(c))))
     };
     let (n, m) = (a.len(), b.len());
-    // The rung the band starts from: a[0] and the nearest crossing of b.
-    let start = (0..m).min_by_key(|&j| apart(a[0], b[j])).unwrap_or(0);
-    let at_b = |j: usize| b[(start + m - j % m) % m];
-    // A walk from rung (0, 0) to rung (n, m), which is the same rung: no rung but that one may come
-    // twice, so the walk starts along `a`, reaches a's end only once it has left b's start, and b's
-    // end only past where it first stepped along b.
-    let (mut i, mut j, mut turned) = (0, 0, n);
-    while i < n || j < m {
-        let can_a = i < n && (i + 1 < n || j > 0);
-        let can_b = j < m && i > 0 && (j + 1 < m || i > turned);
-        let forward = can_a && (!can_b || apart(a[(i + 1) % n], at_b(j)) <= apart(a[i % n], at_b(j + 1)));
-        if !forward {
-            turned = turned.min(i);
-        }
-        let triangle = if forward {
-            i += 1;
-            [a[i - 1], a[i % n], at_b(j)]
-        } else {
-            j += 1;
-            [at_b(j), at_b(j - 1), a[i % n]]
+    // Walks from rung (0, 0) to rung (n, m), which is the same rung (a[0] and b[start]): no other rung
+    // may come twice, so a walk starts along `a`, reaches a's end only once it has left b's start, and
+    // b's end only past where it first stepped along b (`turned`, n + 1 before it has). best[i][j][t]:
+    // the least cost of reaching rung (i, j) having turned at t, the step that got there, and the turn
+    // before it.
+    const NONE: u32 = u32::MAX;
+    let mut chosen: Option<(u32, usize, Vec<bool>)> = None;
+    for start in 0..m {
+        let at_b = |j: usize| b[(start + m - j % m) % m];
+        let triangle = |i: usize, j: usize, along_a: bool| {
+            if along_a { [a[i], a[(i + 1) % n], at_b(j)] } else { [at_b(j + 1), at_b(j), a[i % n]] }
         };
-        out.push((triangle[0] | triangle[1] << 4 | triangle[2] << 8) as u32);
+        let cost = |t: [usize; 3], rung: (usize, usize)| flat(t) as u32 * 1000 + apart(rung.0, rung.1);
+        let mut best = vec![[[(NONE, false, 0); 11]; 10]; 10];
+        let first = apart(a[0], at_b(0)) + cost(triangle(0, 0, true), (a[1 % n], at_b(0)));
+        best[1][0][n + 1] = (first, true, n + 1);
+        for i in 1..=n {
+            for j in 0..=m {
+                for turned in 1..=n + 1 {
+                    let (here, _, _) = best[i][j][turned];
+                    if here == NONE {
+                        continue;
+                    }
+                    let mut step = |i2: usize, j2: usize, t2: usize, along_a: bool| {
+                        let c = here + cost(triangle(i, j, along_a), (a[i2 % n], at_b(j2)));
+                        if c < best[i2][j2][t2].0 {
+                            best[i2][j2][t2] = (c, along_a, turned);
+                        }
+                    };
+                    if i < n && (i + 1 < n || j > 0) {
+                        step(i + 1, j, turned, true);
+                    }
+                    let t2 = turned.min(i);
+                    if j < m && (j + 1 < m || i > t2) {
+                        step(i, j + 1, t2, false);
+                    }
+                }
+            }
+        }
+        // The cheapest way to the end, and its steps back to the start.
+        let Some(end) = (1..=n + 1).filter(|&t| best[n][m][t].0 != NONE).min_by_key(|&t| best[n][m][t].0)
+        else {
+            continue;
+        };
+        let total = best[n][m][end].0;
+        if chosen.as_ref().is_some_and(|c| c.0 <= total) {
+            continue;
+        }
+        let (mut i, mut j, mut turned, mut steps) = (n, m, end, Vec::new());
+        while (i, j) != (0, 0) {
+            let (_, along_a, before) = best[i][j][turned];
+            steps.push(along_a);
+            if along_a {
+                i -= 1
+            } else {
+                j -= 1
+            }
+            turned = before;
+        }
+        steps.reverse();
+        chosen = Some((total, start, steps));
+    }
+    let Some((_, start, steps)) = chosen else { return };
+    let at_b = |j: usize| b[(start + m - j % m) % m];
+    let (mut i, mut j) = (0, 0);
+    for along_a in steps {
+        let t = if along_a { [a[i], a[(i + 1) % n], at_b(j)] } else { [at_b(j + 1), at_b(j), a[i % n]] };
+        if along_a {
+            i += 1
+        } else {
+            j += 1
+        }
+        out.push((t[0] | t[1] << 4 | t[2] << 8) as u32);
     }
 }

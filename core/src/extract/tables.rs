@@ -46,7 +46,8 @@ const fn edge_table() -> [u16; 256] {
     table
 }
 
-/// The most triangles a single cell emits under the classic table (ten under the decider's).
+/// The most triangles a single cell emits under the classic table (`decider::MAX_DECIDED_TRIANGLES`
+/// under the others).
 pub const MAX_TRIANGLES_PER_CELL: usize = 5;
 
 /// The case table as the shader reads it: crossed-edge mask in bits 0..11, triangle count from bit 16.
@@ -59,8 +60,8 @@ pub fn flat_triangle_table() -> Vec<i32> {
     TRI_TABLE.iter().flatten().map(|&e| e as i32).collect()
 }
 
-/// For each case, the triangles as triples of edge numbers, ended by -1: its loops (`loops(case, 0)`) filled, each
-/// ambiguous face's inside corners cut off one by one (the classic table's choice).
+/// For each case, the triangles as triples of edge numbers, ended by -1: its loops (`loops(case, 0)`)
+/// filled, each ambiguous face's inside corners cut off one by one (the classic table's choice).
 pub static TRI_TABLE: LazyLock<[[i8; 16]; 256]> = LazyLock::new(|| {
     let mut table = [[-1; 16]; 256];
     let mut triangles = Vec::new();

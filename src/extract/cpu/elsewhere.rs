@@ -59,8 +59,8 @@ impl Meshers {
         Ok(mesher.given(packed.to_vec()))
     }
 
-    /// The cells of the last job's mesh whose triangles the asymptotic decider changes
-    /// (`CpuMesher::decided_cells`), whatever its table; none after a surface-nets job.
+    /// The cells of the last job's mesh whose triangles the asymptotic decider or MC33 changes, with
+    /// their kind (`CpuMesher::decided_cells`), whatever its table; none after a surface-nets job.
     pub fn decided_cells(&self) -> &[[u32; 4]] {
         if self.marched { self.marching_cubes.decided_cells() } else { &[] }
     }

@@ -7,8 +7,8 @@
 // indices, handed over without a copy, each `{ id, shape: [vertex count, triangles] }` with the
 // mesh's shape (`mesh_shape`: blobs, genus, closed, manifold) and each `{ id, png: [pixels, width,
 // height] }` (RGBA8 rows, top first) with the picture as a PNG blob, each `{ id, decided: job }` (a
-// view's `cpu_job(true)`) with the cells whose triangles the asymptotic decider changes (`mesh_job`'s
-// last part), or with what went wrong.
+// view's `cpu_job(true)`) with the cells whose triangles the asymptotic decider or MC33 changes, with
+// their kind (`mesh_job`'s last part), or with what went wrong.
 
 let started = null;
 // A Rust panic in this instance: the job that raised it is answered with it.

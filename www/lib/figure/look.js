@@ -173,6 +173,8 @@ export class FigureLook {
     this.#poster.hidden = true;
     if (!this.#due(now, frame)) {
       this.#printStale = true;
+      // A figure not shown now prints as it is: whoever waits for its picture waits no longer.
+      if (!this.#canvas.checkVisibility()) this.#resolvePrintable();
       return;
     }
     const copied = this.#copying;

@@ -81,7 +81,8 @@ pub struct CpuMesher {
     z_edges: Vec<u32>,
     /// The grid edge of each vertex, so a stale entry in the edge arrays is told from a current one.
     vertex_edges: Vec<u32>,
-    /// The crossed cells with an ambiguous face the asymptotic decider joins, whatever the table.
+    /// The crossed cells whose triangles the decider or MC33 changes, with their kind, whatever the
+    /// table (`decided_cells`).
     decided: Vec<[u32; 4]>,
 }
 
@@ -394,13 +395,25 @@ mod tests {
     /// whose triangles MC33 changes beyond the decider's (kind 2).
     #[test]
     fn the_decided_cells_are_those_the_decider_or_mc33_changes() {
-        // Seed 11 at 96³ has faces the decider joins; seed 1 at 17³, iso 2.5, a tunnel.
-        for (seed, count, n, iso) in [(11, 64, 96, 1.5), (1, 16, 17, 2.5), (4, 64, 24, 1.0)] {
-            check_decided_cells(Scene::new(seed, count).unwrap(), Grid { cells_per_axis: n }, iso);
+        // Seed 11 at 96³ has faces the decider joins.
+        let mut kinds = 0;
+        for (seed, count, n, iso) in [(11, 64, 96, 1.5), (4, 64, 24, 1.0)] {
+            kinds |= check_decided_cells(Scene::new(seed, count).unwrap(), Grid { cells_per_axis: n }, iso);
         }
+        // Two spheres on the ends of a cell's body diagonal: a tunnel.
+        let sphere = |c: f32| Sphere {
+            center: glam::Vec3::splat(c),
+            radius: 0.14,
+            velocity: glam::Vec3::ZERO,
+            charge: 1.0,
+        };
+        let pair = Scene::from_spheres(vec![sphere(-0.106), sphere(0.116)]).unwrap();
+        kinds |= check_decided_cells(pair, Grid { cells_per_axis: 9 }, 1.0);
+        assert_eq!(kinds, 3, "the scenes hold faces the decider joins and tunnels");
     }
 
-    fn check_decided_cells(scene: Scene, grid: Grid, iso: f32) {
+    /// Checks the decided cells of one scene; returns the kinds found.
+    fn check_decided_cells(scene: Scene, grid: Grid, iso: f32) -> u32 {
         use crate::scene::params::view::CaseTable;
         let n = grid.cells_per_axis;
         let mut mesher = CpuMesher::new();
@@ -437,5 +450,6 @@ mod tests {
             }
         }
         assert_eq!(decided, changed);
+        changed.iter().fold(0, |k, c| k | c[3])
     }
 }
