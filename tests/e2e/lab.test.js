@@ -221,6 +221,9 @@ test('the lecture shows two spheres on a cell\'s body diagonal joined only under
     return text.startsWith('table=mc33:') && text;
   }, null, { timeout: 30000 }).then((handle) => handle.jsonValue());
   assert.equal(notice, 'table=mc33: 1 cell changed, each with a tunnel through its inside that MC33 draws: (4, 4, 4); blobs 2 → 1');
+  // The statistics follow: one blob, with nothing more drawn after the change.
+  await page.waitForFunction(() => document.querySelector('figure#interior metaballs-view:nth-of-type(2)').shadowRoot
+    .getElementById('hud-topology-text').textContent.startsWith('1 blob ·'), null, { timeout: 10000 });
   assert.deepEqual(errors, []);
 });
 

@@ -14,6 +14,8 @@ export class TopologyWatch {
   #pending = null;
   // The frames drawn when the pending question was asked, and when the answer taken last was.
   #pendingFrame = -1;
+  // A question put off until the statistics' second is up.
+  #later = null;
   #takenFrame = -1;
   #last = null;
   #askedAt = -Infinity;
@@ -39,14 +41,33 @@ export class TopologyWatch {
     this.#last = null;
   }
 
-  /** Called after each frame drawn: asks when `pause-on` or the statistics want an answer. */
+  /**
+   * Called after each frame drawn: asks when `pause-on` or the statistics want an answer. A frame the
+   * statistics could not ask about yet (within the second, or while an answer is on its way) is asked
+   * about once the second is up, so that the last frame drawn, as after a change to a still figure,
+   * always gets its answer.
+   */
   frameDrawn(now) {
     const state = this.#ctx.state;
     const watching = state['pause-on'] === 'merge' && !state.paused;
     const showing = state.hud === 'on' && now - this.#askedAt >= HUD_EVERY_MS;
-    if (this.#pending || !(watching || showing)) return;
+    if (this.#pending || !(watching || showing)) {
+      if (state.hud === 'on' && !watching) this.#askLater(now);
+      return;
+    }
     this.#askedAt = now;
     this.check().catch(() => {});
+  }
+
+  #askLater(now) {
+    if (this.#later) return;
+    const wait = Math.max(0, HUD_EVERY_MS - (now - this.#askedAt));
+    this.#later = setTimeout(() => {
+      this.#later = null;
+      if (this.#ctx.state.hud !== 'on' || !this.#ctx.view) return;
+      this.#askedAt = performance.now();
+      this.check().catch(() => {});
+    }, wait);
   }
 
   /**
