@@ -48,7 +48,7 @@ pub const CLASS_NAMES: [&str; 15] = [
 ];
 
 /// The 24 rotations of the cube as permutations of its corners.
-fn rotations() -> Vec<[usize; 8]> {
+pub(crate) fn rotations() -> Vec<[usize; 8]> {
     let corner = |p: [u32; 3]| CORNER_OFFSETS.iter().position(|&c| c == p).unwrap();
     // Quarter turns about x (y → z) and about z (x → y), on corner coordinates in {0, 1}.
     let about_x = |p: [u32; 3]| [p[0], 1 - p[2], p[1]];
@@ -70,9 +70,12 @@ fn rotations() -> Vec<[usize; 8]> {
     found
 }
 
+/// The case whose inside corners are those of `case` moved by `perm`.
+pub(crate) fn rotate(perm: &[usize; 8], case: u8) -> u8 {
+    (0..8).filter(|&c| case >> c & 1 == 1).fold(0u8, |r, c| r | 1 << perm[c])
+}
+
 fn canonical(case: u8, rotations: &[[usize; 8]]) -> u8 {
-    let rotate =
-        |perm: &[usize; 8], m: u8| (0..8).filter(|&c| m >> c & 1 == 1).fold(0u8, |r, c| r | 1 << perm[c]);
     rotations.iter().flat_map(|perm| [rotate(perm, case), !rotate(perm, case)]).min().unwrap()
 }
 

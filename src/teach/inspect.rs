@@ -11,6 +11,7 @@ use crate::extract::tables::{CORNER_OFFSETS, EDGE_CORNERS, EDGE_TABLE, FACE_CORN
 use crate::scene::Sphere;
 use crate::scene::params::view::CaseTable;
 use crate::teach::case_classes::case_classes;
+use crate::teach::subcases::subcase_of;
 use glam::{UVec3, Vec3};
 
 /// One crossed edge of the inspected cell.
@@ -61,6 +62,12 @@ pub struct CellReport {
     pub interior: u8,
     /// True when the triangles drawn join two of the cell's loops by a tunnel (`table=mc33`).
     pub tunnel: bool,
+    /// MC33's name for the interpolant's configuration in this cell (`teach::subcases`): the decider's
+    /// faces and the interior test's tunnel, what `table=mc33` draws.
+    pub subcase: &'static str,
+    /// The configuration the table in use draws (the classic table cuts every ambiguous face apart,
+    /// the decider draws no tunnel).
+    pub drawn_subcase: &'static str,
 }
 
 /// Inspects `cell` (its coordinates must be below `grid.cells_per_axis`).
@@ -117,6 +124,7 @@ pub fn inspect(
         .collect();
     let interior = if has_tunnel { joined_corners(case as usize, code) } else { 0 };
     let tunnel = has_tunnel && mc33;
+    let name = |joined, tunnel| subcase_of(case, joined, tunnel).map_or("", |s| s.name);
     CellReport {
         cell,
         corners,
@@ -127,6 +135,8 @@ pub fn inspect(
         faces,
         interior,
         tunnel,
+        subcase: name(decider_joined, has_tunnel),
+        drawn_subcase: name(joined, tunnel),
     }
 }
 
@@ -309,5 +319,37 @@ mod tests {
             assert!(joined > 0, "the scene has ambiguous faces");
             assert_eq!(inspected, drawn, "{case_table:?}");
         }
+    }
+
+    /// The cell between two spheres on its body diagonal (the lecture's): the interpolant joins them
+    /// through a tunnel (4.1.2), which only MC33 draws.
+    #[test]
+    fn the_inspector_names_the_configuration_and_the_one_drawn() {
+        let sphere =
+            |c: f32| Sphere { center: Vec3::splat(c), radius: 0.14, velocity: Vec3::ZERO, charge: 1.0 };
+        let spheres = [sphere(-0.106), sphere(0.116)];
+        let grid = Grid { cells_per_axis: 9 };
+        for (case_table, drawn) in
+            [(CaseTable::Classic, "4.1.1"), (CaseTable::Decider, "4.1.1"), (CaseTable::Mc33, "4.1.2")]
+        {
+            let construction = Construction { case_table, ..Construction::default() };
+            let report = inspect(&spheres, 1.0, grid, construction, UVec3::splat(4));
+            assert_eq!(
+                (report.class, report.subcase, report.drawn_subcase),
+                (4, "4.1.2", drawn),
+                "{case_table:?}"
+            );
+        }
+        // Every crossed cell is named; those of one corner inside as their class.
+        let mut corners = 0;
+        for id in (0..9u32.pow(3)).map(|i| UVec3::new(i % 9, i / 9 % 9, i / 81)) {
+            let report = inspect(&spheres, 1.0, grid, Construction::default(), id);
+            assert!(!report.subcase.is_empty() && !report.drawn_subcase.is_empty(), "{id}");
+            if report.class == 1 {
+                assert_eq!((report.subcase, report.drawn_subcase), ("1", "1"));
+                corners += 1;
+            }
+        }
+        assert!(corners > 0);
     }
 }

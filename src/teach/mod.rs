@@ -5,3 +5,4 @@
 pub mod case_classes;
 pub mod error;
 pub mod inspect;
+pub mod subcases;

@@ -2,13 +2,13 @@
 //! report) and the case gallery's data.
 
 use super::{View, js_error};
-use crate::extract::decider::decided_triangles;
 use crate::extract::reference::Construction;
-use crate::extract::tables::{CASE_TRIANGLES, CORNER_OFFSETS, EDGE_CORNERS};
+use crate::extract::tables::{CORNER_OFFSETS, EDGE_CORNERS};
 use crate::scene::params::view::Interpolation;
 use crate::teach::case_classes::{CLASS_NAMES, CLASS_REPRESENTATIVES, case_classes};
 use crate::teach::error::error_at;
 use crate::teach::inspect::CellReport;
+use crate::teach::subcases::{SUBCASES, subcase_triangles};
 use glam::UVec3;
 use wasm_bindgen::prelude::*;
 
@@ -20,13 +20,9 @@ fn numbers<T: Into<JsValue> + Copy>(values: &[T]) -> JsValue {
     values.iter().map(|&v| v.into()).collect::<js_sys::Array>().into()
 }
 
-/// The triangles of `case` as edge numbers, wound as drawn.
-fn case_triangles(case: u8) -> JsValue {
-    let triangles = js_sys::Array::new();
-    for t in decided_triangles(case as usize, 0, 0) {
-        triangles.push(&numbers(&[t[0] as u32, t[2] as u32, t[1] as u32]));
-    }
-    triangles.into()
+/// Triangles as edge numbers, wound as drawn.
+fn edge_triangles(triangles: impl Iterator<Item = [usize; 3]>) -> JsValue {
+    triangles.map(|t| numbers(&[t[0] as u32, t[2] as u32, t[1] as u32])).collect::<js_sys::Array>().into()
 }
 
 fn report_object(report: &CellReport) -> JsValue {
@@ -54,6 +50,8 @@ fn report_object(report: &CellReport) -> JsValue {
     let interior: Vec<u8> = (0..8).filter(|c| report.interior >> c & 1 == 1).collect();
     set(&object, "interior", numbers(&interior));
     set(&object, "tunnel", report.tunnel.into());
+    set(&object, "subcase", report.subcase.into());
+    set(&object, "drawnSubcase", report.drawn_subcase.into());
     let edges: js_sys::Array = report
         .edges
         .iter()
@@ -69,8 +67,10 @@ fn report_object(report: &CellReport) -> JsValue {
     object.into()
 }
 
-/// The 15 classes of cases for the gallery: number, name, representative case, its inside corners and
-/// its triangles (as edge numbers), and how many of the 256 cases fall in it.
+/// The 15 classes of cases for the gallery: number, name, representative case, its inside corners, how
+/// many of the 256 cases fall in it, and its configurations under
+/// MC33 (`teach::subcases`): name, triangles, how many of the ambiguous faces they join, and whether a
+/// tunnel joins two loops inside.
 #[wasm_bindgen]
 pub fn case_gallery() -> js_sys::Array {
     let classes = case_classes();
@@ -84,9 +84,22 @@ pub fn case_gallery() -> js_sys::Array {
             set(&object, "case", case.into());
             let inside: Vec<u32> = (0..8).filter(|c| case >> c & 1 == 1).collect();
             set(&object, "inside", numbers(&inside));
-            set(&object, "triangles", case_triangles(case));
-            set(&object, "triangleCount", CASE_TRIANGLES[case as usize].into());
             set(&object, "cases", (classes.iter().filter(|&&c| c as usize == k).count() as u32).into());
+            let subcases: js_sys::Array = SUBCASES
+                .iter()
+                .filter(|s| s.class as usize == k)
+                .map(|s| {
+                    let (triangles, joined, ambiguous) = subcase_triangles(s);
+                    let subcase = js_sys::Object::new();
+                    set(&subcase, "name", s.name.into());
+                    set(&subcase, "triangles", edge_triangles(triangles.into_iter()));
+                    set(&subcase, "joined", joined.into());
+                    set(&subcase, "ambiguous", ambiguous.into());
+                    set(&subcase, "tunnel", s.tunnel.into());
+                    JsValue::from(subcase)
+                })
+                .collect();
+            set(&object, "subcases", subcases.into());
             JsValue::from(object)
         })
         .collect()

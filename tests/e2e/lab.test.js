@@ -74,6 +74,21 @@ test('pause_on=merge stops the animation at the frame two blobs become one, and 
   assert.deepEqual(errors, []);
 });
 
+test('a change of table that changes no cell says so, naming what each table would change', async () => {
+  const { page, errors } = await open('?balls=0.05,0.02,0,0.4&res=24&paused=1');
+  await settledTriangles(page);
+  const notice = (table) => page.$eval('metaballs-view', (e, t) => e.setAttribute('table', t), table)
+    .then(() => page.waitForFunction((t) => {
+      const text = document.querySelector('metaballs-view').shadowRoot.getElementById('notice').textContent;
+      return text.startsWith(`table=${t}:`) && text;
+    }, table, { timeout: 30000 }))
+    .then((handle) => handle.jsonValue());
+  assert.equal(await notice('mc33'), 'table=mc33: no cell here has a face the asymptotic decider joins or a tunnel MC33 draws; both tables give this mesh');
+  assert.equal(await notice('decider'), 'table=decider: no cell here has a tunnel MC33 draws; both tables give this mesh');
+  assert.equal(await notice('classic'), 'table=classic: no cell here has a face the asymptotic decider joins; both tables give this mesh');
+  assert.deepEqual(errors, []);
+});
+
 test('a negative radius in the link subtracts a sphere, and the editor toggles it', async () => {
   const { page, errors } = await open('?balls=-0.3,0,0,0.4&res=48&paused=1&edit=on');
   const whole = await settledTriangles(page);
@@ -212,6 +227,8 @@ test('the lecture shows two spheres on a cell\'s body diagonal joined only under
   // only under MC33, and its triangles join the two loops (four more than their two fills).
   const reports = await page.$$eval(figures, (views) => views.map((e) => e.inspectCell(4, 4, 4)));
   assert.deepEqual(reports.map((r) => [r.interior, r.tunnel, r.triangles.length]), [[[0, 6], false, 2], [[0, 6], false, 2], [[0, 6], true, 6]]);
+  // MC33's configuration 4.1.2 in every figure; the other two tables draw 4.1.1.
+  assert.deepEqual(reports.map((r) => [r.subcase, r.drawnSubcase]), [['4.1.2', '4.1.1'], ['4.1.2', '4.1.1'], ['4.1.2', '4.1.2']]);
   const said = await page.$eval('figure#interior metaballs-view:last-of-type', (e) => e.shadowRoot.querySelector('#inspector .interior').textContent);
   assert.match(said, /joins corners 0 and 6 through a saddle; drawn as a tunnel \(table=mc33\)/);
   // Switching the decider's figure to MC33 names the cell that changed: the tunnel joins the blobs.

@@ -128,7 +128,7 @@ test('bad teaching values show a notice and keep the view', async () => {
   await page.close();
 });
 
-test('clicking the surface inspects a cell; Esc and the background let go; the gallery marks its class', async () => {
+test('clicking the surface inspects a cell; Esc and the background let go; the gallery marks its configuration', async () => {
   const { page, errors } = await open(`${START}&display=wireframe`);
   await settledTriangles(page);
   await openPanelGroups(page);
@@ -167,9 +167,18 @@ test('clicking the surface inspects a cell; Esc and the background let go; the g
   assert.equal(await page.isVisible('#inspector'), true);
   assert.match(await page.textContent('#inspector h3'), new RegExp(`Cell \\(${report.cell.join(', ')}\\)`));
   assert.equal(await page.textContent('#inspector-case'), String(report.case));
-  const current = await page.$eval('metaballs-view', (e) => e.shadowRoot.querySelector('.gallery figure.current')?.dataset.class);
-  assert.equal(current, String(report.class), 'the gallery marks the inspected class');
-  assert.equal(await page.$$eval('metaballs-view >> .gallery figure', (f) => f.length), 15);
+  assert.equal(await page.textContent('#inspector-subcase'), report.subcase);
+  assert.ok(report.subcase === String(report.class) || report.subcase.startsWith(`${report.class}.`), report.subcase);
+  const current = await page.$eval('metaballs-view', (e) => {
+    const figure = e.shadowRoot.querySelector('.gallery figure.current');
+    return figure && { class: figure.dataset.class, subcase: figure.dataset.subcase };
+  });
+  assert.deepEqual(current, { class: String(report.class), subcase: report.subcase }, 'the gallery marks the inspected configuration');
+  // MC33's 33 configurations, each once, the tunnels among them said so.
+  const gallery = await page.$$eval('metaballs-view >> .gallery figure', (f) => f.map((x) => [x.dataset.subcase, x.title]));
+  assert.equal(new Set(gallery.map(([name]) => name)).size, 33, JSON.stringify(gallery));
+  assert.deepEqual(gallery.filter(([, title]) => title.includes('a tunnel inside')).map(([name]) => name),
+    ['4.1.2', '6.1.2', '7.4.2', '10.1.2', '12.1.2', '13.5.2']);
   const highlighted = await screenshot(page, 'inspector-selected');
   assert.ok(await differingFraction(page, before, highlighted) > 0.0005, 'the selected cell is highlighted');
   // It follows the animation: play, and the corner values change while the cell stays.

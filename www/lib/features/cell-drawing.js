@@ -1,5 +1,5 @@
 // Small drawings of a cell (corners inside filled, triangles where the case puts them), for the cell
-// inspector's box and the gallery of the 15 case classes.
+// inspector's box and the gallery of the case classes and their configurations.
 
 import { project } from './interpolant.js';
 import { classColor } from './legends.js';
@@ -47,31 +47,42 @@ export function cellDrawing(cube, inside, triangles, t, { size = 64, color = '#e
 }
 
 /**
- * The gallery: one drawing per class, with its number, name and how many of the 256 cases it holds.
+ * The gallery: one drawing per configuration of each class (MC33's 33: the 15 classes, those with
+ * ambiguous faces or an ambiguous inside split by how they are joined), with its name and triangles.
  * `count` drawings are made now (all by default); `more()` makes the next one and says whether any is
  * left, so that a page can draw them a few at a time.
  */
-export function buildGallery({ classes, cube }, count = classes.length) {
+export function buildGallery({ classes, cube }, count = Infinity) {
   const list = document.createElement('div');
   list.className = 'gallery';
+  const all = classes.flatMap((k) => k.subcases.map((s) => ({ k, s, only: k.subcases.length === 1 })));
   let next = 0;
   list.more = () => {
-    const k = classes[next++];
+    const { k, s, only } = all[next++] ?? {};
     if (!k) return false;
     const figure = document.createElement('figure');
     figure.dataset.class = String(k.class);
+    figure.dataset.subcase = s.name;
+    const triangles = `${s.triangles.length} △`;
+    // The faces it joins, and the tunnel where the interior decides between configurations.
+    const interior = k.subcases.some((o) => o.tunnel && o.joined === s.joined);
+    const inside = s.tunnel ? 'a tunnel inside' : interior ? 'no tunnel' : '';
+    const faces = s.ambiguous ? `${s.joined} of ${s.ambiguous} ambiguous faces joined` : '';
+    const how = [faces, inside].filter(Boolean).join(', ');
+    const short = [s.ambiguous ? `${s.joined}/${s.ambiguous} joined` : '', inside.replace('a tunnel inside', 'tunnel')]
+      .filter(Boolean).join(', ');
     const caption = document.createElement('figcaption');
-    caption.textContent = `${k.class} · ${k.name} (${k.cases} cases, ${k.triangleCount} △)`;
+    caption.textContent = only ? `${k.class} · ${k.name} (${k.cases} cases, ${triangles})` : `${s.name} · ${short} (${triangles})`;
+    figure.title = `Class ${k.class}, ${k.name} (${k.cases} of the 256 cases)${only ? '' : `: configuration ${s.name}, ${how}`}`;
     figure.append(
-      cellDrawing(cube, k.inside, k.triangles, () => 0.5, {
-        color: classColor(k.class), label: `class ${k.class}: ${k.name}`,
+      cellDrawing(cube, k.inside, s.triangles, () => 0.5, {
+        color: classColor(k.class), label: only ? `class ${k.class}: ${k.name}` : `configuration ${s.name}: ${k.name}, ${how}`,
       }),
       caption,
     );
     list.append(figure);
-    return next < classes.length;
+    return next < all.length;
   };
   while (next < count && list.more());
   return list;
 }
-

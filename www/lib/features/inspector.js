@@ -1,5 +1,5 @@
 // The cell inspector's box: what marching cubes decided in the selected cell, live as the spheres
-// move, with a drawing of the cell; and the gallery of the 15 case classes in the panel.
+// move, with a drawing of the cell; and the gallery of the case classes and their configurations.
 
 import { PICTURE_FRAMES } from '../core/redraw.js';
 import { caseGallery } from '../engine/wasm.js';
@@ -14,7 +14,7 @@ const format = (v, digits = 3) => (Math.abs(v) >= 1000 ? v.toExponential(2) : v.
 
 /**
  * The cell inspector of one figure: selects cells in its wasm view and shows their reports in the box
- * `#inspector`, with the gallery of case classes in the panel marking the inspected one.
+ * `#inspector`, with the gallery of configurations in the panel marking the inspected one.
  */
 export class Inspector {
   static attributes = ['edit'];
@@ -23,7 +23,7 @@ export class Inspector {
   #report = null;
   #shownAt = 0;
   #gallery = null;
-  #shownClass = null;
+  #shownSubcase = null;
 
   constructor(ctx) {
     this.#ctx = ctx;
@@ -46,11 +46,11 @@ export class Inspector {
     return { inspector: (panel) => this.#control(panel) };
   }
 
-  // The hint, and the gallery of the 15 cases, drawn one case at a time while the page is idle (all
+  // The hint, and the gallery of the cases' configurations, drawn one at a time while the page is idle (all
   // that are left when it is opened), not before the figure's first frame.
   #control({ element, gallery }) {
     const hint = element('p', { className: 'hint', textContent: 'Click the surface to inspect a cell (Esc to let go).' });
-    const cases = element('details', { className: 'cases' }, element('summary', { textContent: 'The 15 cases' }));
+    const cases = element('details', { className: 'cases' }, element('summary', { textContent: 'The 15 cases and their 33 configurations' }));
     const idle = (draw) => (globalThis.requestIdleCallback
       ? requestIdleCallback(draw, { timeout: 1000 }) : setTimeout(draw, 0));
     let drawing = null;
@@ -70,14 +70,15 @@ export class Inspector {
     return [hint, cases];
   }
 
+  // Marks the inspected cell's configuration in the gallery.
   #markClass() {
     for (const figure of this.#gallery?.children ?? []) {
-      figure.classList.toggle('current', figure.dataset.class === String(this.#shownClass));
+      figure.classList.toggle('current', figure.dataset.subcase === this.#shownSubcase);
     }
   }
 
-  #onClass(k) {
-    this.#shownClass = k;
+  #onSubcase(name) {
+    this.#shownSubcase = name;
     this.#markClass();
   }
 
@@ -123,7 +124,7 @@ export class Inspector {
     this.#shownAt = performance.now();
     if (!report) {
       this.#box.hidden = true;
-      this.#onClass(null);
+      this.#onSubcase(null);
       return;
     }
     const [x, y, z] = report.cell;
@@ -159,7 +160,9 @@ export class Inspector {
       <header><h3>Cell (${x}, ${y}, ${z})</h3>
         <button type="button" class="close" aria-label="Deselect the cell (Esc)">×</button></header>
       <p>Case <b id="inspector-case">${report.case}</b> = <code>${report.bits}</code> (bit c: corner c inside)
-        · class <b id="inspector-class">${report.class}</b>, ${report.className}</p>
+        · class <b id="inspector-class">${report.class}</b>, ${report.className}
+        · configuration <b id="inspector-subcase">${report.subcase}</b>${report.drawnSubcase === report.subcase ? ''
+          : ` <span class="drawn-subcase">(the table in use draws ${report.drawnSubcase})</span>`}</p>
       <div class="inspector-body">
         <table class="corners"><thead><tr><th>corner</th><th>f</th><th>f &gt; ${format(iso, 2)}?</th></tr></thead>
           <tbody>${rows}</tbody></table>
@@ -174,6 +177,6 @@ export class Inspector {
       interpolantDrawing(this.#cube(), report.corners, iso,
         { size: 96, label: `case ${report.case}: the trilinear interpolant of its corner values, ray cast` }));
     this.#box.hidden = false;
-    this.#onClass(report.class);
+    this.#onSubcase(report.subcase);
   }
 }

@@ -74,7 +74,8 @@ export function tableNotice(table, cells, before, after, kinds = 1) {
   const blobs = before !== null && after !== null ? `blobs ${before} → ${after}` : '';
   if (cells === null) return `table=${table}${blobs ? `: ${blobs}` : ''}`;
   if (cells.length === 0) {
-    const what = kinds === 2 ? 'a tunnel MC33 draws' : 'a face the asymptotic decider joins';
+    const what = { 2: 'a tunnel MC33 draws', 3: 'a face the asymptotic decider joins or a tunnel MC33 draws' }[kinds]
+      ?? 'a face the asymptotic decider joins';
     return `table=${table}: no cell here has ${what}; both tables give this mesh`;
   }
   const named = cells.slice(0, NAMED).map((c) => `(${c.join(', ')})`).join(', ');
