@@ -62,3 +62,43 @@ fn two_spheres_on_a_cells_body_diagonal_are_one_blob_only_under_mc33() {
     let tolerance = 1e-4 * Grid { cells_per_axis: 9 }.cell_size();
     gpu(&scene, 1.0, 9, CaseTable::Mc33).to_soup().matches(&mc33, tolerance, 0.01f32.to_radians()).unwrap();
 }
+
+/// How rare the cells the tables disagree on are, over the shared scene list: cells with an ambiguous
+/// face, those whose faces the decider joins, and those with a tunnel, among the crossed cells. The
+/// classic table's speed is kept by resolving these apart from the common path; they must stay well
+/// under 1 % (`cargo test --test suite -- census --nocapture` prints the counts).
+#[test]
+fn census_ambiguous_cells_are_well_under_one_percent_of_the_crossed_cells() {
+    use metaballs::extract::decider::{ambiguous_faces, face_choices, has_tunnel};
+    use metaballs::extract::interior::interior_code;
+    use metaballs::extract::tables::CORNER_OFFSETS;
+    let (mut crossed, mut ambiguous, mut joined, mut tunnels) = (0usize, 0usize, 0usize, 0usize);
+    for scene in common::scenes::oracle_scenes(40) {
+        let grid = Grid { cells_per_axis: scene.resolution };
+        let values = reference::sample_blended_field(&scene.spheres, grid, scene.construction.blend);
+        let n = scene.resolution;
+        for id in (0..n * n * n).map(|i| glam::UVec3::new(i % n, i / n % n, i / (n * n))) {
+            let f: [f32; 8] = std::array::from_fn(|c| {
+                values[grid.point_index(id + glam::UVec3::from_array(CORNER_OFFSETS[c]))]
+            });
+            let case = (0..8).fold(0usize, |m, c| m | ((f[c] > scene.iso) as usize) << c);
+            if case == 0 || case == 255 {
+                continue;
+            }
+            crossed += 1;
+            let choices = face_choices(case, f, scene.iso);
+            ambiguous += (ambiguous_faces(case) != 0) as usize;
+            joined += (choices != 0) as usize;
+            tunnels += has_tunnel(case, choices, interior_code(f, scene.iso)) as usize;
+        }
+    }
+    let share = |k: usize| format!("{k} ({:.3} %)", 100.0 * k as f64 / crossed as f64);
+    eprintln!(
+        "{crossed} crossed cells: {} with an ambiguous face, {} with a face the decider joins, {} with a tunnel",
+        share(ambiguous),
+        share(joined),
+        share(tunnels)
+    );
+    assert!(crossed > 100_000, "{crossed} crossed cells");
+    assert!(ambiguous * 100 < crossed, "{} of the crossed cells are ambiguous", share(ambiguous));
+}
