@@ -32,6 +32,7 @@ const SHARED = [
   'book.test.js', // 12
   'assets.test.js', // 10
   'interpolant.test.js', // 7
+  'squares.test.js', // 4
   'size.test.js', // 0.1
   'frame-cost.test.js', // 0.3
 ];
