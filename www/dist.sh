@@ -20,7 +20,7 @@ need_esbuild
 rm -rf dist
 mkdir -p dist/www dist/pkg dist/pkg-webgl
 cp index.html embed.html dist/
-"$esbuild" www/metaballs-view.js www/page.js www/lib/engine/mesh-worker.js --bundle --splitting --format=esm --minify --sourcemap \
+"$esbuild" www/metaballs-view.js www/metaballs-2d.js www/page.js www/lib/engine/mesh-worker.js --bundle --splitting --format=esm --minify --sourcemap \
     --target=es2022 --outbase=www --outdir=dist/www --chunk-names='lib/engine/[name]-[hash]' \
     --external:'../../../pkg/*' --external:'../../../pkg-webgl/*' --log-level=warning
 if grep -l 'pkg/metaballs' dist/www/*.js; then

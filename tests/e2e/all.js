@@ -33,6 +33,7 @@ const SHARED = [
   'assets.test.js', // 10
   'interpolant.test.js', // 7
   'squares.test.js', // 4
+  'plane.test.js', // 15
   'size.test.js', // 0.1
   'frame-cost.test.js', // 0.3
 ];

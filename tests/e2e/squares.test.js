@@ -156,12 +156,12 @@ function bilinearJoins(f, iso, m = 300) {
 test('the saddle rules: the table cuts apart, the centre value and the decider join by their values', () => {
   // Centre value above the level, the interpolant's saddle below: the two rules disagree.
   const f = [3.5, 0.2, 1.01, 0.2];
-  assert.ok(saddleValue(f, 'centre') > 1 && saddleValue(f, 'decider') < 1);
+  assert.ok(saddleValue(f, 'center') > 1 && saddleValue(f, 'decider') < 1);
   const rings = (saddle) => march(saddleGrid(f), 3, 1, { saddle });
   assert.equal(rings('table').rings.length, 2);
-  assert.equal(rings('centre').rings.length, 1);
+  assert.equal(rings('center').rings.length, 1);
   assert.equal(rings('decider').rings.length, 2);
-  assert.deepEqual(rings('centre').saddles, [{ square: [1, 1], case: 5, value: 1.2275, joined: true }]);
+  assert.deepEqual(rings('center').saddles, [{ square: [1, 1], case: 5, value: 1.2275, joined: true }]);
   // The decider joins exactly where the bilinear interpolant does, on random saddle squares.
   const rng = random(99);
   let joined = 0;

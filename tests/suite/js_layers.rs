@@ -23,7 +23,7 @@ const LAYERS: &[(&str, &[&str])] = &[
     // The figure's features: HUD, panel, camera, inspector, editor, scene files, sync, topology, ….
     ("features", &["www/lib/features/"]),
     // The element.
-    ("element", &["www/metaballs-view.js"]),
+    ("element", &["www/metaballs-view.js", "www/metaballs-2d.js"]),
     // The full page and its benchmark.
     ("page", &["www/page.js", "www/bench.js"]),
 ];

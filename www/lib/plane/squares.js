@@ -21,7 +21,7 @@ export const EDGE_CORNERS = [[0, 1], [1, 2], [3, 2], [0, 3]];
 const CORNER_EDGES = [[3, 0], [0, 1], [1, 2], [2, 3]];
 
 /** The ways of joining a saddle square's inside corners, and their words. */
-export const SADDLE_RULES = ['table', 'centre', 'decider'];
+export const SADDLE_RULES = ['table', 'center', 'decider'];
 
 /**
  * The segments of each case, generated from the corners: with one crossing pair the segment joins its
@@ -82,12 +82,12 @@ export function sampleField(circles, cells) {
 
 /**
  * The saddle value that decides a saddle square with corner values `f` (corner order) by `rule`:
- * `centre` the mean of the four corners, `decider` the bilinear interpolant's saddle,
+ * `center` the mean of the four corners, `decider` the bilinear interpolant's saddle,
  * (f0 f2 − f1 f3) / (f0 + f2 − f1 − f3); null for `table`, which decides nothing. The inside corners
  * are joined where this value is above iso.
  */
 export function saddleValue(f, rule) {
-  if (rule === 'centre') return (f[0] + f[1] + f[2] + f[3]) / 4;
+  if (rule === 'center') return (f[0] + f[1] + f[2] + f[3]) / 4;
   if (rule === 'decider') {
     const d = f[0] + f[2] - f[1] - f[3];
     return d === 0 ? null : (f[0] * f[2] - f[1] * f[3]) / d;

@@ -1,0 +1,119 @@
+// The 2D figure, <metaballs-2d>, in headless Chromium: the lecture's figure draws its samples, cases,
+// saddles and contour with WebGPU, with WebGL2 only and with neither; each setting changes the picture;
+// a bad value gets a notice and keeps the figure; the SVG export parses and holds the contour drawn;
+// dragging a circle moves it. Its contouring is held to d3-contour in squares.test.js.
+
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { useServerAndBrowser, openClosedAfterEach, differingFraction, pixelStats } from './helpers.js';
+
+useServerAndBrowser();
+const open = openClosedAfterEach();
+
+const LECTURE = 'www/examples/lecture.html';
+const NO_WEBGPU_OR_WEBGL = () => {
+  delete Navigator.prototype.gpu;
+  const getContext = HTMLCanvasElement.prototype.getContext;
+  HTMLCanvasElement.prototype.getContext = function (kind, ...rest) {
+    return kind === 'webgl2' || kind === 'webgl' ? null : getContext.call(this, kind, ...rest);
+  };
+};
+
+const figure = (page) => page.locator('#squares metaballs-2d');
+const shot = (page) => figure(page).screenshot();
+const contours = (page) => page.$eval('#squares metaballs-2d', (e) => e.contours());
+const set = (page, name, value) => page.$eval('#squares metaballs-2d', (e, [n, v]) => e.setAttribute(n, v), [name, value]);
+// A frame drawn after a change (the figure draws on the next animation frame).
+const drawn = (page) => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+
+async function lecture(options) {
+  const opened = await open(LECTURE, options);
+  await opened.page.locator('#squares').scrollIntoViewIfNeeded();
+  await opened.page.waitForFunction(() => document.querySelector('#squares metaballs-2d')?.frameMs > 0);
+  return opened;
+}
+
+test('the lecture\'s 2D figure draws its samples, saddles and contour, with and without a GPU', async () => {
+  for (const initScript of [undefined, NO_WEBGPU_OR_WEBGL]) {
+    const { page, errors } = await lecture({ initScript });
+    if (initScript) {
+      assert.equal(await page.evaluate(() => 'gpu' in navigator || document.createElement('canvas').getContext('webgl2') !== null), false);
+    }
+    const result = await contours(page);
+    // The decider joins the three circles through two saddle squares: one contour.
+    assert.equal(result.rings.length, 1);
+    assert.deepEqual(result.saddles.map((s) => [s.square, s.case, s.joined]), [[[4, 4], 10, true], [[7, 5], 5, true]]);
+    const stats = await pixelStats(page, await shot(page));
+    // The white contour, and the orange of the inside samples.
+    assert.ok(stats.highlight / stats.pixels > 0.003 && stats.surface > 0.003, `the contour and samples show: ${JSON.stringify(stats)}`);
+    const label = await page.$eval('#squares metaballs-2d', (e) => e.shadowRoot.querySelector('canvas').getAttribute('aria-label'));
+    assert.match(label, /two saddle squares the decider joins/);
+    assert.deepEqual(errors, []);
+  }
+});
+
+test('each setting changes the picture; the saddle rule changes the contour; a bad value gets a notice', async () => {
+  const { page, errors } = await lecture();
+  let before = await shot(page);
+  for (const [name, value] of [['saddle', 'table'], ['iso', '0.9'], ['resolution', '20'], ['interpolation', 'midpoint'],
+    ['levels', '0.5'], ['show', 'grid,contour'], ['theme', 'light']]) {
+    await set(page, name, value);
+    await drawn(page);
+    const after = await shot(page);
+    assert.ok(await differingFraction(page, before, after) > 0.001, `${name}=${value} changes the picture`);
+    before = after;
+  }
+  // The fixed table cuts the saddles apart: three contours on the lecture's grid where the decider
+  // drew one.
+  for (const [name, value] of [['iso', '1.2'], ['resolution', '12'], ['interpolation', 'linear']]) await set(page, name, value);
+  await drawn(page);
+  assert.equal((await contours(page)).rings.length, 3);
+  await set(page, 'saddle', 'center');
+  await drawn(page);
+  const center = await contours(page);
+  assert.ok(center.saddles.every((s) => Math.abs(s.value - 1.2) > 0 && s.joined === s.value > 1.2));
+  // Bad values: a notice saying what is accepted, and the figure keeps its setting.
+  for (const [name, value, said] of [['iso', 'abc', /iso: "abc" is not a number from 0.05 to 20/],
+    ['saddle', 'middle', /saddle: "middle" is not one of table, center, decider/],
+    ['circles', '0,0', /circles: "0,0" is not x,y,r/], ['show', 'grid,sparkles', /show: sparkles is not one of/]]) {
+    await set(page, name, value);
+    await drawn(page);
+    const notice = await page.$eval('#squares metaballs-2d', (e) => e.shadowRoot.getElementById('notice').textContent);
+    assert.match(notice, said);
+    assert.match(notice, /kept the previous value/);
+  }
+  assert.equal((await contours(page)).iso, 1.2);
+  assert.deepEqual(errors, []);
+});
+
+test('the SVG export parses and holds the contour drawn; dragging a circle moves it', async () => {
+  const { page, errors } = await lecture();
+  const svg = await page.$eval('#squares metaballs-2d', (e) => e.toSVG(480));
+  const parsed = await page.evaluate((text) => {
+    const doc = new DOMParser().parseFromString(text, 'image/svg+xml');
+    const contour = doc.querySelector('path.contour');
+    return {
+      error: doc.querySelector('parsererror')?.textContent ?? null,
+      subpaths: contour ? contour.getAttribute('d').split('M').length - 1 : 0,
+      title: doc.querySelector('title')?.textContent,
+      texts: doc.querySelectorAll('text').length,
+      saddles: doc.querySelectorAll('rect.saddle').length,
+    };
+  }, svg);
+  assert.equal(parsed.error, null);
+  assert.equal(parsed.subpaths, (await contours(page)).rings.length);
+  assert.match(parsed.title, /Three circles/);
+  assert.equal(parsed.saddles, 2);
+  assert.ok(parsed.texts > 13 * 13, `every sample's value is printed: ${parsed.texts} labels`);
+  // Drag the first circle by its centre.
+  const [circle] = await page.$eval('#squares metaballs-2d', (e) => e.circleList.map((c) => ({ ...c })));
+  const box = await figure(page).boundingBox();
+  const at = (x, y) => [box.x + box.width * (0.03 + 0.94 * (x + 1) / 2), box.y + box.height * (0.03 + 0.94 * (1 - y) / 2)];
+  await page.mouse.move(...at(circle.x, circle.y));
+  await page.mouse.down();
+  await page.mouse.move(...at(circle.x - 0.3, circle.y - 0.2), { steps: 5 });
+  await page.mouse.up();
+  const [moved] = await page.$eval('#squares metaballs-2d', (e) => e.circleList);
+  assert.ok(Math.abs(moved.x - (circle.x - 0.3)) < 0.05 && Math.abs(moved.y - (circle.y - 0.2)) < 0.05, JSON.stringify(moved));
+  assert.deepEqual(errors, []);
+});

@@ -1,0 +1,294 @@
+// <metaballs-2d>: marching squares on circles in the plane, the figure a course starts with. The field
+// f = Σ qᵢ rᵢ² / |p − cᵢ|² is sampled on a grid; the figure shows each sample's value and sign, each
+// square's case, the saddle squares with the value that decided them, the crossings and the contour,
+// and further iso levels as lines and filled bands. It draws on a 2D canvas (no GPU, no WebAssembly),
+// exports its picture as SVG and its contour as data, and its circles move and can be dragged.
+// Importing it only defines the element, and only where `customElements` exists.
+//
+// Settings it shares with <metaballs-view> (`iso`, `resolution`, `interpolation`, `saddle`, `spheres`,
+// `seed`, `speed`, `paused`, `theme`, `alt`) are read with the parameter table's ranges and words.
+
+import { rowOf } from './lib/core/table.js';
+import { DEFAULT_SHOWN, paint, picture, SHOWN, toSvg } from './lib/plane/picture.js';
+import { sampleField } from './lib/plane/squares.js';
+
+// The grid a figure starts with: coarse enough to read every value.
+const DEFAULT_CELLS = 16;
+
+const STYLE = `
+:host { display: block; position: relative; aspect-ratio: 1; max-width: 100%; contain: content;
+  font: 13px system-ui, sans-serif; }
+canvas { display: block; width: 100%; height: 100%; touch-action: none; cursor: crosshair; border-radius: 6px; }
+#notice { position: absolute; left: 8px; right: 8px; bottom: 8px; padding: 6px 8px; border-radius: 6px;
+  background: #3b2f12; border: 1px solid #8a6a1f; color: #ffe2a3; }
+#notice[hidden] { display: none; }`;
+
+// A small seeded generator (xorshift), so a seed gives the same circles.
+function random(seed) {
+  let s = (seed >>> 0) || 1;
+  return () => {
+    s ^= s << 13; s >>>= 0;
+    s ^= s >>> 17;
+    s ^= s << 5; s >>>= 0;
+    return s / 2 ** 32;
+  };
+}
+
+/** `count` circles from `seed`, inside the box, each with a velocity. */
+export function seededCircles(seed, count) {
+  const rng = random(seed * 2654435761 + 1);
+  return Array.from({ length: count }, () => {
+    const r = 0.1 + rng() * 0.14;
+    return {
+      x: (rng() * 2 - 1) * (0.9 - r), y: (rng() * 2 - 1) * (0.9 - r), r, charge: 1,
+      vx: (rng() - 0.5) * 0.5, vy: (rng() - 0.5) * 0.5,
+    };
+  });
+}
+
+/** Circles from text `x,y,r;…` (a negative r subtracts); throws an Error saying what is accepted. */
+export function parseCircles(text) {
+  const circles = String(text).split(';').map((s) => s.trim()).filter(Boolean).map((part) => {
+    const numbers = part.split(',').map((s) => Number(s.trim()));
+    if (numbers.length !== 3 || numbers.some((v) => !Number.isFinite(v)) || numbers[2] === 0) {
+      throw new Error(`circles: "${part}" is not x,y,r (three numbers, r not 0)`);
+    }
+    const [x, y, r] = numbers;
+    if (Math.abs(x) > 1 || Math.abs(y) > 1) throw new Error(`circles: (${x}, ${y}) is outside the box [-1, 1]²`);
+    return { x, y, r: Math.abs(r), charge: Math.sign(r), vx: 0, vy: 0 };
+  });
+  if (circles.length === 0) throw new Error('circles: give at least one circle as x,y,r');
+  return circles;
+}
+
+/** A setting read as the parameter table reads it: a number in range, a word among the row's, a flag. */
+function readSetting(name, text) {
+  const row = rowOf(name);
+  if (row.kind === 'number' || row.kind === 'integer') {
+    const value = Number(text);
+    if (!Number.isFinite(value) || value < row.min || value > row.max || (row.kind === 'integer' && !Number.isInteger(value))) {
+      throw new Error(`${name}: "${text}" is not ${row.kind === 'integer' ? 'a whole number' : 'a number'} from ${row.min} to ${row.max}`);
+    }
+    return value;
+  }
+  if (row.kind === 'boolean') return text !== 'false' && text !== '0' && text !== 'off';
+  if (row.kind === 'choice') {
+    const word = String(text).trim().toLowerCase();
+    if (!row.words.includes(word)) throw new Error(`${name}: "${text}" is not one of ${row.words.join(', ')}`);
+    return word;
+  }
+  return String(text);
+}
+
+/** Words of `show` (comma list of `SHOWN`), or the defaults for an empty text. */
+function readShown(text) {
+  const words = String(text).split(',').map((s) => s.trim()).filter(Boolean);
+  const unknown = words.filter((w) => !SHOWN.includes(w));
+  if (unknown.length) throw new Error(`show: ${unknown.join(', ')} is not one of ${SHOWN.join(', ')}`);
+  return words.length ? words : DEFAULT_SHOWN;
+}
+
+/** Further iso levels (comma list), each in the iso level's range. */
+function readLevels(text) {
+  return String(text).split(',').map((s) => s.trim()).filter(Boolean).map((s) => readSetting('iso', s));
+}
+
+const SETTINGS = ['iso', 'resolution', 'interpolation', 'saddle', 'spheres', 'seed', 'speed', 'paused', 'theme'];
+
+// Where there is no DOM (a static-site build importing the module), a plain class stands in.
+const Base = globalThis.HTMLElement ?? class {};
+
+export class Metaballs2d extends Base {
+  static observedAttributes = [...SETTINGS, 'circles', 'levels', 'show', 'alt'];
+
+  #canvas;
+  #notice;
+  #settings = {
+    iso: 1, resolution: DEFAULT_CELLS, interpolation: 'linear', saddle: 'table', spheres: 5, seed: 1,
+    speed: 1, paused: false, theme: 'dark', levels: [], shown: DEFAULT_SHOWN,
+  };
+  #circles = null;
+  #given = null;
+  #frame = 0;
+  #last = 0;
+  #drag = null;
+  #result = null;
+  #size = 0;
+  #observer = null;
+  /** The last frame's time to sample, march and paint, in ms. */
+  frameMs = 0;
+
+  constructor() {
+    super();
+    const root = this.attachShadow({ mode: 'open' });
+    root.innerHTML = `<style>${STYLE}</style><canvas part="canvas" role="img"></canvas><div id="notice" part="notice" role="status" hidden></div>`;
+    this.#canvas = root.querySelector('canvas');
+    this.#notice = root.getElementById('notice');
+    this.#canvas.addEventListener('pointerdown', (e) => this.#grab(e));
+    this.#canvas.addEventListener('pointermove', (e) => this.#move(e));
+    for (const end of ['pointerup', 'pointercancel']) this.#canvas.addEventListener(end, () => { this.#drag = null; });
+  }
+
+  connectedCallback() {
+    this.#observer = new ResizeObserver(() => this.#redraw());
+    this.#observer.observe(this);
+    this.#label();
+    this.#schedule();
+  }
+
+  disconnectedCallback() {
+    this.#observer?.disconnect();
+    cancelAnimationFrame(this.#frame);
+    this.#frame = 0;
+  }
+
+  attributeChangedCallback(name, _old, text) {
+    try {
+      if (name === 'alt') this.#label();
+      else if (name === 'circles') this.#given = text === null ? null : parseCircles(text);
+      else if (name === 'levels') this.#settings.levels = text === null ? [] : readLevels(text);
+      else if (name === 'show') this.#settings.shown = text === null ? DEFAULT_SHOWN : readShown(text);
+      else this.#settings[name] = text === null ? this.#default(name) : readSetting(name, text);
+      if (['circles', 'spheres', 'seed'].includes(name)) this.#circles = null;
+    } catch (error) {
+      this.#say(`${error.message}; kept the previous value`);
+    }
+    this.#label();
+    this.#schedule();
+  }
+
+  #default(name) {
+    if (name === 'resolution') return DEFAULT_CELLS;
+    return rowOf(name).value;
+  }
+
+  #say(text) {
+    this.#notice.textContent = text;
+    this.#notice.hidden = !text;
+    clearTimeout(this.#noticeTimer);
+    if (text) this.#noticeTimer = setTimeout(() => { this.#notice.hidden = true; }, 8000);
+  }
+
+  #noticeTimer = 0;
+
+  #label() {
+    const s = this.#settings;
+    const alt = this.getAttribute('alt');
+    this.#canvas.setAttribute('aria-label', alt || `Marching squares: ${this.circleList.length} circles on ${s.resolution} × ${s.resolution} squares, contour at iso ${s.iso}`);
+  }
+
+  /** The circles, as placed (each `{ x, y, r, charge }`). */
+  get circleList() {
+    if (!this.#circles) {
+      const given = this.#given;
+      this.#circles = given ? given.map((c) => ({ ...c })) : seededCircles(this.#settings.seed, this.#settings.spheres);
+    }
+    return this.#circles;
+  }
+
+  set circleList(list) {
+    this.#given = list.map((c) => ({ x: c.x, y: c.y, r: Math.abs(c.r), charge: c.charge ?? Math.sign(c.r) ?? 1, vx: 0, vy: 0 }));
+    this.#circles = null;
+    this.#schedule();
+  }
+
+  play() { this.removeAttribute('paused'); this.#settings.paused = false; this.#schedule(); }
+
+  pause() { this.#settings.paused = true; }
+
+  /**
+   * The contour at the iso level as data: `{ iso, cells, rings, saddles, crossings }`, each ring a
+   * closed list of points [x, y] in the box [-1, 1]² with the inside on its left.
+   */
+  contours() {
+    const r = this.#result ?? this.#draw();
+    return { iso: this.#settings.iso, cells: this.#settings.resolution, rings: r.rings, saddles: r.saddles, crossings: r.crossings };
+  }
+
+  /** The picture as an SVG document (vector: the grid, labels, bands and contour as drawn). */
+  toSVG(size = 640) {
+    const { shapes } = this.#picture(size);
+    return toSvg(shapes, size, this.getAttribute('alt') || this.#canvas.getAttribute('aria-label'));
+  }
+
+  #picture(size) {
+    const s = this.#settings;
+    const circles = this.circleList;
+    return picture({
+      values: sampleField(circles, s.resolution), cells: s.resolution, iso: s.iso, levels: s.levels, circles,
+      shown: s.shown, options: { placement: s.interpolation, saddle: s.saddle }, size, theme: s.theme,
+    });
+  }
+
+  #redraw() {
+    if (this.isConnected) this.#draw();
+  }
+
+  #draw() {
+    const start = performance.now();
+    const box = this.getBoundingClientRect();
+    const size = Math.max(1, Math.round(Math.min(box.width, box.height || box.width)));
+    const ratio = globalThis.devicePixelRatio || 1;
+    const pixels = Math.round(size * ratio);
+    if (this.#canvas.width !== pixels) this.#canvas.width = this.#canvas.height = pixels;
+    this.#size = size;
+    const { shapes, result } = this.#picture(size);
+    paint(this.#canvas.getContext('2d'), shapes, pixels / size);
+    this.#result = result;
+    this.frameMs = performance.now() - start;
+    return result;
+  }
+
+  #schedule() {
+    if (!this.isConnected || this.#frame) return;
+    this.#frame = requestAnimationFrame((now) => this.#tick(now));
+  }
+
+  #tick(now) {
+    this.#frame = 0;
+    const dt = this.#last ? Math.min(0.05, (now - this.#last) / 1000) : 0;
+    this.#last = now;
+    const moving = !this.#settings.paused && !this.#drag;
+    if (moving) this.#step(dt * this.#settings.speed);
+    this.#draw();
+    if (moving) this.#schedule();
+    else this.#last = 0;
+  }
+
+  // One Euler step, the walls elastic.
+  #step(dt) {
+    for (const c of this.circleList) {
+      c.x += c.vx * dt;
+      c.y += c.vy * dt;
+      if (Math.abs(c.x) > 1 - c.r) { c.vx = -Math.sign(c.x) * Math.abs(c.vx); c.x = Math.sign(c.x) * (1 - c.r); }
+      if (Math.abs(c.y) > 1 - c.r) { c.vy = -Math.sign(c.y) * Math.abs(c.vy); c.y = Math.sign(c.y) * (1 - c.r); }
+    }
+  }
+
+  #toBox(event) {
+    const rect = this.#canvas.getBoundingClientRect();
+    return [((event.clientX - rect.left) / rect.width) * 2 - 1, 1 - ((event.clientY - rect.top) / rect.height) * 2];
+  }
+
+  #grab(event) {
+    const [x, y] = this.#toBox(event);
+    const near = 12 / Math.max(1, this.#size) * 2;
+    const found = this.circleList.find((c) => Math.hypot(c.x - x, c.y - y) < Math.max(c.r, near));
+    if (!found) return;
+    this.#drag = found;
+    this.#canvas.setPointerCapture?.(event.pointerId);
+  }
+
+  #move(event) {
+    if (!this.#drag) return;
+    const [x, y] = this.#toBox(event);
+    this.#drag.x = Math.max(-1, Math.min(1, x));
+    this.#drag.y = Math.max(-1, Math.min(1, y));
+    this.#draw();
+    this.dispatchEvent(new CustomEvent('metaballs-2d-drag', { detail: { circles: this.circleList }, bubbles: true, composed: true }));
+  }
+}
+
+if (globalThis.customElements && !customElements.get('metaballs-2d')) {
+  customElements.define('metaballs-2d', Metaballs2d);
+}
