@@ -1,0 +1,43 @@
+// The 2D figure's frame time in headless Chromium (SwiftShader here): 16 circles animating at 256² and
+// 1024² squares, labels as the default `show` draws them (none are readable at these sizes) and with
+// only the contour; the median of 60 frames of `frameMs` (sampling, marching and painting). Not a test:
+// times depend on the machine. `node plane-bench.js` from tests/e2e (serves the repository itself).
+
+import { spawn } from 'node:child_process';
+import { chromium } from 'playwright-core';
+import { root, CHROMIUM, FLAGS, freePort, waitForServer } from './helpers.js';
+
+const port = await freePort();
+const server = spawn('python3', ['-m', 'http.server', '--bind', '127.0.0.1', String(port), '--directory', root], { stdio: 'ignore' });
+const base = `http://127.0.0.1:${port}/`;
+await waitForServer(base);
+const browser = await chromium.launch({ executablePath: CHROMIUM, args: FLAGS, headless: true });
+try {
+  const page = await browser.newPage({ viewport: { width: 800, height: 800 } });
+  await page.goto(`${base}www/examples/lecture.html`);
+  for (const cells of [256, 1024]) {
+    for (const show of ['', 'contour']) {
+      const ms = await page.evaluate(async ([n, s]) => {
+        const e = document.createElement('metaballs-2d');
+        Object.assign(e.style, { position: 'fixed', left: '0', top: '0', width: '640px' });
+        e.setAttribute('spheres', '16');
+        e.setAttribute('resolution', String(n));
+        if (s) e.setAttribute('show', s);
+        document.body.append(e);
+        const times = [];
+        let last = -1;
+        while (times.length < 60) {
+          await new Promise((r) => requestAnimationFrame(r));
+          if (e.frameMs !== last) times.push((last = e.frameMs));
+        }
+        e.remove();
+        times.sort((a, b) => a - b);
+        return times[30];
+      }, [cells, show]);
+      console.log(`${cells}² squares × 16 circles, show=${show || 'default'}: ${ms.toFixed(1)} ms per frame (median of 60)`);
+    }
+  }
+} finally {
+  await browser.close();
+  server.kill();
+}
