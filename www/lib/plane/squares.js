@@ -73,9 +73,25 @@ export function fieldAt(circles, x, y) {
 export function sampleField(circles, cells) {
   const n = cells + 1;
   const values = new Float64Array(n * n);
+  // Each circle as x, y and q r², and its squared distance in y for the row at hand.
+  const k = circles.length;
+  const flat = new Float64Array(3 * k);
+  circles.forEach((c, m) => flat.set([c.x, c.y, (c.charge ?? 1) * c.r * c.r], 3 * m));
+  const dy2 = new Float64Array(k);
+  const step = 2 / cells;
   for (let j = 1; j < cells; j += 1) {
-    const y = -1 + (2 * j) / cells;
-    for (let i = 1; i < cells; i += 1) values[j * n + i] = fieldAt(circles, -1 + (2 * i) / cells, y);
+    const y = -1 + j * step;
+    for (let m = 0; m < k; m += 1) dy2[m] = (y - flat[3 * m + 1]) ** 2;
+    for (let i = 1; i < cells; i += 1) {
+      const x = -1 + i * step;
+      let f = 0;
+      for (let m = 0; m < k; m += 1) {
+        const dx = x - flat[3 * m];
+        const d = dx * dx + dy2[m];
+        f += flat[3 * m + 2] / (d > 1e-20 ? d : 1e-20);
+      }
+      values[j * n + i] = f;
+    }
   }
   return values;
 }
@@ -112,23 +128,36 @@ export function march(values, cells, iso, { placement = 'linear', saddle = 'tabl
   // Edge ids: the horizontal edge from point (i, j) is 2 (j n + i), the vertical one 2 (j n + i) + 1.
   const edgeId = (i, j, e) => (e === 0 ? 2 * (j * n + i) : e === 1 ? 2 * (j * n + i + 1) + 1
     : e === 2 ? 2 * ((j + 1) * n + i) : 2 * (j * n + i) + 1);
-  const next = new Map();
+  // For each crossed edge, the edge the contour goes on to (-1 where it crosses none), and the
+  // crossed edges in the order found.
+  const next = new Int32Array(2 * n * n).fill(-1);
+  const crossed = [];
+  // A square's case, from the inside bits of its lower and upper rows.
+  const row = (j) => {
+    const bits = new Uint8Array(n);
+    for (let i = 0; i < n; i += 1) bits[i] = values[j * n + i] > iso ? 1 : 0;
+    return bits;
+  };
+  let below = row(0);
   for (let j = 0; j < cells; j += 1) {
+    const above = row(j + 1);
     for (let i = 0; i < cells; i += 1) {
-      const f = [at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)];
-      const c = (f[0] > iso) | (f[1] > iso) << 1 | (f[2] > iso) << 2 | (f[3] > iso) << 3;
+      const c = below[i] | below[i + 1] << 1 | above[i + 1] << 2 | above[i] << 3;
       cases[j * cells + i] = c;
       if (c === 0 || c === 15) continue;
       let joined = false;
       if (c === 5 || c === 10) {
-        const value = saddleValue(f, saddle);
+        const value = saddleValue([at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)], saddle);
         joined = value !== null && value > iso;
         saddles.push({ square: [i, j], case: c, value, joined });
       }
       for (const [from, to] of (joined ? SEGMENTS.joined : SEGMENTS.apart)[c]) {
-        next.set(edgeId(i, j, from), edgeId(i, j, to));
+        const id = edgeId(i, j, from);
+        next[id] = edgeId(i, j, to);
+        crossed.push(id);
       }
     }
+    below = above;
   }
   const point = (id) => {
     const vertical = id & 1;
@@ -141,17 +170,17 @@ export function march(values, cells, iso, { placement = 'linear', saddle = 'tabl
     return vertical ? [-1 + i * step, -1 + (j + t) * step] : [-1 + (i + t) * step, -1 + j * step];
   };
   const rings = [];
-  const seen = new Set();
-  for (const start of next.keys()) {
-    if (seen.has(start)) continue;
+  const seen = new Uint8Array(next.length);
+  for (const start of crossed) {
+    if (seen[start]) continue;
     const ring = [];
-    for (let id = start; !seen.has(id); id = next.get(id)) {
-      seen.add(id);
+    for (let id = start; !seen[id]; id = next[id]) {
+      seen[id] = 1;
       ring.push(point(id));
     }
     rings.push(ring);
   }
-  return { cases, saddles, rings, crossings: next.size };
+  return { cases, saddles, rings, crossings: crossed.length };
 }
 
 /** A ring's signed area (positive counter-clockwise) and its length. */
