@@ -11,13 +11,18 @@
 import { rowOf } from './lib/core/table.js';
 import { DEFAULT_SHOWN, paint, picture, SHOWN, toSvg } from './lib/plane/picture.js';
 import { sampleField } from './lib/plane/squares.js';
+import { nextCrossed } from './lib/plane/stepper.js';
+import { stepperPanel } from './lib/plane/stepper-panel.js';
 
 // The grid a figure starts with: coarse enough to read every value.
 const DEFAULT_CELLS = 16;
 
 const STYLE = `
-:host { display: block; position: relative; aspect-ratio: 1; max-width: 100%; contain: content;
-  font: 13px system-ui, sans-serif; }
+:host { display: block; position: relative; max-width: 100%; contain: content; font: 13px system-ui, sans-serif; }
+:host([step]) { display: grid; grid-template-columns: minmax(0, 1fr) minmax(13rem, 17rem); gap: 8px; }
+.figure { position: relative; aspect-ratio: 1; }
+.side { min-height: 0; }
+.side:empty { display: none; }
 canvas { display: block; width: 100%; height: 100%; touch-action: none; cursor: crosshair; border-radius: 6px; }
 #notice { position: absolute; left: 8px; right: 8px; bottom: 8px; padding: 6px 8px; border-radius: 6px;
   background: #3b2f12; border: 1px solid #8a6a1f; color: #ffe2a3; }
@@ -99,7 +104,7 @@ const SETTINGS = ['iso', 'resolution', 'interpolation', 'saddle', 'spheres', 'se
 const Base = globalThis.HTMLElement ?? class {};
 
 export class Metaballs2d extends Base {
-  static observedAttributes = [...SETTINGS, 'circles', 'levels', 'show', 'alt'];
+  static observedAttributes = [...SETTINGS, 'circles', 'levels', 'show', 'alt', 'step'];
 
   #canvas;
   #notice;
@@ -117,11 +122,19 @@ export class Metaballs2d extends Base {
   #observer = null;
   /** The last frame's time to sample, march and paint, in ms. */
   frameMs = 0;
+  // The stepper: the step shown (null when it is off), whether it plays, steps per second, the time
+  // carried towards the next step, and the panel's update.
+  #step = null;
+  #stepping = false;
+  #stepSpeed = 4;
+  #stepCarry = 0;
+  #panel = null;
 
   constructor() {
     super();
     const root = this.attachShadow({ mode: 'open' });
-    root.innerHTML = `<style>${STYLE}</style><canvas part="canvas" role="img"></canvas><div id="notice" part="notice" role="status" hidden></div>`;
+    root.innerHTML = `<style>${STYLE}</style><div class="figure"><canvas part="canvas" role="img"></canvas>`
+      + '<div id="notice" part="notice" role="status" hidden></div></div><div class="side"></div>';
     this.#canvas = root.querySelector('canvas');
     this.#notice = root.getElementById('notice');
     this.#canvas.addEventListener('pointerdown', (e) => this.#grab(e));
@@ -145,11 +158,14 @@ export class Metaballs2d extends Base {
   attributeChangedCallback(name, _old, text) {
     try {
       if (name === 'alt') this.#label();
+      else if (name === 'step') this.#openStepper(text);
       else if (name === 'circles') this.#given = text === null ? null : parseCircles(text);
       else if (name === 'levels') this.#settings.levels = text === null ? [] : readLevels(text);
       else if (name === 'show') this.#settings.shown = text === null ? DEFAULT_SHOWN : readShown(text);
       else this.#settings[name] = text === null ? this.#default(name) : readSetting(name, text);
       if (['circles', 'spheres', 'seed'].includes(name)) this.#circles = null;
+      // A square named i,j stays that square on a new grid.
+      if (name === 'resolution' && this.hasAttribute('step')) this.#openStepper(this.getAttribute('step'));
     } catch (error) {
       this.#say(`${error.message}; kept the previous value`);
     }
@@ -194,15 +210,69 @@ export class Metaballs2d extends Base {
 
   play() { this.removeAttribute('paused'); this.#settings.paused = false; this.#schedule(); }
 
+  /** The stepper's step (square j · resolution + i, in the march's order), or null when it is off. */
+  get stepIndex() { return this.#step; }
+
+  /** Opens the stepper at step `k` (clamped to the march), or moves it there. */
+  stepTo(k) {
+    const steps = this.#settings.resolution ** 2;
+    this.#step = Math.max(0, Math.min(steps, Math.round(k)));
+    this.#ensurePanel();
+    this.#schedule();
+  }
+
+  stepForward() { this.stepTo((this.#step ?? -1) + 1); }
+
+  stepBack() { this.stepTo((this.#step ?? 1) - 1); }
+
+  /** Moves the stepper to the next square the contour crosses (stays at the end when there is none). */
+  nextCrossed() {
+    const result = this.#result ?? this.#draw();
+    const found = nextCrossed(result.cases, this.#step ?? -1);
+    this.stepTo(found < 0 ? this.#settings.resolution ** 2 : found);
+  }
+
+  #openStepper(text) {
+    if (text === null) {
+      this.#step = null;
+      this.#stepping = false;
+      this.shadowRoot.querySelector('.side').replaceChildren();
+      this.#panel = null;
+      return;
+    }
+    const cells = this.#settings.resolution;
+    const parts = text.split(',').map((t) => t.trim()).filter(Boolean).map(Number);
+    const k = parts.length === 0 ? 0 : parts.length === 1 ? parts[0] : parts[1] * cells + parts[0];
+    const ok = parts.every(Number.isInteger) && parts.length <= 2
+      && (parts.length < 2 || (parts[0] >= 0 && parts[0] < cells && parts[1] >= 0 && parts[1] < cells)) && k >= 0 && k <= cells * cells;
+    if (!ok) throw new Error(`step: "${text}" is not a square i,j of the ${cells} × ${cells} grid, nor a step from 0 to ${cells * cells}`);
+    this.stepTo(k);
+  }
+
+  #ensurePanel() {
+    if (this.#panel) return;
+    this.#panel = stepperPanel(this.shadowRoot.querySelector('.side'), {
+      back: () => { this.#stepping = false; this.stepBack(); },
+      forward: () => { this.#stepping = false; this.stepForward(); },
+      next: () => { this.#stepping = false; this.nextCrossed(); },
+      play: () => { this.#stepping = !this.#stepping; this.#stepCarry = 0; this.#schedule(); },
+      speed: (perSecond) => { this.#stepSpeed = perSecond; },
+    });
+  }
+
   pause() { this.#settings.paused = true; }
 
   /**
-   * The contour at the iso level as data: `{ iso, cells, rings, saddles, crossings }`, each ring a
-   * closed list of points [x, y] in the box [-1, 1]² with the inside on its left.
+   * The contour at the iso level as data: `{ iso, cells, rings, saddles, crossings, cases }`, each ring
+   * a closed list of points [x, y] in the box [-1, 1]² with the inside on its left, and each square's
+   * case in the march's order (square (i, j) at j · cells + i).
    */
   contours() {
     const r = this.#result ?? this.#draw();
-    return { iso: this.#settings.iso, cells: this.#settings.resolution, rings: r.rings, saddles: r.saddles, crossings: r.crossings };
+    return {
+      iso: this.#settings.iso, cells: this.#settings.resolution, rings: r.rings, saddles: r.saddles,
+      crossings: r.crossings, cases: Array.from(r.cases),
+    };
   }
 
   /** The picture as an SVG document (vector: the grid, labels, bands and contour as drawn). */
@@ -217,6 +287,7 @@ export class Metaballs2d extends Base {
     return picture({
       values: sampleField(circles, s.resolution), cells: s.resolution, iso: s.iso, levels: s.levels, circles,
       shown: s.shown, options: { placement: s.interpolation, saddle: s.saddle }, size, theme: s.theme,
+      step: this.#step,
     });
   }
 
@@ -226,7 +297,7 @@ export class Metaballs2d extends Base {
 
   #draw() {
     const start = performance.now();
-    const box = this.getBoundingClientRect();
+    const box = this.#canvas.parentElement.getBoundingClientRect();
     const size = Math.max(1, Math.round(Math.min(box.width, box.height || box.width)));
     const ratio = globalThis.devicePixelRatio || 1;
     const pixels = Math.round(size * ratio);
@@ -235,6 +306,14 @@ export class Metaballs2d extends Base {
     const { shapes, result } = this.#picture(size);
     paint(this.#canvas.getContext('2d'), shapes, pixels / size);
     this.#result = result;
+    if (this.#panel) {
+      const cells = this.#settings.resolution;
+      const k = this.#step;
+      this.#panel({
+        step: k, steps: cells * cells, iso: this.#settings.iso, playing: this.#stepping,
+        square: k < cells * cells ? result.square(k % cells, Math.floor(k / cells)) : null,
+      });
+    }
     this.frameMs = performance.now() - start;
     return result;
   }
@@ -248,15 +327,23 @@ export class Metaballs2d extends Base {
     this.#frame = 0;
     const dt = this.#last ? Math.min(0.05, (now - this.#last) / 1000) : 0;
     this.#last = now;
-    const moving = !this.#settings.paused && !this.#drag;
-    if (moving) this.#step(dt * this.#settings.speed);
+    // While the stepper is open the circles hold still, and a playing stepper advances.
+    const moving = !this.#settings.paused && !this.#drag && this.#step === null;
+    if (moving) this.#moveCircles(dt * this.#settings.speed);
+    if (this.#stepping && this.#step !== null) {
+      this.#stepCarry += dt * this.#stepSpeed;
+      const steps = Math.floor(this.#stepCarry);
+      this.#stepCarry -= steps;
+      this.#step = Math.min(this.#settings.resolution ** 2, this.#step + steps);
+      if (this.#step >= this.#settings.resolution ** 2) this.#stepping = false;
+    }
     this.#draw();
-    if (moving) this.#schedule();
+    if (moving || this.#stepping) this.#schedule();
     else this.#last = 0;
   }
 
   // One Euler step, the walls elastic.
-  #step(dt) {
+  #moveCircles(dt) {
     for (const c of this.circleList) {
       c.x += c.vx * dt;
       c.y += c.vy * dt;

@@ -117,3 +117,57 @@ test('the SVG export parses and holds the contour drawn; dragging a circle moves
   assert.ok(Math.abs(moved.x - (circle.x - 0.3)) < 0.05 && Math.abs(moved.y - (circle.y - 0.2)) < 0.05, JSON.stringify(moved));
   assert.deepEqual(errors, []);
 });
+
+test('the stepper walks the march: the lit row is each square\'s case, and the last step draws the whole contour', async () => {
+  const { page, errors } = await open(LECTURE);
+  const march = page.locator('#march metaballs-2d');
+  await march.scrollIntoViewIfNeeded();
+  await page.waitForFunction(() => document.querySelector('#march metaballs-2d')?.frameMs > 0);
+  const state = () => page.$eval('#march metaballs-2d', (e) => ({
+    step: e.stepIndex,
+    lit: [...e.shadowRoot.querySelectorAll('.cases tr.current')].map((r) => Number(r.dataset.case)),
+    said: e.shadowRoot.querySelector('.where').textContent,
+  }));
+  const { cases, rings } = await page.$eval('#march metaballs-2d', (e) => e.contours());
+  // step="0,2" opens it at square (0, 2) of the 8 × 8 grid.
+  assert.equal((await state()).step, 16);
+  for (let k = 0; k < 64; k += 1) {
+    await page.$eval('#march metaballs-2d', (e, step) => e.stepTo(step), k);
+    await drawn(page);
+    const now = await state();
+    assert.deepEqual(now.lit, [cases[k]], `step ${k}`);
+    assert.match(now.said, new RegExp(`square \\(${k % 8}, ${Math.floor(k / 8)}\\).*case ${cases[k]} =`));
+  }
+  // The buttons: back, forward, next crossed.
+  const click = (what) => page.locator('#march metaballs-2d').locator(`button[data-do="${what}"]`).click();
+  await page.$eval('#march metaballs-2d', (e) => e.stepTo(0));
+  await click('forward');
+  await click('forward');
+  await click('back');
+  await drawn(page);
+  assert.equal((await state()).step, 1);
+  await click('next');
+  await drawn(page);
+  const firstCrossed = cases.findIndex((c, k) => k > 1 && c !== 0 && c !== 15);
+  assert.equal((await state()).step, firstCrossed);
+  // Played, it advances by itself.
+  await click('play');
+  await page.waitForFunction((from) => document.querySelector('#march metaballs-2d').stepIndex > from + 1, firstCrossed);
+  await click('play');
+  // The end: the whole contour, segment for segment.
+  await page.$eval('#march metaballs-2d', (e) => e.stepTo(64));
+  await drawn(page);
+  assert.match((await state()).said, /the march is done/);
+  const segments = await page.$eval('#march metaballs-2d', (e) => {
+    const doc = new DOMParser().parseFromString(e.toSVG(400), 'image/svg+xml');
+    return doc.querySelector('path.contour').getAttribute('d').split('M').length - 1;
+  });
+  assert.equal(segments, rings.reduce((sum, ring) => sum + ring.length, 0));
+  // A square outside the grid: a notice, and the stepper stays.
+  await page.$eval('#march metaballs-2d', (e) => e.setAttribute('step', '9,9'));
+  await drawn(page);
+  assert.match(await page.$eval('#march metaballs-2d', (e) => e.shadowRoot.getElementById('notice').textContent),
+    /step: "9,9" is not a square i,j of the 8 × 8 grid/);
+  assert.equal((await state()).step, 64);
+  assert.deepEqual(errors, []);
+});

@@ -185,3 +185,28 @@ test('a sample equal to the level puts no two vertices on one point', () => {
   assert.equal(new Set(points).size, points.length);
   assert.ok(enclosedArea(rings) > 0);
 });
+
+test('stepping through every square builds exactly the contour, segment for segment', async () => {
+  const { segmentsBefore, nextCrossed, caseBits } = await import('../../www/lib/plane/stepper.js');
+  const rng = random(5);
+  for (const cells of [6, 12, 30]) {
+    const values = sampleField(circles(rng, 4), cells);
+    const result = march(values, cells, 1, { saddle: 'decider' });
+    const key = ([p, q]) => `${p[0]},${p[1]}→${q[0]},${q[1]}`;
+    const fromRings = result.rings.flatMap((ring) => ring.map((p, k) => key([p, ring[(k + 1) % ring.length]]))).sort();
+    const stepped = segmentsBefore(result, cells, cells * cells).map(key).sort();
+    assert.deepEqual(stepped, fromRings, `${cells}²`);
+    // Each step adds its square's segments, and builds its case from its corners.
+    let count = 0;
+    for (let k = 0; k < cells * cells; k += 1) {
+      const square = result.square(k % cells, Math.floor(k / cells));
+      assert.equal(caseBits(square.corners, 1).case, result.cases[k]);
+      assert.equal(segmentsBefore(result, cells, k + 1).length, count + square.segments.length);
+      count += square.segments.length;
+    }
+    // "Next crossed" stops exactly at the squares the contour crosses.
+    const crossed = [];
+    for (let k = nextCrossed(result.cases, -1); k >= 0; k = nextCrossed(result.cases, k)) crossed.push(k);
+    assert.deepEqual(crossed, [...result.cases.keys()].filter((k) => result.cases[k] % 15 !== 0));
+  }
+});

@@ -4,6 +4,7 @@
 // No DOM: a canvas context is handed in.
 
 import { bands, march } from './squares.js';
+import { segmentsBefore, squareAt } from './stepper.js';
 
 /** Everything the picture can show (the `show` attribute's words), and what it shows by default. */
 export const SHOWN = ['grid', 'values', 'corners', 'cases', 'crossings', 'contour', 'saddles', 'bands', 'circles'];
@@ -18,11 +19,13 @@ export const THEMES = {
     background: '#14171f', grid: '#3a4152', text: '#d7dbe4', muted: '#8e96a8', inside: '#ff8c1a',
     outside: '#6f7c99', contour: '#ffffff', crossing: '#ffd166', joined: '#4cc9f0', apart: '#ef476f',
     bands: ['#1d2a44', '#22406b', '#2b5d8f', '#3c7fb1', '#58a4cc', '#85c7de'], circle: '#c3cad8',
+    step: 'rgba(255, 209, 102, 0.18)',
   },
   light: {
     background: '#f7f7f4', grid: '#c9ccd3', text: '#1f2430', muted: '#5d6577', inside: '#d9480f',
     outside: '#7d8799', contour: '#11141b', crossing: '#b7791f', joined: '#0b7285', apart: '#c2255c',
     bands: ['#eef3f8', '#d6e4f0', '#b7cfe4', '#93b6d6', '#6c9bc6', '#4a80b4'], circle: '#3b4252',
+    step: 'rgba(183, 121, 31, 0.2)',
   },
 };
 
@@ -31,10 +34,12 @@ const format = (v) => (Math.abs(v) >= 100 ? v.toFixed(0) : Math.abs(v) >= 10 ? v
 /**
  * The shapes of one frame: `values` sampled on `cells` squares per axis, contoured at `iso` (and at
  * each of `levels`, as lines, and as filled bands between them where `bands` is shown), in a square
- * picture of `size` pixels. `options` are march's (`placement`, `saddle`). Returns `{ shapes, result }`,
- * `result` being march's at `iso`.
+ * picture of `size` pixels. `options` are march's (`placement`, `saddle`). With `step` (a step of the
+ * stepper, `stepper.js`), the contour is drawn only as far as the march has gone, and the square at
+ * that step is lit with its segments and crossings. Returns `{ shapes, result }`, `result` being march's
+ * at `iso`.
  */
-export function picture({ values, cells, iso, levels = [], circles = [], shown, options, size, theme = 'dark' }) {
+export function picture({ values, cells, iso, levels = [], circles = [], shown, options, size, theme = 'dark', step = null }) {
   const colors = THEMES[theme] ?? THEMES.dark;
   const show = new Set(shown);
   // The box [-1, 1]² inside a margin, so the labels of its edge's samples show.
@@ -67,7 +72,18 @@ export function picture({ values, cells, iso, levels = [], circles = [], shown, 
     for (const level of all.filter((l) => l !== iso)) {
       shapes.push({ kind: 'path', d: ringPath(march(values, cells, level, options).rings), stroke: colors.muted, width: 1, role: 'level', level });
     }
-    shapes.push({ kind: 'path', d: ringPath(result.rings), stroke: colors.contour, width: Math.max(1.5, Math.min(3, px / 8)), role: 'contour', level: iso });
+    const d = step === null ? ringPath(result.rings)
+      : segmentsBefore(result, cells, step).map(([p, q]) => `M${X(p[0]).toFixed(2)},${Y(p[1]).toFixed(2)}L${X(q[0]).toFixed(2)},${Y(q[1]).toFixed(2)}`).join('');
+    shapes.push({ kind: 'path', d, stroke: colors.contour, width: Math.max(1.5, Math.min(3, px / 8)), role: 'contour', level: iso });
+  }
+  if (step !== null && step < cells * cells) {
+    const [i, j] = squareAt(step, cells);
+    const here = result.square(i, j);
+    shapes.push({ kind: 'rect', x: gx(i), y: gy(j + 1), w: px, h: px, fill: colors.step, stroke: colors.crossing, width: 2, role: 'step' });
+    for (const { points: [p, q] } of here.segments) {
+      shapes.push({ kind: 'line', x1: X(p[0]), y1: Y(p[1]), x2: X(q[0]), y2: Y(q[1]), stroke: colors.crossing, width: 3, role: 'step-segment' });
+      for (const [x, y] of [p, q]) shapes.push({ kind: 'circle', cx: X(x), cy: Y(y), r: 4, fill: colors.crossing, stroke: 'none', width: 0 });
+    }
   }
   if (show.has('cases') && px >= MIN_PIXELS.cases) {
     for (let j = 0; j < cells; j += 1) {
@@ -108,9 +124,9 @@ export function picture({ values, cells, iso, levels = [], circles = [], shown, 
   }
   if (show.has('crossings') && px >= MIN_PIXELS.crossings) {
     const r = Math.min(3.5, px / 10);
-    for (const ring of result.rings) {
-      for (const [x, y] of ring) shapes.push({ kind: 'circle', cx: X(x), cy: Y(y), r, fill: colors.crossing, stroke: 'none', width: 0 });
-    }
+    // With the stepper, only the crossings the march has reached.
+    const points = step === null ? result.rings.flat() : segmentsBefore(result, cells, step).flat();
+    for (const [x, y] of points) shapes.push({ kind: 'circle', cx: X(x), cy: Y(y), r, fill: colors.crossing, stroke: 'none', width: 0 });
   }
   if (show.has('circles')) {
     for (const c of circles) {

@@ -117,7 +117,8 @@ export function saddleValue(f, rule) {
  * - `saddles`: each saddle square `{ square, case, value, joined }` (the value the rule decided by);
  * - `rings`: the contour, closed rings of points [x, y] in the box, each with the inside on its left
  *   (counter-clockwise round an inside region, clockwise round a hole);
- * - `crossings`: how many edges the contour crosses.
+ * - `crossings`: how many edges the contour crosses;
+ * - `square(i, j)`: one square as the march saw it (corner values, case, saddle, segments).
  * `placement` is `linear` (where the edge's values interpolate to iso) or `midpoint`.
  */
 export function march(values, cells, iso, { placement = 'linear', saddle = 'table' } = {}) {
@@ -180,7 +181,18 @@ export function march(values, cells, iso, { placement = 'linear', saddle = 'tabl
     }
     rings.push(ring);
   }
-  return { cases, saddles, rings, crossings: crossed.length };
+  // One square as the march saw it: its corner values, case, saddle decision, and segments (points,
+  // the inside on the left) with the edges they join.
+  const square = (i, j) => {
+    const c = cases[j * cells + i];
+    const saddleSquare = saddles.find((q) => q.square[0] === i && q.square[1] === j) ?? null;
+    const table = saddleSquare?.joined ? SEGMENTS.joined : SEGMENTS.apart;
+    return {
+      square: [i, j], case: c, corners: [at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)], saddle: saddleSquare,
+      segments: table[c].map(([from, to]) => ({ edges: [from, to], points: [point(edgeId(i, j, from)), point(edgeId(i, j, to))] })),
+    };
+  };
+  return { cases, saddles, rings, crossings: crossed.length, square };
 }
 
 /** A ring's signed area (positive counter-clockwise) and its length. */

@@ -1,0 +1,34 @@
+// The march walked one square at a time, for the stepper: squares in order (row by row from the lower
+// left), the square at each step with how its case is built bit by bit, and the segments drawn so far.
+// No DOM: the 2D figure draws from it.
+
+/** Square k of `cells` per axis, in the march's order. */
+export const squareAt = (k, cells) => [k % cells, Math.floor(k / cells)];
+
+/** The first step after `k` (or before, with `direction` -1) whose square the contour crosses, or -1. */
+export function nextCrossed(cases, k, direction = 1) {
+  for (let m = k + direction; m >= 0 && m < cases.length; m += direction) {
+    if (cases[m] !== 0 && cases[m] !== 15) return m;
+  }
+  return -1;
+}
+
+/**
+ * The case of a square with corner values `corners` at `iso`, built bit by bit: for each corner its
+ * value, whether it is inside and the bit it adds; and the sum.
+ */
+export function caseBits(corners, iso) {
+  const bits = corners.map((value, c) => ({ corner: c, value, inside: value > iso, bit: value > iso ? 1 << c : 0 }));
+  return { bits, case: bits.reduce((sum, b) => sum + b.bit, 0) };
+}
+
+/** The segments of every square before step `k` (`march`'s `square`), as point pairs: the contour so far. */
+export function segmentsBefore(result, cells, k) {
+  const out = [];
+  for (let m = 0; m < k; m += 1) {
+    const c = result.cases[m];
+    if (c === 0 || c === 15) continue;
+    for (const segment of result.square(...squareAt(m, cells)).segments) out.push(segment.points);
+  }
+  return out;
+}
