@@ -10,7 +10,7 @@
 
 import { rowOf } from './lib/core/table.js';
 import { DEFAULT_SHOWN, paint, picture, SHOWN, toSvg } from './lib/plane/picture.js';
-import { sampleField } from './lib/plane/squares.js';
+import { sampleField, sampleSlice } from './lib/plane/squares.js';
 import { nextCrossed } from './lib/plane/stepper.js';
 import { stepperPanel } from './lib/plane/stepper-panel.js';
 
@@ -19,9 +19,11 @@ const DEFAULT_CELLS = 16;
 
 const STYLE = `
 :host { display: block; position: relative; max-width: 100%; contain: content; font: 13px system-ui, sans-serif; }
-:host([step]) { display: grid; grid-template-columns: minmax(0, 1fr) minmax(13rem, 17rem); gap: 8px; }
+/* With the stepper, the figure and its panel side by side in halves: the panel scrolls within the
+   figure's height, so the element is as tall as half its width (metaballs-view.css reserves that). */
+:host([step]) { display: grid; grid-template-columns: minmax(0, 1fr) minmax(0, 1fr); }
 .figure { position: relative; aspect-ratio: 1; }
-.side { min-height: 0; }
+.side { min-height: 0; contain: size; overflow: auto; margin-left: 8px; }
 .side:empty { display: none; }
 canvas { display: block; width: 100%; height: 100%; touch-action: none; cursor: crosshair; border-radius: 6px; }
 #notice { position: absolute; left: 8px; right: 8px; bottom: 8px; padding: 6px 8px; border-radius: 6px;
@@ -104,7 +106,7 @@ const SETTINGS = ['iso', 'resolution', 'interpolation', 'saddle', 'spheres', 'se
 const Base = globalThis.HTMLElement ?? class {};
 
 export class Metaballs2d extends Base {
-  static observedAttributes = [...SETTINGS, 'circles', 'levels', 'show', 'alt', 'step'];
+  static observedAttributes = [...SETTINGS, 'circles', 'levels', 'show', 'alt', 'step', 'slice-of'];
 
   #canvas;
   #notice;
@@ -158,6 +160,7 @@ export class Metaballs2d extends Base {
   attributeChangedCallback(name, _old, text) {
     try {
       if (name === 'alt') this.#label();
+      else if (name === 'slice-of') this.#schedule();
       else if (name === 'step') this.#openStepper(text);
       else if (name === 'circles') this.#given = text === null ? null : parseCircles(text);
       else if (name === 'levels') this.#settings.levels = text === null ? [] : readLevels(text);
@@ -281,13 +284,48 @@ export class Metaballs2d extends Base {
     return toSvg(shapes, size, this.getAttribute('alt') || this.#canvas.getAttribute('aria-label'));
   }
 
+  /**
+   * The <metaballs-view> whose slice plane this figure follows (`slice-of`: its id), or null. It must
+   * have a `slice` (`z:0.2`): the plane is then sampled as that figure samples it.
+   */
+  get following() {
+    const id = this.getAttribute('slice-of');
+    const view = id ? this.getRootNode().getElementById?.(id) ?? document.getElementById(id) : null;
+    return view && view.localName === 'metaballs-view' && /^[xyz]:/.test(view.slice ?? '') ? view : null;
+  }
+
+  /** What is sampled: this figure's circles, or the followed figure's slice plane and its settings. */
+  #source() {
+    const s = this.#settings;
+    const view = this.following;
+    if (!view) {
+      return {
+        values: sampleField(this.circleList, s.resolution), cells: s.resolution, iso: s.iso,
+        options: { placement: s.interpolation, saddle: s.saddle }, circles: this.circleList,
+      };
+    }
+    const cells = Number(view.resolution);
+    const [axisName, position] = view.slice.split(':');
+    const axis = 'xyz'.indexOf(axisName);
+    // The plane as the 3D figure rounds it to its grid.
+    const plane = Math.min(cells, Math.round((Number(position) + 1) * 0.5 * cells));
+    return {
+      values: sampleSlice(view.sphereList, cells, axis, plane, view.blend), cells, iso: Number(view.iso),
+      options: { placement: view.interpolation, saddle: view.saddle }, circles: [],
+    };
+  }
+
+  /** The samples drawn: `{ cells, values }`, (cells + 1)² values row by row from the lower left. */
+  samples() {
+    const { cells, values } = this.#source();
+    return { cells, values: Array.from(values) };
+  }
+
   #picture(size) {
     const s = this.#settings;
-    const circles = this.circleList;
+    const { values, cells, iso, options, circles } = this.#source();
     return picture({
-      values: sampleField(circles, s.resolution), cells: s.resolution, iso: s.iso, levels: s.levels, circles,
-      shown: s.shown, options: { placement: s.interpolation, saddle: s.saddle }, size, theme: s.theme,
-      step: this.#step,
+      values, cells, iso, levels: s.levels, circles, shown: s.shown, options, size, theme: s.theme, step: this.#step,
     });
   }
 
@@ -328,7 +366,7 @@ export class Metaballs2d extends Base {
     const dt = this.#last ? Math.min(0.05, (now - this.#last) / 1000) : 0;
     this.#last = now;
     // While the stepper is open the circles hold still, and a playing stepper advances.
-    const moving = !this.#settings.paused && !this.#drag && this.#step === null;
+    const moving = !this.#settings.paused && !this.#drag && this.#step === null && !this.hasAttribute('slice-of');
     if (moving) this.#moveCircles(dt * this.#settings.speed);
     if (this.#stepping && this.#step !== null) {
       this.#stepCarry += dt * this.#stepSpeed;
@@ -338,7 +376,8 @@ export class Metaballs2d extends Base {
       if (this.#step >= this.#settings.resolution ** 2) this.#stepping = false;
     }
     this.#draw();
-    if (moving || this.#stepping) this.#schedule();
+    // A figure following a 3D figure's slice redraws every frame: its spheres move.
+    if (moving || this.#stepping || this.hasAttribute('slice-of')) this.#schedule();
     else this.#last = 0;
   }
 

@@ -171,3 +171,37 @@ test('the stepper walks the march: the lit row is each square\'s case, and the l
   assert.equal((await state()).step, 64);
   assert.deepEqual(errors, []);
 });
+
+test('a 2D figure following a 3D figure\'s slice plane draws the same samples', async () => {
+  const { page, errors } = await open(LECTURE);
+  await page.evaluate(() => {
+    const view = document.createElement('metaballs-view');
+    Object.assign(view, { id: 'solid' });
+    for (const [k, v] of Object.entries({ spheres: '4', seed: '4', resolution: '20', slice: 'z:0.1', paused: '', style: 'width: 320px' })) view.setAttribute(k, v);
+    const plane = document.createElement('metaballs-2d');
+    plane.setAttribute('slice-of', 'solid');
+    plane.style.width = '320px';
+    document.querySelector('main').prepend(view, plane);
+  });
+  await page.waitForFunction(() => document.getElementById('solid').framesDrawn > 0, null, { timeout: 60_000 });
+  const { cells, values } = await page.$eval('metaballs-2d[slice-of]', (e) => e.samples());
+  assert.equal(cells, 20);
+  // The plane z = 0.1 on 20 cells: index round(1.1 / 2 · 20) = 11. The 3D figure's inspector reads the
+  // corner values of cell (i, j, 11): its lower four lie on the plane.
+  let compared = 0;
+  for (const [i, j] of [[5, 5], [9, 10], [10, 9], [12, 7], [3, 15]]) {
+    const report = await page.$eval('#solid', (e, [x, y]) => e.inspectCell(x, y, 11), [i, j]);
+    const plane = [values[j * 21 + i], values[j * 21 + i + 1], values[(j + 1) * 21 + i + 1], values[(j + 1) * 21 + i]];
+    for (let c = 0; c < 4; c += 1) {
+      assert.ok(Math.abs(report.corners[c] - plane[c]) <= 1e-5 * Math.max(1, Math.abs(plane[c])), `cell (${i}, ${j}) corner ${c}: ${report.corners[c]} vs ${plane[c]}`);
+      compared += 1;
+    }
+  }
+  assert.equal(compared, 20);
+  // It follows a change of the 3D figure's plane.
+  await page.$eval('#solid', (e) => e.setAttribute('slice', 'x:-0.2'));
+  await page.waitForFunction(() => document.querySelector('metaballs-2d[slice-of]').samples().values[10 * 21 + 10] !== null);
+  const moved = await page.$eval('metaballs-2d[slice-of]', (e) => e.samples().values);
+  assert.notDeepEqual(moved, values);
+  assert.deepEqual(errors, []);
+});

@@ -97,6 +97,39 @@ export function sampleField(circles, cells) {
 }
 
 /**
+ * The samples of a 3D figure's slice plane: the field of `spheres` (`{ center: [x, y, z], radius,
+ * charge }`, summed, or with `blend` 'max' the largest adding term less the largest subtracting one) at
+ * the grid points of the plane `plane` (0..cells) across `axis` (0 x, 1 y, 2 z) of the figure's grid of
+ * `cells` per axis, as `<metaballs-view>` samples them: point (i, j) lies along the next axis after the
+ * slice's (i) and the one after that (j); points on the box's faces read 0.
+ */
+export function sampleSlice(spheres, cells, axis, plane, blend = 'sum') {
+  const n = cells + 1;
+  const values = new Float64Array(n * n);
+  if (plane === 0 || plane === cells) return values;
+  const step = 2 / cells;
+  const p = [0, 0, 0];
+  p[axis] = -1 + plane * step;
+  for (let j = 1; j < cells; j += 1) {
+    for (let i = 1; i < cells; i += 1) {
+      p[(axis + 1) % 3] = -1 + i * step;
+      p[(axis + 2) % 3] = -1 + j * step;
+      let f = 0;
+      let dent = 0;
+      for (const s of spheres) {
+        const d = (p[0] - s.center[0]) ** 2 + (p[1] - s.center[1]) ** 2 + (p[2] - s.center[2]) ** 2;
+        const term = (s.charge ?? 1) * s.radius * s.radius / Math.max(d, 1e-20);
+        if (blend !== 'max') f += term;
+        else if (term < 0) dent = Math.max(dent, -term);
+        else f = Math.max(f, term);
+      }
+      values[j * n + i] = f - dent;
+    }
+  }
+  return values;
+}
+
+/**
  * The saddle value that decides a saddle square with corner values `f` (corner order) by `rule`:
  * `center` the mean of the four corners, `decider` the bilinear interpolant's saddle,
  * (f0 f2 − f1 f3) / (f0 + f2 − f1 − f3); null for `table`, which decides nothing. The inside corners

@@ -52,6 +52,12 @@ export function stepperPanel(host, actions) {
     play.textContent = playing ? '⏸' : '▶';
     play.setAttribute('aria-label', playing ? 'Pause the march' : 'Play the march');
     for (const row of rows) row.classList.toggle('current', square !== null && Number(row.dataset.case) === square.case);
+    // The lit row kept in view within the panel (not by scrolling the page).
+    const lit = square && rows[square.case];
+    if (lit) {
+      const [r, h] = [lit.getBoundingClientRect(), host.getBoundingClientRect()];
+      if (r.top < h.top || r.bottom > h.bottom) host.scrollTop += r.top - h.top - h.height / 2;
+    }
     if (!square) {
       where.textContent = `Step ${step} of ${steps}: the march is done.`;
       return;
