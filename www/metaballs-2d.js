@@ -315,6 +315,16 @@ export class Metaballs2d extends Base {
     };
   }
 
+  #lastFollowed = null;
+
+  // What the followed figure's samples depend on, as text; null when none is followed.
+  #followedKey() {
+    const view = this.following;
+    if (!view) return null;
+    const spheres = view.sphereList.map((b) => [...b.center, b.radius, b.charge].join(',')).join(';');
+    return [spheres, view.slice, view.resolution, view.iso, view.saddle, view.interpolation, view.blend].join('|');
+  }
+
   /** The samples drawn: `{ cells, values }`, (cells + 1)² values row by row from the lower left. */
   samples() {
     const { cells, values } = this.#source();
@@ -356,7 +366,13 @@ export class Metaballs2d extends Base {
     return result;
   }
 
+  // A change to draw: the next frame draws whatever it follows.
   #schedule() {
+    this.#lastFollowed = undefined;
+    this.#request();
+  }
+
+  #request() {
     if (!this.isConnected || this.#frame) return;
     this.#frame = requestAnimationFrame((now) => this.#tick(now));
   }
@@ -375,9 +391,12 @@ export class Metaballs2d extends Base {
       this.#step = Math.min(this.#settings.resolution ** 2, this.#step + steps);
       if (this.#step >= this.#settings.resolution ** 2) this.#stepping = false;
     }
-    this.#draw();
-    // A figure following a 3D figure's slice redraws every frame: its spheres move.
-    if (moving || this.#stepping || this.hasAttribute('slice-of')) this.#schedule();
+    // A figure following a 3D figure's slice looks every frame (its spheres move), and draws when what
+    // it samples has changed.
+    const followed = this.#followedKey();
+    if (followed === null || followed !== this.#lastFollowed || moving || this.#stepping) this.#draw();
+    this.#lastFollowed = followed;
+    if (moving || this.#stepping || this.hasAttribute('slice-of')) this.#request();
     else this.#last = 0;
   }
 

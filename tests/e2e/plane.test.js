@@ -1,4 +1,4 @@
-// The 2D figure, <metaballs-2d>, in headless Chromium: the lecture's figure draws its samples, cases,
+// The 2D figure, <metaballs-2d>, in headless Chromium: the lecture's figure (on a page of its own) draws its samples, cases,
 // saddles and contour with WebGPU, with WebGL2 only and with neither; each setting changes the picture;
 // a bad value gets a notice and keeps the figure; the SVG export parses and holds the contour drawn;
 // dragging a circle moves it. Its contouring is held to d3-contour in squares.test.js.
@@ -10,7 +10,9 @@ import { useServerAndBrowser, openClosedAfterEach, differingFraction, pixelStats
 useServerAndBrowser();
 const open = openClosedAfterEach();
 
-const LECTURE = 'www/examples/lecture.html';
+// The lecture's two 2D figures on a page of their own (the lecture itself is printed and checked in
+// course.test.js).
+const PAGE = 'tests/e2e/fixtures/plane.html';
 const NO_WEBGPU_OR_WEBGL = () => {
   delete Navigator.prototype.gpu;
   const getContext = HTMLCanvasElement.prototype.getContext;
@@ -27,7 +29,7 @@ const set = (page, name, value) => page.$eval('#squares metaballs-2d', (e, [n, v
 const drawn = (page) => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
 
 async function lecture(options) {
-  const opened = await open(LECTURE, options);
+  const opened = await open(PAGE, options);
   await opened.page.locator('#squares').scrollIntoViewIfNeeded();
   await opened.page.waitForFunction(() => document.querySelector('#squares metaballs-2d')?.frameMs > 0);
   return opened;
@@ -119,7 +121,7 @@ test('the SVG export parses and holds the contour drawn; dragging a circle moves
 });
 
 test('the stepper walks the march: the lit row is each square\'s case, and the last step draws the whole contour', async () => {
-  const { page, errors } = await open(LECTURE);
+  const { page, errors } = await open(PAGE);
   const march = page.locator('#march metaballs-2d');
   await march.scrollIntoViewIfNeeded();
   await page.waitForFunction(() => document.querySelector('#march metaballs-2d')?.frameMs > 0);
@@ -173,7 +175,9 @@ test('the stepper walks the march: the lit row is each square\'s case, and the l
 });
 
 test('a 2D figure following a 3D figure\'s slice plane draws the same samples', async () => {
-  const { page, errors } = await open(LECTURE);
+  const { page, errors } = await open(PAGE);
+  await page.addScriptTag({ type: 'module', url: '../../../www/metaballs-view.js' });
+  await page.waitForFunction(() => customElements.get('metaballs-view'));
   await page.evaluate(() => {
     const view = document.createElement('metaballs-view');
     Object.assign(view, { id: 'solid' });

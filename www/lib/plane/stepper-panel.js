@@ -32,7 +32,7 @@ export function stepperPanel(host, actions) {
         <button type="button" data-do="back" aria-label="One square back">◀</button>
         <button type="button" data-do="play" class="play" aria-label="Play the march">▶</button>
         <button type="button" data-do="forward" aria-label="One square forward">▶|</button>
-        <button type="button" data-do="next" aria-label="The next square the contour crosses">next crossed</button>
+        <button type="button" data-do="next" title="The next square the contour crosses">next crossed</button>
         <select aria-label="Steps per second">${[1, 4, 16, 64].map((s) => `<option value="${s}"${s === 4 ? ' selected' : ''}>${s}/s</option>`).join('')}</select>
       </div>
       <div class="where" aria-live="polite"></div>
