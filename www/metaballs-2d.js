@@ -9,7 +9,8 @@
 // `seed`, `speed`, `paused`, `theme`, `alt`) are read with the parameter table's ranges and words.
 
 import { rowOf } from './lib/core/table.js';
-import { DEFAULT_SHOWN, paint, picture, SHOWN, toSvg } from './lib/plane/picture.js';
+import { DEFAULT_SHOWN, paint, picture, toSvg } from './lib/plane/picture.js';
+import { parseCircles, readLevels, readSetting, readShown, seededCircles } from './lib/plane/settings.js';
 import { sampleField, sampleSlice } from './lib/plane/squares.js';
 import { nextCrossed } from './lib/plane/stepper.js';
 import { stepperPanel } from './lib/plane/stepper-panel.js';
@@ -29,76 +30,6 @@ canvas { display: block; width: 100%; height: 100%; touch-action: none; cursor: 
 #notice { position: absolute; left: 8px; right: 8px; bottom: 8px; padding: 6px 8px; border-radius: 6px;
   background: #3b2f12; border: 1px solid #8a6a1f; color: #ffe2a3; }
 #notice[hidden] { display: none; }`;
-
-// A small seeded generator (xorshift), so a seed gives the same circles.
-function random(seed) {
-  let s = (seed >>> 0) || 1;
-  return () => {
-    s ^= s << 13; s >>>= 0;
-    s ^= s >>> 17;
-    s ^= s << 5; s >>>= 0;
-    return s / 2 ** 32;
-  };
-}
-
-/** `count` circles from `seed`, inside the box, each with a velocity. */
-export function seededCircles(seed, count) {
-  const rng = random(seed * 2654435761 + 1);
-  return Array.from({ length: count }, () => {
-    const r = 0.1 + rng() * 0.14;
-    return {
-      x: (rng() * 2 - 1) * (0.9 - r), y: (rng() * 2 - 1) * (0.9 - r), r, charge: 1,
-      vx: (rng() - 0.5) * 0.5, vy: (rng() - 0.5) * 0.5,
-    };
-  });
-}
-
-/** Circles from text `x,y,r;…` (a negative r subtracts); throws an Error saying what is accepted. */
-export function parseCircles(text) {
-  const circles = String(text).split(';').map((s) => s.trim()).filter(Boolean).map((part) => {
-    const numbers = part.split(',').map((s) => Number(s.trim()));
-    if (numbers.length !== 3 || numbers.some((v) => !Number.isFinite(v)) || numbers[2] === 0) {
-      throw new Error(`circles: "${part}" is not x,y,r (three numbers, r not 0)`);
-    }
-    const [x, y, r] = numbers;
-    if (Math.abs(x) > 1 || Math.abs(y) > 1) throw new Error(`circles: (${x}, ${y}) is outside the box [-1, 1]²`);
-    return { x, y, r: Math.abs(r), charge: Math.sign(r), vx: 0, vy: 0 };
-  });
-  if (circles.length === 0) throw new Error('circles: give at least one circle as x,y,r');
-  return circles;
-}
-
-/** A setting read as the parameter table reads it: a number in range, a word among the row's, a flag. */
-function readSetting(name, text) {
-  const row = rowOf(name);
-  if (row.kind === 'number' || row.kind === 'integer') {
-    const value = Number(text);
-    if (!Number.isFinite(value) || value < row.min || value > row.max || (row.kind === 'integer' && !Number.isInteger(value))) {
-      throw new Error(`${name}: "${text}" is not ${row.kind === 'integer' ? 'a whole number' : 'a number'} from ${row.min} to ${row.max}`);
-    }
-    return value;
-  }
-  if (row.kind === 'boolean') return text !== 'false' && text !== '0' && text !== 'off';
-  if (row.kind === 'choice') {
-    const word = String(text).trim().toLowerCase();
-    if (!row.words.includes(word)) throw new Error(`${name}: "${text}" is not one of ${row.words.join(', ')}`);
-    return word;
-  }
-  return String(text);
-}
-
-/** Words of `show` (comma list of `SHOWN`), or the defaults for an empty text. */
-function readShown(text) {
-  const words = String(text).split(',').map((s) => s.trim()).filter(Boolean);
-  const unknown = words.filter((w) => !SHOWN.includes(w));
-  if (unknown.length) throw new Error(`show: ${unknown.join(', ')} is not one of ${SHOWN.join(', ')}`);
-  return words.length ? words : DEFAULT_SHOWN;
-}
-
-/** Further iso levels (comma list), each in the iso level's range. */
-function readLevels(text) {
-  return String(text).split(',').map((s) => s.trim()).filter(Boolean).map((s) => readSetting('iso', s));
-}
 
 const SETTINGS = ['iso', 'resolution', 'interpolation', 'saddle', 'spheres', 'seed', 'speed', 'paused', 'theme'];
 
@@ -163,9 +94,9 @@ export class Metaballs2d extends Base {
       else if (name === 'slice-of') this.#schedule();
       else if (name === 'step') this.#openStepper(text);
       else if (name === 'circles') this.#given = text === null ? null : parseCircles(text);
-      else if (name === 'levels') this.#settings.levels = text === null ? [] : readLevels(text);
+      else if (name === 'levels') this.#settings.levels = text === null ? [] : readLevels(text, rowOf('iso'));
       else if (name === 'show') this.#settings.shown = text === null ? DEFAULT_SHOWN : readShown(text);
-      else this.#settings[name] = text === null ? this.#default(name) : readSetting(name, text);
+      else this.#settings[name] = text === null ? this.#default(name) : readSetting(rowOf(name), text);
       if (['circles', 'spheres', 'seed'].includes(name)) this.#circles = null;
       // A square named i,j stays that square on a new grid.
       if (name === 'resolution' && this.hasAttribute('step')) this.#openStepper(this.getAttribute('step'));
