@@ -22,8 +22,8 @@ const CONTROLS = [
   ['grid', (p) => p.selectOption('#grid', 'cells'), 'grid=cells'],
   ['color_by', (p) => p.selectOption('#color_by', 'quality'), 'color_by=quality'],
   // Ambiguous faces are few on smooth blobs: a small but certain change. Their crosses share pixels
-  // with the cells' boxes, which SwiftShader draws in a varying order: the best of three pictures.
-  ['ambiguous', (p) => p.check('#ambiguous'), 'ambiguous=1', 0.0005, 3],
+  // with the cells' boxes, which SwiftShader draws in a varying order: the best of five pictures.
+  ['ambiguous', (p) => p.check('#ambiguous'), 'ambiguous=1', 0.0005, 5],
   ['slice', (p) => p.selectOption('#slice-axis', 'x'), 'slice=x:0'],
   ['slice position', (p) => setRange(p, 'slice', -0.3), 'slice=x:-0.3'],
   ['interpolation', (p) => p.selectOption('#interpolation', 'midpoint'), 'interp=midpoint'],
