@@ -3,7 +3,7 @@
 use super::Renderer;
 use super::limits::storage_limit;
 use super::stage::Sizing;
-use crate::device::{map_and_read, read_buffer};
+use crate::device::{read_buffer, try_map_and_read};
 use crate::extract::buffers::{BLOCK_CELLS, Capacity, INDEX_BYTES, VERTEX_BYTES};
 use crate::extract::mesh::IndexedMesh;
 use crate::extract::uniforms::Counters;
@@ -128,12 +128,20 @@ impl MeshReadback {
                 (device, counters, vertices, indices)
             }
         };
-        let block = map_and_read(&device, &counters).await;
+        // A device lost while the copies were on their way gives no bytes: an empty mesh, not a panic
+        // (the figure starts again on a new device).
+        let empty = || (IndexedMesh { positions: Vec::new(), normals: Vec::new(), triangles: Vec::new() }, 0);
+        let Some(block) = try_map_and_read(&device, &counters).await else {
+            return empty();
+        };
         let counters: Counters = bytemuck::pod_read_unaligned(&block[..std::mem::size_of::<Counters>()]);
         let vertex_count = (counters.vertices as u64).min(vertices.size() / VERTEX_BYTES);
         let index_count = (counters.indices as u64).min(indices.size() / INDEX_BYTES / 3 * 3);
-        let vertex_bytes = map_and_read(&device, &vertices).await;
-        let index_bytes = map_and_read(&device, &indices).await;
+        let (Some(vertex_bytes), Some(index_bytes)) =
+            (try_map_and_read(&device, &vertices).await, try_map_and_read(&device, &indices).await)
+        else {
+            return empty();
+        };
         let floats: &[[f32; 6]] =
             bytemuck::cast_slice(&vertex_bytes[..(vertex_count * VERTEX_BYTES) as usize]);
         let indices: &[u32] = bytemuck::cast_slice(&index_bytes[..(index_count * INDEX_BYTES) as usize]);
