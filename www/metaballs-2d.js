@@ -24,7 +24,7 @@ const STYLE = `
    figure's height, so the element is as tall as half its width (metaballs-view.css reserves that). */
 :host([step]) { display: grid; grid-template-columns: minmax(0, 1fr) minmax(0, 1fr); }
 .figure { position: relative; aspect-ratio: 1; }
-.side { min-height: 0; contain: size; overflow: auto; margin-left: 8px; }
+.side { min-height: 0; contain: size; margin-left: 8px; }
 .side:empty { display: none; }
 canvas { display: block; width: 100%; height: 100%; touch-action: none; cursor: crosshair; border-radius: 6px; }
 #notice { position: absolute; left: 8px; right: 8px; bottom: 8px; padding: 6px 8px; border-radius: 6px;

@@ -8,7 +8,9 @@ import { caseBits } from './stepper.js';
 const EDGE_NAMES = ['bottom', 'right', 'top', 'left'];
 const STYLE = `
 .stepper { font: 12.5px/1.4 system-ui, sans-serif; color: var(--metaballs-text, #d7dbe4);
-  background: var(--metaballs-panel-background, #1b1f2a); border-radius: 6px; padding: 8px; overflow: auto; }
+  background: var(--metaballs-panel-background, #1b1f2a); border-radius: 6px; padding: 8px; height: 100%;
+  box-sizing: border-box; display: flex; flex-direction: column; }
+.stepper .rows { flex: 1; min-height: 0; overflow: auto; }
 .stepper .controls { display: flex; flex-wrap: wrap; gap: 4px; margin-bottom: 6px; }
 .stepper button, .stepper select { font: inherit; padding: 2px 6px; }
 .stepper table { border-collapse: collapse; width: 100%; }
@@ -36,9 +38,9 @@ export function stepperPanel(host, actions) {
         <select aria-label="Steps per second">${[1, 4, 16, 64].map((s) => `<option value="${s}"${s === 4 ? ' selected' : ''}>${s}/s</option>`).join('')}</select>
       </div>
       <div class="where" aria-live="polite"></div>
-      <table class="cases"><thead><tr><th>case</th><th>bits 3210</th><th>segments</th></tr></thead><tbody>
+      <div class="rows"><table class="cases"><thead><tr><th>case</th><th>bits 3210</th><th>segments</th></tr></thead><tbody>
         ${SEGMENTS.apart.map((segments, c) => `<tr data-case="${c}"><td>${c}</td><td>${c.toString(2).padStart(4, '0')}</td><td>${joins(segments)}${c === 5 || c === 10 ? ` <i>or</i> ${joins(SEGMENTS.joined[c])}` : ''}</td></tr>`).join('')}
-      </tbody></table>
+      </tbody></table></div>
     </div>`;
   host.querySelector('.controls').addEventListener('click', (e) => {
     const what = e.target.closest('button')?.dataset.do;
@@ -47,16 +49,18 @@ export function stepperPanel(host, actions) {
   host.querySelector('select').addEventListener('change', (e) => actions.speed(Number(e.target.value)));
   const where = host.querySelector('.where');
   const rows = [...host.querySelectorAll('tbody tr')];
+  // Only the table scrolls: the controls and the square's account stay in view.
+  const scroller = host.querySelector('.rows');
   const play = host.querySelector('.play');
   return ({ step, steps, square, iso, playing }) => {
-    play.textContent = playing ? '⏸' : '▶';
+    play.textContent = playing ? 'pause' : '▶';
     play.setAttribute('aria-label', playing ? 'Pause the march' : 'Play the march');
     for (const row of rows) row.classList.toggle('current', square !== null && Number(row.dataset.case) === square.case);
     // The lit row kept in view within the panel (not by scrolling the page).
     const lit = square && rows[square.case];
     if (lit) {
-      const [r, h] = [lit.getBoundingClientRect(), host.getBoundingClientRect()];
-      if (r.top < h.top || r.bottom > h.bottom) host.scrollTop += r.top - h.top - h.height / 2;
+      const [r, h] = [lit.getBoundingClientRect(), scroller.getBoundingClientRect()];
+      if (r.top < h.top || r.bottom > h.bottom) scroller.scrollTop += r.top - h.top - h.height / 2;
     }
     if (!square) {
       where.textContent = `Step ${step} of ${steps}: the march is done.`;
