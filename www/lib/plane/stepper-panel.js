@@ -11,6 +11,7 @@ const STYLE = `
   background: var(--metaballs-panel-background, #1b1f2a); border-radius: 6px; padding: 8px; height: 100%;
   box-sizing: border-box; display: flex; flex-direction: column; }
 .stepper .rows { flex: 1; min-height: 0; overflow: auto; }
+.stepper .rows:focus-visible { outline: 2px solid currentColor; outline-offset: -2px; }
 .stepper .controls { display: flex; flex-wrap: wrap; gap: 4px; margin-bottom: 6px; }
 .stepper button, .stepper select { font: inherit; padding: 2px 6px; }
 .stepper table { border-collapse: collapse; width: 100%; }
@@ -38,7 +39,7 @@ export function stepperPanel(host, actions) {
         <select aria-label="Steps per second">${[1, 4, 16, 64].map((s) => `<option value="${s}"${s === 4 ? ' selected' : ''}>${s}/s</option>`).join('')}</select>
       </div>
       <div class="where" aria-live="polite"></div>
-      <div class="rows"><table class="cases"><thead><tr><th>case</th><th>bits 3210</th><th>segments</th></tr></thead><tbody>
+      <div class="rows" tabindex="0" role="region" aria-label="The 16 cases of marching squares"><table class="cases"><thead><tr><th>case</th><th>bits 3210</th><th>segments</th></tr></thead><tbody>
         ${SEGMENTS.apart.map((segments, c) => `<tr data-case="${c}"><td>${c}</td><td>${c.toString(2).padStart(4, '0')}</td><td>${joins(segments)}${c === 5 || c === 10 ? ` <i>or</i> ${joins(SEGMENTS.joined[c])}` : ''}</td></tr>`).join('')}
       </tbody></table></div>
     </div>`;
