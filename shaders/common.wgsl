@@ -17,6 +17,15 @@ struct Grid {
     // ambiguous faces joined by the asymptotic decider (else the classic table); bit 3: and the cell's
     // interior resolved too (MC33).
     flags: u32,
+    // The step-through of the march: only the cells up to this one (x fastest, then y, then z) give
+    // triangles; all of them when it is u32's largest value on each axis.
+    march: vec3<u32>,
+}
+
+// True when the march has reached `cell` (`March::reached` on the CPU).
+fn marched(cell: vec3<u32>) -> bool {
+    let m = grid.march;
+    return cell.z < m.z || (cell.z == m.z && (cell.y < m.y || (cell.y == m.y && cell.x <= m.x)));
 }
 
 const FLAG_MIDPOINT: u32 = 1u;

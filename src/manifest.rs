@@ -124,6 +124,7 @@ fn kind_word(kind: Kind) -> &'static str {
         Kind::Choice(_) => "choice",
         Kind::List(_) | Kind::Controls => "list",
         Kind::Slice => "slice",
+        Kind::Cell => "cell",
         Kind::Spheres => "spheres",
         Kind::Text => "text",
     }
@@ -172,6 +173,9 @@ fn description(p: &Parameter) -> String {
         Kind::Boolean => format!("{noun}: a boolean attribute."),
         Kind::Color => format!("{noun}: #rrggbb."),
         Kind::Slice => format!("{noun}: off, or an axis and a position in the box (z:0.25)."),
+        Kind::Cell => format!(
+            "{noun}: off, or a cell of the grid x,y,z (3,4,5): the step-through of marching cubes there."
+        ),
         Kind::Spheres => {
             format!("{noun}: x,y,z,radius[,vx,vy,vz] per sphere joined by ; (a negative radius subtracts).")
         }
@@ -227,7 +231,7 @@ fn limits() -> Json {
 /// one description: free text, slices and sphere lists, checked by the figure itself).
 fn expected(p: &Parameter) -> Option<String> {
     match p.kind {
-        Kind::Text | Kind::Slice | Kind::Spheres => None,
+        Kind::Text | Kind::Slice | Kind::Cell | Kind::Spheres => None,
         _ => match p.parse("?") {
             Err(ParamError::Invalid { expected, .. }) => Some(expected),
             _ => None,

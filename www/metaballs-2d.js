@@ -13,7 +13,7 @@ import { DEFAULT_SHOWN, paint, picture, toSvg } from './lib/plane/picture.js';
 import { parseCircles, readLevels, readSetting, readShown, seededCircles } from './lib/plane/settings.js';
 import { sampleField, sampleSlice } from './lib/plane/squares.js';
 import { nextCrossed } from './lib/plane/stepper.js';
-import { stepperPanel } from './lib/plane/stepper-panel.js';
+import { SQUARE_TABLE, squareAccount, stepperPanel } from './lib/plane/stepper-panel.js';
 
 // The grid a figure starts with: coarse enough to read every value.
 const DEFAULT_CELLS = 16;
@@ -22,7 +22,7 @@ const STYLE = `
 :host { display: block; position: relative; max-width: 100%; contain: content; font: 13px system-ui, sans-serif; }
 /* With the stepper, the figure and its panel side by side in halves: the panel scrolls within the
    figure's height, so the element is as tall as half its width (metaballs-view.css reserves that). */
-:host([step]) { display: grid; grid-template-columns: minmax(0, 1fr) minmax(0, 1fr); }
+:host([march]) { display: grid; grid-template-columns: minmax(0, 1fr) minmax(0, 1fr); }
 .figure { position: relative; aspect-ratio: 1; }
 .side { min-height: 0; contain: size; margin-left: 8px; }
 .side:empty { display: none; }
@@ -37,7 +37,7 @@ const SETTINGS = ['iso', 'resolution', 'interpolation', 'saddle', 'spheres', 'se
 const Base = globalThis.HTMLElement ?? class {};
 
 export class Metaballs2d extends Base {
-  static observedAttributes = [...SETTINGS, 'circles', 'levels', 'show', 'alt', 'step', 'slice-of'];
+  static observedAttributes = [...SETTINGS, 'circles', 'levels', 'show', 'alt', 'march', 'slice-of'];
 
   #canvas;
   #notice;
@@ -92,14 +92,14 @@ export class Metaballs2d extends Base {
     try {
       if (name === 'alt') this.#label();
       else if (name === 'slice-of') this.#schedule();
-      else if (name === 'step') this.#openStepper(text);
+      else if (name === 'march') this.#openStepper(text);
       else if (name === 'circles') this.#given = text === null ? null : parseCircles(text);
       else if (name === 'levels') this.#settings.levels = text === null ? [] : readLevels(text, rowOf('iso'));
       else if (name === 'show') this.#settings.shown = text === null ? DEFAULT_SHOWN : readShown(text);
       else this.#settings[name] = text === null ? this.#default(name) : readSetting(rowOf(name), text);
       if (['circles', 'spheres', 'seed'].includes(name)) this.#circles = null;
       // A square named i,j stays that square on a new grid.
-      if (name === 'resolution' && this.hasAttribute('step')) this.#openStepper(this.getAttribute('step'));
+      if (name === 'resolution' && this.hasAttribute('march')) this.#openStepper(this.getAttribute('march'));
     } catch (error) {
       this.#say(`${error.message}; kept the previous value`);
     }
@@ -179,7 +179,7 @@ export class Metaballs2d extends Base {
     const k = parts.length === 0 ? 0 : parts.length === 1 ? parts[0] : parts[1] * cells + parts[0];
     const ok = parts.every(Number.isInteger) && parts.length <= 2
       && (parts.length < 2 || (parts[0] >= 0 && parts[0] < cells && parts[1] >= 0 && parts[1] < cells)) && k >= 0 && k <= cells * cells;
-    if (!ok) throw new Error(`step: "${text}" is not a square i,j of the ${cells} × ${cells} grid, nor a step from 0 to ${cells * cells}`);
+    if (!ok) throw new Error(`march: "${text}" is not a square i,j of the ${cells} × ${cells} grid, nor a step from 0 to ${cells * cells}`);
     this.stepTo(k);
   }
 
@@ -191,7 +191,7 @@ export class Metaballs2d extends Base {
       next: () => { this.#stepping = false; this.nextCrossed(); },
       play: () => { this.#stepping = !this.#stepping; this.#stepCarry = 0; this.#schedule(); },
       speed: (perSecond) => { this.#stepSpeed = perSecond; },
-    });
+    }, SQUARE_TABLE);
   }
 
   pause() { this.#settings.paused = true; }
@@ -288,9 +288,10 @@ export class Metaballs2d extends Base {
     if (this.#panel) {
       const cells = this.#settings.resolution;
       const k = this.#step;
+      const square = k < cells * cells ? result.square(k % cells, Math.floor(k / cells)) : null;
       this.#panel({
-        step: k, steps: cells * cells, iso: this.#settings.iso, playing: this.#stepping,
-        square: k < cells * cells ? result.square(k % cells, Math.floor(k / cells)) : null,
+        playing: this.#stepping, lit: square?.case ?? null,
+        account: squareAccount(k, cells * cells, square, this.#settings.iso),
       });
     }
     this.frameMs = performance.now() - start;

@@ -28,6 +28,7 @@ import { ErrorPlot } from './lib/features/error-plot.js';
 import { Guard } from './lib/features/guard.js';
 import { Hud } from './lib/features/hud.js';
 import { Inspector } from './lib/features/inspector.js';
+import { Stepper } from './lib/features/stepper.js';
 import { Panel } from './lib/features/panel.js';
 import { Playback } from './lib/features/playback.js';
 import { SceneFiles, spheresText } from './lib/features/scene-files.js';
@@ -40,7 +41,7 @@ import { TopologyWatch } from './lib/features/topology.js';
 const SPHERE_LIST = nameOfKind('spheres');
 
 // The features every figure has, in the order they hear of changes and frames.
-const FEATURES = [FigureSize, FigureDetail, Look, Guard, Hud, Playback, Camera, Inspector, SphereEditor,
+const FEATURES = [FigureSize, FigureDetail, Look, Guard, Hud, Playback, Camera, Inspector, Stepper, SphereEditor,
   SceneFiles, TopologyWatch, TableChange, Sync, ErrorPlot, Panel];
 
 export class MetaballsView extends FigureBase {

@@ -150,6 +150,10 @@ fn make_triangles(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_in
         return;
     }
     let cell = block_coords(active_blocks[slot]) * BLOCK_CELLS + local_cell(local);
+    // Part way through the march, the cells not reached yet give no triangles.
+    if (!marched(cell)) {
+        return;
+    }
     let first = atomicAdd(&counters.indices, triangle_count * 3u);
     for (var k = 0u; k < triangle_count; k++) {
         let slot_index = first + 3u * k;

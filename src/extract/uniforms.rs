@@ -19,8 +19,12 @@ pub struct GridUniform {
     /// Bit 0: vertices at edge midpoints; bit 1: blend by max; bit 2: ambiguous faces by the asymptotic
     /// decider (`FLAG_*` in `shaders/common.wgsl`).
     pub flags: u32,
+    /// The step-through of the march: only cells up to this one (x fastest, then y, then z) give
+    /// triangles; `u32::MAX` on each axis when the march is off.
+    pub march: [u32; 3],
+    pub _pad: u32,
 }
-const _: () = assert!(std::mem::size_of::<GridUniform>() == 48);
+const _: () = assert!(std::mem::size_of::<GridUniform>() == 64);
 
 /// The counts the passes append with (`Counters` in `shaders/common.wgsl`); a count above its
 /// capacity means that buffer overflowed.

@@ -57,7 +57,10 @@ impl Renderer {
                 let (capacity, bytes) = (stage.buffers.capacity, stage.buffers.bytes());
                 let overflowed = indices < needed.indices;
                 let made_by = stage.extractors[active].capabilities();
-                stage.counted.closed = !overflowed && made_by.method == Method::MarchingCubes;
+                // Part way through the march the mesh is open.
+                stage.counted.closed = !overflowed
+                    && made_by.method == Method::MarchingCubes
+                    && self.settings.view.march.is_none();
                 stage.counted.drawn = Some(drawn);
                 let mut levels = [0; LEVEL_SLOTS];
                 if let Some(triangles) = self.lod_summary().and_then(|s| s.triangles) {
@@ -91,6 +94,7 @@ impl Renderer {
                 interpolation: view.interpolation,
                 blend: view.blend,
                 case_table: view.case_table,
+                march: view.march,
             },
             lod: view.lod.then(|| LodJob { eye: self.lod_eye(), freeze: view.lod_freeze }),
         }
@@ -100,7 +104,8 @@ impl Renderer {
     /// mesher on the CPU makes it; `None` when compute passes do.
     pub fn cpu_job(&self) -> Option<Vec<f32>> {
         let capabilities = self.stage.extractors[self.next_extractor()].capabilities();
-        (!capabilities.needs_compute && !capabilities.lod)
+        // Part way through the march, the frame meshes its cells on its own.
+        (!capabilities.needs_compute && !capabilities.lod && self.settings.view.march.is_none())
             .then(|| elsewhere::pack(capabilities.method, &self.job_of(self.scene.spheres())))
     }
 
@@ -131,7 +136,9 @@ impl Renderer {
     /// Where the mesh is seen from, when the extractor may leave its back faces out of the index
     /// buffer: the eye is outside the box, and nothing but the shading pass reads the buffer.
     fn front_faces_from(&self) -> Option<Viewpoint> {
-        if !self.eye_outside_box() || self.views_shown() || self.measuring() {
+        // Part way through the march the mesh is open, and its back faces show through it.
+        let open = self.settings.view.march.is_some();
+        if open || !self.eye_outside_box() || self.views_shown() || self.measuring() {
             return None;
         }
         let eye = self.settings.camera.eye();

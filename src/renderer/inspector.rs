@@ -23,6 +23,7 @@ impl Renderer {
             interpolation: self.settings.view.interpolation,
             blend: self.settings.view.blend,
             case_table: self.settings.view.case_table,
+            march: self.settings.view.march,
         }
     }
 
@@ -47,6 +48,12 @@ impl Renderer {
     /// The cell the inspector shows.
     pub fn selected_cell(&self) -> Option<UVec3> {
         self.teaching.selected
+    }
+
+    /// The first cell after `after` in the march's order that the surface crosses now, if any.
+    pub fn next_crossed(&self, after: Option<UVec3>) -> Option<UVec3> {
+        let (spheres, blend) = (self.scene.spheres(), self.settings.view.blend);
+        inspect::next_crossed(spheres, self.settings.iso, self.grid(), blend, after)
     }
 
     /// What marching cubes decides in `cell` now.

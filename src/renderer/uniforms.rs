@@ -30,6 +30,8 @@ impl Renderer {
                 | ((self.settings.view.blend == Blend::Max) as u32) << 1
                 | ((self.settings.view.case_table != CaseTable::Classic) as u32) << 2
                 | ((self.settings.view.case_table == CaseTable::Mc33) as u32) << 3,
+            march: self.settings.view.march.unwrap_or([u32::MAX; 3]),
+            _pad: 0,
         };
         self.queue.write_buffer(&self.scene_buffers.grid, 0, bytemuck::bytes_of(&grid_uniform));
         let packed: Vec<[f32; 4]> = spheres.iter().map(|s| s.to_gpu()).collect();

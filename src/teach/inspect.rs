@@ -6,10 +6,10 @@
 
 use crate::extract::decider::{ambiguous_faces, decided_triangles, saddle_above};
 use crate::extract::interior::{interior_code, joined_corners};
-use crate::extract::reference::{Construction, Grid, blended_field_at};
+use crate::extract::reference::{Construction, Grid, blended_field_at, sample_blended_field};
 use crate::extract::tables::{CORNER_OFFSETS, EDGE_CORNERS, EDGE_TABLE, FACE_CORNERS};
 use crate::scene::Sphere;
-use crate::scene::params::view::CaseTable;
+use crate::scene::params::view::{Blend, CaseTable};
 use crate::teach::case_classes::case_classes;
 use crate::teach::subcases::subcase_of;
 use glam::{UVec3, Vec3};
@@ -150,6 +150,35 @@ pub enum Target {
     CrossedCell,
 }
 
+/// The first cell after `after` (all cells when `None`) in the march's order (x fastest, then y, then
+/// z) that the surface crosses: one whose corners are not all inside nor all outside. `None` when no
+/// cell after it is crossed. The field is sampled once, as the oracle samples it.
+pub fn next_crossed(
+    spheres: &[Sphere],
+    iso: f32,
+    grid: Grid,
+    blend: Blend,
+    after: Option<UVec3>,
+) -> Option<UVec3> {
+    let values = sample_blended_field(spheres, grid, blend);
+    let n = grid.cells_per_axis;
+    let start = after.map_or(0, |c| c.x as u64 + n as u64 * (c.y as u64 + n as u64 * c.z as u64) + 1);
+    (start..(n as u64).pow(3))
+        .map(|k| {
+            UVec3::new(
+                (k % n as u64) as u32,
+                (k / n as u64 % n as u64) as u32,
+                (k / (n as u64 * n as u64)) as u32,
+            )
+        })
+        .find(|&cell| {
+            let case = CORNER_OFFSETS.iter().enumerate().fold(0usize, |m, (c, &o)| {
+                m | ((values[grid.point_index(cell + UVec3::from_array(o))] > iso) as usize) << c
+            });
+            EDGE_TABLE[case] != 0
+        })
+}
+
 /// The sphere whose term dominates the field at `point` (where a ray met the surface): the sphere a
 /// person points at, also where several have merged.
 pub fn dominant_sphere(spheres: &[Sphere], point: Vec3) -> Option<usize> {
@@ -244,6 +273,31 @@ pub fn ray_triangle(origin: Vec3, direction: Vec3, [a, b, c]: [Vec3; 3]) -> Opti
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_next_crossed_cell_walks_exactly_the_cells_whose_case_is_crossed_in_the_marchs_order() {
+        let spheres = [
+            Sphere { center: Vec3::new(0.2, -0.1, 0.0), radius: 0.4, velocity: Vec3::ZERO, charge: 1.0 },
+            Sphere { center: Vec3::new(-0.4, 0.3, 0.2), radius: 0.3, velocity: Vec3::ZERO, charge: 1.0 },
+        ];
+        let grid = Grid { cells_per_axis: 7 };
+        let mut walked = Vec::new();
+        let mut at = None;
+        while let Some(cell) = next_crossed(&spheres, 1.0, grid, Blend::Sum, at) {
+            walked.push(cell);
+            at = Some(cell);
+        }
+        let n = grid.cells_per_axis;
+        let crossed: Vec<UVec3> = (0..n * n * n)
+            .map(|k| UVec3::new(k % n, k / n % n, k / (n * n)))
+            .filter(|&c| {
+                let case = inspect(&spheres, 1.0, grid, Construction::default(), c).case;
+                case != 0 && case != 255
+            })
+            .collect();
+        assert!(crossed.len() > 20, "{}", crossed.len());
+        assert_eq!(walked, crossed);
+    }
 
     #[test]
     fn a_ray_at_a_sphere_picks_a_crossed_cell_on_its_near_side() {

@@ -68,7 +68,7 @@ fn report_object(report: &CellReport) -> JsValue {
 }
 
 /// The 15 classes of cases for the gallery: number, name, representative case, its inside corners, how
-/// many of the 256 cases fall in it, and its configurations under
+/// many of the 256 cases fall in it and which, and its configurations under
 /// MC33 (`teach::subcases`): name, triangles, how many of the ambiguous faces they join, and whether a
 /// tunnel joins two loops inside.
 #[wasm_bindgen]
@@ -84,7 +84,9 @@ pub fn case_gallery() -> js_sys::Array {
             set(&object, "case", case.into());
             let inside: Vec<u32> = (0..8).filter(|c| case >> c & 1 == 1).collect();
             set(&object, "inside", numbers(&inside));
-            set(&object, "cases", (classes.iter().filter(|&&c| c as usize == k).count() as u32).into());
+            let members: Vec<u32> = (0..256).filter(|&c| classes[c as usize] as usize == k).collect();
+            set(&object, "cases", (members.len() as u32).into());
+            set(&object, "members", numbers(&members));
             let subcases: js_sys::Array = SUBCASES
                 .iter()
                 .filter(|s| s.class as usize == k)
@@ -174,6 +176,13 @@ impl View {
         self.inspect()
     }
 
+    /// The first cell after (`x`, `y`, `z`) in the march's order (x fastest, then y, then z) that the
+    /// surface crosses now, as [x, y, z]; none when no later cell is crossed.
+    pub fn next_crossed_cell(&self, x: u32, y: u32, z: u32) -> Option<Vec<u32>> {
+        let cell = self.renderer.next_crossed(Some(UVec3::new(x, y, z)))?;
+        Some(cell.to_array().to_vec())
+    }
+
     /// Deselects the cell.
     pub fn clear_selection(&mut self) {
         self.renderer.select_cell(None);
@@ -198,8 +207,12 @@ impl View {
         crate::scene::params::check_resolution(cells_per_axis).map_err(js_error)?;
         let settings = self.renderer.settings();
         let interpolation = if midpoint { Interpolation::Midpoint } else { Interpolation::Linear };
-        let construction =
-            Construction { interpolation, blend: settings.view.blend, case_table: settings.view.case_table };
+        let construction = Construction {
+            interpolation,
+            blend: settings.view.blend,
+            case_table: settings.view.case_table,
+            march: None,
+        };
         let p = error_at(self.renderer.scene().spheres(), settings.iso, construction, cells_per_axis);
         Ok(vec![p.rms, p.max, p.triangles as f64])
     }

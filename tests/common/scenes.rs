@@ -75,7 +75,12 @@ pub fn subtractive_scenes(how_many: usize) -> Vec<OracleScene> {
                 spheres,
                 iso,
                 resolution,
-                construction: Construction { interpolation, blend, case_table: alternate(case / 4) },
+                construction: Construction {
+                    interpolation,
+                    blend,
+                    case_table: alternate(case / 4),
+                    march: None,
+                },
             }
         })
         .collect()
@@ -114,7 +119,7 @@ pub fn oracle_scenes(random: usize) -> Vec<OracleScene> {
                         spheres: spheres.clone(),
                         iso,
                         resolution: 32,
-                        construction: Construction { interpolation, blend, case_table },
+                        construction: Construction { interpolation, blend, case_table, march: None },
                     });
                 }
             }

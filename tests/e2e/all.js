@@ -34,6 +34,7 @@ const SHARED = [
   'interpolant.test.js', // 7
   'squares.test.js', // 4
   'plane.test.js', // 15
+  'march.test.js', // 40
   'size.test.js', // 0.1
   'frame-cost.test.js', // 0.3
 ];

@@ -131,7 +131,7 @@ test('the stepper walks the march: the lit row is each square\'s case, and the l
     said: e.shadowRoot.querySelector('.where').textContent,
   }));
   const { cases, rings } = await page.$eval('#march metaballs-2d', (e) => e.contours());
-  // step="0,2" opens it at square (0, 2) of the 8 × 8 grid.
+  // march="0,2" opens it at square (0, 2) of the 8 × 8 grid.
   assert.equal((await state()).step, 16);
   for (let k = 0; k < 64; k += 1) {
     await page.$eval('#march metaballs-2d', (e, step) => e.stepTo(step), k);
@@ -166,10 +166,10 @@ test('the stepper walks the march: the lit row is each square\'s case, and the l
   });
   assert.equal(segments, rings.reduce((sum, ring) => sum + ring.length, 0));
   // A square outside the grid: a notice, and the stepper stays.
-  await page.$eval('#march metaballs-2d', (e) => e.setAttribute('step', '9,9'));
+  await page.$eval('#march metaballs-2d', (e) => e.setAttribute('march', '9,9'));
   await drawn(page);
   assert.match(await page.$eval('#march metaballs-2d', (e) => e.shadowRoot.getElementById('notice').textContent),
-    /step: "9,9" is not a square i,j of the 8 × 8 grid/);
+    /march: "9,9" is not a square i,j of the 8 × 8 grid/);
   assert.equal((await state()).step, 64);
   assert.deepEqual(errors, []);
 });

@@ -67,7 +67,7 @@ fn walls_overlaps_extreme_levels_and_constructions_equal_the_oracle() {
                         // The three tables in turn.
                         tables += 1;
                         let construction =
-                            Construction { interpolation, blend, case_table: alternate(tables) };
+                            Construction { interpolation, blend, case_table: alternate(tables), march: None };
                         assert_equals_oracle(&mut mesher, spheres, iso, resolution, construction, &what);
                     }
                 }

@@ -25,6 +25,7 @@ mod js_layers;
 mod lab;
 mod lod;
 mod manifest;
+mod march;
 mod mc33;
 mod mesh_properties;
 mod parameters;

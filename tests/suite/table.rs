@@ -28,6 +28,7 @@ fn other_value(p: &Parameter) -> String {
         Kind::List(words) => words.last().unwrap().to_string(),
         Kind::Controls => control_names()[1].to_string(),
         Kind::Slice => "z:0.25".into(),
+        Kind::Cell => "1,2,3".into(),
         Kind::Spheres => "0,0,0,0.3".into(),
         Kind::Text => "a figure".into(),
     }

@@ -5,7 +5,7 @@ use crate::extract::decider::{MAX_DECIDED_TRIANGLES, decided_triangles, face_cho
 use crate::extract::interior::interior_code;
 use crate::extract::mesh::Mesh;
 use crate::extract::tables::{CORNER_OFFSETS, EDGE_CORNERS, EDGE_TABLE};
-use crate::scene::params::view::{Blend, CaseTable, Interpolation};
+use crate::scene::params::view::{Blend, CaseTable, Interpolation, March};
 use crate::scene::{BOX_HALF_EXTENT, Sphere};
 use glam::{UVec3, Vec3};
 
@@ -63,6 +63,8 @@ pub struct Construction {
     pub interpolation: Interpolation,
     pub blend: Blend,
     pub case_table: CaseTable,
+    /// The step-through of the march: only the cells it has reached give triangles (`March`).
+    pub march: Option<[u32; 3]>,
 }
 
 impl Construction {
@@ -247,7 +249,7 @@ pub fn extract(spheres: &[Sphere], iso: f32, grid: Grid) -> Mesh {
     extract_with(spheres, iso, grid, Construction::default())
 }
 
-/// `extract` with the vertex placement and blend of `construction`.
+/// `extract` with the vertex placement, blend, table and march of `construction`.
 pub fn extract_with(spheres: &[Sphere], iso: f32, grid: Grid, construction: Construction) -> Mesh {
     let values = sample_blended_field(spheres, grid, construction.blend);
     let mut mesh = Mesh::default();
@@ -259,7 +261,7 @@ pub fn extract_with(spheres: &[Sphere], iso: f32, grid: Grid, construction: Cons
                 let corner = |c: usize| cell + UVec3::from_array(CORNER_OFFSETS[c]);
                 let value = |c: usize| values[grid.point_index(corner(c))];
                 let case = (0..8).fold(0usize, |m, c| m | (((value(c) > iso) as usize) << c));
-                if EDGE_TABLE[case] == 0 {
+                if EDGE_TABLE[case] == 0 || !March::reached(construction.march, [x, y, z]) {
                     continue;
                 }
                 let vertex = |e: usize| {

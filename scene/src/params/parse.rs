@@ -3,7 +3,7 @@
 
 use super::rows::{control, control_names, parameter_named, unknown};
 use super::table::{Kind, Parameter, Value};
-use super::view::Slice;
+use super::view::{March, Slice};
 use super::{ParamError, check_f32, check_range};
 use crate::decimal::num;
 use crate::number::{parse_f32, parse_f64};
@@ -110,6 +110,7 @@ impl Parameter {
                 }
             }
             Kind::Slice => Slice::parse(trimmed).map(|slice| Value::Text(Slice::text(slice))),
+            Kind::Cell => March::parse(trimmed).map(|cell| Value::Text(March::text(cell))),
             Kind::Text => Ok(Value::Text(text.to_string())),
             Kind::Spheres if trimmed.is_empty() => Ok(Value::Text(String::new())),
             Kind::Spheres => crate::sphere::parse_spheres_text(trimmed)

@@ -5,7 +5,7 @@
 
 use super::table::{Action, Field, Group, Kind, Parameter, Value, number, row};
 use super::view::{
-    Blend, CaseTable, ColorBy, Compare, Display, GridView, Interpolation, LIGHT_KINDS, Lights, MeshOn,
+    Blend, CaseTable, ColorBy, Compare, Display, GridView, Interpolation, LIGHT_KINDS, Lights, March, MeshOn,
     Method, Projection, Saddle, Slice, Theme,
 };
 use super::{MAX_RESOLUTION, MAX_SPHERES, MIN_RESOLUTION, linear_to_srgb_hex, srgb_hex_to_linear};
@@ -199,6 +199,10 @@ pub const PARAMETERS: &[Parameter] = &[
         .slider(1.5, 20.0, 0.1)
         .url("dist")
         .renderer(real!(camera.distance)),
+    row("march", "March at cell", Kind::Cell, "off").renderer(Field::View {
+        set: |o, v| o.march = March::parse(v.text()).ok().flatten(),
+        get: |o| Value::Text(March::text(o.march)),
+    }),
     number("divider", "Divider", "divider position", (0.05, 0.95), "0.5").renderer(real!(view: divider)),
     row("sphere-list", "Spheres", Kind::Spheres, "").aliases(&["balls"]).page_only(),
     row("controls", "Controls", Kind::Controls, "none").page_only(),
@@ -226,6 +230,7 @@ pub const ACTIONS: &[Action] = &[
     Action { name: "step", aliases: &[], label: "Step", group: Surface },
     Action { name: "view", aliases: &[], label: "Reset view", group: Surface },
     Action { name: "inspector", aliases: &[], label: "Cell inspector", group: Teaching },
+    Action { name: "step-through", aliases: &[], label: "Step through the march", group: Teaching },
     Action { name: "error-plot", aliases: &["error_plot"], label: "Error vs resolution", group: Teaching },
     Action { name: "scene", aliases: &[], label: "Scene file", group: Scene },
     Action { name: "export", aliases: &[], label: "Export", group: Scene },

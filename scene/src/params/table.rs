@@ -26,6 +26,8 @@ pub enum Kind {
     Controls,
     /// `off`, or an axis and a position in the box: `z:0.25`.
     Slice,
+    /// `off`, or a cell of the grid `x,y,z` (whole numbers).
+    Cell,
     /// Empty (the seeded layout), or spheres written `x,y,z,radius[,vx,vy,vz]` joined by `;` (a negative
     /// radius: a subtracting sphere).
     Spheres,

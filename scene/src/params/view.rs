@@ -223,6 +223,46 @@ impl Slice {
     }
 }
 
+/// Where the step-through of the march stands: a cell (x, y, z) of the grid. Marching cubes visits the
+/// cells x fastest, then y, then z; with the march at a cell, only the cells visited up to it (itself
+/// included) give triangles, on every path (the GPU's passes, the CPU's mesher and the oracle).
+pub struct March;
+
+impl March {
+    /// The most cells per axis a cell may name (the finest grid of level of detail).
+    const MAX_COORDINATE: u32 = 4096;
+
+    /// Reads `off`, or a cell `x,y,z` (whole numbers).
+    pub fn parse(text: &str) -> Result<Option<[u32; 3]>, ParamError> {
+        let text = text.trim().to_ascii_lowercase();
+        if text.is_empty() || text == "off" || text == "none" {
+            return Ok(None);
+        }
+        let parts: Vec<Option<u32>> = text.split(',').map(|t| t.trim().parse::<u32>().ok()).collect();
+        match parts[..] {
+            [Some(x), Some(y), Some(z)] if x.max(y).max(z) < Self::MAX_COORDINATE => Ok(Some([x, y, z])),
+            _ => Err(ParamError::Invalid {
+                name: "march",
+                value: text.clone(),
+                expected: "off, or a cell of the grid as x,y,z (whole numbers from 0, such as 3,4,5)".into(),
+            }),
+        }
+    }
+
+    /// The text `parse` reads.
+    pub fn text(march: Option<[u32; 3]>) -> String {
+        match march {
+            None => "off".into(),
+            Some([x, y, z]) => format!("{x},{y},{z}"),
+        }
+    }
+
+    /// True when the march at `march` has reached `cell` (always when it is off).
+    pub fn reached(march: Option<[u32; 3]>, [x, y, z]: [u32; 3]) -> bool {
+        march.is_none_or(|[mx, my, mz]| (z, y, x) <= (mz, my, mx))
+    }
+}
+
 /// The lights in the scene, up to one of each kind.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Lights {
@@ -285,6 +325,8 @@ pub struct ViewOptions {
     pub grid: GridView,
     pub color_by: ColorBy,
     pub slice: Option<Slice>,
+    /// The step-through of the march: only the cells up to this one give triangles ([`March`]).
+    pub march: Option<[u32; 3]>,
     /// Marks the cell faces whose two inside corners sit on a diagonal (the ambiguous faces).
     pub ambiguous: bool,
     pub interpolation: Interpolation,
@@ -329,6 +371,7 @@ impl ViewOptions {
             grid: GridView::None,
             color_by: ColorBy::None,
             slice: None,
+            march: None,
             ambiguous: false,
             interpolation: Interpolation::Linear,
             case_table: CaseTable::Classic,

@@ -120,7 +120,7 @@ fn unpack(packed: &[f32]) -> Result<Unpacked, String> {
         })
         .collect();
     let grid = Grid { cells_per_axis: cells as u32 };
-    Ok((method, spheres, packed[1], grid, Construction { interpolation, blend, case_table }))
+    Ok((method, spheres, packed[1], grid, Construction { interpolation, blend, case_table, march: None }))
 }
 
 #[cfg(test)]
@@ -135,6 +135,7 @@ mod tests {
             interpolation: Interpolation::Linear,
             blend: Blend::Sum,
             case_table: CaseTable::Decider,
+            march: None,
         };
         let job = Job {
             spheres: scene.spheres(),

@@ -123,7 +123,12 @@ impl<M: CpuMeshing> Extractor for CpuMeshExtractor<M> {
     /// cell lists, and asking for room in them would grow them for nothing).
     fn prepare(&mut self, job: &Job) -> Option<Counters> {
         match self.given.take() {
-            Some(given) if given.job == elsewhere::pack(M::METHOD, job) => self.mesher.install(given),
+            // A mesh made elsewhere is whole: a frame part way through the march meshes on its own.
+            Some(given)
+                if given.job == elsewhere::pack(M::METHOD, job) && job.construction.march.is_none() =>
+            {
+                self.mesher.install(given)
+            }
             _ => self.mesher.mesh_job(job),
         }
         let Counters { vertices, indices, .. } = self.counters();

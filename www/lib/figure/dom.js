@@ -66,7 +66,7 @@ const STYLE = `
 }
 @media print {
   :host { box-shadow: none !important; break-inside: avoid; }
-  canvas, #panel, #hud, #play, #notice, #wheel-hint, #confirm, #inspector, #sphere-box, #edit-overlay,
+  canvas, #panel, #hud, #play, #notice, #wheel-hint, #confirm, #inspector, #march, #sphere-box, #edit-overlay,
   #message { display: none !important; }
   #poster[src] { display: block; }
   #print-frame[src] { display: block; }
@@ -245,6 +245,11 @@ svg .corner-number { fill: var(--muted); font-size: 9px; }
   z-index: 1;
 }
 #inspector[hidden] { display: none; }
+/* The step-through of the march: the left column (below the panel when that is open). */
+#march { position: absolute; left: 8px; top: 8px; bottom: 8px; width: min(300px, 40%); z-index: 1; }
+#march[hidden] { display: none; }
+#panel:not([hidden]) ~ #march { top: 50%; }
+#play:not([hidden]) ~ #march { bottom: 48px; }
 /* Above the play button when both show. */
 #play:not([hidden]) ~ #inspector { bottom: 48px; max-height: calc(100% - 56px); }
 #inspector header { display: flex; justify-content: space-between; align-items: center; }
@@ -341,6 +346,7 @@ export const TEMPLATE = `
   </section>
   <button id="play" type="button" hidden>▶ Play</button>
   <section id="inspector" aria-label="Cell inspector" hidden></section>
+  <section id="march" aria-label="Step through the march" hidden></section>
   <svg id="edit-overlay" aria-hidden="true"><circle id="hover-ring" hidden></circle><circle id="selected-ring" hidden></circle></svg>
   <section id="sphere-box" aria-label="Selected sphere" hidden></section>
   <input type="file" id="scene-file" accept=".json,application/json" hidden>

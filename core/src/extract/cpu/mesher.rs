@@ -17,7 +17,7 @@ use crate::extract::interior::interior_code;
 use crate::extract::mesh::IndexedMesh;
 use crate::extract::reference::{self, Construction, Grid};
 use crate::extract::tables::EDGE_TABLE;
-use crate::scene::params::view::Blend;
+use crate::scene::params::view::{Blend, March};
 use crate::scene::{BOX_HALF_EXTENT, Sphere};
 use glam::Vec3;
 
@@ -276,6 +276,9 @@ impl CpuMesher {
             let x_end = (bx * BLOCK_CELLS + BLOCK_CELLS).min(n);
             for y in by * BLOCK_CELLS..y_end {
                 for x in bx * BLOCK_CELLS..x_end {
+                    if !March::reached(construction.march, [x, y, z]) {
+                        continue;
+                    }
                     let at = x as usize + width * y as usize;
                     let corners = [at, at + 1, at + 1 + width, at + width];
                     let (lo, hi) = (&self.values[low], &self.values[high]);

@@ -1,0 +1,164 @@
+// The step-through of the march in 3D: `march="x,y,z"` (a link, an attribute, or the panel's "Step
+// through the march") walks marching cubes one cell at a time, x fastest, then y, then z. At each step
+// the cell is selected in the inspector (highlighted, with its corners, crossed edges, vertices and
+// triangles), the box beside it builds the case bit by bit and lights its row among the 256 grouped
+// into the gallery's classes, and the renderer draws the triangles of the cells reached so far, on the
+// GPU's passes and the CPU's mesher alike. The spheres hold still while it is open.
+
+import { caseGallery } from '../engine/wasm.js';
+import { caseSum, stepperPanel } from '../plane/stepper-panel.js';
+import { Inspector } from './inspector.js';
+
+/** Reads `x,y,z` as a cell, or null (`off`). */
+export function parseCell(text) {
+  if (!text || text === 'off') return null;
+  return text.split(',').map(Number);
+}
+
+/** The 256 cases grouped into the gallery's classes, as the stepper panel's table. */
+function caseTable() {
+  return {
+    name: 'The 256 cases of marching cubes, grouped into their 15 classes',
+    head: ['case', 'bits 76543210'],
+    groups: caseGallery().classes.map((k) => ({
+      title: `Class ${k.class} · ${k.name} (${k.cases} cases)`,
+      rows: Array.from(k.members, (c) => [c, c.toString(2).padStart(8, '0')]),
+    })),
+  };
+}
+
+export class Stepper {
+  static attributes = ['march', 'resolution', 'lod', 'method'];
+  #ctx;
+  #box;
+  #panel = null;
+  #playing = false;
+  #speed = 4;
+  #carry = 0;
+  #last = 0;
+  // What the inspector shows for the step: the view and cell last selected.
+  #selected = null;
+
+  constructor(ctx) {
+    this.#ctx = ctx;
+    this.#box = ctx.$('march');
+    ctx.actions.stepThrough = () => this.open();
+  }
+
+  controls() {
+    return {
+      'step-through': ({ makeButton }) => makeButton('step-through', 'Step through the march',
+        'Walk marching cubes one cell at a time (from the inspected cell, if any)', () => this.open()),
+    };
+  }
+
+  /** The cell the march stands at, or null when the stepper is off. */
+  get cell() {
+    const cell = parseCell(this.#ctx.state.march);
+    const n = this.#ctx.state.resolution;
+    return cell && cell.map((v) => Math.min(v, n - 1));
+  }
+
+  /** The step (cell x + n (y + n z)), or null. */
+  get index() {
+    const cell = this.cell;
+    const n = this.#ctx.state.resolution;
+    return cell && cell[0] + n * (cell[1] + n * cell[2]);
+  }
+
+  /** Opens the stepper at the first cell, or at the inspected one. */
+  open() {
+    const report = this.#ctx.get(Inspector).report;
+    this.#ctx.set('march', report ? report.cell.join(',') : '0,0,0');
+  }
+
+  close() {
+    this.#playing = false;
+    this.#ctx.set('march', 'off');
+  }
+
+  /** Moves the march to step `k`, clamped to the grid's cells. */
+  stepTo(k) {
+    const n = this.#ctx.state.resolution;
+    const m = Math.max(0, Math.min(n ** 3 - 1, Math.round(k)));
+    this.#ctx.set('march', [m % n, Math.floor(m / n) % n, Math.floor(m / (n * n))].join(','));
+  }
+
+  /** The next cell the surface crosses (the last cell when none is left). */
+  nextCrossed() {
+    const cell = this.cell;
+    const next = cell && this.#ctx.view?.next_crossed_cell(...cell);
+    if (next) this.#ctx.set('march', Array.from(next).join(','));
+    else this.stepTo(Infinity);
+  }
+
+  changed(name) {
+    if (name !== 'march') this.#selected = null;
+    const { lod, method } = this.#ctx.state;
+    if (name !== 'resolution' && this.cell && (lod || method === 'surface_nets')) {
+      this.#ctx.notice('march: the step-through walks marching cubes on the uniform grid (lod off, method marching_cubes); the whole mesh is drawn');
+    }
+    if (!this.cell) {
+      this.#playing = false;
+      this.#box.hidden = true;
+      if (this.#selected) this.#ctx.get(Inspector).deselect();
+      this.#selected = null;
+    }
+    this.#ctx.redraw(1);
+  }
+
+  // The spheres hold still while the march is open.
+  holds() { return this.cell !== null; }
+
+  afterTick(now, view) {
+    const cell = this.cell;
+    if (!cell || !view) {
+      this.#last = 0;
+      return;
+    }
+    if (this.#playing) {
+      const dt = this.#last ? Math.min(0.1, (now - this.#last) / 1000) : 0;
+      this.#carry += dt * this.#speed;
+      const steps = Math.floor(this.#carry);
+      this.#carry -= steps;
+      const last = this.#ctx.state.resolution ** 3 - 1;
+      if (steps > 0) this.stepTo(Math.min(last, this.index + steps));
+      if (this.index >= last) this.#playing = false;
+    }
+    this.#last = now;
+    const key = `${cell}`;
+    const inspector = this.#ctx.get(Inspector);
+    if (this.#selected?.view !== view || this.#selected.key !== key) {
+      this.#selected = { view, key };
+      inspector.select(...cell);
+      this.#show(inspector.report);
+    } else if (!inspector.report) {
+      // The inspector let go of the cell (Esc, its ×): the step-through ends with it.
+      this.close();
+    } else if (`${inspector.report.cell}` !== key) {
+      // A click picked another cell: the march goes there.
+      this.#ctx.set('march', inspector.report.cell.join(','));
+    }
+  }
+
+  #show(report) {
+    this.#panel ??= stepperPanel(this.#box, {
+      back: () => { this.#playing = false; this.stepTo(this.index - 1); },
+      forward: () => { this.#playing = false; this.stepTo(this.index + 1); },
+      next: () => { this.#playing = false; this.nextCrossed(); },
+      play: () => { this.#playing = !this.#playing; this.#carry = 0; this.#show(this.#ctx.get(Inspector).report); },
+      speed: (perSecond) => { this.#speed = perSecond; },
+      close: () => this.close(),
+    }, caseTable());
+    this.#box.hidden = false;
+    const n = this.#ctx.state.resolution;
+    const head = `Step ${this.index + 1} of ${n ** 3}: cell (${this.cell.join(', ')})`;
+    // The corners' values and signs are in the inspector's box beside it; here, their bits add up.
+    const triangles = report?.triangles.length;
+    const account = report
+      ? `${head}<br>${caseSum(report.corners, this.#ctx.state.iso).sum}<br>class ${report.class}, ${report.className}: `
+        + `${triangles} triangle${triangles === 1 ? '' : 's'} (edges ${report.triangles.map((t) => t.join('–')).join(', ') || 'none'})`
+      : head;
+    this.#panel({ playing: this.#playing, account, lit: report?.case ?? null });
+  }
+}
