@@ -245,10 +245,9 @@ svg .corner-number { fill: var(--muted); font-size: 9px; }
   z-index: 1;
 }
 #inspector[hidden] { display: none; }
-/* The step-through of the march: the left column (below the panel when that is open). */
+/* The step-through of the march: the left column, over the panel. */
 #march { position: absolute; left: 8px; top: 8px; bottom: 8px; width: min(300px, 40%); z-index: 1; }
 #march[hidden] { display: none; }
-#panel:not([hidden]) ~ #march { top: 50%; }
 #play:not([hidden]) ~ #march { bottom: 48px; }
 /* Above the play button when both show. */
 #play:not([hidden]) ~ #inspector { bottom: 48px; max-height: calc(100% - 56px); }
