@@ -19,13 +19,13 @@ need_esbuild
 
 rm -rf dist
 mkdir -p dist/www dist/pkg dist/pkg-webgl
-cp index.html embed.html dist/
+cp index.html embed.html squares.html dist/
 "$esbuild" www/metaballs-view.js www/page.js www/lib/engine/mesh-worker.js --bundle --splitting --format=esm --minify --sourcemap \
     --target=es2022 --outbase=www --outdir=dist/www --chunk-names='lib/engine/[name]-[hash]' \
     --external:'../../../pkg/*' --external:'../../../pkg-webgl/*' --log-level=warning
 # The 2D figure is bundled on its own (it loads no wasm), so that a page of 3D figures fetches no chunk
 # it shares with it.
-"$esbuild" www/metaballs-2d.js --bundle --format=esm --minify --sourcemap --target=es2022 --outdir=dist/www \
+"$esbuild" www/metaballs-2d.js www/plane-page.js --bundle --format=esm --minify --sourcemap --target=es2022 --outdir=dist/www \
     --log-level=warning
 if grep -l 'pkg/metaballs' dist/www/*.js; then
     echo "dist.sh: the code that loads the WebAssembly was bundled outside www/lib/engine/, where its paths hold" >&2

@@ -10,7 +10,8 @@
 
 import { rowOf } from './lib/core/table.js';
 import { DEFAULT_SHOWN, paint, picture, toSvg } from './lib/plane/picture.js';
-import { parseCircles, readLevels, readSetting, readShown, seededCircles } from './lib/plane/settings.js';
+import { PANEL_CONTROLS, planePanel, readControls } from './lib/plane/panel.js';
+import { circlesText, parseCircles, readLevels, readSetting, readShown, seededCircles } from './lib/plane/settings.js';
 import { sampleField, sampleSlice } from './lib/plane/squares.js';
 import { nextCrossed } from './lib/plane/stepper.js';
 import { SQUARE_TABLE, squareAccount, stepperPanel } from './lib/plane/stepper-panel.js';
@@ -37,7 +38,10 @@ const SETTINGS = ['iso', 'resolution', 'interpolation', 'saddle', 'spheres', 'se
 const Base = globalThis.HTMLElement ?? class {};
 
 export class Metaballs2d extends Base {
-  static observedAttributes = [...SETTINGS, 'circles', 'levels', 'show', 'alt', 'march', 'slice-of'];
+  static observedAttributes = [...SETTINGS, 'circles', 'levels', 'show', 'alt', 'march', 'slice-of', 'controls'];
+
+  /** The controls `controls` may list. */
+  static controls = PANEL_CONTROLS;
 
   #canvas;
   #notice;
@@ -67,12 +71,13 @@ export class Metaballs2d extends Base {
     super();
     const root = this.attachShadow({ mode: 'open' });
     root.innerHTML = `<style>${STYLE}</style><div class="figure"><canvas part="canvas" role="img"></canvas>`
-      + '<div id="notice" part="notice" role="status" hidden></div></div><div class="side"></div>';
+      + '<div id="notice" part="notice" role="status" hidden></div><div class="controls"></div></div><div class="side"></div>';
     this.#canvas = root.querySelector('canvas');
     this.#notice = root.getElementById('notice');
     this.#canvas.addEventListener('pointerdown', (e) => this.#grab(e));
     this.#canvas.addEventListener('pointermove', (e) => this.#move(e));
-    for (const end of ['pointerup', 'pointercancel']) this.#canvas.addEventListener(end, () => { this.#drag = null; });
+    for (const end of ['pointerup', 'pointercancel']) this.#canvas.addEventListener(end, () => this.#drop());
+    this.#canvas.addEventListener('dblclick', (e) => this.#addOrRemove(e));
   }
 
   connectedCallback() {
@@ -93,6 +98,7 @@ export class Metaballs2d extends Base {
       if (name === 'alt') this.#label();
       else if (name === 'slice-of') this.#schedule();
       else if (name === 'march') this.#openStepper(text);
+      else if (name === 'controls') this.#buildPanel(text);
       else if (name === 'circles') this.#given = text === null ? null : parseCircles(text);
       else if (name === 'levels') this.#settings.levels = text === null ? [] : readLevels(text, rowOf('iso'));
       else if (name === 'show') this.#settings.shown = text === null ? DEFAULT_SHOWN : readShown(text);
@@ -104,7 +110,64 @@ export class Metaballs2d extends Base {
       this.#say(`${error.message}; kept the previous value`);
     }
     this.#label();
+    this.#panelUpdate?.();
     this.#schedule();
+  }
+
+  // ---------------------------------------------------------------- the panel and edits by hand
+
+  #panelUpdate = null;
+
+  #buildPanel(text) {
+    const names = readControls(text);
+    const host = this.shadowRoot.querySelector('.controls');
+    this.#panelUpdate = null;
+    host.replaceChildren();
+    if (names.length === 0) return;
+    this.#panelUpdate = planePanel(host, names, rowOf, {
+      get: (name) => this.#valueText(name),
+      set: (name, value) => this.#setInside(name, value),
+      action: () => this.#setInside('march', this.hasAttribute('march') ? null : '0'),
+    });
+    this.#panelUpdate();
+  }
+
+  // A setting in effect, as its attribute would write it.
+  #valueText(name) {
+    const s = this.#settings;
+    if (name === 'levels') return s.levels.join(',');
+    if (name === 'show') return s.shown.join(',');
+    return String(s[name]);
+  }
+
+  // A change made in the figure (its panel, a gesture): set as the attribute, so that it is checked and
+  // reflected like one given by the page, and announced for the page's link.
+  #setInside(name, text) {
+    if (text === null) this.removeAttribute(name);
+    else this.setAttribute(name, text);
+    this.dispatchEvent(new CustomEvent('metaballs-change', { detail: { attribute: name, value: text }, bubbles: true, composed: true }));
+  }
+
+  // A double-click adds a circle where there is none, and removes the one under the pointer.
+  #addOrRemove(event) {
+    const [x, y] = this.#toBox(event);
+    const list = this.circleList;
+    const hit = this.#circleAt(x, y);
+    if (hit) {
+      if (list.length === 1) {
+        this.#say('circles: the last circle stays (the figure needs one)');
+        return;
+      }
+      list.splice(list.indexOf(hit), 1);
+    } else {
+      list.push({ x, y, r: 0.2, charge: 1, vx: 0, vy: 0 });
+    }
+    this.#setInside('circles', circlesText(list));
+  }
+
+  #drop() {
+    if (this.#drag) this.#setInside('circles', circlesText(this.circleList));
+    this.#drag = null;
   }
 
   #default(name) {
@@ -349,11 +412,16 @@ export class Metaballs2d extends Base {
 
   #grab(event) {
     const [x, y] = this.#toBox(event);
-    const near = 12 / Math.max(1, this.#size) * 2;
-    const found = this.circleList.find((c) => Math.hypot(c.x - x, c.y - y) < Math.max(c.r, near));
-    if (!found) return;
+    const found = this.#circleAt(x, y);
+    if (!found || this.hasAttribute('slice-of')) return;
     this.#drag = found;
     this.#canvas.setPointerCapture?.(event.pointerId);
+  }
+
+  // The circle under a point of the box (within a finger's width of a small one), or undefined.
+  #circleAt(x, y) {
+    const near = 12 / Math.max(1, this.#size) * 2;
+    return this.circleList.find((c) => Math.hypot(c.x - x, c.y - y) < Math.max(c.r, near));
   }
 
   #move(event) {

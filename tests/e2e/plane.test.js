@@ -209,3 +209,58 @@ test('a 2D figure following a 3D figure\'s slice plane draws the same samples', 
   assert.notDeepEqual(moved, values);
   assert.deepEqual(errors, []);
 });
+
+test('the 2D page: each panel control changes the picture and goes into the link; a link restores it; double-clicks add and remove circles', async () => {
+  const { page, errors } = await open('squares.html?circles=0.58,0.18,0.29;0.08,-0.37,0.25;-0.5,-0.14,0.22&iso=1.2&resolution=12&paused=true');
+  const el = page.locator('metaballs-2d');
+  await page.waitForFunction(() => document.querySelector('metaballs-2d')?.frameMs > 0);
+  await el.locator('summary').click();
+  const picture = () => el.locator('canvas').screenshot();
+  const link = () => new URL(page.url()).searchParams;
+  const settle = async () => { await drawn(page); await page.waitForTimeout(250); };
+  let before = await picture();
+  const changes = [
+    // The decider joins the circles through two saddle squares (the lecture's first 2D figure).
+    ['saddle', (c) => c.locator('#control-saddle').selectOption('decider'), 'decider'],
+    ['iso', (c) => c.locator('#control-iso').fill('1.6'), '1.6'],
+    ['resolution', (c) => c.locator('#control-resolution').fill('20'), '20'],
+    ['interpolation', (c) => c.locator('#control-interpolation').selectOption('midpoint'), 'midpoint'],
+    ['levels', async (c) => { await c.locator('#control-levels').fill('0.8,2.4'); await c.locator('#control-levels').press('Enter'); }, '0.8,2.4'],
+    ['show', (c) => c.locator('input[data-show="values"]').uncheck(), null],
+    ['theme', (c) => c.locator('#control-theme').selectOption('light'), 'light'],
+  ];
+  for (const [name, act, value] of changes) {
+    await act(el);
+    await settle();
+    const after = await picture();
+    assert.ok(await differingFraction(page, before, after) > 0.002, `${name} changes the picture`);
+    if (value !== null) assert.equal(link().get(name), value, `${name} goes into the link`);
+    else assert.ok(!link().get(name).split(',').includes('values'), `${name} goes into the link: ${link().get(name)}`);
+    before = after;
+  }
+  // The link gives the same figure back.
+  const url = page.url();
+  const again = await open(url);
+  await again.page.waitForFunction(() => document.querySelector('metaballs-2d')?.frameMs > 0);
+  await again.page.waitForTimeout(250);
+  const pixels = (p) => p.$eval('metaballs-2d', (e) => e.shadowRoot.querySelector('canvas').toDataURL());
+  assert.equal(await pixels(again.page), await pixels(page), 'the link restores the picture');
+  // Double-click on empty space adds a circle; on a circle, removes it.
+  const box = await el.locator('canvas').boundingBox();
+  const at = (x, y) => [box.x + (x + 1) / 2 * box.width, box.y + (1 - y) / 2 * box.height];
+  await page.mouse.dblclick(...at(0.6, 0.7));
+  await settle();
+  assert.equal((await page.$eval('metaballs-2d', (e) => e.circleList.length)), 4);
+  const added = link().get('circles').split(';')[3].split(',').map(Number);
+  assert.ok(Math.abs(added[0] - 0.6) < 0.01 && Math.abs(added[1] - 0.7) < 0.01 && added[2] === 0.2, `added ${added}`);
+  await page.mouse.dblclick(...at(0.08, -0.37));
+  await settle();
+  assert.deepEqual(await page.$eval('metaballs-2d', (e) => e.circleList.map((c) => [c.x, c.y])), [[0.58, 0.18], [-0.5, -0.14], added.slice(0, 2)]);
+  // The step-through opens from the panel.
+  await el.locator('button[data-action="step-through"]').click();
+  await settle();
+  assert.equal(link().get('march'), '0');
+  assert.equal(await page.$eval('metaballs-2d', (e) => e.stepIndex), 0);
+  assert.deepEqual(errors, []);
+  assert.deepEqual(again.errors, []);
+});

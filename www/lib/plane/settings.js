@@ -43,6 +43,12 @@ export function parseCircles(text) {
   return circles;
 }
 
+/** Circles as `circles` reads them (three decimals; a subtracting circle with a negative radius). */
+export function circlesText(circles) {
+  const n = (v) => String(Math.round(v * 1000) / 1000);
+  return circles.map((c) => [c.x, c.y, c.r * (c.charge < 0 ? -1 : 1)].map(n).join(',')).join(';');
+}
+
 /** A setting read as the parameter table's `row` reads it: a number in range, a word among the row's, a flag. */
 export function readSetting(row, text) {
   const name = row.name;

@@ -1,0 +1,99 @@
+// The 2D figure's panel (`controls="iso,resolution,saddle,…"` or `all`): a folding box over the
+// figure's corner with a control per setting, each built from the setting's row of the parameter table
+// (slider, words, flag) where the 3D figure shares it, and the 2D figure's own: further levels, what to
+// show, the step-through, and adding or removing circles. Each control sets the figure's attribute, so
+// its checks, notice and link apply as to a value given in the page. The rows are handed in, so
+// nothing here imports the table.
+
+import { SHOWN } from './picture.js';
+
+/** The panel's controls, in order; `all` lists them all. */
+export const PANEL_CONTROLS = ['iso', 'resolution', 'interpolation', 'saddle', 'levels', 'show', 'paused', 'speed',
+  'spheres', 'seed', 'theme', 'step-through', 'circles'];
+
+// Resolutions a slider offers: fine enough to read values at the coarse end, smooth at the fine one.
+const RESOLUTION_SLIDER = { min: 8, max: 256 };
+
+const STYLE = `
+.panel { position: absolute; top: 8px; left: 8px; max-width: min(260px, calc(100% - 16px));
+  max-height: calc(100% - 16px); overflow: auto; z-index: 1; border-radius: 6px;
+  font: 12.5px/1.4 system-ui, sans-serif; color: var(--metaballs-text, #d7dbe4);
+  background: var(--metaballs-panel-background, rgba(20, 23, 31, 0.92)); }
+.panel summary { padding: 4px 8px; cursor: pointer; }
+.panel .rows { display: grid; grid-template-columns: auto minmax(0, 1fr) auto; gap: 4px 6px; align-items: center;
+  padding: 2px 8px 8px; }
+.panel label, .panel .label { white-space: nowrap; }
+.panel input[type=range] { width: 100%; }
+.panel input[type=checkbox] { justify-self: start; }
+.panel .checks { grid-column: 2 / 4; display: flex; flex-wrap: wrap; gap: 0 8px; }
+.panel .wide { grid-column: 2 / 4; }
+.panel button, .panel select, .panel input { font: inherit; }
+.panel output { font-variant-numeric: tabular-nums; min-width: 3em; text-align: right; }`;
+
+const html = (text) => String(text).replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/"/g, '&quot;');
+
+/**
+ * Builds the panel into `host` with the controls named in `names`; `rowOf(name)` gives a shared
+ * setting's table row; `figure` is `{ get(name) (the value in effect, as text), set(name, text),
+ * action(name) }`. Returns `update()`, which shows the values in effect.
+ */
+export function planePanel(host, names, rowOf, figure) {
+  const rows = names.map((name) => {
+    const id = `control-${name}`;
+    const row = rowOf(name);
+    if (name === 'show') {
+      return `<span class="label">Show</span><span class="checks" role="group" aria-label="Show">${SHOWN.map((w) => `<label><input type="checkbox" data-show="${w}"> ${w}</label>`).join('')}</span>`;
+    }
+    if (name === 'levels') {
+      return `<label for="${id}">Levels</label><input id="${id}" class="wide" data-name="levels" placeholder="e.g. 0.6,1.6">`;
+    }
+    if (name === 'step-through') return '<span></span><button type="button" class="wide" data-action="step-through">Step through the march</button>';
+    if (name === 'circles') return '<span></span><span class="wide">Double-click to add a circle or remove one; drag to move it.</span>';
+    if (row.kind === 'boolean') return `<label for="${id}">${html(row.label)}</label><input type="checkbox" id="${id}" data-name="${name}"><span></span>`;
+    if (row.kind === 'choice') {
+      return `<label for="${id}">${html(row.label)}</label><select id="${id}" data-name="${name}" class="wide">${row.words.map((w) => `<option>${w}</option>`).join('')}</select>`;
+    }
+    const [min, max] = name === 'resolution' ? [RESOLUTION_SLIDER.min, RESOLUTION_SLIDER.max] : [row.sliderMin, row.sliderMax];
+    return `<label for="${id}">${html(row.label)}</label><input type="range" id="${id}" data-name="${name}" min="${min}" max="${max}" step="${row.step || 1}"><output for="${id}"></output>`;
+  });
+  host.innerHTML = `<style>${STYLE}</style><details class="panel" part="panel"><summary>Controls</summary><div class="rows">${rows.join('')}</div></details>`;
+  const inputs = [...host.querySelectorAll('[data-name]')];
+  const shows = [...host.querySelectorAll('[data-show]')];
+  host.addEventListener('input', (e) => {
+    const input = e.target;
+    if (input.type === 'range') input.nextElementSibling.textContent = input.value;
+  });
+  host.addEventListener('change', (e) => {
+    const input = e.target;
+    if (input.dataset.show) {
+      figure.set('show', shows.filter((s) => s.checked).map((s) => s.dataset.show).join(',') || 'contour');
+    } else if (input.dataset.name) {
+      figure.set(input.dataset.name, input.type === 'checkbox' ? String(input.checked) : input.value);
+    }
+  });
+  host.addEventListener('click', (e) => {
+    const action = e.target.closest('[data-action]')?.dataset.action;
+    if (action) figure.action(action);
+  });
+  return () => {
+    for (const input of inputs) {
+      if (input === host.getRootNode().activeElement) continue;
+      const value = figure.get(input.dataset.name);
+      if (input.type === 'checkbox') input.checked = value === 'true';
+      else input.value = value;
+      if (input.type === 'range') input.nextElementSibling.textContent = value;
+    }
+    const shown = figure.get('show').split(',');
+    for (const s of shows) s.checked = shown.includes(s.dataset.show);
+  };
+}
+
+/** The control names `controls` lists (`all`, `none`, or names of `PANEL_CONTROLS`); throws for others. */
+export function readControls(text) {
+  const words = String(text ?? '').split(',').map((w) => w.trim()).filter(Boolean);
+  if (words.length === 1 && words[0] === 'all') return PANEL_CONTROLS;
+  if (words.length === 0 || (words.length === 1 && words[0] === 'none')) return [];
+  const unknown = words.filter((w) => !PANEL_CONTROLS.includes(w));
+  if (unknown.length) throw new Error(`controls: ${unknown.join(', ')} is not one of ${PANEL_CONTROLS.join(', ')} (or all, none)`);
+  return words;
+}

@@ -1,0 +1,33 @@
+// The 2D figure's full page (`squares.html`): one <metaballs-2d> whose attributes come from the link's
+// query string (`?circles=0.3,0.1,0.35;-0.35,-0.2,0.3&iso=1.2&resolution=12&saddle=decider`), kept in the
+// URL as the person changes them, so a link reproduces the figure. Bad values in a link get the
+// figure's notice and its defaults, as any bad attribute does.
+
+const element = document.querySelector('metaballs-2d');
+const Figure = customElements.get('metaballs-2d') ?? await customElements.whenDefined('metaballs-2d');
+// The page always has every control, so its links do not carry `controls`.
+const names = Figure.observedAttributes.filter((name) => name !== 'controls' && name !== 'slice-of');
+
+// What the page's markup gives stays out of the link.
+const given = new Map(names.map((name) => [name, element.getAttribute(name)]));
+const query = new URLSearchParams(location.search);
+for (const name of names) {
+  if (query.has(name)) element.setAttribute(name, query.get(name));
+}
+
+let timer = 0;
+function saveUrl() {
+  clearTimeout(timer);
+  timer = setTimeout(() => {
+    const next = new URLSearchParams();
+    for (const name of names) {
+      const value = element.getAttribute(name);
+      if (value !== null && value !== given.get(name)) next.set(name, value);
+    }
+    // Commas and semicolons are fine in a query: keep the circles and levels readable.
+    const search = next.toString().replace(/%2C/g, ',').replace(/%3B/g, ';');
+    history.replaceState(null, '', `${location.pathname}${search ? `?${search}` : ''}`);
+  }, 150);
+}
+element.addEventListener('metaballs-change', saveUrl);
+saveUrl();
