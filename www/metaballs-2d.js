@@ -5,19 +5,15 @@
 // exports its picture as SVG and its contour as data, and its circles move and can be dragged.
 // Importing it only defines the element, and only where `customElements` exists.
 //
-// Settings it shares with <metaballs-view> (`iso`, `resolution`, `interpolation`, `saddle`, `spheres`,
-// `seed`, `speed`, `paused`, `theme`, `alt`) are read with the parameter table's ranges and words.
+// Its settings are read with the ranges, words and defaults of their rows in the parameter table.
 
-import { rowOf } from './lib/core/table.js';
+import { PLANE_TABLE } from './lib/attributes.js';
 import { DEFAULT_SHOWN, paint, picture, toSvg } from './lib/plane/picture.js';
 import { PANEL_CONTROLS, planePanel, readControls } from './lib/plane/panel.js';
 import { circlesText, parseCircles, readLevels, readSetting, readShown, seededCircles } from './lib/plane/settings.js';
 import { sampleField, sampleSlice } from './lib/plane/squares.js';
 import { nextCrossed } from './lib/plane/stepper.js';
 import { SQUARE_TABLE, squareAccount, stepperPanel } from './lib/plane/stepper-panel.js';
-
-// The grid a figure starts with: coarse enough to read every value.
-const DEFAULT_CELLS = 16;
 
 const STYLE = `
 :host { display: block; position: relative; max-width: 100%; contain: content; font: 13px system-ui, sans-serif; }
@@ -32,22 +28,27 @@ canvas { display: block; width: 100%; height: 100%; touch-action: none; cursor: 
   background: #3b2f12; border: 1px solid #8a6a1f; color: #ffe2a3; }
 #notice[hidden] { display: none; }`;
 
-const SETTINGS = ['iso', 'resolution', 'interpolation', 'saddle', 'spheres', 'seed', 'speed', 'paused', 'theme'];
+// The figure's settings, each declared once: the rows of the parameter table it shares with
+// <metaballs-view> and its own (src/scene/params/plane.rs, written into attributes.js).
+const ROWS = new Map(PLANE_TABLE.map((row) => [row.name, row]));
+const rowOf = (name) => ROWS.get(name);
 
 // Where there is no DOM (a static-site build importing the module), a plain class stands in.
 const Base = globalThis.HTMLElement ?? class {};
 
 export class Metaballs2d extends Base {
-  static observedAttributes = [...SETTINGS, 'circles', 'levels', 'show', 'alt', 'march', 'slice-of', 'controls'];
+  static observedAttributes = PLANE_TABLE.map((row) => row.name);
 
   /** The controls `controls` may list. */
   static controls = PANEL_CONTROLS;
 
   #canvas;
   #notice;
+  // The settings in effect: each row's default until given.
   #settings = {
-    iso: 1, resolution: DEFAULT_CELLS, interpolation: 'linear', saddle: 'table', spheres: 5, seed: 1,
-    speed: 1, paused: false, theme: 'dark', levels: [], shown: DEFAULT_SHOWN,
+    ...Object.fromEntries(['iso', 'resolution', 'interpolation', 'saddle', 'spheres', 'seed', 'speed', 'paused', 'theme']
+      .map((name) => [name, rowOf(name).value])),
+    levels: [], shown: DEFAULT_SHOWN,
   };
   #circles = null;
   #given = null;
@@ -102,7 +103,7 @@ export class Metaballs2d extends Base {
       else if (name === 'circles') this.#given = text === null ? null : parseCircles(text);
       else if (name === 'levels') this.#settings.levels = text === null ? [] : readLevels(text, rowOf('iso'));
       else if (name === 'show') this.#settings.shown = text === null ? DEFAULT_SHOWN : readShown(text);
-      else this.#settings[name] = text === null ? this.#default(name) : readSetting(rowOf(name), text);
+      else this.#settings[name] = text === null ? rowOf(name).value : readSetting(rowOf(name), text);
       if (['circles', 'spheres', 'seed'].includes(name)) this.#circles = null;
       // A square named i,j stays that square on a new grid.
       if (name === 'resolution' && this.hasAttribute('march')) this.#openStepper(this.getAttribute('march'));
@@ -168,11 +169,6 @@ export class Metaballs2d extends Base {
   #drop() {
     if (this.#drag) this.#setInside('circles', circlesText(this.circleList));
     this.#drag = null;
-  }
-
-  #default(name) {
-    if (name === 'resolution') return DEFAULT_CELLS;
-    return rowOf(name).value;
   }
 
   #say(text) {

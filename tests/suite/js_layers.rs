@@ -24,8 +24,8 @@ const LAYERS: &[(&str, &[&str])] = &[
     ("features", &["www/lib/features/"]),
     // The element.
     ("element", &["www/metaballs-view.js", "www/metaballs-2d.js"]),
-    // The full page and its benchmark.
-    ("page", &["www/page.js", "www/bench.js"]),
+    // The full pages (3D and 2D) and the benchmark.
+    ("page", &["www/page.js", "www/bench.js", "www/plane-page.js"]),
 ];
 
 /// Files that are written by a tool, not by hand: their imports are not read.

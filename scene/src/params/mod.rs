@@ -245,6 +245,7 @@ pub fn check_light_position(position: Vec3) -> Result<Vec3, ParamError> {
 }
 
 mod parse;
+pub mod plane;
 mod rows;
 pub mod table;
 pub mod view;

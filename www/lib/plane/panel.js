@@ -1,18 +1,14 @@
 // The 2D figure's panel (`controls="iso,resolution,saddle,…"` or `all`): a folding box over the
-// figure's corner with a control per setting, each built from the setting's row of the parameter table
-// (slider, words, flag) where the 3D figure shares it, and the 2D figure's own: further levels, what to
-// show, the step-through, and adding or removing circles. Each control sets the figure's attribute, so
-// its checks, notice and link apply as to a value given in the page. The rows are handed in, so
-// nothing here imports the table.
+// figure's corner with a control per setting, each built from the setting's row of the 2D figure's
+// table (slider, words, flag): the shared settings, further levels, what to show, the step-through,
+// and a hint on adding or removing circles. Each control sets the figure's attribute, so its checks,
+// notice and link apply as to a value given in the page.
 
+import { PLANE_TABLE } from '../attributes.js';
 import { SHOWN } from './picture.js';
 
-/** The panel's controls, in order; `all` lists them all. */
-export const PANEL_CONTROLS = ['iso', 'resolution', 'interpolation', 'saddle', 'levels', 'show', 'paused', 'speed',
-  'spheres', 'seed', 'theme', 'step-through', 'circles'];
-
-// Resolutions a slider offers: fine enough to read values at the coarse end, smooth at the fine one.
-const RESOLUTION_SLIDER = { min: 8, max: 256 };
+/** The panel's controls, in order (the words of the table's `controls` row); `all` lists them all. */
+export const PANEL_CONTROLS = PLANE_TABLE.find((row) => row.name === 'controls').words;
 
 const STYLE = `
 .panel { position: absolute; top: 8px; left: 8px; max-width: min(260px, calc(100% - 16px));
@@ -33,8 +29,8 @@ const STYLE = `
 const html = (text) => String(text).replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/"/g, '&quot;');
 
 /**
- * Builds the panel into `host` with the controls named in `names`; `rowOf(name)` gives a shared
- * setting's table row; `figure` is `{ get(name) (the value in effect, as text), set(name, text),
+ * Builds the panel into `host` with the controls named in `names`; `rowOf(name)` gives a setting's
+ * row of the 2D figure's table; `figure` is `{ get(name) (the value in effect, as text), set(name, text),
  * action(name) }`. Returns `update()`, which shows the values in effect.
  */
 export function planePanel(host, names, rowOf, figure) {
@@ -53,8 +49,7 @@ export function planePanel(host, names, rowOf, figure) {
     if (row.kind === 'choice') {
       return `<label for="${id}">${html(row.label)}</label><select id="${id}" data-name="${name}" class="wide">${row.words.map((w) => `<option>${w}</option>`).join('')}</select>`;
     }
-    const [min, max] = name === 'resolution' ? [RESOLUTION_SLIDER.min, RESOLUTION_SLIDER.max] : [row.sliderMin, row.sliderMax];
-    return `<label for="${id}">${html(row.label)}</label><input type="range" id="${id}" data-name="${name}" min="${min}" max="${max}" step="${row.step || 1}"><output for="${id}"></output>`;
+    return `<label for="${id}">${html(row.label)}</label><input type="range" id="${id}" data-name="${name}" min="${row.sliderMin}" max="${row.sliderMax}" step="${row.step || 1}"><output for="${id}"></output>`;
   });
   host.innerHTML = `<style>${STYLE}</style><details class="panel" part="panel"><summary>Controls</summary><div class="rows">${rows.join('')}</div></details>`;
   const inputs = [...host.querySelectorAll('[data-name]')];

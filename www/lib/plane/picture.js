@@ -3,12 +3,15 @@
 // painted on a canvas or written as SVG from the same list, so the vector export is the picture.
 // No DOM: a canvas context is handed in.
 
+import { PLANE_TABLE } from '../attributes.js';
 import { bands, march } from './squares.js';
 import { segmentsBefore, squareAt } from './stepper.js';
 
 /** Everything the picture can show (the `show` attribute's words), and what it shows by default. */
-export const SHOWN = ['grid', 'values', 'corners', 'cases', 'crossings', 'contour', 'saddles', 'bands', 'circles'];
-export const DEFAULT_SHOWN = ['grid', 'values', 'corners', 'cases', 'crossings', 'contour', 'saddles', 'bands'];
+// What the figure can show, and what it shows unless told (the table's `show` row).
+const SHOW_ROW = PLANE_TABLE.find((row) => row.name === 'show');
+export const SHOWN = SHOW_ROW.words;
+export const DEFAULT_SHOWN = SHOW_ROW.default.split(',');
 
 // The smallest square, in pixels, at which each kind of label is drawn.
 const MIN_PIXELS = { grid: 4, corners: 7, crossings: 5, cases: 16, values: 34, saddles: 12 };

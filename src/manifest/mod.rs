@@ -2,7 +2,8 @@
 //! defaults never drift: the table the element's module reads before its wasm arrives
 //! (`www/lib/attributes.js`), the Custom Elements Manifest editors read (`www/custom-elements.json`),
 //! and the TypeScript declarations (`www/metaballs-view.d.ts`). `metaballs manifest --out www` writes
-//! them; a test checks that the files in the repository are what it writes.
+//! them, and the same for the 2D figure (`plane.rs`); a test checks that the files in the repository
+//! are what it writes.
 
 pub use crate::scene::params::table::property_name;
 use crate::scene::params::{
@@ -11,6 +12,8 @@ use crate::scene::params::{
 use crate::scene::sphere::RADIUS_RANGE;
 use metaballs_scene::decimal::num;
 use serde_json::{Value as Json, json};
+
+mod plane;
 
 /// The element's methods: name, TypeScript signature after the name, what it does.
 pub const METHODS: &[(&str, &str, &str)] = &[
@@ -193,19 +196,18 @@ fn description(p: &Parameter) -> String {
 /// the older spellings still accepted, label, kind, accepted words, range, slider, default as text
 /// and as a value, panel group, who holds it, and whether its control needs compute shaders.
 fn rows() -> Vec<Json> {
-    PARAMETERS
-        .iter()
-        .map(|p| {
-            json!({
-                "name": p.name, "property": p.property(), "python": p.python(), "url": p.link_name(),
-                "aliases": p.aliases, "label": p.label, "kind": kind_word(p.kind), "words": p.words(),
-                "min": number(p.min), "max": number(p.max), "sliderMin": number(p.slider.0),
-                "sliderMax": number(p.slider.1), "step": number(p.slider.2), "default": p.default,
-                "value": typed_default(p), "group": p.group.title(), "scope": p.scope.word(),
-                "compute": p.compute, "scene": p.in_scene,
-            })
-        })
-        .collect()
+    PARAMETERS.iter().map(row_json).collect()
+}
+
+fn row_json(p: &Parameter) -> Json {
+    json!({
+        "name": p.name, "property": p.property(), "python": p.python(), "url": p.link_name(),
+        "aliases": p.aliases, "label": p.label, "kind": kind_word(p.kind), "words": p.words(),
+        "min": number(p.min), "max": number(p.max), "sliderMin": number(p.slider.0),
+        "sliderMax": number(p.slider.1), "step": number(p.slider.2), "default": p.default,
+        "value": typed_default(p), "group": p.group.title(), "scope": p.scope.word(),
+        "compute": p.compute, "scene": p.in_scene,
+    })
 }
 
 /// The panel's controls in order: each setting with a group, and the actions.
@@ -242,10 +244,14 @@ fn expected(p: &Parameter) -> Option<String> {
 /// `parameters.json`: the table's rows, with each one's description and the words its errors use (the
 /// noun and what is accepted), for tools outside a page (the notebook widget's traits).
 pub fn parameters_json() -> String {
-    let rows: Vec<Json> = rows()
-        .into_iter()
-        .zip(PARAMETERS)
-        .map(|(mut row, p)| {
+    described(PARAMETERS.iter())
+}
+
+/// Rows of `parameters` with their descriptions and the words their errors use, as JSON text.
+fn described<'a>(parameters: impl Iterator<Item = &'a Parameter>) -> String {
+    let rows: Vec<Json> = parameters
+        .map(|p| {
+            let mut row = row_json(p);
             row["description"] = json!(description(p));
             row["noun"] = json!(if p.noun.is_empty() { p.name } else { p.noun });
             row["expected"] = json!(expected(p));
@@ -285,14 +291,17 @@ pub fn attributes_js() -> String {
          // The panel's controls in order: the settings with a group, and the actions.\n\
          export const CONTROLS = Object.freeze([\n{}\n]);\n\n\
          // Ranges that are not settings, for gestures and the sphere editor.\n\
-         export const LIMITS = Object.freeze({});\n",
+         export const LIMITS = Object.freeze({});\n\n\
+         // The 2D figure's settings (src/scene/params/plane.rs): the rows it shares, then its own.\n\
+         export const PLANE_TABLE = Object.freeze([\n{}\n]);\n",
         lines(rows(), "  "),
         lines(controls(), "    "),
-        limits()
+        limits(),
+        lines(plane::plane_parameters().map(row_json).collect(), "  "),
     )
 }
 
-/// `www/custom-elements.json`: the Custom Elements Manifest.
+/// `www/custom-elements.json`: the Custom Elements Manifest (both elements).
 pub fn custom_elements_json() -> String {
     let declaration = json!({ "name": "MetaballsView", "module": MODULE });
     let attributes: Vec<Json> = PARAMETERS
@@ -348,7 +357,7 @@ pub fn custom_elements_json() -> String {
                 { "kind": "js", "name": "MetaballsView", "declaration": declaration },
                 { "kind": "custom-element-definition", "name": "metaballs-view", "declaration": declaration },
             ],
-        }],
+        }, plane::module()],
     });
     serde_json::to_string_pretty(&manifest).expect("the manifest is JSON") + "\n"
 }
@@ -400,6 +409,7 @@ pub fn files() -> Vec<(&'static str, String)> {
     vec![
         ("lib/attributes.js", attributes_js()),
         ("parameters.json", parameters_json()),
+        ("plane-parameters.json", described(plane::plane_parameters())),
         ("custom-elements.json", custom_elements_json()),
         ("metaballs-view.d.ts", declarations()),
     ]
