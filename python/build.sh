@@ -14,9 +14,11 @@ static=python/src/metaballs_widget/static
 rm -rf "$static"
 mkdir -p "$static/pkg" "$static/pkg-webgl"
 bundle_widget "$static/widget.js"
+bundle_plane_widget "$static/widget-2d.js"
 cp pkg/metaballs_bg.wasm "$static/pkg/"
 cp pkg-webgl/metaballs_bg.wasm "$static/pkg-webgl/"
 cp www/parameters.json "$static/parameters.json"
+cp www/plane-parameters.json "$static/plane-parameters.json"
 
 venv=target/python/build-venv
 if [ ! -x "$venv/bin/pip" ]; then

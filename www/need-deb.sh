@@ -33,3 +33,11 @@ bundle_widget() {
     "$esbuild" python/js/widget.js --bundle --format=esm --minify --target=es2022 --outfile="$1" \
         --log-level=warning
 }
+
+# `bundle_plane_widget FILE`: bundles the 2D notebook widget's module (python/js/widget-2d.js) with the
+# 2D figure into one file (it loads no WebAssembly).
+bundle_plane_widget() {
+    need_esbuild
+    "$esbuild" python/js/widget-2d.js --bundle --format=esm --minify --target=es2022 --outfile="$1" \
+        --log-level=warning
+}

@@ -129,3 +129,35 @@ def test_what_is_asked_of_the_figure_comes_back_as_it_answers():
         widget.close()
 
     asyncio.run(scenario())
+
+
+def test_the_2d_widget_has_a_trait_per_setting_of_the_2d_figure_with_its_default():
+    from metaballs_widget import Metaballs2d
+    from metaballs_widget._parameters import PLANE_TABLE
+
+    written = json.loads((ROOT / "www" / "plane-parameters.json").read_text(encoding="utf-8"))
+    assert [row["name"] for row in written] == [row["name"] for row in PLANE_TABLE]
+    assert (STATIC / "widget-2d.js").stat().st_size > 10_000, "the 2D widget's module was not bundled"
+    w = Metaballs2d()
+    for row in PLANE_TABLE:
+        assert getattr(w, trait_name(row["name"])) == row["value"], row["name"]
+    assert w.resolution == 16 and w.saddle == "table"
+    shared = {row["name"] for row in PLANE_TABLE} & {row["name"] for row in TABLE}
+    assert {"iso", "saddle", "interpolation", "theme"} <= shared
+
+
+def test_the_2d_widget_takes_good_values_and_refuses_bad_ones_keeping_its_own():
+    from metaballs_widget import Metaballs2d
+
+    w = Metaballs2d(circles="0.3,0.1,0.35;-0.35,-0.2,0.3", saddle="decider", resolution=12, show="grid,contour")
+    assert (w.saddle, w.resolution, w.show) == ("decider", 12, "grid,contour")
+    for name, value, said in [
+        ("resolution", 4, 'resolution="4": resolution (squares per axis) must be between 8 and 1024, got 4; keeping 12'),
+        ("saddle", "middle", 'saddle="middle"'),
+        ("show", "grid,halos", 'show="grid,halos"'),
+        ("controls", "iso,volume", 'controls="iso,volume"'),
+    ]:
+        with pytest.raises(traitlets.TraitError) as refused:
+            setattr(w, trait_name(name), value)
+        assert str(refused.value).startswith(said), str(refused.value)
+    assert (w.saddle, w.resolution, w.show) == ("decider", 12, "grid,contour")

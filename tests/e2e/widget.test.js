@@ -13,13 +13,13 @@ useServerAndBrowser();
 
 const ESM = '/python/src/metaballs_widget/static/widget.js';
 
-async function host(props, { initScript } = {}) {
+async function host(props, { initScript, esm = ESM } = {}) {
   const page = await browser.newPage({ viewport: { width: 960, height: 640 } });
   if (initScript) await page.addInitScript(initScript);
   const errors = [];
   page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
   page.on('pageerror', (e) => errors.push(String(e)));
-  const query = new URLSearchParams({ esm: ESM, props: JSON.stringify(props) });
+  const query = new URLSearchParams({ esm, props: JSON.stringify(props) });
   await page.goto(`${baseUrl}tests/e2e/fixtures/widget-host.html?${query}`);
   return { page, errors };
 }
@@ -110,4 +110,29 @@ test('in the widget as on a page: WebGL2 without WebGPU (its wasm beside the mod
   assert.equal(await page.evaluate(() => document.querySelector('metaballs-view').iso), 0.8);
   assert.deepEqual(errors.filter((e) => !/lost|destroyed|slice/i.test(e)), []);
   await page.close();
+});
+
+test('the 2D widget: its figure draws from the traits, follows them, and its panel and edits reach the model', async () => {
+  const props = { circles: '0.3,0.1,0.35;-0.35,-0.2,0.3', saddle: 'decider', resolution: 12, iso: 1, controls: 'all', show: 'grid,corners,contour' };
+  const { page, errors } = await host(props, { esm: '/python/src/metaballs_widget/static/widget-2d.js' });
+  const figure = page.locator('metaballs-2d');
+  await page.waitForFunction(() => document.querySelector('metaballs-2d')?.frameMs > 0);
+  assert.deepEqual(await figure.evaluate((e) => [e.contours().cells, e.circleList.length, e.getAttribute('saddle')]), [12, 2, 'decider']);
+  const shot = await figure.locator('canvas').screenshot();
+  // Python sets a trait: the figure draws it.
+  await page.evaluate(() => window.host.set('iso', 1.6));
+  await page.waitForFunction(() => document.querySelector('metaballs-2d').contours().iso === 1.6);
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  assert.ok(await differingFraction(page, shot, await figure.locator('canvas').screenshot()) > 0.002, 'iso 1 → 1.6 changes the picture');
+  // The figure's panel and a circle added by hand reach the model.
+  await figure.locator('summary').click();
+  await figure.locator('#control-saddle').selectOption('center');
+  await page.waitForFunction(() => window.host.get('saddle') === 'center');
+  const box = await figure.locator('canvas').boundingBox();
+  await page.mouse.dblclick(box.x + box.width * 0.8, box.y + box.height * 0.2);
+  await page.waitForFunction(() => window.host.get('circles').split(';').length === 3);
+  await page.evaluate(() => window.host.cleanup());
+  assert.equal(await page.evaluate(() => document.querySelectorAll('metaballs-2d').length), 0);
+  assert.equal(await page.evaluate(() => window.host.listeners()), 0);
+  assert.deepEqual(errors, []);
 });

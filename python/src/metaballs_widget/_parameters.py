@@ -12,6 +12,8 @@ import struct
 STATIC = pathlib.Path(__file__).parent / "static"
 
 TABLE: list[dict] = json.loads((STATIC / "parameters.json").read_text(encoding="utf-8"))
+# The 2D figure's settings: the rows it shares with the 3D figure, then its own.
+PLANE_TABLE: list[dict] = json.loads((STATIC / "plane-parameters.json").read_text(encoding="utf-8"))
 
 
 def trait_name(name: str) -> str:
@@ -148,7 +150,7 @@ def check(row: dict, value):
     return value
 
 
-for _row in TABLE:
+for _row in TABLE + PLANE_TABLE:
     # The range as the figure's messages print it (single precision for numbers).
     _format = _f32_text if _row["kind"] == "number" else _number_text
     _row["min_text"], _row["max_text"] = _format(_row["min"]), _format(_row["max"])

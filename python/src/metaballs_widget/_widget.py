@@ -9,17 +9,31 @@ import itertools
 import anywidget
 import traitlets
 
-from ._parameters import STATIC, TABLE, Refused, check, older_names, shown
+from ._parameters import PLANE_TABLE, STATIC, TABLE, Refused, check, older_names, shown
 
 _ROWS = {row["python"]: row for row in TABLE}
+_PLANE_ROWS = {row["python"]: row for row in PLANE_TABLE}
 _OLDER = older_names()
 _WASM = {"webgpu": "pkg/metaballs_bg.wasm", "webgl2": "pkg-webgl/metaballs_bg.wasm"}
 MESH_FORMATS = ("stl", "obj", "ply")
 
 
-def _settings() -> dict:
+def _settings(rows: dict) -> dict:
     """One synced trait per parameter, its default and help from the table."""
-    return {name: traitlets.Any(row["value"], help=row["description"]).tag(sync=True) for name, row in _ROWS.items()}
+    return {name: traitlets.Any(row["value"], help=row["description"]).tag(sync=True) for name, row in rows.items()}
+
+
+def _refusal(widget, row: dict, proposal) -> traitlets.TraitError:
+    """A value the figure would refuse, said as the figure says it: name="text": why; keeping the value."""
+    text = proposal["value"]
+    text = ("true" if text else "false") if isinstance(text, bool) else text
+    try:
+        check(row, proposal["value"])
+    except Refused as refused:
+        return traitlets.TraitError(
+            f'{row["name"]}="{text}": {refused}; keeping {shown(getattr(widget, proposal["trait"].name))}'
+        )
+    raise AssertionError("only a refused value has a refusal")
 
 
 class _Figure(anywidget.AnyWidget):
@@ -94,17 +108,11 @@ class _Figure(anywidget.AnyWidget):
 
     @traitlets.validate(*_ROWS)
     def _check(self, proposal):
-        name = proposal["trait"].name
-        row = _ROWS[name]
+        row = _ROWS[proposal["trait"].name]
         try:
             return check(row, proposal["value"])
-        except Refused as refused:
-            # As the figure says it: name="text": why; keeping the value in effect.
-            text = proposal["value"]
-            text = ("true" if text else "false") if isinstance(text, bool) else text
-            raise traitlets.TraitError(
-                f'{row["name"]}="{text}": {refused}; keeping {shown(getattr(self, name))}'
-            ) from None
+        except Refused:
+            raise _refusal(self, row, proposal) from None
 
     def _answer(self, _widget, content, buffers):
         """The figure asks for a build's WebAssembly (once per page: it is sent as a binary buffer), or
@@ -129,10 +137,57 @@ Metaballs = type(
     "Metaballs",
     (_Figure,),
     {
-        **_settings(),
+        **_settings(_ROWS),
         **{old: _older(new) for old, new in _OLDER.items()},
         "__doc__": "Merging spheres drawn with marching cubes, as a widget: "
         "``Metaballs(spheres=2, iso=1)``. Every setting of the figure is a trait, synced both ways.",
+        "__module__": __name__,
+    },
+)
+
+
+class _Plane(anywidget.AnyWidget):
+    _esm = STATIC / "widget-2d.js"
+
+    def __init__(self, **kwargs):
+        super().__init__(**kwargs)
+        self._calls = itertools.count(1)
+        self._waiting: dict = {}
+        self.on_msg(self._answer)
+
+    async def contours(self) -> dict:
+        """The contour at the iso level as data: ``iso``, ``cells``, ``rings`` (closed lists of points in
+        the box [-1, 1]², the inside on their left), ``saddles``, ``crossings`` and each square's case."""
+        return await self._ask("contours")
+
+    async def svg(self, size: int = 640) -> str:
+        """The picture as an SVG document: vector, for notes and print."""
+        return await self._ask("toSVG", int(size))
+
+    _ask = _Figure._ask
+
+    def _answer(self, _widget, content, buffers):
+        if isinstance(content, dict) and content.get("type") == "answer":
+            answer = self._waiting.get(content.get("id"))
+            if answer is not None and not answer.done():
+                answer.set_result((content, list(buffers or [])))
+
+    @traitlets.validate(*_PLANE_ROWS)
+    def _check(self, proposal):
+        row = _PLANE_ROWS[proposal["trait"].name]
+        try:
+            return check(row, proposal["value"])
+        except Refused:
+            raise _refusal(self, row, proposal) from None
+
+
+Metaballs2d = type(
+    "Metaballs2d",
+    (_Plane,),
+    {
+        **_settings(_PLANE_ROWS),
+        "__doc__": "Marching squares over circles, as a widget: ``Metaballs2d(circles='0.3,0.1,0.35;-0.35,-0.2,0.3', "
+        "saddle='decider')``. Every setting of the 2D figure is a trait, synced both ways.",
         "__module__": __name__,
     },
 )

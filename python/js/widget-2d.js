@@ -1,0 +1,75 @@
+// The 2D notebook widget's front end (an anywidget module): a <metaballs-2d> in the output, its
+// settings kept equal to the model's traits both ways, and Python's questions (the contours, the SVG)
+// answered. It follows the anywidget front-end contract only, as widget.js does; the 2D figure needs no
+// WebAssembly, so nothing is fetched.
+
+import '../../www/metaballs-2d.js';
+import { PLANE_TABLE } from '../../www/lib/attributes.js';
+
+// What Python may ask the figure, by the element's method names.
+const CALLS = new Set(['contours', 'toSVG']);
+
+// Runs a model call the host may not offer (MyST's static pages throw from some); says whether it ran.
+function quietly(call) {
+  try {
+    call();
+    return true;
+  } catch {
+    return false;
+  }
+}
+
+// A trait's value as the attribute's text (`true`/`false` for switches); null removes the attribute.
+const text = (value) => (value === null || value === undefined || value === '' ? null : String(value));
+
+function render({ model, el }) {
+  const figure = document.createElement('metaballs-2d');
+  figure.style.maxWidth = '560px';
+  const write = (name) => {
+    const value = text(model.get(name.replace(/-/g, '_')));
+    if (value === null) figure.removeAttribute(name);
+    else if (figure.getAttribute(name) !== value) figure.setAttribute(name, value);
+  };
+  for (const { name } of PLANE_TABLE) write(name);
+  el.replaceChildren(figure);
+
+  // Python → figure: a changed trait becomes the attribute.
+  const listeners = PLANE_TABLE.map(({ name }) => {
+    const event = `change:${name.replace(/-/g, '_')}`;
+    const listener = () => write(name);
+    model.on(event, listener);
+    return [event, listener];
+  });
+  // Figure → Python: a setting changed inside it (its panel, circles added, moved or removed).
+  const changed = (event) => {
+    const { attribute, value } = event.detail;
+    const row = PLANE_TABLE.find((r) => r.name === attribute);
+    if (!row) return;
+    const typed = value === null ? row.value
+      : row.kind === 'number' || row.kind === 'integer' ? Number(value)
+        : row.kind === 'boolean' ? value !== 'false' : value;
+    model.set(attribute.replace(/-/g, '_'), typed);
+    quietly(() => model.save_changes());
+  };
+  figure.addEventListener('metaballs-change', changed);
+  // Python's questions.
+  const asked = async (message) => {
+    if (message?.type !== 'call') return;
+    const { id, method, args = [] } = message;
+    try {
+      if (!CALLS.has(method)) throw new Error(`the figure has no method ${method}`);
+      model.send({ type: 'answer', id, value: await figure[method](...args) });
+    } catch (error) {
+      model.send({ type: 'answer', id, error: String(error?.message ?? error) });
+    }
+  };
+  model.on('msg:custom', asked);
+  return () => {
+    for (const [event, listener] of listeners) quietly(() => model.off(event, listener));
+    quietly(() => model.off('msg:custom', asked));
+    figure.removeEventListener('metaballs-change', changed);
+    figure.remove();
+  };
+}
+
+export default { render };
