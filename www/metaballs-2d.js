@@ -10,10 +10,13 @@
 import { PLANE_TABLE } from './lib/attributes.js';
 import { DEFAULT_SHOWN, paint, picture, toSvg } from './lib/plane/picture.js';
 import { PANEL_CONTROLS, planePanel, readControls } from './lib/plane/panel.js';
-import { circlesText, parseCircles, readLevels, readSetting, readShown, seededCircles } from './lib/plane/settings.js';
-import { sampleField, sampleSlice } from './lib/plane/squares.js';
-import { nextCrossed } from './lib/plane/stepper.js';
-import { SQUARE_TABLE, squareAccount, stepperPanel } from './lib/plane/stepper-panel.js';
+import { circleAt, circlesText, moveCircles, parseCircles, seededCircles } from './lib/plane/circles.js';
+import { readLevels, readSetting, readShown } from './lib/plane/settings.js';
+import { download, readScene, writeScene } from './lib/plane/scene-file.js';
+import { followed, sliceKey, sliceSource } from './lib/plane/slice-source.js';
+import { sampleField } from './lib/plane/squares.js';
+import { readStep } from './lib/plane/stepper.js';
+import { SquareStepper } from './lib/plane/square-stepper.js';
 
 const STYLE = `
 :host { display: block; position: relative; max-width: 100%; contain: content; font: 13px system-ui, sans-serif; }
@@ -32,6 +35,16 @@ canvas { display: block; width: 100%; height: 100%; touch-action: none; cursor: 
 // <metaballs-view> and its own (src/scene/params/plane.rs, written into attributes.js).
 const ROWS = new Map(PLANE_TABLE.map((row) => [row.name, row]));
 const rowOf = (name) => ROWS.get(name);
+// The settings a scene document holds (beside the circles).
+const SCENE = PLANE_TABLE.filter((row) => row.scene && row.name !== 'circles').map((row) => row.name);
+
+/** A setting's value read from text as the figure reads it; throws with what is accepted. */
+function readValue(name, text) {
+  if (name === 'circles') return parseCircles(text);
+  if (name === 'levels') return readLevels(text, rowOf('iso'));
+  if (name === 'show') return readShown(text);
+  return readSetting(rowOf(name), text);
+}
 
 // Where there is no DOM (a static-site build importing the module), a plain class stands in.
 const Base = globalThis.HTMLElement ?? class {};
@@ -62,11 +75,7 @@ export class Metaballs2d extends Base {
   frameMs = 0;
   // The stepper: the step shown (null when it is off), whether it plays, steps per second, the time
   // carried towards the next step, and the panel's update.
-  #step = null;
-  #stepping = false;
-  #stepSpeed = 4;
-  #stepCarry = 0;
-  #panel = null;
+  #stepper;
 
   constructor() {
     super();
@@ -79,6 +88,11 @@ export class Metaballs2d extends Base {
     this.#canvas.addEventListener('pointermove', (e) => this.#move(e));
     for (const end of ['pointerup', 'pointercancel']) this.#canvas.addEventListener(end, () => this.#drop());
     this.#canvas.addEventListener('dblclick', (e) => this.#addOrRemove(e));
+    this.#stepper = new SquareStepper(root.querySelector('.side'), {
+      cells: () => this.#settings.resolution,
+      result: () => this.#result ?? this.#draw(),
+      redraw: () => this.#schedule(),
+    });
   }
 
   connectedCallback() {
@@ -100,10 +114,10 @@ export class Metaballs2d extends Base {
       else if (name === 'slice-of') this.#schedule();
       else if (name === 'march') this.#openStepper(text);
       else if (name === 'controls') this.#buildPanel(text);
-      else if (name === 'circles') this.#given = text === null ? null : parseCircles(text);
-      else if (name === 'levels') this.#settings.levels = text === null ? [] : readLevels(text, rowOf('iso'));
-      else if (name === 'show') this.#settings.shown = text === null ? DEFAULT_SHOWN : readShown(text);
-      else this.#settings[name] = text === null ? rowOf(name).value : readSetting(rowOf(name), text);
+      else if (name === 'circles') this.#given = text === null ? null : readValue(name, text);
+      else if (name === 'levels') this.#settings.levels = text === null ? [] : readValue(name, text);
+      else if (name === 'show') this.#settings.shown = text === null ? DEFAULT_SHOWN : readValue(name, text);
+      else this.#settings[name] = text === null ? rowOf(name).value : readValue(name, text);
       if (['circles', 'spheres', 'seed'].includes(name)) this.#circles = null;
       // A square named i,j stays that square on a new grid.
       if (name === 'resolution' && this.hasAttribute('march')) this.#openStepper(this.getAttribute('march'));
@@ -128,8 +142,14 @@ export class Metaballs2d extends Base {
     this.#panelUpdate = planePanel(host, names, rowOf, {
       get: (name) => this.#valueText(name),
       set: (name, value) => this.#setInside(name, value),
-      action: () => this.#setInside('march', this.hasAttribute('march') ? null : '0'),
+      action: (name) => {
+        if (name === 'step-through') this.#setInside('march', this.hasAttribute('march') ? null : '0');
+        else if (name === 'save-scene') this.downloadScene();
+        else if (name === 'load-scene') host.querySelector('input[type=file]').click();
+      },
     });
+    const file = host.querySelector('input[type=file]');
+    file?.addEventListener('change', () => this.#loadFile(file));
     this.#panelUpdate();
   }
 
@@ -147,6 +167,39 @@ export class Metaballs2d extends Base {
     if (text === null) this.removeAttribute(name);
     else this.setAttribute(name, text);
     this.dispatchEvent(new CustomEvent('metaballs-change', { detail: { attribute: name, value: text }, bubbles: true, composed: true }));
+  }
+
+  // ---------------------------------------------------------------- scene files
+
+  /** The circles and every setting of the picture, as the 2D figure's scene document (JSON text). */
+  saveScene() {
+    const settings = Object.fromEntries(SCENE.map((name) => [name, name === 'levels' ? this.#settings.levels
+      : name === 'show' ? this.#settings.shown.join(',') : this.#settings[name]]));
+    return writeScene(this.circleList, settings);
+  }
+
+  /** Loads a scene document; throws with what is wrong, changing nothing. */
+  loadScene(text) {
+    const { circles, settings } = readScene(text, SCENE, (name, value) => readValue(name, value));
+    this.#setInside('circles', circles);
+    for (const [name, value] of settings) this.#setInside(name, value);
+  }
+
+  /** Downloads the scene document. */
+  downloadScene() {
+    download(this.saveScene(), 'metaballs-2d-scene.json');
+  }
+
+  async #loadFile(input) {
+    const file = input.files?.[0];
+    if (!file) return;
+    const text = await file.text();
+    input.value = '';
+    try {
+      this.loadScene(text);
+    } catch (error) {
+      this.#say(`${file.name}: ${error.message}; the scene is unchanged`);
+    }
   }
 
   // A double-click adds a circle where there is none, and removes the one under the pointer.
@@ -204,53 +257,21 @@ export class Metaballs2d extends Base {
   play() { this.removeAttribute('paused'); this.#settings.paused = false; this.#schedule(); }
 
   /** The stepper's step (square j · resolution + i, in the march's order), or null when it is off. */
-  get stepIndex() { return this.#step; }
+  get stepIndex() { return this.#stepper.step; }
 
   /** Opens the stepper at step `k` (clamped to the march), or moves it there. */
-  stepTo(k) {
-    const steps = this.#settings.resolution ** 2;
-    this.#step = Math.max(0, Math.min(steps, Math.round(k)));
-    this.#ensurePanel();
-    this.#schedule();
-  }
+  stepTo(k) { this.#stepper.to(k); }
 
-  stepForward() { this.stepTo((this.#step ?? -1) + 1); }
+  stepForward() { this.stepTo((this.#stepper.step ?? -1) + 1); }
 
-  stepBack() { this.stepTo((this.#step ?? 1) - 1); }
+  stepBack() { this.stepTo((this.#stepper.step ?? 1) - 1); }
 
   /** Moves the stepper to the next square the contour crosses (stays at the end when there is none). */
-  nextCrossed() {
-    const result = this.#result ?? this.#draw();
-    const found = nextCrossed(result.cases, this.#step ?? -1);
-    this.stepTo(found < 0 ? this.#settings.resolution ** 2 : found);
-  }
+  nextCrossed() { this.#stepper.nextCrossed(); }
 
   #openStepper(text) {
-    if (text === null) {
-      this.#step = null;
-      this.#stepping = false;
-      this.shadowRoot.querySelector('.side').replaceChildren();
-      this.#panel = null;
-      return;
-    }
-    const cells = this.#settings.resolution;
-    const parts = text.split(',').map((t) => t.trim()).filter(Boolean).map(Number);
-    const k = parts.length === 0 ? 0 : parts.length === 1 ? parts[0] : parts[1] * cells + parts[0];
-    const ok = parts.every(Number.isInteger) && parts.length <= 2
-      && (parts.length < 2 || (parts[0] >= 0 && parts[0] < cells && parts[1] >= 0 && parts[1] < cells)) && k >= 0 && k <= cells * cells;
-    if (!ok) throw new Error(`march: "${text}" is not a square i,j of the ${cells} × ${cells} grid, nor a step from 0 to ${cells * cells}`);
-    this.stepTo(k);
-  }
-
-  #ensurePanel() {
-    if (this.#panel) return;
-    this.#panel = stepperPanel(this.shadowRoot.querySelector('.side'), {
-      back: () => { this.#stepping = false; this.stepBack(); },
-      forward: () => { this.#stepping = false; this.stepForward(); },
-      next: () => { this.#stepping = false; this.nextCrossed(); },
-      play: () => { this.#stepping = !this.#stepping; this.#stepCarry = 0; this.#schedule(); },
-      speed: (perSecond) => { this.#stepSpeed = perSecond; },
-    }, SQUARE_TABLE);
+    if (text === null) this.#stepper.close();
+    else this.stepTo(readStep(text, this.#settings.resolution));
   }
 
   pause() { this.#settings.paused = true; }
@@ -278,42 +299,20 @@ export class Metaballs2d extends Base {
    * The <metaballs-view> whose slice plane this figure follows (`slice-of`: its id), or null. It must
    * have a `slice` (`z:0.2`): the plane is then sampled as that figure samples it.
    */
-  get following() {
-    const id = this.getAttribute('slice-of');
-    const view = id ? this.getRootNode().getElementById?.(id) ?? document.getElementById(id) : null;
-    return view && view.localName === 'metaballs-view' && /^[xyz]:/.test(view.slice ?? '') ? view : null;
-  }
+  get following() { return followed(this, this.getAttribute('slice-of')); }
 
   /** What is sampled: this figure's circles, or the followed figure's slice plane and its settings. */
   #source() {
     const s = this.#settings;
     const view = this.following;
-    if (!view) {
-      return {
-        values: sampleField(this.circleList, s.resolution), cells: s.resolution, iso: s.iso,
-        options: { placement: s.interpolation, saddle: s.saddle }, circles: this.circleList,
-      };
-    }
-    const cells = Number(view.resolution);
-    const [axisName, position] = view.slice.split(':');
-    const axis = 'xyz'.indexOf(axisName);
-    // The plane as the 3D figure rounds it to its grid.
-    const plane = Math.min(cells, Math.round((Number(position) + 1) * 0.5 * cells));
+    if (view) return sliceSource(view);
     return {
-      values: sampleSlice(view.sphereList, cells, axis, plane, view.blend), cells, iso: Number(view.iso),
-      options: { placement: view.interpolation, saddle: view.saddle }, circles: [],
+      values: sampleField(this.circleList, s.resolution), cells: s.resolution, iso: s.iso,
+      options: { placement: s.interpolation, saddle: s.saddle }, circles: this.circleList,
     };
   }
 
   #lastFollowed = null;
-
-  // What the followed figure's samples depend on, as text; null when none is followed.
-  #followedKey() {
-    const view = this.following;
-    if (!view) return null;
-    const spheres = view.sphereList.map((b) => [...b.center, b.radius, b.charge].join(',')).join(';');
-    return [spheres, view.slice, view.resolution, view.iso, view.saddle, view.interpolation, view.blend].join('|');
-  }
 
   /** The samples drawn: `{ cells, values }`, (cells + 1)² values row by row from the lower left. */
   samples() {
@@ -325,7 +324,7 @@ export class Metaballs2d extends Base {
     const s = this.#settings;
     const { values, cells, iso, options, circles } = this.#source();
     return picture({
-      values, cells, iso, levels: s.levels, circles, shown: s.shown, options, size, theme: s.theme, step: this.#step,
+      values, cells, iso, levels: s.levels, circles, shown: s.shown, options, size, theme: s.theme, step: this.#stepper.step,
     });
   }
 
@@ -344,15 +343,7 @@ export class Metaballs2d extends Base {
     const { shapes, result } = this.#picture(size);
     paint(this.#canvas.getContext('2d'), shapes, pixels / size);
     this.#result = result;
-    if (this.#panel) {
-      const cells = this.#settings.resolution;
-      const k = this.#step;
-      const square = k < cells * cells ? result.square(k % cells, Math.floor(k / cells)) : null;
-      this.#panel({
-        playing: this.#stepping, lit: square?.case ?? null,
-        account: squareAccount(k, cells * cells, square, this.#settings.iso),
-      });
-    }
+    this.#stepper.show(result, this.#settings.iso);
     this.frameMs = performance.now() - start;
     return result;
   }
@@ -373,32 +364,17 @@ export class Metaballs2d extends Base {
     const dt = this.#last ? Math.min(0.05, (now - this.#last) / 1000) : 0;
     this.#last = now;
     // While the stepper is open the circles hold still, and a playing stepper advances.
-    const moving = !this.#settings.paused && !this.#drag && this.#step === null && !this.hasAttribute('slice-of');
-    if (moving) this.#moveCircles(dt * this.#settings.speed);
-    if (this.#stepping && this.#step !== null) {
-      this.#stepCarry += dt * this.#stepSpeed;
-      const steps = Math.floor(this.#stepCarry);
-      this.#stepCarry -= steps;
-      this.#step = Math.min(this.#settings.resolution ** 2, this.#step + steps);
-      if (this.#step >= this.#settings.resolution ** 2) this.#stepping = false;
-    }
+    const moving = !this.#settings.paused && !this.#drag && this.#stepper.step === null && !this.hasAttribute('slice-of');
+    if (moving) moveCircles(this.circleList, dt * this.#settings.speed);
+    this.#stepper.advance(dt);
     // A figure following a 3D figure's slice looks every frame (its spheres move), and draws when what
     // it samples has changed.
-    const followed = this.#followedKey();
-    if (followed === null || followed !== this.#lastFollowed || moving || this.#stepping) this.#draw();
-    this.#lastFollowed = followed;
-    if (moving || this.#stepping || this.hasAttribute('slice-of')) this.#request();
+    const view = this.following;
+    const key = view && sliceKey(view);
+    if (key === null || key !== this.#lastFollowed || moving || this.#stepper.playing) this.#draw();
+    this.#lastFollowed = key;
+    if (moving || this.#stepper.playing || this.hasAttribute('slice-of')) this.#request();
     else this.#last = 0;
-  }
-
-  // One Euler step, the walls elastic.
-  #moveCircles(dt) {
-    for (const c of this.circleList) {
-      c.x += c.vx * dt;
-      c.y += c.vy * dt;
-      if (Math.abs(c.x) > 1 - c.r) { c.vx = -Math.sign(c.x) * Math.abs(c.vx); c.x = Math.sign(c.x) * (1 - c.r); }
-      if (Math.abs(c.y) > 1 - c.r) { c.vy = -Math.sign(c.y) * Math.abs(c.vy); c.y = Math.sign(c.y) * (1 - c.r); }
-    }
   }
 
   #toBox(event) {
@@ -414,11 +390,8 @@ export class Metaballs2d extends Base {
     this.#canvas.setPointerCapture?.(event.pointerId);
   }
 
-  // The circle under a point of the box (within a finger's width of a small one), or undefined.
-  #circleAt(x, y) {
-    const near = 12 / Math.max(1, this.#size) * 2;
-    return this.circleList.find((c) => Math.hypot(c.x - x, c.y - y) < Math.max(c.r, near));
-  }
+  // The circle under a point of the box (within a finger's width, 12 pixels, of a small one).
+  #circleAt(x, y) { return circleAt(this.circleList, x, y, 24 / Math.max(1, this.#size)); }
 
   #move(event) {
     if (!this.#drag) return;

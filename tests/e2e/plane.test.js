@@ -264,3 +264,43 @@ test('the 2D page: each panel control changes the picture and goes into the link
   assert.deepEqual(errors, []);
   assert.deepEqual(again.errors, []);
 });
+
+test('2D scene files: saved and loaded back the same figure; a bad file changes nothing and says what is wrong', async () => {
+  const { page, errors } = await open('squares.html?circles=0.58,0.18,0.29;0.08,-0.37,-0.25;-0.5,-0.14,0.22&iso=1.2&resolution=12&saddle=decider&levels=0.8,2&paused=true');
+  const el = page.locator('metaballs-2d');
+  await page.waitForFunction(() => document.querySelector('metaballs-2d')?.frameMs > 0);
+  const pixels = () => page.$eval('metaballs-2d', (e) => e.shadowRoot.querySelector('canvas').toDataURL());
+  const saved = await page.$eval('metaballs-2d', (e) => e.saveScene());
+  const doc = JSON.parse(saved);
+  assert.equal(doc.format, 'metaballs-2d-scene');
+  assert.deepEqual(doc.circles[1], { center: [0.08, -0.37], radius: 0.25, charge: -1 });
+  assert.equal(doc.settings.saddle, 'decider');
+  assert.deepEqual(doc.settings.levels, [0.8, 2]);
+  const before = await pixels();
+  // Saved from the panel: the download is the same document.
+  await el.locator('summary').click();
+  const [download] = await Promise.all([page.waitForEvent('download'), el.locator('button[data-action="save-scene"]').click()]);
+  assert.equal(download.suggestedFilename(), 'metaballs-2d-scene.json');
+  // Changed, then loaded back from the panel's file chooser.
+  await page.$eval('metaballs-2d', (e) => { e.setAttribute('iso', '0.7'); e.setAttribute('circles', '0,0,0.4'); e.setAttribute('saddle', 'table'); });
+  await drawn(page);
+  assert.notEqual(await pixels(), before);
+  const [chooser] = await Promise.all([page.waitForEvent('filechooser'), el.locator('button[data-action="load-scene"]').click()]);
+  await chooser.setFiles({ name: 'scene.json', mimeType: 'application/json', buffer: Buffer.from(saved) });
+  await page.waitForFunction(() => document.querySelector('metaballs-2d').getAttribute('saddle') === 'decider');
+  await drawn(page);
+  assert.equal(await pixels(), before, 'the scene file gives the same picture back');
+  // Bad documents: each refused with what is wrong, the figure unchanged.
+  for (const [bad, said] of [
+    ['{"format": "metaballs-2d-scene", "version": 1, "circles": [{"center": [3, 0], "radius": 0.2}]}', /circles\[0\]\.center \(3, 0\) is outside the box/],
+    ['{"format": "metaballs-2d-scene", "version": 1, "circles": [{"center": [0, 0], "radius": 0.2}], "settings": {"iso": 99}}', /settings\.iso: "99" is not a number from 0\.05 to 20/],
+    ['{"format": "metaballs-2d-scene", "version": 2, "circles": []}', /version 2/],
+    ['not json', /not JSON/],
+  ]) {
+    const message = await page.$eval('metaballs-2d', (e, text) => { try { e.loadScene(text); return 'loaded'; } catch (error) { return error.message; } }, bad);
+    assert.match(message, said);
+  }
+  await drawn(page);
+  assert.equal(await pixels(), before);
+  assert.deepEqual(errors, []);
+});

@@ -26,6 +26,7 @@ pub const PLANE_CONTROLS: &[&str] = &[
     "theme",
     "step-through",
     "circles",
+    "scene",
 ];
 
 /// The rows of the parameter table the 2D figure takes as the 3D figure does.

@@ -45,6 +45,10 @@ export function planePanel(host, names, rowOf, figure) {
     }
     if (name === 'step-through') return '<span></span><button type="button" class="wide" data-action="step-through">Step through the march</button>';
     if (name === 'circles') return '<span></span><span class="wide">Double-click to add a circle or remove one; drag to move it.</span>';
+    if (name === 'scene') {
+      return '<span class="label">Scene</span><span class="checks"><button type="button" data-action="save-scene">Save scene</button>'
+        + '<button type="button" data-action="load-scene">Load scene…</button><input type="file" accept=".json,application/json" hidden></span>';
+    }
     if (row.kind === 'boolean') return `<label for="${id}">${html(row.label)}</label><input type="checkbox" id="${id}" data-name="${name}"><span></span>`;
     if (row.kind === 'choice') {
       return `<label for="${id}">${html(row.label)}</label><select id="${id}" data-name="${name}" class="wide">${row.words.map((w) => `<option>${w}</option>`).join('')}</select>`;

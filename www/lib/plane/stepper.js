@@ -32,3 +32,17 @@ export function segmentsBefore(result, cells, k) {
   }
   return out;
 }
+
+/**
+ * The step `march` names on a grid of `cells` per axis: a square `i,j`, a step number, or the first
+ * square for empty text. Throws an Error saying what is accepted.
+ */
+export function readStep(text, cells) {
+  const parts = text.split(',').map((t) => t.trim()).filter(Boolean).map(Number);
+  const k = parts.length === 0 ? 0 : parts.length === 1 ? parts[0] : parts[1] * cells + parts[0];
+  const inGrid = parts.length < 2 || parts.every((v) => v >= 0 && v < cells);
+  if (!parts.every(Number.isInteger) || parts.length > 2 || !inGrid || k < 0 || k > cells * cells) {
+    throw new Error(`march: "${text}" is not a square i,j of the ${cells} × ${cells} grid, nor a step from 0 to ${cells * cells}`);
+  }
+  return k;
+}
