@@ -12,13 +12,24 @@ const MODULE: &str = "www/metaballs-2d.js";
 const METHODS: &[(&str, &str, &str)] = &[
     ("contours", "(): object", "The contour at the iso level as data: rings, saddles, crossings and cases."),
     ("toSVG", "(size?: number): string", "The picture as an SVG document (vector)."),
-    ("samples", "(): { cells: number; values: number[] }", "The samples drawn, row by row from the lower left."),
+    (
+        "samples",
+        "(): { cells: number; values: number[] }",
+        "The samples drawn, row by row from the lower left.",
+    ),
     ("play", "(): void", "Sets the circles moving."),
     ("pause", "(): void", "Holds the circles still."),
     ("stepTo", "(k: number): void", "Opens the step-through at step k, or moves it there."),
     ("stepForward", "(): void", "One square forward."),
     ("stepBack", "(): void", "One square back."),
     ("nextCrossed", "(): void", "The next square the contour crosses."),
+    ("saveScene", "(): string", "The circles and every setting of the picture as a scene document (JSON)."),
+    (
+        "loadScene",
+        "(text: string): void",
+        "Loads a scene document; throws with what is wrong, changing nothing.",
+    ),
+    ("downloadScene", "(): void", "Downloads the scene document."),
 ];
 
 /// The module declaring `<metaballs-2d>`.
