@@ -10,7 +10,7 @@
 import { PLANE_TABLE } from './lib/attributes.js';
 import { DEFAULT_SHOWN, paint, picture, toSvg } from './lib/plane/picture.js';
 import { PANEL_CONTROLS, planePanel, readControls } from './lib/plane/panel.js';
-import { circleAt, circlesText, moveCircles, parseCircles, seededCircles } from './lib/plane/circles.js';
+import { addOrRemove, circleAt, circlesText, moveCircles, parseCircles, seededCircles } from './lib/plane/circles.js';
 import { readLevels, readSetting, readShown } from './lib/plane/settings.js';
 import { download, readScene, writeScene } from './lib/plane/scene-file.js';
 import { followed, sliceKey, sliceSource } from './lib/plane/slice-source.js';
@@ -29,7 +29,16 @@ const STYLE = `
 canvas { display: block; width: 100%; height: 100%; touch-action: none; cursor: crosshair; border-radius: 6px; }
 #notice { position: absolute; left: 8px; right: 8px; bottom: 8px; padding: 6px 8px; border-radius: 6px;
   background: #3b2f12; border: 1px solid #8a6a1f; color: #ffe2a3; }
-#notice[hidden] { display: none; }`;
+#notice[hidden] { display: none; }
+/* In print: the picture as vector art (kept while the figure is still, and made before printing) in
+   place of the canvas, without the controls or the step-through's panel. */
+.print { display: none; position: absolute; inset: 0; }
+.print svg { display: block; width: 100%; height: 100%; }
+@media print {
+  :host([march]) { display: block; }
+  .print:not(:empty) { display: block; }
+  .print:not(:empty) + canvas, .controls, .side, #notice { display: none; }
+}`;
 
 // The figure's settings, each declared once: the rows of the parameter table it shares with
 // <metaballs-view> and its own (src/scene/params/plane.rs, written into attributes.js).
@@ -80,7 +89,7 @@ export class Metaballs2d extends Base {
   constructor() {
     super();
     const root = this.attachShadow({ mode: 'open' });
-    root.innerHTML = `<style>${STYLE}</style><div class="figure"><canvas part="canvas" role="img"></canvas>`
+    root.innerHTML = `<style>${STYLE}</style><div class="figure"><div class="print"></div><canvas part="canvas" role="img"></canvas>`
       + '<div id="notice" part="notice" role="status" hidden></div><div class="controls"></div></div><div class="side"></div>';
     this.#canvas = root.querySelector('canvas');
     this.#notice = root.getElementById('notice');
@@ -89,13 +98,23 @@ export class Metaballs2d extends Base {
     for (const end of ['pointerup', 'pointercancel']) this.#canvas.addEventListener(end, () => this.#drop());
     this.#canvas.addEventListener('dblclick', (e) => this.#addOrRemove(e));
     this.#stepper = new SquareStepper(root.querySelector('.side'), {
-      cells: () => this.#settings.resolution,
+      cells: () => this.#cells(),
       result: () => this.#result ?? this.#draw(),
       redraw: () => this.#schedule(),
     });
   }
 
+  // The picture for print, as vector art: made while the figure is still, and before printing.
+  #forPrint = () => {
+    const print = this.shadowRoot.querySelector('.print');
+    print.innerHTML = this.toSVG(Math.max(1, this.#size));
+    print.firstElementChild?.setAttribute('aria-hidden', 'true');
+  };
+
+  #printTimer = 0;
+
   connectedCallback() {
+    globalThis.addEventListener('beforeprint', this.#forPrint);
     this.#observer = new ResizeObserver(() => this.#redraw());
     this.#observer.observe(this);
     this.#label();
@@ -103,6 +122,8 @@ export class Metaballs2d extends Base {
   }
 
   disconnectedCallback() {
+    globalThis.removeEventListener('beforeprint', this.#forPrint);
+    clearTimeout(this.#printTimer);
     this.#observer?.disconnect();
     cancelAnimationFrame(this.#frame);
     this.#frame = 0;
@@ -192,11 +213,9 @@ export class Metaballs2d extends Base {
 
   async #loadFile(input) {
     const file = input.files?.[0];
-    if (!file) return;
-    const text = await file.text();
     input.value = '';
     try {
-      this.loadScene(text);
+      if (file) this.loadScene(await file.text());
     } catch (error) {
       this.#say(`${file.name}: ${error.message}; the scene is unchanged`);
     }
@@ -205,18 +224,8 @@ export class Metaballs2d extends Base {
   // A double-click adds a circle where there is none, and removes the one under the pointer.
   #addOrRemove(event) {
     const [x, y] = this.#toBox(event);
-    const list = this.circleList;
-    const hit = this.#circleAt(x, y);
-    if (hit) {
-      if (list.length === 1) {
-        this.#say('circles: the last circle stays (the figure needs one)');
-        return;
-      }
-      list.splice(list.indexOf(hit), 1);
-    } else {
-      list.push({ x, y, r: 0.2, charge: 1, vx: 0, vy: 0 });
-    }
-    this.#setInside('circles', circlesText(list));
+    if (addOrRemove(this.circleList, x, y, this.#near())) this.#setInside('circles', circlesText(this.circleList));
+    else this.#say('circles: the last circle stays (the figure needs one)');
   }
 
   #drop() {
@@ -271,7 +280,7 @@ export class Metaballs2d extends Base {
 
   #openStepper(text) {
     if (text === null) this.#stepper.close();
-    else this.stepTo(readStep(text, this.#settings.resolution));
+    else this.stepTo(readStep(text, this.#cells()));
   }
 
   pause() { this.#settings.paused = true; }
@@ -284,7 +293,7 @@ export class Metaballs2d extends Base {
   contours() {
     const r = this.#result ?? this.#draw();
     return {
-      iso: this.#settings.iso, cells: this.#settings.resolution, rings: r.rings, saddles: r.saddles,
+      iso: this.following ? Number(this.following.iso) : this.#settings.iso, cells: this.#cells(), rings: r.rings, saddles: r.saddles,
       crossings: r.crossings, cases: Array.from(r.cases),
     };
   }
@@ -313,6 +322,12 @@ export class Metaballs2d extends Base {
   }
 
   #lastFollowed = null;
+
+  // Squares per axis of the grid drawn: this figure's, or the followed figure's.
+  #cells() {
+    const view = this.following;
+    return view ? Number(view.resolution) : this.#settings.resolution;
+  }
 
   /** The samples drawn: `{ cells, values }`, (cells + 1)² values row by row from the lower left. */
   samples() {
@@ -375,6 +390,9 @@ export class Metaballs2d extends Base {
     this.#lastFollowed = key;
     if (moving || this.#stepper.playing || this.hasAttribute('slice-of')) this.#request();
     else this.#last = 0;
+    // Still (or following a slice): the picture for print once it has settled.
+    clearTimeout(this.#printTimer);
+    if (!moving && !this.#stepper.playing) this.#printTimer = setTimeout(this.#forPrint, 300);
   }
 
   #toBox(event) {
@@ -384,14 +402,14 @@ export class Metaballs2d extends Base {
 
   #grab(event) {
     const [x, y] = this.#toBox(event);
-    const found = this.#circleAt(x, y);
+    const found = circleAt(this.circleList, x, y, this.#near());
     if (!found || this.hasAttribute('slice-of')) return;
     this.#drag = found;
     this.#canvas.setPointerCapture?.(event.pointerId);
   }
 
-  // The circle under a point of the box (within a finger's width, 12 pixels, of a small one).
-  #circleAt(x, y) { return circleAt(this.circleList, x, y, 24 / Math.max(1, this.#size)); }
+  // A finger's width (12 pixels) in the box's units: a small circle is found within it.
+  #near() { return 24 / Math.max(1, this.#size); }
 
   #move(event) {
     if (!this.#drag) return;

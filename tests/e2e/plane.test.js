@@ -5,6 +5,10 @@
 
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
 import { useServerAndBrowser, openClosedAfterEach, differingFraction, pixelStats } from './helpers.js';
 
 useServerAndBrowser();
@@ -244,7 +248,10 @@ test('the 2D page: each panel control changes the picture and goes into the link
   await again.page.waitForFunction(() => document.querySelector('metaballs-2d')?.frameMs > 0);
   await again.page.waitForTimeout(250);
   const pixels = (p) => p.$eval('metaballs-2d', (e) => e.shadowRoot.querySelector('canvas').toDataURL());
-  assert.equal(await pixels(again.page), await pixels(page), 'the link restores the picture');
+  // The same picture (to within the canvas's antialiasing of a picture drawn once against one drawn over).
+  const png = async (p) => Buffer.from((await pixels(p)).split(',')[1], 'base64');
+  const differing = await differingFraction(page, await png(page), await png(again.page));
+  assert.ok(differing < 0.002, `the link restores the picture: ${(differing * 100).toFixed(3)} % of the pixels differ`);
   // Double-click on empty space adds a circle; on a circle, removes it.
   const box = await el.locator('canvas').boundingBox();
   const at = (x, y) => [box.x + (x + 1) / 2 * box.width, box.y + (1 - y) / 2 * box.height];
@@ -302,5 +309,29 @@ test('2D scene files: saved and loaded back the same figure; a bad file changes 
   }
   await drawn(page);
   assert.equal(await pixels(), before);
+  assert.deepEqual(errors, []);
+});
+
+test('printed, the 2D figure is vector art: its values are text in the PDF, its controls and step-through left out', async () => {
+  const { page, errors } = await open('squares.html?circles=0.58,0.18,0.29;0.08,-0.37,0.25;-0.5,-0.14,0.22&iso=1.2&resolution=12&paused=true&march=0,3');
+  await page.waitForFunction(() => document.querySelector('metaballs-2d')?.frameMs > 0);
+  // Still: its picture for print is made once it has settled.
+  await page.waitForFunction(() => document.querySelector('metaballs-2d').shadowRoot.querySelector('.print svg'));
+  await page.emulateMedia({ media: 'print' });
+  const shown = await page.$eval('metaballs-2d', (e) => ['.print', 'canvas', '.controls', '.side']
+    .map((s) => getComputedStyle(e.shadowRoot.querySelector(s)).display));
+  assert.deepEqual(shown, ['block', 'none', 'none', 'none']);
+  const directory = mkdtempSync(path.join(os.tmpdir(), 'metaballs-2d-print-'));
+  try {
+    const pdf = path.join(directory, 'squares.pdf');
+    writeFileSync(pdf, await page.pdf({ format: 'A4', printBackground: true }));
+    const text = execFileSync('pdftotext', [pdf, '-']).toString();
+    const values = await page.$eval('metaballs-2d', (e) => e.samples().values.filter((v) => v > 0.3 && v < 10).map((v) => v.toFixed(2)));
+    const found = values.filter((v) => text.includes(v));
+    assert.ok(found.length >= values.length * 0.9, `${found.length} of ${values.length} sample values are text in the PDF`);
+    assert.ok(!text.includes('next crossed'), 'the step-through panel is not printed');
+  } finally {
+    rmSync(directory, { recursive: true, force: true });
+  }
   assert.deepEqual(errors, []);
 });

@@ -59,3 +59,15 @@ export function moveCircles(circles, dt) {
 export function circleAt(circles, x, y, near) {
   return circles.find((c) => Math.hypot(c.x - x, c.y - y) < Math.max(c.r, near));
 }
+
+/**
+ * Removes the circle under (x, y) (see `circleAt`), or adds one of radius 0.2 there where there is
+ * none. Returns false, changing nothing, where it would remove the last circle.
+ */
+export function addOrRemove(circles, x, y, near) {
+  const hit = circleAt(circles, x, y, near);
+  if (hit && circles.length === 1) return false;
+  if (hit) circles.splice(circles.indexOf(hit), 1);
+  else circles.push({ x, y, r: 0.2, charge: 1, vx: 0, vy: 0 });
+  return true;
+}
