@@ -17,6 +17,7 @@ const open = openClosedAfterEach();
 // The lecture's two 2D figures on a page of their own (the lecture itself is printed and checked in
 // course.test.js).
 const PAGE = 'tests/e2e/fixtures/plane.html';
+const NO_WEBGPU = () => { delete Navigator.prototype.gpu; };
 const NO_WEBGPU_OR_WEBGL = () => {
   delete Navigator.prototype.gpu;
   const getContext = HTMLCanvasElement.prototype.getContext;
@@ -39,12 +40,12 @@ async function lecture(options) {
   return opened;
 }
 
-test('the lecture\'s 2D figure draws its samples, saddles and contour, with and without a GPU', async () => {
-  for (const initScript of [undefined, NO_WEBGPU_OR_WEBGL]) {
+test('the lecture\'s 2D figure draws its samples, saddles and contour with WebGPU, with WebGL2 only and with neither', async () => {
+  // Each browser: what it takes away, and what is left (WebGPU, WebGL2).
+  for (const [initScript, left] of [[undefined, [true, true]], [NO_WEBGPU, [false, true]], [NO_WEBGPU_OR_WEBGL, [false, false]]]) {
     const { page, errors } = await lecture({ initScript });
-    if (initScript) {
-      assert.equal(await page.evaluate(() => 'gpu' in navigator || document.createElement('canvas').getContext('webgl2') !== null), false);
-    }
+    const has = await page.evaluate(() => ['gpu' in navigator, document.createElement('canvas').getContext('webgl2') !== null]);
+    assert.deepEqual(has, left);
     const result = await contours(page);
     // The decider joins the three circles through two saddle squares: one contour.
     assert.equal(result.rings.length, 1);
