@@ -47,6 +47,10 @@ const rowOf = (name) => ROWS.get(name);
 // The settings a scene document holds (beside the circles).
 const SCENE = PLANE_TABLE.filter((row) => row.scene && row.name !== 'circles').map((row) => row.name);
 
+// Settings read by a part of the figure of their own (the step-through, the panel, the description and
+// the figure followed), not by `readValue`.
+const OWN_READERS = ['march', 'controls', 'alt', 'slice-of'];
+
 /** A setting's value read from text as the figure reads it; throws with what is accepted. */
 function readValue(name, text) {
   if (name === 'circles') return parseCircles(text);
@@ -101,6 +105,7 @@ export class Metaballs2d extends Base {
       cells: () => this.#cells(),
       result: () => this.#result ?? this.#draw(),
       redraw: () => this.#schedule(),
+      moved: (k) => this.#reflectStep(k),
     });
   }
 
@@ -185,6 +190,16 @@ export class Metaballs2d extends Base {
   // A change made in the figure (its panel, a gesture): set as the attribute, so that it is checked and
   // reflected like one given by the page, and announced for the page's link.
   #setInside(name, text) {
+    // A value the figure would refuse is not set: the notice says why, the panel shows the value kept.
+    if (text !== null && !OWN_READERS.includes(name)) {
+      try {
+        readValue(name, text);
+      } catch (error) {
+        this.#say(`${error.message}; kept the previous value`);
+        this.#panelUpdate?.();
+        return;
+      }
+    }
     if (text === null) this.removeAttribute(name);
     else this.setAttribute(name, text);
     this.dispatchEvent(new CustomEvent('metaballs-change', { detail: { attribute: name, value: text }, bubbles: true, composed: true }));
@@ -269,7 +284,19 @@ export class Metaballs2d extends Base {
   get stepIndex() { return this.#stepper.step; }
 
   /** Opens the stepper at step `k` (clamped to the march), or moves it there. */
-  stepTo(k) { this.#stepper.to(k); }
+  stepTo(k) {
+    this.#stepper.to(k);
+    this.#reflectStep(this.#stepper.step);
+  }
+
+  // The step as the `march` attribute (`i,j`, or the step number at the end), so that links carry it.
+  #reflectStep(k) {
+    const cells = this.#cells();
+    const text = k < cells * cells ? `${k % cells},${Math.floor(k / cells)}` : String(k);
+    const given = this.getAttribute('march');
+    const same = given !== null && (() => { try { return readStep(given, cells) === k; } catch { return false; } })();
+    if (!same) this.#setInside('march', text);
+  }
 
   stepForward() { this.stepTo((this.#stepper.step ?? -1) + 1); }
 
@@ -279,8 +306,8 @@ export class Metaballs2d extends Base {
   nextCrossed() { this.#stepper.nextCrossed(); }
 
   #openStepper(text) {
-    if (text === null) this.#stepper.close();
-    else this.stepTo(readStep(text, this.#cells()));
+    if (text === null || /^\s*(off|none)\s*$/i.test(text)) this.#stepper.close();
+    else this.#stepper.to(readStep(text, this.#cells()));
   }
 
   pause() { this.#settings.paused = true; }
@@ -358,12 +385,12 @@ export class Metaballs2d extends Base {
     const { shapes, result } = this.#picture(size);
     paint(this.#canvas.getContext('2d'), shapes, pixels / size);
     this.#result = result;
-    this.#stepper.show(result, this.#settings.iso);
+    this.#stepper.show(result, this.following ? Number(this.following.iso) : this.#settings.iso);
     this.frameMs = performance.now() - start;
     return result;
   }
 
-  // A change to draw: the next frame draws whatever it follows.
+  // A change to draw: the next frame draws (`#lastFollowed` set apart from any key).
   #schedule() {
     this.#lastFollowed = undefined;
     this.#request();
@@ -385,14 +412,16 @@ export class Metaballs2d extends Base {
     // A figure following a 3D figure's slice looks every frame (its spheres move), and draws when what
     // it samples has changed.
     const view = this.following;
-    const key = view && sliceKey(view);
-    if (key === null || key !== this.#lastFollowed || moving || this.#stepper.playing) this.#draw();
+    const key = view ? sliceKey(view) : null;
+    const changing = moving || this.#stepper.playing;
+    const drawing = changing || key !== this.#lastFollowed;
+    if (drawing) this.#draw();
     this.#lastFollowed = key;
-    if (moving || this.#stepper.playing || this.hasAttribute('slice-of')) this.#request();
+    if (changing || this.hasAttribute('slice-of')) this.#request();
     else this.#last = 0;
-    // Still (or following a slice): the picture for print once it has settled.
-    clearTimeout(this.#printTimer);
-    if (!moving && !this.#stepper.playing) this.#printTimer = setTimeout(this.#forPrint, 300);
+    // The picture for print, once a changed picture has settled.
+    if (drawing) clearTimeout(this.#printTimer);
+    if (drawing && !changing) this.#printTimer = setTimeout(this.#forPrint, 300);
   }
 
   #toBox(event) {

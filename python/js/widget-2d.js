@@ -4,20 +4,11 @@
 // WebAssembly, so nothing is fetched.
 
 import '../../www/metaballs-2d.js';
+import { quietly } from './quietly.js';
 import { PLANE_TABLE } from '../../www/lib/attributes.js';
 
 // What Python may ask the figure, by the element's method names.
 const CALLS = new Set(['contours', 'toSVG']);
-
-// Runs a model call the host may not offer (MyST's static pages throw from some); says whether it ran.
-function quietly(call) {
-  try {
-    call();
-    return true;
-  } catch {
-    return false;
-  }
-}
 
 // A trait's value as the attribute's text (`true`/`false` for switches); null removes the attribute.
 const text = (value) => (value === null || value === undefined || value === '' ? null : String(value));

@@ -12,6 +12,7 @@
 // Those calls are made through `quietly`, so a host without them still gets a working figure.
 
 import '../../www/metaballs-view.js';
+import { quietly } from './quietly.js';
 import { canonical, nameOfKind, propertyName, rowOf, TABLE } from '../../www/lib/core/table.js';
 import { spheresText } from '../../www/lib/features/scene-files.js';
 
@@ -38,16 +39,6 @@ function fromKernel(model, build) {
     model.on('msg:custom', answer);
     if (!quietly(() => model.send({ type: 'wasm', build }))) reject(new Error('the host has no kernel'));
   });
-}
-
-// Runs a model call the host may not offer (see above); says whether it ran.
-function quietly(call) {
-  try {
-    call();
-    return true;
-  } catch {
-    return false;
-  }
 }
 
 // Where the page's WebAssembly comes from, said once per page before the first figure connects.

@@ -15,7 +15,7 @@ use crate::extract::{
 use crate::scene::checks::check_f32;
 use crate::scene::params::ParamError;
 use crate::scene::params::view::MeshOn;
-use crate::scene::params::view::{Method, Projection};
+use crate::scene::params::view::{March, Method, Projection};
 use crate::scene::{BOX_HALF_EXTENT, Sphere};
 
 /// The most [`Renderer::set_lod_coarsening`] takes, far beyond what a page asks (its largest cell
@@ -94,7 +94,7 @@ impl Renderer {
                 interpolation: view.interpolation,
                 blend: view.blend,
                 case_table: view.case_table,
-                march: view.march,
+                march: March::on_grid(view.march, self.settings.resolution),
             },
             lod: view.lod.then(|| LodJob { eye: self.lod_eye(), freeze: view.lod_freeze }),
         }
@@ -174,7 +174,7 @@ impl Renderer {
     }
 
     /// The extractor for the next frame, among those of the current mode (`lod`): one with the
-    /// active-cell lists while a teaching view reads them; else as `mesher` names it, `auto` choosing
+    /// active-cell lists while a teaching view reads them (the selected cell's outline alone does not); else as `mesher` names it, `auto` choosing
     /// one on the CPU on a software adapter (where compute passes are emulated on the CPU) and one in
     /// compute shaders on hardware; the first the device runs when the named one cannot.
     fn next_extractor(&self) -> usize {
@@ -184,7 +184,9 @@ impl Renderer {
                 .iter()
                 .position(|e| self.in_mode(e.capabilities()) && wanted(e.capabilities(), e.name()))
         };
-        let chosen = if self.views_shown() && !views::mesh_only(&self.settings.view) {
+        // The selected cell's outline needs no cell lists: only the other views read them.
+        let lists = views::needed(&self.settings.view, false) && !views::mesh_only(&self.settings.view);
+        let chosen = if self.views_shown() && lists {
             find(&|c, _| c.cell_lists)
         } else if self.stage.pinned.is_some() {
             self.stage.pinned

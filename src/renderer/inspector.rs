@@ -3,6 +3,7 @@
 use super::Renderer;
 use crate::extract::reference::Construction;
 use crate::scene::params::ParamError;
+use crate::scene::params::view::March;
 use crate::teach::inspect::{self, CellReport};
 use glam::UVec3;
 
@@ -23,7 +24,7 @@ impl Renderer {
             interpolation: self.settings.view.interpolation,
             blend: self.settings.view.blend,
             case_table: self.settings.view.case_table,
-            march: self.settings.view.march,
+            march: March::on_grid(self.settings.view.march, self.settings.resolution),
         }
     }
 

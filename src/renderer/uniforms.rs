@@ -8,7 +8,7 @@ use crate::extract::uniforms::GridUniform;
 use crate::scene::BOX_HALF_EXTENT;
 use crate::scene::math;
 use crate::scene::params::Settings;
-use crate::scene::params::view::{Blend, CaseTable, Interpolation, Projection};
+use crate::scene::params::view::{Blend, CaseTable, Interpolation, March, Projection};
 use glam::{Mat4, UVec3, Vec3};
 
 impl Renderer {
@@ -30,7 +30,7 @@ impl Renderer {
                 | ((self.settings.view.blend == Blend::Max) as u32) << 1
                 | ((self.settings.view.case_table != CaseTable::Classic) as u32) << 2
                 | ((self.settings.view.case_table == CaseTable::Mc33) as u32) << 3,
-            march: self.settings.view.march.unwrap_or([u32::MAX; 3]),
+            march: March::on_grid(self.settings.view.march, grid.cells_per_axis).unwrap_or([u32::MAX; 3]),
             _pad: 0,
         };
         self.queue.write_buffer(&self.scene_buffers.grid, 0, bytemuck::bytes_of(&grid_uniform));

@@ -6,7 +6,7 @@
 
 use crate::extract::decider::{ambiguous_faces, decided_triangles, saddle_above};
 use crate::extract::interior::{interior_code, joined_corners};
-use crate::extract::reference::{Construction, Grid, blended_field_at, sample_blended_field};
+use crate::extract::reference::{Construction, Grid, blended_field_at};
 use crate::extract::tables::{CORNER_OFFSETS, EDGE_CORNERS, EDGE_TABLE, FACE_CORNERS};
 use crate::scene::Sphere;
 use crate::scene::params::view::{Blend, CaseTable};
@@ -152,7 +152,8 @@ pub enum Target {
 
 /// The first cell after `after` (all cells when `None`) in the march's order (x fastest, then y, then
 /// z) that the surface crosses: one whose corners are not all inside nor all outside. `None` when no
-/// cell after it is crossed. The field is sampled once, as the oracle samples it.
+/// cell after it is crossed. The field is sampled as the oracle samples it, two planes of points at a
+/// time (boundary points outside), so it needs room for two planes whatever the grid.
 pub fn next_crossed(
     spheres: &[Sphere],
     iso: f32,
@@ -160,23 +161,37 @@ pub fn next_crossed(
     blend: Blend,
     after: Option<UVec3>,
 ) -> Option<UVec3> {
-    let values = sample_blended_field(spheres, grid, blend);
     let n = grid.cells_per_axis;
-    let start = after.map_or(0, |c| c.x as u64 + n as u64 * (c.y as u64 + n as u64 * c.z as u64) + 1);
-    (start..(n as u64).pow(3))
-        .map(|k| {
-            UVec3::new(
-                (k % n as u64) as u32,
-                (k / n as u64 % n as u64) as u32,
-                (k / (n as u64 * n as u64)) as u32,
-            )
-        })
-        .find(|&cell| {
-            let case = CORNER_OFFSETS.iter().enumerate().fold(0usize, |m, (c, &o)| {
-                m | ((values[grid.point_index(cell + UVec3::from_array(o))] > iso) as usize) << c
-            });
-            EDGE_TABLE[case] != 0
-        })
+    let plane = |z: u32| -> Vec<bool> {
+        let mut inside = Vec::with_capacity(((n + 1) * (n + 1)) as usize);
+        for y in 0..=n {
+            for x in 0..=n {
+                let id = UVec3::new(x, y, z);
+                inside.push(!grid.is_boundary(id) && blended_field_at(spheres, grid.point(id), blend) > iso);
+            }
+        }
+        inside
+    };
+    let start = after.map_or((0, 0, 0), |c| (c.z, c.y, c.x + 1));
+    let mut below = plane(start.0);
+    for z in start.0..n {
+        let above = plane(z + 1);
+        let at = |p: &[bool], x: u32, y: u32| p[(x + (n + 1) * y) as usize];
+        let first = if z == start.0 { (start.1, start.2) } else { (0, 0) };
+        for y in first.0..n {
+            for x in if y == first.0 { first.1 } else { 0 }..n {
+                let corners = [(x, y), (x + 1, y), (x + 1, y + 1), (x, y + 1)];
+                let count =
+                    corners.iter().map(|&(cx, cy)| at(&below, cx, cy) as u32 + at(&above, cx, cy) as u32);
+                let count: u32 = count.sum();
+                if count != 0 && count != 8 {
+                    return Some(UVec3::new(x, y, z));
+                }
+            }
+        }
+        below = above;
+    }
+    None
 }
 
 /// The sphere whose term dominates the field at `point` (where a ray met the surface): the sphere a

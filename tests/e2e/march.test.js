@@ -73,8 +73,10 @@ async function walk(page, n, crossings) {
 }
 
 test('a link opens the step-through, and on WebGPU the mesh grows by the triangles of each cell reached', async () => {
-  const { page, errors } = await open(`?balls=${BALLS}&res=8&paused=1&aa=0&march=0,0,0`);
+  // mesher=gpu: the compute passes, which a software adapter would leave to the CPU's mesher.
+  const { page, errors } = await open(`?balls=${BALLS}&res=8&paused=1&aa=0&mesher=gpu&march=0,0,0`);
   await page.waitForFunction(() => document.querySelector('metaballs-view')?.inspected, null, { timeout: 60000 });
+  assert.match(await page.$eval('metaballs-view', (e) => e.stats.mesher ?? ''), /gpu/i);
   const first = await shown(page);
   assert.equal(first.hidden, false);
   assert.equal(first.drawn, 0, 'nothing is drawn before the first crossed cell');
@@ -82,7 +84,12 @@ test('a link opens the step-through, and on WebGPU the mesh grows by the triangl
   assert.deepEqual(errors, []);
 });
 
-test('on WebGL2 the CPU mesher draws the march cell by cell too', async () => {
+test('on WebGPU with the CPU mesher, and on WebGL2, the march is drawn cell by cell too', async () => {
+  const cpu = await open(`?balls=${BALLS}&res=8&paused=1&aa=0&mesher=cpu&march=0,0,0`);
+  await cpu.page.waitForFunction(() => document.querySelector('metaballs-view')?.inspected, null, { timeout: 60000 });
+  assert.match(await cpu.page.$eval('metaballs-view', (e) => e.stats.mesher ?? ''), /cpu/i);
+  assert.ok(await walk(cpu.page, 8, 12) > 100);
+  assert.deepEqual(cpu.errors, []);
   const { page, errors } = await open(`?balls=${BALLS}&res=8&paused=1&march=0,0,0`, { initScript: [NO_WEBGPU] });
   await page.waitForFunction(() => document.querySelector('metaballs-view')?.inspected, null, { timeout: 60000 });
   assert.ok(await walk(page, 8, 24) > 100);
@@ -105,7 +112,7 @@ test('the panel opens it at the inspected cell, next crossed skips empty cells, 
   s = await shown(page);
   assert.ok(s.case !== 0 && s.case !== 255 && s.own > 0, JSON.stringify(s));
   assert.equal(s.drawn, s.own, 'the first crossed cell draws its own triangles only');
-  assert.match(page.url(), new RegExp(`march=${s.march.replace(/,/g, '(,|%2C)')}`));
+  await page.waitForURL(new RegExp(`march=${s.march.replace(/,/g, '(,|%2C)')}`), { timeout: 5000 });
   await screenshot(page, 'march-first-crossed');
   // A cell picked with the inspector: the step-through opens there.
   await page.locator('metaballs-view').locator('#march button[data-do="close"]').click();

@@ -269,6 +269,22 @@ test('the 2D page: each panel control changes the picture and goes into the link
   await settle();
   assert.equal(link().get('march'), '0');
   assert.equal(await page.$eval('metaballs-2d', (e) => e.stepIndex), 0);
+  // Steps taken in the figure go into the link (as the square i,j).
+  await el.locator('button[data-do="forward"]').click();
+  await settle();
+  assert.equal(link().get('march'), '1,0');
+  // A bad value typed in the panel gets the notice and stays out of the figure and the link.
+  await el.locator('#control-levels').fill('0.8,abc');
+  await el.locator('#control-levels').press('Enter');
+  await settle();
+  assert.match(await page.$eval('metaballs-2d', (e) => e.shadowRoot.getElementById('notice').textContent), /levels: "abc" is not a number|iso: "abc"/);
+  assert.equal(link().get('levels'), '0.8,2.4');
+  // A panel built again hears each click once: the step-through closes and stays closed.
+  await page.$eval('metaballs-2d', (e) => e.setAttribute('controls', 'step-through,levels'));
+  await el.locator('summary').click();
+  await el.locator('button[data-action="step-through"]').click();
+  await settle();
+  assert.equal(await page.$eval('metaballs-2d', (e) => e.stepIndex), null);
   assert.deepEqual(errors, []);
   assert.deepEqual(again.errors, []);
 });

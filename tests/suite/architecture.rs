@@ -10,9 +10,10 @@ use std::collections::BTreeMap;
 use std::path::Path;
 
 /// The folders of `src/`, lowest first; a folder may import its own and those before it. Modules at
-/// the top of `src/` (the native tools, `lib.rs`, `main.rs`) and `web/` may import any.
+/// the top of `src/` (the native tools, `lib.rs`, `main.rs`), `web/` and `manifest/` (the elements'
+/// descriptions, a native tool) may import any.
 const LAYERS: &[&str] = &["scene", "device", "extract", "teach", "view", "draw", "renderer"];
-const SHELLS: &[&str] = &["web"];
+const SHELLS: &[&str] = &["web", "manifest"];
 /// The scene's modules, in the only order they may import each other.
 const SCENE_ORDER: &[&str] =
     &["math", "number", "decimal", "checks", "sphere", "params", "motion", "json", "file"];

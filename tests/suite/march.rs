@@ -69,6 +69,16 @@ fn every_step_of_the_march_draws_the_oracles_triangles_of_the_cells_reached_on_g
             );
             assert!(grew > 10, "{case_table:?}: the mesh grew at only {grew} steps");
         }
+        // A cell past the grid stands for the last cell on that axis, on both paths.
+        let construction = Construction { march: Some([2, n - 1, 3]), ..Construction::default() };
+        let oracle = reference::extract_with(&spheres, iso, grid, construction);
+        o.renderer.set_parameter("table", "classic").unwrap();
+        o.renderer.set_parameter("march", "2,99,3").unwrap();
+        for name in ["gpu", "cpu"] {
+            o.renderer.pin_extractor(Some(name)).unwrap();
+            let ours = pollster::block_on(o.renderer.extract_mesh());
+            assert_eq!(ours.triangles.len(), oracle.triangle_count(), "{name}: march past the grid");
+        }
         o.renderer.set_parameter("march", "off").unwrap();
         o.renderer.pin_extractor(None).unwrap();
     });

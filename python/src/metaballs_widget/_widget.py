@@ -36,7 +36,45 @@ def _refusal(widget, row: dict, proposal) -> traitlets.TraitError:
     raise AssertionError("only a refused value has a refusal")
 
 
-class _Figure(anywidget.AnyWidget):
+class _Asking(anywidget.AnyWidget):
+    """A widget whose figure answers what Python asks (``await w.save_scene()``), by message."""
+
+    def __init__(self, **kwargs):
+        super().__init__(**kwargs)
+        self._calls = itertools.count(1)
+        self._waiting: dict = {}
+        self.on_msg(self._answer)
+
+    async def _ask(self, method: str, *args, timeout: float = 60.0):
+        """Asks the figure and waits for its answer: a value, bytes, or why it refused."""
+        call = next(self._calls)
+        answer = asyncio.get_running_loop().create_future()
+        self._waiting[call] = answer
+        try:
+            self.send({"type": "call", "id": call, "method": method, "args": list(args)})
+            content, buffers = await asyncio.wait_for(answer, timeout)
+        except asyncio.TimeoutError:
+            raise TimeoutError(
+                f"the figure did not answer {method} in {timeout:g} s. It answers while a notebook shows it, "
+                "and the kernel (ipykernel 7 or later) takes the answer in while this cell awaits it, unless "
+                "cells queued after this one (Run All) are ahead of it: run this cell on its own, or ask in "
+                "the notebook's last cell"
+            ) from None
+        finally:
+            self._waiting.pop(call, None)
+        if "error" in content:
+            raise ValueError(content["error"])
+        return bytes(buffers[0]) if content.get("bytes") else content.get("value")
+
+    def _answer(self, _widget, content, buffers):
+        """The figure answers what Python asked."""
+        if isinstance(content, dict) and content.get("type") == "answer":
+            answer = self._waiting.get(content.get("id"))
+            if answer is not None and not answer.done():
+                answer.set_result((content, list(buffers or [])))
+
+
+class _Figure(_Asking):
     _esm = STATIC / "widget.js"
 
     # What the figure reports (set by the figure; setting them from Python changes nothing).
@@ -50,9 +88,6 @@ class _Figure(anywidget.AnyWidget):
         # Older spellings (``balls=``, ``mesher=``) are the settings' current names.
         kwargs = {_OLDER.get(name, name): value for name, value in kwargs.items()}
         super().__init__(**kwargs)
-        self._calls = itertools.count(1)
-        self._waiting: dict = {}
-        self.on_msg(self._answer)
 
     # What the figure in the notebook's output is asked: awaited (``await w.save_scene()``), so that the
     # kernel takes in the figure's answer while the cell waits for it.
@@ -85,27 +120,6 @@ class _Figure(anywidget.AnyWidget):
         """A PNG of the view at the figure's size times ``scale`` (show it with ``IPython.display.Image``)."""
         return await self._ask("picture", float(scale))
 
-    async def _ask(self, method: str, *args, timeout: float = 60.0):
-        """Asks the figure and waits for its answer: a value, bytes, or why it refused."""
-        call = next(self._calls)
-        answer = asyncio.get_running_loop().create_future()
-        self._waiting[call] = answer
-        try:
-            self.send({"type": "call", "id": call, "method": method, "args": list(args)})
-            content, buffers = await asyncio.wait_for(answer, timeout)
-        except asyncio.TimeoutError:
-            raise TimeoutError(
-                f"the figure did not answer {method} in {timeout:g} s. It answers while a notebook shows it, "
-                "and the kernel (ipykernel 7 or later) takes the answer in while this cell awaits it, unless "
-                "cells queued after this one (Run All) are ahead of it: run this cell on its own, or ask in "
-                "the notebook's last cell"
-            ) from None
-        finally:
-            self._waiting.pop(call, None)
-        if "error" in content:
-            raise ValueError(content["error"])
-        return bytes(buffers[0]) if content.get("bytes") else content.get("value")
-
     @traitlets.validate(*_ROWS)
     def _check(self, proposal):
         row = _ROWS[proposal["trait"].name]
@@ -117,15 +131,11 @@ class _Figure(anywidget.AnyWidget):
     def _answer(self, _widget, content, buffers):
         """The figure asks for a build's WebAssembly (once per page: it is sent as a binary buffer), or
         answers what Python asked."""
-        if not isinstance(content, dict):
-            return
-        if content.get("type") == "wasm" and content.get("build") in _WASM:
+        if isinstance(content, dict) and content.get("type") == "wasm" and content.get("build") in _WASM:
             data = (STATIC / _WASM[content["build"]]).read_bytes()
             self.send({"type": "wasm", "build": content["build"]}, [data])
-        elif content.get("type") == "answer":
-            answer = self._waiting.get(content.get("id"))
-            if answer is not None and not answer.done():
-                answer.set_result((content, list(buffers or [])))
+        else:
+            super()._answer(_widget, content, buffers)
 
 
 def _older(new: str) -> property:
@@ -146,14 +156,8 @@ Metaballs = type(
 )
 
 
-class _Plane(anywidget.AnyWidget):
+class _Plane(_Asking):
     _esm = STATIC / "widget-2d.js"
-
-    def __init__(self, **kwargs):
-        super().__init__(**kwargs)
-        self._calls = itertools.count(1)
-        self._waiting: dict = {}
-        self.on_msg(self._answer)
 
     async def contours(self) -> dict:
         """The contour at the iso level as data: ``iso``, ``cells``, ``rings`` (closed lists of points in
@@ -164,13 +168,6 @@ class _Plane(anywidget.AnyWidget):
         """The picture as an SVG document: vector, for notes and print."""
         return await self._ask("toSVG", int(size))
 
-    _ask = _Figure._ask
-
-    def _answer(self, _widget, content, buffers):
-        if isinstance(content, dict) and content.get("type") == "answer":
-            answer = self._waiting.get(content.get("id"))
-            if answer is not None and not answer.done():
-                answer.set_result((content, list(buffers or [])))
 
     @traitlets.validate(*_PLANE_ROWS)
     def _check(self, proposal):

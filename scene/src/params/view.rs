@@ -225,12 +225,14 @@ impl Slice {
 
 /// Where the step-through of the march stands: a cell (x, y, z) of the grid. Marching cubes visits the
 /// cells x fastest, then y, then z; with the march at a cell, only the cells visited up to it (itself
-/// included) give triangles, on every path (the GPU's passes, the CPU's mesher and the oracle).
+/// included) give triangles, on the uniform grid's marching cubes (the GPU's passes, the CPU's mesher
+/// and the oracle); level of detail and surface nets draw their whole mesh. A cell past the grid
+/// stands for the grid's last cell on that axis ([`March::on_grid`]).
 pub struct March;
 
 impl March {
-    /// The most cells per axis a cell may name (the finest grid of level of detail).
-    const MAX_COORDINATE: u32 = 4096;
+    /// The most cells per axis a cell may name.
+    const MAX_COORDINATE: u32 = super::MAX_RESOLUTION;
 
     /// Reads `off`, or a cell `x,y,z` (whole numbers).
     pub fn parse(text: &str) -> Result<Option<[u32; 3]>, ParamError> {
@@ -255,6 +257,11 @@ impl March {
             None => "off".into(),
             Some([x, y, z]) => format!("{x},{y},{z}"),
         }
+    }
+
+    /// The march on a grid of `cells_per_axis`: each coordinate past the grid at its last cell.
+    pub fn on_grid(march: Option<[u32; 3]>, cells_per_axis: u32) -> Option<[u32; 3]> {
+        march.map(|cell| cell.map(|v| v.min(cells_per_axis.saturating_sub(1))))
     }
 
     /// True when the march at `march` has reached `cell` (always when it is off).

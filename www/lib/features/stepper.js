@@ -7,6 +7,7 @@
 
 import { caseGallery } from '../engine/wasm.js';
 import { caseSum, stepperPanel } from '../plane/stepper-panel.js';
+import { Playhead } from '../plane/stepper.js';
 import { Inspector } from './inspector.js';
 
 /** Reads `x,y,z` as a cell, or null (`off`). */
@@ -32,12 +33,11 @@ export class Stepper {
   #ctx;
   #box;
   #panel = null;
-  #playing = false;
-  #speed = 4;
-  #carry = 0;
+  #play = new Playhead();
   #last = 0;
-  // What the inspector shows for the step: the view and cell last selected.
+  // What the inspector shows for the step: the view and cell last selected, and the report shown.
   #selected = null;
+  #shown = null;
 
   constructor(ctx) {
     this.#ctx = ctx;
@@ -73,7 +73,7 @@ export class Stepper {
   }
 
   close() {
-    this.#playing = false;
+    this.#play.playing = false;
     this.#ctx.set('march', 'off');
   }
 
@@ -86,21 +86,31 @@ export class Stepper {
 
   /** The next cell the surface crosses (the last cell when none is left). */
   nextCrossed() {
+    if (this.#wholeMesh()) return;
     const cell = this.cell;
     const next = cell && this.#ctx.view?.next_crossed_cell(...cell);
     if (next) this.#ctx.set('march', Array.from(next).join(','));
     else this.stepTo(Infinity);
   }
 
+  // With level of detail or surface nets the whole mesh is drawn: says so, and says true.
+  #wholeMesh() {
+    const { lod, method } = this.#ctx.state;
+    if (!lod && method !== 'surface_nets') return false;
+    this.#ctx.notice('march: the step-through walks marching cubes on the uniform grid (lod off, method marching_cubes); the whole mesh is drawn');
+    return true;
+  }
+
   changed(name) {
     if (name !== 'march') this.#selected = null;
-    const { lod, method } = this.#ctx.state;
-    if (name !== 'resolution' && this.cell && (lod || method === 'surface_nets')) {
-      this.#ctx.notice('march: the step-through walks marching cubes on the uniform grid (lod off, method marching_cubes); the whole mesh is drawn');
-    }
-    if (!this.cell) {
-      this.#playing = false;
+    const cell = this.cell;
+    if (name !== 'resolution' && cell) this.#wholeMesh();
+    // On a coarser grid the march stands at the cell it is drawn at.
+    if (name === 'resolution' && cell && `${cell}` !== this.#ctx.state.march) this.#ctx.set('march', cell.join(','));
+    if (!cell) {
+      this.#play.playing = false;
       this.#box.hidden = true;
+      this.#ctx.$('panel').inert = false;
       if (this.#selected) this.#ctx.get(Inspector).deselect();
       this.#selected = null;
     }
@@ -116,14 +126,11 @@ export class Stepper {
       this.#last = 0;
       return;
     }
-    if (this.#playing) {
-      const dt = this.#last ? Math.min(0.1, (now - this.#last) / 1000) : 0;
-      this.#carry += dt * this.#speed;
-      const steps = Math.floor(this.#carry);
-      this.#carry -= steps;
+    if (this.#play.playing) {
+      const steps = this.#play.steps(this.#last ? Math.min(0.1, (now - this.#last) / 1000) : 0);
       const last = this.#ctx.state.resolution ** 3 - 1;
       if (steps > 0) this.stepTo(Math.min(last, this.index + steps));
-      if (this.index >= last) this.#playing = false;
+      if (this.index >= last) this.#play.playing = false;
     }
     this.#last = now;
     const key = `${cell}`;
@@ -138,19 +145,25 @@ export class Stepper {
     } else if (`${inspector.report.cell}` !== key) {
       // A click picked another cell: the march goes there.
       this.#ctx.set('march', inspector.report.cell.join(','));
+    } else if (inspector.report !== this.#shown) {
+      // The report followed a change (the iso level, the blend): so does the box.
+      this.#show(inspector.report);
     }
   }
 
   #show(report) {
     this.#panel ??= stepperPanel(this.#box, {
-      back: () => { this.#playing = false; this.stepTo(this.index - 1); },
-      forward: () => { this.#playing = false; this.stepTo(this.index + 1); },
-      next: () => { this.#playing = false; this.nextCrossed(); },
-      play: () => { this.#playing = !this.#playing; this.#carry = 0; this.#show(this.#ctx.get(Inspector).report); },
-      speed: (perSecond) => { this.#speed = perSecond; },
+      back: () => { this.#play.playing = false; this.stepTo(this.index - 1); },
+      forward: () => { this.#play.playing = false; this.stepTo(this.index + 1); },
+      next: () => { this.#play.playing = false; this.nextCrossed(); },
+      play: () => { this.#play.toggle(); this.#show(this.#ctx.get(Inspector).report); },
+      speed: (perSecond) => { this.#play.speed = perSecond; },
       close: () => this.close(),
     }, caseTable());
     this.#box.hidden = false;
+    // The box covers the panel: its controls leave the tab order while it shows.
+    this.#ctx.$('panel').inert = true;
+    this.#shown = report;
     const n = this.#ctx.state.resolution;
     const head = `Step ${this.index + 1} of ${n ** 3}: cell (${this.cell.join(', ')})`;
     // The corners' values and signs are in the inspector's box beside it; here, their bits add up.
@@ -159,6 +172,6 @@ export class Stepper {
       ? `${head}<br>${caseSum(report.corners, this.#ctx.state.iso).sum}<br>class ${report.class}, ${report.className}: `
         + `${triangles} triangle${triangles === 1 ? '' : 's'} (edges ${report.triangles.map((t) => t.join('–')).join(', ') || 'none'})`
       : head;
-    this.#panel({ playing: this.#playing, account, lit: report?.case ?? null });
+    this.#panel({ playing: this.#play.playing, account, lit: report?.case ?? null });
   }
 }

@@ -53,16 +53,22 @@ export function planePanel(host, names, rowOf, figure) {
     if (row.kind === 'choice') {
       return `<label for="${id}">${html(row.label)}</label><select id="${id}" data-name="${name}" class="wide">${row.words.map((w) => `<option>${w}</option>`).join('')}</select>`;
     }
+    // A number without a slider's range (the seed) is typed in.
+    if (row.sliderMax <= row.sliderMin) {
+      return `<label for="${id}">${html(row.label)}</label><input type="number" id="${id}" class="wide" data-name="${name}" min="${row.min}" max="${row.max}" step="1">`;
+    }
     return `<label for="${id}">${html(row.label)}</label><input type="range" id="${id}" data-name="${name}" min="${row.sliderMin}" max="${row.sliderMax}" step="${row.step || 1}"><output for="${id}"></output>`;
   });
   host.innerHTML = `<style>${STYLE}</style><details class="panel" part="panel"><summary>Controls</summary><div class="rows">${rows.join('')}</div></details>`;
-  const inputs = [...host.querySelectorAll('[data-name]')];
-  const shows = [...host.querySelectorAll('[data-show]')];
-  host.addEventListener('input', (e) => {
+  const panel = host.querySelector('.panel');
+  const inputs = [...panel.querySelectorAll('[data-name]')];
+  const shows = [...panel.querySelectorAll('[data-show]')];
+  // On the panel itself, made anew with each `controls`, so a rebuilt panel hears each event once.
+  panel.addEventListener('input', (e) => {
     const input = e.target;
     if (input.type === 'range') input.nextElementSibling.textContent = input.value;
   });
-  host.addEventListener('change', (e) => {
+  panel.addEventListener('change', (e) => {
     const input = e.target;
     if (input.dataset.show) {
       figure.set('show', shows.filter((s) => s.checked).map((s) => s.dataset.show).join(',') || 'contour');
@@ -70,7 +76,7 @@ export function planePanel(host, names, rowOf, figure) {
       figure.set(input.dataset.name, input.type === 'checkbox' ? String(input.checked) : input.value);
     }
   });
-  host.addEventListener('click', (e) => {
+  panel.addEventListener('click', (e) => {
     const action = e.target.closest('[data-action]')?.dataset.action;
     if (action) figure.action(action);
   });

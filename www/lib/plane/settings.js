@@ -22,9 +22,12 @@ export function readSetting(row, text) {
   return String(text);
 }
 
-/** Words of `show` (comma list of `SHOWN`), or the defaults for an empty text. */
+/** Words of `show`: `all`, `none`, or a comma list of `SHOWN`; the defaults for an empty text. */
 export function readShown(text) {
-  const words = String(text).split(',').map((s) => s.trim()).filter(Boolean);
+  const list = String(text).trim().toLowerCase();
+  if (list === 'all') return SHOWN;
+  if (list === 'none') return [];
+  const words = list.split(',').map((s) => s.trim()).filter(Boolean);
   const unknown = words.filter((w) => !SHOWN.includes(w));
   if (unknown.length) throw new Error(`show: ${unknown.join(', ')} is not one of ${SHOWN.join(', ')}`);
   return words.length ? words : DEFAULT_SHOWN;

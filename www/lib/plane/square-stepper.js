@@ -1,63 +1,65 @@
-// The 2D figure's step-through of the march: the step shown, playing at a speed, and its panel beside
-// the figure (stepper-panel.js). The figure hands in how many squares per axis it has, its last march
-// and how to draw again.
+// The 2D figure's step-through of the march: the step shown, its play, and its panel beside the figure
+// (stepper-panel.js). The figure hands in how many squares per axis it draws, its last march, how to
+// draw again, and where the step goes (its `march` attribute, so that links and widgets carry it).
 
 import { SQUARE_TABLE, squareAccount, stepperPanel } from './stepper-panel.js';
-import { nextCrossed } from './stepper.js';
+import { nextCrossed, Playhead } from './stepper.js';
 
 export class SquareStepper {
   /** The step shown (square j · cells + i; cells² at the end), or null when the step-through is off. */
   step = null;
-  /** True while it plays. */
-  playing = false;
-  #speed = 4;
-  #carry = 0;
+  play = new Playhead();
   #update = null;
   #host;
   #figure;
 
-  /** `host`: the element beside the figure; `figure`: `{ cells(), result(), redraw() }`. */
+  /** `host`: the element beside the figure; `figure`: `{ cells(), result(), redraw(), moved(k) }`. */
   constructor(host, figure) {
     this.#host = host;
     this.#figure = figure;
   }
+
+  get playing() { return this.play.playing; }
 
   /** Opens it at step `k` (clamped to the march), or moves it there. */
   to(k) {
     const steps = this.#figure.cells() ** 2;
     this.step = Math.max(0, Math.min(steps, Math.round(k)));
     this.#update ??= stepperPanel(this.#host, {
-      back: () => { this.playing = false; this.to(this.step - 1); },
-      forward: () => { this.playing = false; this.to(this.step + 1); },
-      next: () => { this.playing = false; this.nextCrossed(); },
-      play: () => { this.playing = !this.playing; this.#carry = 0; this.#figure.redraw(); },
-      speed: (perSecond) => { this.#speed = perSecond; },
+      back: () => { this.play.playing = false; this.#move(this.step - 1); },
+      forward: () => { this.play.playing = false; this.#move(this.step + 1); },
+      next: () => { this.play.playing = false; this.nextCrossed(); },
+      play: () => { this.play.toggle(); this.#figure.redraw(); },
+      speed: (perSecond) => { this.play.speed = perSecond; },
     }, SQUARE_TABLE);
     this.#figure.redraw();
+  }
+
+  // A step the person asked for: taken, and told to the figure.
+  #move(k) {
+    this.to(k);
+    this.#figure.moved(this.step);
   }
 
   /** To the next square the contour crosses (the end when there is none). */
   nextCrossed() {
     const found = nextCrossed(this.#figure.result().cases, this.step ?? -1);
-    this.to(found < 0 ? this.#figure.cells() ** 2 : found);
+    this.#move(found < 0 ? this.#figure.cells() ** 2 : found);
   }
 
   close() {
     this.step = null;
-    this.playing = false;
+    this.play.playing = false;
     this.#host.replaceChildren();
     this.#update = null;
   }
 
   /** Moves a playing step-through on by `dt` seconds of steps; stops it at the end. */
   advance(dt) {
-    if (!this.playing || this.step === null) return;
-    this.#carry += dt * this.#speed;
-    const steps = Math.floor(this.#carry);
-    this.#carry -= steps;
+    if (this.step === null) return;
     const end = this.#figure.cells() ** 2;
-    this.step = Math.min(end, this.step + steps);
-    if (this.step >= end) this.playing = false;
+    this.step = Math.min(end, this.step + this.play.steps(dt));
+    if (this.step >= end) this.play.playing = false;
   }
 
   /** Shows the step of march `result` (at `iso`) in the panel. */

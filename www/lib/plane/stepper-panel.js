@@ -95,7 +95,9 @@ export function stepperPanel(host, actions, table) {
   return ({ playing, account, lit: wanted }) => {
     play.textContent = playing ? 'pause' : '▶';
     play.setAttribute('aria-label', playing ? 'Pause the march' : 'Play the march');
-    where.innerHTML = account;
+    // Read out step by step, not while it plays (a step every few frames would drown everything else).
+    where.setAttribute('aria-live', playing ? 'off' : 'polite');
+    if (where.innerHTML !== account) where.innerHTML = account;
     if (wanted === lit) return;
     rows.get(lit)?.classList.remove('current');
     lit = wanted;

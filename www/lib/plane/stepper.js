@@ -46,3 +46,24 @@ export function readStep(text, cells) {
   }
   return k;
 }
+
+/** A step-through's play: while playing, how many steps `dt` seconds make at `speed` steps a second. */
+export class Playhead {
+  playing = false;
+  speed = 4;
+  #carry = 0;
+
+  toggle() {
+    this.playing = !this.playing;
+    this.#carry = 0;
+  }
+
+  /** The whole steps `dt` more seconds of play make (none while paused); the rest is carried. */
+  steps(dt) {
+    if (!this.playing) return 0;
+    this.#carry += dt * this.speed;
+    const whole = Math.floor(this.#carry);
+    this.#carry -= whole;
+    return whole;
+  }
+}
