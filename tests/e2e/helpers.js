@@ -305,3 +305,16 @@ export function cpuSeconds() {
   }
   return seconds;
 }
+
+/**
+ * For the benchmarks: serves the repository on a free port and starts headless Chromium. Returns
+ * `{ base, browser, close }`; `close()` stops both.
+ */
+export async function benchSetup() {
+  const port = await freePort();
+  const server = spawn('python3', ['-m', 'http.server', '--bind', '127.0.0.1', String(port), '--directory', root], { stdio: 'ignore' });
+  const base = `http://127.0.0.1:${port}/`;
+  await waitForServer(base);
+  const browser = await chromium.launch({ executablePath: CHROMIUM, args: FLAGS, headless: true });
+  return { base, browser, close: async () => { await browser.close(); server.kill(); } };
+}

@@ -4,15 +4,9 @@
 // against the same frame with the march off. Not a test: times depend on the machine.
 // `node march-bench.js` from tests/e2e (serves the repository itself).
 
-import { spawn } from 'node:child_process';
-import { chromium } from 'playwright-core';
-import { root, CHROMIUM, FLAGS, freePort, waitForServer } from './helpers.js';
+import { benchSetup } from './helpers.js';
 
-const port = await freePort();
-const server = spawn('python3', ['-m', 'http.server', '--bind', '127.0.0.1', String(port), '--directory', root], { stdio: 'ignore' });
-const base = `http://127.0.0.1:${port}/`;
-await waitForServer(base);
-const browser = await chromium.launch({ executablePath: CHROMIUM, args: FLAGS, headless: true });
+const { base, browser, close } = await benchSetup();
 try {
   for (const cells of [32, 64]) {
     const page = await browser.newPage({ viewport: { width: 960, height: 640 } });
@@ -39,6 +33,5 @@ try {
     await page.close();
   }
 } finally {
-  await browser.close();
-  server.kill();
+  await close();
 }

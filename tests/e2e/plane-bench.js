@@ -4,15 +4,9 @@
 // stepper's cost per step at 64² and 256². Not a test:
 // times depend on the machine. `node plane-bench.js` from tests/e2e (serves the repository itself).
 
-import { spawn } from 'node:child_process';
-import { chromium } from 'playwright-core';
-import { root, CHROMIUM, FLAGS, freePort, waitForServer } from './helpers.js';
+import { benchSetup } from './helpers.js';
 
-const port = await freePort();
-const server = spawn('python3', ['-m', 'http.server', '--bind', '127.0.0.1', String(port), '--directory', root], { stdio: 'ignore' });
-const base = `http://127.0.0.1:${port}/`;
-await waitForServer(base);
-const browser = await chromium.launch({ executablePath: CHROMIUM, args: FLAGS, headless: true });
+const { base, browser, close } = await benchSetup();
 try {
   const page = await browser.newPage({ viewport: { width: 800, height: 800 } });
   await page.goto(`${base}www/examples/lecture.html`);
@@ -61,6 +55,5 @@ try {
     console.log(`stepper at ${cells}² squares × 16 circles, halfway: ${ms.toFixed(1)} ms per step (median of 60)`);
   }
 } finally {
-  await browser.close();
-  server.kill();
+  await close();
 }

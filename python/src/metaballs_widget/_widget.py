@@ -23,6 +23,20 @@ def _settings(rows: dict) -> dict:
     return {name: traitlets.Any(row["value"], help=row["description"]).tag(sync=True) for name, row in rows.items()}
 
 
+def _checked(rows: dict):
+    """The validator of the traits of `rows`: a value as the figure holds it, or the figure's refusal."""
+
+    @traitlets.validate(*rows)
+    def _check(self, proposal):
+        row = rows[proposal["trait"].name]
+        try:
+            return check(row, proposal["value"])
+        except Refused:
+            raise _refusal(self, row, proposal) from None
+
+    return _check
+
+
 def _refusal(widget, row: dict, proposal) -> traitlets.TraitError:
     """A value the figure would refuse, said as the figure says it: name="text": why; keeping the value."""
     text = proposal["value"]
@@ -120,13 +134,7 @@ class _Figure(_Asking):
         """A PNG of the view at the figure's size times ``scale`` (show it with ``IPython.display.Image``)."""
         return await self._ask("picture", float(scale))
 
-    @traitlets.validate(*_ROWS)
-    def _check(self, proposal):
-        row = _ROWS[proposal["trait"].name]
-        try:
-            return check(row, proposal["value"])
-        except Refused:
-            raise _refusal(self, row, proposal) from None
+    _check = _checked(_ROWS)
 
     def _answer(self, _widget, content, buffers):
         """The figure asks for a build's WebAssembly (once per page: it is sent as a binary buffer), or
@@ -169,13 +177,7 @@ class _Plane(_Asking):
         return await self._ask("toSVG", int(size))
 
 
-    @traitlets.validate(*_PLANE_ROWS)
-    def _check(self, proposal):
-        row = _PLANE_ROWS[proposal["trait"].name]
-        try:
-            return check(row, proposal["value"])
-        except Refused:
-            raise _refusal(self, row, proposal) from None
+    _check = _checked(_PLANE_ROWS)
 
 
 Metaballs2d = type(
