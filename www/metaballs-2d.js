@@ -10,7 +10,8 @@
 import { PLANE_TABLE } from './lib/attributes.js';
 import { DEFAULT_SHOWN, paint, picture, toSvg } from './lib/plane/picture.js';
 import { PANEL_CONTROLS, planePanel, readControls } from './lib/plane/panel.js';
-import { addOrRemove, circleAt, circlesText, moveCircles, parseCircles, seededCircles } from './lib/plane/circles.js';
+import { CircleGestures } from './lib/plane/circle-gestures.js';
+import { circlesText, moveCircles, parseCircles, seededCircles } from './lib/plane/circles.js';
 import { readLevels, readSetting, readShown } from './lib/plane/settings.js';
 import { download, readScene, writeScene } from './lib/plane/scene-file.js';
 import { followed, sliceKey, sliceSource } from './lib/plane/slice-source.js';
@@ -80,7 +81,7 @@ export class Metaballs2d extends Base {
   #given = null;
   #frame = 0;
   #last = 0;
-  #drag = null;
+  #gestures;
   #result = null;
   #size = 0;
   #observer = null;
@@ -97,10 +98,17 @@ export class Metaballs2d extends Base {
       + '<div id="notice" part="notice" role="status" hidden></div><div class="controls"></div></div><div class="side"></div>';
     this.#canvas = root.querySelector('canvas');
     this.#notice = root.getElementById('notice');
-    this.#canvas.addEventListener('pointerdown', (e) => this.#grab(e));
-    this.#canvas.addEventListener('pointermove', (e) => this.#move(e));
-    for (const end of ['pointerup', 'pointercancel']) this.#canvas.addEventListener(end, () => this.#drop());
-    this.#canvas.addEventListener('dblclick', (e) => this.#addOrRemove(e));
+    this.#gestures = new CircleGestures(this.#canvas, {
+      circles: () => this.circleList,
+      size: () => this.#size,
+      locked: () => this.hasAttribute('slice-of'),
+      moved: () => {
+        this.#draw();
+        this.dispatchEvent(new CustomEvent('metaballs-2d-drag', { detail: { circles: this.circleList }, bubbles: true, composed: true }));
+      },
+      edited: () => this.#setInside('circles', circlesText(this.circleList)),
+      refused: (text) => this.#say(text),
+    });
     this.#stepper = new SquareStepper(root.querySelector('.side'), {
       cells: () => this.#cells(),
       result: () => this.#result ?? this.#draw(),
@@ -234,18 +242,6 @@ export class Metaballs2d extends Base {
     } catch (error) {
       this.#say(`${file.name}: ${error.message}; the scene is unchanged`);
     }
-  }
-
-  // A double-click adds a circle where there is none, and removes the one under the pointer.
-  #addOrRemove(event) {
-    const [x, y] = this.#toBox(event);
-    if (addOrRemove(this.circleList, x, y, this.#near())) this.#setInside('circles', circlesText(this.circleList));
-    else this.#say('circles: the last circle stays (the figure needs one)');
-  }
-
-  #drop() {
-    if (this.#drag) this.#setInside('circles', circlesText(this.circleList));
-    this.#drag = null;
   }
 
   #say(text) {
@@ -406,7 +402,7 @@ export class Metaballs2d extends Base {
     const dt = this.#last ? Math.min(0.05, (now - this.#last) / 1000) : 0;
     this.#last = now;
     // While the stepper is open the circles hold still, and a playing stepper advances.
-    const moving = !this.#settings.paused && !this.#drag && this.#stepper.step === null && !this.hasAttribute('slice-of');
+    const moving = !this.#settings.paused && !this.#gestures.dragged && this.#stepper.step === null && !this.hasAttribute('slice-of');
     if (moving) moveCircles(this.circleList, dt * this.#settings.speed);
     this.#stepper.advance(dt);
     // A figure following a 3D figure's slice looks every frame (its spheres move), and draws when what
@@ -422,31 +418,6 @@ export class Metaballs2d extends Base {
     // The picture for print, once a changed picture has settled.
     if (drawing) clearTimeout(this.#printTimer);
     if (drawing && !changing) this.#printTimer = setTimeout(this.#forPrint, 300);
-  }
-
-  #toBox(event) {
-    const rect = this.#canvas.getBoundingClientRect();
-    return [((event.clientX - rect.left) / rect.width) * 2 - 1, 1 - ((event.clientY - rect.top) / rect.height) * 2];
-  }
-
-  #grab(event) {
-    const [x, y] = this.#toBox(event);
-    const found = circleAt(this.circleList, x, y, this.#near());
-    if (!found || this.hasAttribute('slice-of')) return;
-    this.#drag = found;
-    this.#canvas.setPointerCapture?.(event.pointerId);
-  }
-
-  // A finger's width (12 pixels) in the box's units: a small circle is found within it.
-  #near() { return 24 / Math.max(1, this.#size); }
-
-  #move(event) {
-    if (!this.#drag) return;
-    const [x, y] = this.#toBox(event);
-    this.#drag.x = Math.max(-1, Math.min(1, x));
-    this.#drag.y = Math.max(-1, Math.min(1, y));
-    this.#draw();
-    this.dispatchEvent(new CustomEvent('metaballs-2d-drag', { detail: { circles: this.circleList }, bubbles: true, composed: true }));
   }
 }
 
