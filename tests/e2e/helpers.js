@@ -318,3 +318,13 @@ export async function benchSetup() {
   const browser = await chromium.launch({ executablePath: CHROMIUM, args: FLAGS, headless: true });
   return { base, browser, close: async () => { await browser.close(); server.kill(); } };
 }
+
+/**
+ * The rows of one of the lists in a generated table (`www/lib/attributes.js`, one row a line):
+ * `TABLE` (<metaballs-view>'s) or `PLANE_TABLE` (<metaballs-2d>'s).
+ */
+export function tableRows(file = path.join(root, 'www/lib/attributes.js'), list = 'TABLE') {
+  const source = readFileSync(file, 'utf8');
+  return source.split(`export const ${list} = Object.freeze([\n`)[1].split('\n]);')[0]
+    .split('\n').map((line) => JSON.parse(line.trim().replace(/,$/, '')));
+}

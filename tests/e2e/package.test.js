@@ -9,7 +9,7 @@ import { cpSync, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } f
 import os from 'node:os';
 import path from 'node:path';
 import { chromium } from 'playwright-core';
-import { CHROMIUM, FLAGS, builtBy, freePort, root, waitForServer } from './helpers.js';
+import { CHROMIUM, FLAGS, builtBy, freePort, root, tableRows, waitForServer } from './helpers.js';
 
 const e2e = path.join(root, 'tests/e2e');
 const version = readFileSync(path.join(root, 'Cargo.toml'), 'utf8').match(/^version = "([^"]+)"/m)[1];
@@ -92,11 +92,14 @@ test('publint passes, and the packed manifest lists every attribute of the table
   assert.match(report, /All good/);
   const packed = path.join(project, 'node_modules/metaballs-view');
   const manifest = JSON.parse(readFileSync(path.join(packed, 'www/custom-elements.json'), 'utf8'));
-  const table = readFileSync(path.join(packed, 'www/lib/attributes.js'), 'utf8')
-    .split('\n').filter((line) => line.startsWith('  {')).map((line) => JSON.parse(line.trim().replace(/,$/, '')));
-  const attributes = manifest.modules[0].declarations[0].attributes;
-  assert.deepEqual(attributes.map((a) => a.name), table.map((p) => p.name));
-  for (const [a, p] of attributes.map((a, i) => [a, table[i]])) assert.equal(JSON.parse(a.default), p.default, a.name);
+  // Both elements: <metaballs-view> with the table's rows, <metaballs-2d> with its own.
+  for (const [module, list, tag] of [[0, 'TABLE', 'metaballs-view'], [1, 'PLANE_TABLE', 'metaballs-2d']]) {
+    const declaration = manifest.modules[module].declarations[0];
+    assert.equal(declaration.tagName, tag);
+    const table = tableRows(path.join(packed, 'www/lib/attributes.js'), list);
+    assert.deepEqual(declaration.attributes.map((a) => a.name), table.map((p) => p.name));
+    for (const [a, p] of declaration.attributes.map((a, i) => [a, table[i]])) assert.equal(JSON.parse(a.default), p.default, a.name);
+  }
   assert.equal(JSON.parse(readFileSync(path.join(packed, 'package.json'), 'utf8')).customElements, 'www/custom-elements.json');
 });
 

@@ -6,16 +6,13 @@
 
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
-import path from 'node:path';
-import { useServerAndBrowser, openClosedAfterEach, root, waitForTriangles } from './helpers.js';
+import { useServerAndBrowser, openClosedAfterEach, tableRows, waitForTriangles } from './helpers.js';
 
 useServerAndBrowser();
 const open = openClosedAfterEach();
 
-// The element's table as it is shipped: one row a line.
-const TABLE = readFileSync(path.join(root, 'www/lib/attributes.js'), 'utf8')
-  .split('\n').filter((line) => line.startsWith('  {')).map((line) => JSON.parse(line.trim().replace(/,$/, '')));
+// The element's table as it is shipped.
+const TABLE = tableRows();
 
 // Settings whose value a link may not carry here: a poster and a sync group are URLs and names of
 // the page, not of the figure's picture.
@@ -36,6 +33,7 @@ function otherText(row) {
     case 'choice': return row.words.find((w) => w !== row.value);
     case 'list': return row.words.find((w) => w !== row.value);
     case 'slice': return 'z:0.25';
+    case 'cell': return '1,2,3';
     case 'spheres': return '0,0,0,0.3';
     default: return 'a figure';
   }

@@ -199,7 +199,7 @@ pub const PARAMETERS: &[Parameter] = &[
         .slider(1.5, 20.0, 0.1)
         .url("dist")
         .renderer(real!(camera.distance)),
-    row("march", "March at cell", Kind::Cell, "off").renderer(Field::View {
+    row("march", "March at cell", Kind::Cell, "off").page_only().renderer(Field::View {
         set: |o, v| o.march = March::parse(v.text()).ok().flatten(),
         get: |o| Value::Text(March::text(o.march)),
     }),
