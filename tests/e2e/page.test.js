@@ -29,6 +29,9 @@ test('the page shows glossy blobs with no console errors', async () => {
   assert.match(await page.textContent('#adapter'), /WebGPU/);
   // SwiftShader is a software adapter: the page starts without multisampling there.
   assert.equal(await page.isChecked('#antialiasing'), false);
+  // The frame rate shows once a half second has had a frame drawn in it ('–' before, on a busy machine).
+  await page.waitForFunction(() => /^\d+(\.\d)?$/.test(document.querySelector('metaballs-view').shadowRoot
+    .getElementById('fps').textContent), null, { timeout: 15000 }).catch(() => {});
   assert.match(await page.textContent('#fps'), /^\d+(\.\d)?$/);
   assert.equal(await page.isVisible('#message'), false);
   // At its render scale, which falls below 1 while this software renderer's frames are slow.
