@@ -20,6 +20,9 @@
 /// The spheres and settings: the `metaballs-scene` crate (`scene/`).
 pub use metaballs_scene as scene;
 
+/// The field's critical points and the topology along the iso level (`metaballs-core`).
+pub use metaballs_core::critical;
+
 pub mod device;
 
 pub mod extract;

@@ -29,9 +29,63 @@ mod cli {
         Export(ExportArgs),
         /// Time animated frames for a table of resolutions and sphere counts.
         Bench(BenchArgs),
+        /// Find the field's critical points (where blobs join, tunnels open and close), time the
+        /// search, and print what each does, or the result as JSON.
+        Critical(CriticalArgs),
         /// Write the element's description from the parameter table: www/lib/attributes.js,
         /// www/custom-elements.json and www/metaballs-view.d.ts.
         Manifest(ManifestArgs),
+    }
+
+    #[derive(clap::Args)]
+    struct CriticalArgs {
+        /// Sphere counts of the seeded layouts to search, comma-separated.
+        #[arg(long, value_delimiter = ',', default_value = "5,16,64")]
+        spheres: Vec<u32>,
+        /// Layout seed.
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// Searches per count (the layout moves 1/30 s between them); the median time is printed.
+        #[arg(long, default_value_t = 20)]
+        repeat: u32,
+        /// Print the last search of each count as JSON instead of the table.
+        #[arg(long)]
+        json: bool,
+    }
+
+    fn critical(args: CriticalArgs) -> Result<(), Box<dyn std::error::Error>> {
+        use metaballs::critical::{self, json};
+        if !args.json {
+            println!("spheres | median ms | max ms | critical points | joins | undecided | proven complete");
+        }
+        for &count in &args.spheres {
+            let mut scene = Scene::new(args.seed, check_u32("spheres", count, 1, 64)?)?;
+            let mut times = Vec::new();
+            let mut last = None;
+            for _ in 0..args.repeat.max(1) {
+                scene.step(1.0 / 30.0)?;
+                let start = Instant::now();
+                let found = critical::find(scene.spheres());
+                times.push(start.elapsed().as_secs_f64() * 1e3);
+                last = Some(found);
+            }
+            times.sort_by(f64::total_cmp);
+            let found = last.expect("one search at least");
+            let median = times[times.len() / 2];
+            if args.json {
+                println!("{}", json::to_json(&found, median));
+                continue;
+            }
+            let joins = found.points.iter().filter(|p| p.role == critical::Role::Join).count();
+            println!(
+                "{count:7} | {median:9.2} | {:6.2} | {:15} | {joins:5} | {:9} | {}",
+                times[times.len() - 1],
+                found.points.len(),
+                found.undecided,
+                found.complete
+            );
+        }
+        Ok(())
     }
 
     #[derive(clap::Args)]
@@ -349,6 +403,7 @@ mod cli {
             Command::Bench(args) => bench(args),
             Command::Export(args) => export(args),
             Command::Manifest(args) => manifest(args),
+            Command::Critical(args) => critical(args),
         };
         match result {
             Ok(()) => ExitCode::SUCCESS,

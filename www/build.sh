@@ -37,3 +37,9 @@ build() {
 # function names (panic traces show indices instead).
 build pkg --remove-name-section --remove-producers-section --
 build pkg-webgl --remove-name-section --remove-producers-section -- --no-default-features --features webgl
+# The critical points' search and the measures along the iso level (levels/): a third, small module,
+# loaded by the topology worker only when a figure asks for them.
+cargo build --profile wasm --lib --target wasm32-unknown-unknown -p metaballs-levels
+wasm-bindgen --target web --no-typescript --remove-name-section --remove-producers-section --out-dir pkg-levels \
+    target/wasm32-unknown-unknown/wasm/metaballs_levels.wasm
+echo "built pkg-levels/metaballs_levels_bg.wasm ($(wc -c < pkg-levels/metaballs_levels_bg.wasm) bytes, $(gzip -9c pkg-levels/metaballs_levels_bg.wasm | wc -c) gzipped)"

@@ -4,6 +4,7 @@
 //! not how they are named: the browser's build makes this crate fast (`opt-level = 3`, for the CPU
 //! mesher on the page's thread) and everything else small (`Cargo.toml`, `[profile.wasm]`).
 
+pub mod critical;
 pub mod extract;
 
 /// The spheres and settings (the `metaballs-scene` crate, `scene/`), at the path the modules here and

@@ -12,6 +12,7 @@ mod architecture;
 mod bindings;
 mod cell_topology;
 mod cpu_mesher;
+mod critical;
 mod decider;
 mod editing;
 mod exact;
