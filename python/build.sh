@@ -12,11 +12,12 @@ source www/need-deb.sh
 
 static=python/src/metaballs_widget/static
 rm -rf "$static"
-mkdir -p "$static/pkg" "$static/pkg-webgl"
+mkdir -p "$static/pkg" "$static/pkg-webgl" "$static/pkg-levels"
 bundle_widget "$static/widget.js"
 bundle_plane_widget "$static/widget-2d.js"
 cp pkg/metaballs_bg.wasm "$static/pkg/"
 cp pkg-webgl/metaballs_bg.wasm "$static/pkg-webgl/"
+cp pkg-levels/metaballs_levels_bg.wasm "$static/pkg-levels/"
 cp www/parameters.json "$static/parameters.json"
 cp www/plane-parameters.json "$static/plane-parameters.json"
 

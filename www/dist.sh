@@ -18,11 +18,11 @@ source www/need-deb.sh
 need_esbuild
 
 rm -rf dist
-mkdir -p dist/www dist/pkg dist/pkg-webgl
+mkdir -p dist/www dist/pkg dist/pkg-webgl dist/pkg-levels
 cp index.html embed.html squares.html dist/
-"$esbuild" www/metaballs-view.js www/page.js www/lib/engine/mesh-worker.js --bundle --splitting --format=esm --minify --sourcemap \
+"$esbuild" www/metaballs-view.js www/page.js www/lib/engine/mesh-worker.js www/lib/engine/levels-worker.js --bundle --splitting --format=esm --minify --sourcemap \
     --target=es2022 --outbase=www --outdir=dist/www --chunk-names='lib/engine/[name]-[hash]' \
-    --external:'../../../pkg/*' --external:'../../../pkg-webgl/*' --log-level=warning
+    --external:'../../../pkg/*' --external:'../../../pkg-webgl/*' --external:'../../../pkg-levels/*' --log-level=warning
 # The 2D figure is bundled on its own (it loads no wasm), so that a page of 3D figures fetches no chunk
 # it shares with it.
 "$esbuild" www/metaballs-2d.js www/plane-page.js --bundle --format=esm --minify --sourcemap --target=es2022 --outdir=dist/www \
@@ -34,6 +34,7 @@ fi
 cp -r www/examples www/metaballs-view.css www/style.css dist/www/
 cp pkg/metaballs.js pkg/metaballs_bg.wasm dist/pkg/
 cp pkg-webgl/metaballs.js pkg-webgl/metaballs_bg.wasm dist/pkg-webgl/
+cp pkg-levels/metaballs_levels.js pkg-levels/metaballs_levels_bg.wasm dist/pkg-levels/
 # Every file the bundled modules name relative to themselves (`new URL("…", import.meta.url)`: the
 # WebAssembly, its JavaScript, the mesher worker) is where that path leads from the file that names it.
 missing=0

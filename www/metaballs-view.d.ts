@@ -22,6 +22,36 @@ export interface MetaballsSphere {
 /** The cell inspector's report (see docs/teaching.md). */
 export type MetaballsCellReport = Record<string, unknown>;
 
+/** A critical point of the field (see docs/teaching.md, "Along the iso level"). */
+export interface MetaballsCriticalPoint {
+  position: [number, number, number];
+  value: number;
+  index: 0 | 1 | 2 | 3;
+  role: 'join' | 'loop' | 'hole' | 'cavity' | 'fill' | 'birth' | 'unresolved';
+  eigenvalues: [number, number, number];
+  ends: unknown[];
+  inBox: boolean;
+}
+
+export interface MetaballsLevelCounts {
+  blobs: number;
+  cavities: number;
+  genus: number;
+  surfaces: number;
+}
+
+export interface MetaballsCriticalPoints {
+  points: MetaballsCriticalPoint[];
+  tree: { value: number | null; children: number[]; point: number | null; spheres: number[] }[];
+  bands: (MetaballsLevelCounts & { above: number | null; below: number })[];
+  complete: boolean;
+  undecided: number;
+  wallLevel: number;
+  milliseconds: number;
+  iso: number;
+  counts: MetaballsLevelCounts | null;
+}
+
 export declare class MetaballsView extends HTMLElement {
   /** Sphere count: 1 to 64. Attribute `spheres`; default 5. */
   spheres: number;
@@ -57,6 +87,8 @@ export declare class MetaballsView extends HTMLElement {
   colorBy: 'none' | 'area' | 'quality' | 'case' | 'level' | 'error';
   /** Ambiguous: a boolean attribute. Attribute `ambiguous`; default false. */
   ambiguous: boolean;
+  /** Critical: a boolean attribute. Attribute `critical`; default false. */
+  critical: boolean;
   /** Color: #rrggbb. Attribute `color`; default "#e77661". */
   color: string;
   /** Theme: dark, light, auto. Attribute `theme`; default "dark". */
@@ -107,7 +139,7 @@ export declare class MetaballsView extends HTMLElement {
   get sphereList(): MetaballsSphere[];
   /** Sphere-list: x,y,z,radius[,vx,vy,vz] per sphere joined by ; (a negative radius subtracts). Attribute `sphere-list`; default "". */
   set sphereList(value: string | MetaballsSphere[]);
-  /** Controls: all, none, or a comma list of spheres, iso, resolution, lod, lod-pixels, lod-freeze, mesh-on, method, speed, seed, paused, pause-on, step, view, display, compare, grid, color-by, ambiguous, color, theme, antialiasing, slice, interpolation, table, blend, saddle, inspector, step-through, error-plot, light, spot-angle, spot-softness, ambient, diffuse, specular, shininess, projection, fov, edit, scene, export. Attribute `controls`; default "none". */
+  /** Controls: all, none, or a comma list of spheres, iso, resolution, lod, lod-pixels, lod-freeze, mesh-on, method, speed, seed, paused, pause-on, step, view, display, compare, grid, color-by, ambiguous, critical, color, theme, antialiasing, slice, interpolation, table, blend, saddle, inspector, step-through, error-plot, levels, light, spot-angle, spot-softness, ambient, diffuse, specular, shininess, projection, fov, edit, scene, export. Attribute `controls`; default "none". */
   controls: string;
   /** Hud: on, off. Attribute `hud`; default "off". */
   hud: 'on' | 'off';
@@ -151,6 +183,8 @@ export declare class MetaballsView extends HTMLElement {
   inspectCell(x: number, y: number, z: number): MetaballsCellReport | null;
   /** Lets go of the inspected cell or the selected sphere. */
   deselect(): void;
+  /** The field's critical points for the spheres now (found with proof), the merge tree and the counts between critical levels. */
+  criticalPoints(): Promise<MetaballsCriticalPoints>;
   /** The scene (spheres and every setting of the picture) as a JSON document. */
   saveScene(): string;
   /** Loads a scene document; throws with what is wrong, keeping the scene. */

@@ -36,13 +36,14 @@ import { SphereEditor } from './lib/features/editor.js';
 import { Sync } from './lib/features/sync.js';
 import { TableChange } from './lib/features/table-change.js';
 import { TopologyWatch } from './lib/features/topology.js';
+import { IsoLevels } from './lib/features/levels.js';
 
 // The setting that holds spheres placed by hand, as text.
 const SPHERE_LIST = nameOfKind('spheres');
 
 // The features every figure has, in the order they hear of changes and frames.
 const FEATURES = [FigureSize, FigureDetail, Look, Guard, Hud, Playback, Camera, Inspector, Stepper, SphereEditor,
-  SceneFiles, TopologyWatch, TableChange, Sync, ErrorPlot, Panel];
+  SceneFiles, TopologyWatch, IsoLevels, TableChange, Sync, ErrorPlot, Panel];
 
 export class MetaballsView extends FigureBase {
   /** GPU memory held by every element's buffers and targets, in bytes. */
@@ -199,6 +200,14 @@ export class MetaballsView extends FigureBase {
   deselect() {
     if (!this.#ctx.get(SphereEditor).deselect()) this.#ctx.get(Inspector).deselect();
   }
+
+  /**
+   * The field's critical points for the spheres now, found with proof off the page's thread: resolves
+   * to { points: [{ position, value, index, role, eigenvalues, ends, inBox }], tree: [{ value, children,
+   * point, spheres }], bands: [{ above, below, blobs, cavities, genus, surfaces }], complete, undecided,
+   * wallLevel, milliseconds, iso, counts } (`counts`: the band holding the iso level).
+   */
+  criticalPoints() { return this.#ctx.get(IsoLevels).result(); }
 
   /** What marching cubes decided in the inspected cell, as last shown; null when none is selected. */
   get inspected() { return this.#ctx.get(Inspector).report; }

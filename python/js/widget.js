@@ -22,7 +22,7 @@ const SPHERE_LIST = nameOfKind('spheres');
 // The trait of an attribute in Python (`max-pixel-ratio` → `max_pixel_ratio`).
 const traitName = (name) => rowOf(name)?.python ?? name.replace(/-/g, '_');
 // Where each build's WebAssembly sits in a folder laid out as dist/ (and in the wheel's static/ folder).
-const WASM_FILES = { webgpu: 'pkg/metaballs_bg.wasm', webgl2: 'pkg-webgl/metaballs_bg.wasm' };
+const WASM_FILES = { webgpu: 'pkg/metaballs_bg.wasm', webgl2: 'pkg-webgl/metaballs_bg.wasm', levels: 'pkg-levels/metaballs_levels_bg.wasm' };
 // How often the statistics (triangles, frame rate) are sent back, in ms.
 const STATS_EVERY_MS = 500;
 
@@ -52,11 +52,11 @@ function tellWasmSources(model) {
     if (folder || typeof model.send !== 'function' || import.meta.url.startsWith('http')) return beside(build);
     return fromKernel(model, build).catch(() => beside(build));
   };
-  View.wasmSources = { webgpu: source('webgpu'), webgl2: source('webgl2') };
+  View.wasmSources = { webgpu: source('webgpu'), webgl2: source('webgl2'), levels: source('levels') };
 }
 
 // What Python may ask the figure (`Metaballs.save_scene()` and the rest), by the element's method names.
-const CALLS = new Set(['saveScene', 'loadScene', 'exportMesh', 'picture', 'nextFrame']);
+const CALLS = new Set(['saveScene', 'loadScene', 'exportMesh', 'picture', 'nextFrame', 'criticalPoints']);
 
 // Runs a method Python asked for and sends the answer: a value, bytes as a binary buffer, or the error.
 async function answer(model, figure, { id, method, args = [] }) {

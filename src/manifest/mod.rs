@@ -37,6 +37,11 @@ pub const METHODS: &[(&str, &str, &str)] = &[
         "Selects a cell for the inspector and returns its report (null outside the grid).",
     ),
     ("deselect", "(): void", "Lets go of the inspected cell or the selected sphere."),
+    (
+        "criticalPoints",
+        "(): Promise<MetaballsCriticalPoints>",
+        "The field's critical points for the spheres now (found with proof), the merge tree and the counts between critical levels.",
+    ),
     ("saveScene", "(): string", "The scene (spheres and every setting of the picture) as a JSON document."),
     (
         "loadScene",
@@ -372,7 +377,16 @@ pub fn declarations() -> String {
          export interface MetaballsSphere {\n  center: [number, number, number];\n  radius: number;\n  \
          velocity: [number, number, number];\n  /** 1 adds the sphere's term, -1 subtracts it. */\n  charge: 1 | -1;\n}\n\n\
          /** The cell inspector's report (see docs/teaching.md). */\n\
-         export type MetaballsCellReport = Record<string, unknown>;\n\n",
+         export type MetaballsCellReport = Record<string, unknown>;\n\n\
+         /** A critical point of the field (see docs/teaching.md, \"Along the iso level\"). */\n\
+         export interface MetaballsCriticalPoint {\n  position: [number, number, number];\n  value: number;\n  \
+         index: 0 | 1 | 2 | 3;\n  role: 'join' | 'loop' | 'hole' | 'cavity' | 'fill' | 'birth' | 'unresolved';\n  \
+         eigenvalues: [number, number, number];\n  ends: unknown[];\n  inBox: boolean;\n}\n\n\
+         export interface MetaballsLevelCounts {\n  blobs: number;\n  cavities: number;\n  genus: number;\n  surfaces: number;\n}\n\n\
+         export interface MetaballsCriticalPoints {\n  points: MetaballsCriticalPoint[];\n  \
+         tree: { value: number | null; children: number[]; point: number | null; spheres: number[] }[];\n  \
+         bands: (MetaballsLevelCounts & { above: number | null; below: number })[];\n  complete: boolean;\n  \
+         undecided: number;\n  wallLevel: number;\n  milliseconds: number;\n  iso: number;\n  counts: MetaballsLevelCounts | null;\n}\n\n",
     );
     out += "export declare class MetaballsView extends HTMLElement {\n";
     for p in PARAMETERS {

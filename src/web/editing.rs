@@ -111,6 +111,15 @@ impl View {
             .map_err(js_error)
     }
 
+    /// Where each point of `xyz` (three numbers a point) is on the canvas: `[x, y]` in device pixels
+    /// per point, NaN for one behind the eye. For marks drawn over the figure (the critical points).
+    pub fn points_on_screen(&self, xyz: &[f32]) -> Vec<f32> {
+        let view = self.renderer.camera_view();
+        xyz.chunks_exact(3)
+            .flat_map(|p| view.pixel_of(glam::Vec3::from_slice(p)).map_or([f32::NAN; 2], |q| [q.x, q.y]))
+            .collect()
+    }
+
     /// Where sphere `index` is on the canvas: [x, y, radius] in device pixels, or nothing.
     pub fn sphere_on_screen(&self, index: u32) -> Option<Vec<f32>> {
         self.renderer.sphere_on_screen(index as usize).map(|v| v.to_vec())

@@ -35,6 +35,7 @@ const SHARED = [
   'squares.test.js', // 4
   'plane.test.js', // 15
   'march.test.js', // 40
+  'levels.test.js', // 20
   'size.test.js', // 0.1
   'frame-cost.test.js', // 0.3
 ];

@@ -14,21 +14,23 @@ import { root } from './helpers.js';
 const BUDGETS = [
   { build: 'pkg', api: 'WebGPU', budget: 200_000 },
   { build: 'pkg-webgl', api: 'WebGL2', budget: 900_000 },
+  // The critical points' module, fetched only by a figure that shows them.
+  { build: 'pkg-levels', api: 'critical points', budget: 70_000, file: 'metaballs_levels_bg.wasm' },
 ];
 
-for (const { build, api, budget } of BUDGETS) {
+for (const { build, api, budget, file: name = 'metaballs_bg.wasm' } of BUDGETS) {
   test(`the ${api} build's wasm is at most ${budget} bytes gzipped`, () => {
-    const file = path.join(root, build, 'metaballs_bg.wasm');
+    const file = path.join(root, build, name);
     let bytes;
     try {
       bytes = readFileSync(file);
     } catch (error) {
       assert.fail(`${path.relative(root, file)} cannot be read (${error.code}): build it with bash www/build.sh`);
     }
-    assert.deepEqual([...bytes.subarray(0, 4)], [0x00, 0x61, 0x73, 0x6d], `${build}/metaballs_bg.wasm is not WebAssembly`);
+    assert.deepEqual([...bytes.subarray(0, 4)], [0x00, 0x61, 0x73, 0x6d], `${build}/${name} is not WebAssembly`);
     const gzipped = execFileSync('gzip', ['-9c', file], { maxBuffer: 64 << 20 }).length;
-    console.log(`${build}/metaballs_bg.wasm: ${bytes.length} bytes, ${gzipped} gzipped (budget ${budget})`);
+    console.log(`${build}/${name}: ${bytes.length} bytes, ${gzipped} gzipped (budget ${budget})`);
     assert.ok(gzipped <= budget,
-      `${build}/metaballs_bg.wasm is ${gzipped} bytes gzipped, ${gzipped - budget} over its budget of ${budget}`);
+      `${build}/${name} is ${gzipped} bytes gzipped, ${gzipped - budget} over its budget of ${budget}`);
   });
 }

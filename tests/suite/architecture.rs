@@ -12,7 +12,7 @@ use std::path::Path;
 /// The folders of `src/`, lowest first; a folder may import its own and those before it. Modules at
 /// the top of `src/` (the native tools, `lib.rs`, `main.rs`), `web/` and `manifest/` (the elements'
 /// descriptions, a native tool) may import any.
-const LAYERS: &[&str] = &["scene", "device", "extract", "teach", "view", "draw", "renderer"];
+const LAYERS: &[&str] = &["scene", "device", "extract", "critical", "teach", "view", "draw", "renderer"];
 const SHELLS: &[&str] = &["web", "manifest"];
 /// The scene's modules, in the only order they may import each other.
 const SCENE_ORDER: &[&str] =

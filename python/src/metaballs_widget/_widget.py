@@ -14,7 +14,11 @@ from ._parameters import PLANE_TABLE, STATIC, TABLE, Refused, check, older_names
 _ROWS = {row["python"]: row for row in TABLE}
 _PLANE_ROWS = {row["python"]: row for row in PLANE_TABLE}
 _OLDER = older_names()
-_WASM = {"webgpu": "pkg/metaballs_bg.wasm", "webgl2": "pkg-webgl/metaballs_bg.wasm"}
+_WASM = {
+    "webgpu": "pkg/metaballs_bg.wasm",
+    "webgl2": "pkg-webgl/metaballs_bg.wasm",
+    "levels": "pkg-levels/metaballs_levels_bg.wasm",
+}
 MESH_FORMATS = ("stl", "obj", "ply")
 
 
@@ -129,6 +133,13 @@ class _Figure(_Asking):
         if format not in MESH_FORMATS:
             raise ValueError(f"format must be one of {', '.join(MESH_FORMATS)}, got {format!r}")
         return await self._ask("exportMesh", format)
+
+    async def critical_points(self) -> dict:
+        """The field's critical points for the spheres now (found with proof): ``points`` (``position``,
+        ``value`` = the iso level at which the surface passes through it, ``index``, ``role``: join, loop,
+        hole, cavity, fill or birth), the merge ``tree``, the ``bands`` between critical levels with their
+        ``blobs``, ``cavities`` and ``genus``, and ``counts`` at the figure's iso level."""
+        return await self._ask("criticalPoints")
 
     async def picture(self, scale: float = 1.0) -> bytes:
         """A PNG of the view at the figure's size times ``scale`` (show it with ``IPython.display.Image``)."""

@@ -119,6 +119,7 @@ pub const PARAMETERS: &[Parameter] = &[
         .compute()
         .renderer(word!(color_by: ColorBy)),
     row("ambiguous", "Ambiguous", Kind::Boolean, "false").group(Look).compute().renderer(flag!(ambiguous)),
+    row("critical", "Critical points", Kind::Boolean, "false").group(Look).page_only(),
     row("color", "Colour", Kind::Color, "#e77661").group(Look).renderer(Field::Settings {
         set: |s, v| s.material.base_color = srgb_hex_to_linear(v.text()),
         get: |s| Value::Text(linear_to_srgb_hex(s.material.base_color)),
@@ -232,6 +233,7 @@ pub const ACTIONS: &[Action] = &[
     Action { name: "inspector", aliases: &[], label: "Cell inspector", group: Teaching },
     Action { name: "step-through", aliases: &[], label: "Step through the march", group: Teaching },
     Action { name: "error-plot", aliases: &["error_plot"], label: "Error vs resolution", group: Teaching },
+    Action { name: "levels", aliases: &[], label: "Along the iso level", group: Teaching },
     Action { name: "scene", aliases: &[], label: "Scene file", group: Scene },
     Action { name: "export", aliases: &[], label: "Export", group: Scene },
 ];

@@ -3,6 +3,7 @@
 // watches (every parameter, under its name and its old spellings). Where the DOM is missing (a
 // server-side build), the class still loads and is never defined.
 
+import { setLevelsSource } from './levels.js';
 import { SPELLINGS } from '../core/table.js';
 import { hub } from './hub.js';
 import { setWasmSources, wasmBytes, wasmHeapBytes } from './wasm.js';
@@ -33,9 +34,13 @@ export class FigureBase extends Base {
   static get pipelineSets() { return hub.gpu?.pipeline_sets_built() ?? 0; }
   /**
    * Where the WebAssembly comes from when not from beside this module (set before the first figure
-   * connects): `{ webgpu, webgl2 }`, functions returning the wasm's bytes or Response, or promises of them.
+   * connects): `{ webgpu, webgl2, levels }`, functions returning the wasm's bytes or Response, or
+   * promises of them (`levels`: the critical points' module).
    */
-  static set wasmSources(sources) { setWasmSources(sources); }
+  static set wasmSources(sources) {
+    setWasmSources(sources);
+    if (sources.levels) setLevelsSource(sources.levels);
+  }
   /**
    * The time between the page's frames the figures aim for, in ms (30): a figure whose frames take
    * longer lowers its render scale, down to its `min-render-scale`, and then, with level of detail,

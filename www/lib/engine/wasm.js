@@ -68,6 +68,17 @@ const WEBGL_BUILD = {
   wasm: () => new URL('../../../pkg-webgl/metaballs_bg.wasm', import.meta.url),
 };
 
+/**
+ * The critical points' module (pkg-levels/, lib/engine/levels.js): its JavaScript's URL and a function
+ * importing it, its WebAssembly and its worker's module. Named here, where the paths hold once bundled.
+ */
+export const levelsFiles = () => ({
+  glue: new URL('../../../pkg-levels/metaballs_levels.js', import.meta.url),
+  load: () => import('../../../pkg-levels/metaballs_levels.js'),
+  wasm: new URL('../../../pkg-levels/metaballs_levels_bg.wasm', import.meta.url),
+  worker: new URL('./levels-worker.js', import.meta.url),
+});
+
 // Each build's compiled WebAssembly.Module, where it was fetched from beside this module.
 const compiledModules = new Map();
 

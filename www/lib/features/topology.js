@@ -1,9 +1,8 @@
 // The surface's shape, live: how many blobs, their genus, closed and manifold. It is worked out from
 // the CPU mesher's mesh, or from one readback of the GPU's mesh, on the page's mesher worker where there
-// is one (meshers.js; tens of milliseconds on a large mesh), only when asked: every second
-// while the statistics show, and after every frame while `pause-on=merge` waits for two blobs to touch
-// (the animation holds still until each answer is in, so it stops at the very frame they merge).
-// Merges and splits are announced in the figure's live region.
+// is one (meshers.js; tens of milliseconds on a large mesh), only when asked: every second while the
+// statistics show. Merges and splits of the mesh are announced in the figure's live region; the
+// field's own merges (and `pause-on=merge`) are levels.js's, from its critical points.
 
 import { meshShape } from '../engine/meshers.js';
 
@@ -29,13 +28,6 @@ export class TopologyWatch {
     return this.#last;
   }
 
-  /** True while the animation must wait for an answer (`pause-on=merge` with a check in flight). */
-  holds() { return this.holding; }
-
-  get holding() {
-    return this.#pending !== null && this.#ctx.state['pause-on'] === 'merge';
-  }
-
   /** The view changed (rebuilt, new spheres): the next answer starts a new count. */
   reset() {
     this.#last = null;
@@ -49,10 +41,9 @@ export class TopologyWatch {
    */
   frameDrawn(now) {
     const state = this.#ctx.state;
-    const watching = state['pause-on'] === 'merge' && !state.paused;
     const showing = state.hud === 'on' && now - this.#askedAt >= HUD_EVERY_MS;
-    if (this.#pending || !(watching || showing)) {
-      if (state.hud === 'on' && !watching) this.#askLater(now);
+    if (this.#pending || !showing) {
+      if (state.hud === 'on') this.#askLater(now);
       return;
     }
     this.#askedAt = now;
@@ -96,12 +87,9 @@ export class TopologyWatch {
     const before = this.#last;
     this.#last = shape;
     this.#ctx.each('shape', shape);
-    if (before && before.components !== components) {
+    if (before && before.components !== components && this.#ctx.state['pause-on'] !== 'merge') {
       const blobs = (n) => `${n} blob${n === 1 ? '' : 's'}`;
-      const stop = components < before.components && this.#ctx.state['pause-on'] === 'merge';
-      // Paused first, so that the merge is what the live region says last.
-      if (stop) this.#ctx.set('paused', true);
-      this.#ctx.each('announce', `${blobs(before.components)} → ${components}${stop ? ', paused where they touch' : ''}`);
+      this.#ctx.each('announce', `${blobs(before.components)} → ${components} in the mesh`);
     }
     return shape;
   }

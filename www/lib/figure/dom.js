@@ -67,7 +67,7 @@ const STYLE = `
 @media print {
   :host { box-shadow: none !important; break-inside: avoid; }
   canvas, #panel, #hud, #play, #notice, #wheel-hint, #confirm, #inspector, #march, #sphere-box, #edit-overlay,
-  #message { display: none !important; }
+  #critical-marks, #message { display: none !important; }
   #poster[src] { display: block; }
   #print-frame[src] { display: block; }
 }
@@ -159,6 +159,20 @@ figure.error-plot { margin: 6px 0 0; font-size: 11px; }
 figure.error-plot svg { display: block; width: 100%; height: auto; }
 figure.error-plot text { fill: currentColor; font-size: 9px; }
 figure.error-plot line.grid { stroke: currentColor; opacity: 0.2; }
+div.levels svg { display: block; width: 100%; height: auto; margin-top: 4px; touch-action: none; }
+div.levels text { fill: currentColor; font-size: 9px; }
+div.levels line.grid { stroke: currentColor; opacity: 0.2; }
+div.levels rect.walls { fill: currentColor; opacity: 0.08; }
+div.levels .cursor-line { stroke: var(--accent); stroke-width: 1.5; }
+div.levels .cursor-grip { fill: var(--accent); cursor: ew-resize; }
+div.levels .branch { stroke: currentColor; fill: none; opacity: 0.7; }
+div.levels .join { cursor: pointer; }
+div.levels .join:focus-visible circle, div.levels .cursor:focus-visible rect { stroke: var(--accent); stroke-width: 2; }
+div.levels ol.critical-levels { margin: 4px 0 0; padding-left: 18px; font-size: 11px; max-height: 8em; overflow: auto; }
+#hud-field-warning { color: #ffb86b; max-width: 28em; }
+#critical-marks { position: absolute; inset: 0; pointer-events: none; overflow: hidden; }
+#critical-marks span { position: absolute; left: 0; top: 0; margin: -0.6em 0 0 -0.45em; font: 11px/1 system-ui, sans-serif;
+  text-shadow: 0 0 2px #000, 0 0 2px #000; white-space: nowrap; }
 #hud #hud-quality-bars { display: inline-flex; align-items: flex-end; gap: 1px; height: 14px; vertical-align: middle; }
 #hud #hud-quality-bars i { display: inline-block; width: 6px; background: currentColor; opacity: 0.8; }
 #hud .key { display: inline-block; width: 56px; color: var(--muted); }
@@ -337,6 +351,8 @@ export const TEMPLATE = `
     <div class="wide" title="The fraction of the pixel ratio drawn: lower while frames are slow"><span class="key">Scale</span> <span id="hud-scale">–</span></div>
     <div id="hud-error" hidden><span class="key">Error</span> <span id="hud-error-text"></span></div>
     <div id="hud-topology" hidden><span class="key">Topology</span> <span id="hud-topology-text"></span></div>
+    <div id="hud-field" hidden title="The surface's shape from the field's critical points, exact at any resolution"><span class="key">Field</span> <span id="hud-field-text"></span></div>
+    <div id="hud-field-warning" class="wide warning" role="status" hidden></div>
     <div id="hud-quality" hidden><span class="key">Quality</span> <span id="hud-quality-bars" role="img"></span></div>
     <div id="hud-lod-cell" hidden title="The largest a cell looks on screen: larger while frames are slow, from lod-pixels up to max-lod-pixels"><span class="key">LOD cell</span> <span id="hud-lod-cell-text"></span></div>
     <div id="hud-lod" hidden><span class="key">LOD</span> <span id="hud-lod-summary"></span><ol id="hud-lod-levels"></ol></div>

@@ -1,0 +1,292 @@
+// Topology along the iso level, from the field itself: the critical points of the current spheres
+// (found with proof on the topology worker, lib/engine/levels.js), searched again as the spheres move
+// while anything shows them. What shows them:
+//   - the panel's "Along the iso level" (the `levels` control): the plot of blobs, genus, area and
+//     volume against the iso level with a cursor, the merge tree whose joins set the iso level just
+//     below them, and the critical levels in words;
+//   - `critical` (markers over the figure, by kind, with their values);
+//   - `pause-on=merge`: the animation waits for each frame's search, and stops at the frame the field's
+//     blobs join (not when a mesh notices);
+//   - the HUD's "Field" line, and where the mesh disagrees, what the field does there and why the mesh
+//     misses it (a neck thinner than a cell, a tunnel the table does not draw).
+// `criticalPoints()` gives the same result to scripts.
+
+import { countsAt, criticalPoints, measuresAlong, packSpheres } from '../engine/levels.js';
+import { drawPlot, drawTree, plotRange, ROLE_COLORS, ROLE_WORDS, round4 } from './levels-plot.js';
+import { TopologyWatch } from './topology.js';
+
+const EVERY_MS = 300;
+const MARK = { 3: '▲', 2: '◆', 1: '●', 0: '▼' };
+
+export class IsoLevels {
+  static attributes = ['critical'];
+  #ctx;
+  #result = null;
+  #packed = null;
+  #pending = null;
+  #askedAt = -Infinity;
+  #open = false;
+  #panel = null;
+  #marks = null;
+  #measures = null;
+  // The plot drawn last, and whether its cursor is being dragged (it is then moved, not drawn again).
+  #plot = null;
+  #dragging = false;
+
+  constructor(ctx) {
+    this.#ctx = ctx;
+  }
+
+  /** The newest search's result, or null. */
+  get latest() { return this.#result; }
+
+  changed(name) {
+    if (name === 'critical') this.#ctx.redraw(2);
+  }
+
+  controls() {
+    return { levels: (panel) => this.#control(panel) };
+  }
+
+  #wanted() {
+    const s = this.#ctx.state;
+    return this.#open || s.critical === true || s.critical === 'true' || (s['pause-on'] === 'merge' && !s.paused);
+  }
+
+  holds() {
+    return this.#pending !== null && this.#ctx.state['pause-on'] === 'merge' && !this.#ctx.state.paused;
+  }
+
+  /** Spheres as the search reads them, from the view. */
+  #spheres() {
+    const packed = this.#ctx.view?.spheres();
+    if (!packed) return null;
+    const out = new Float32Array((packed.length / 7) * 4);
+    for (let i = 0, j = 0; i + 7 <= packed.length; i += 7, j += 4) out.set(packed.slice(i, i + 4), j);
+    return out;
+  }
+
+  frameDrawn(now) {
+    if (!this.#wanted() || this.#pending) return;
+    const merge = this.#ctx.state['pause-on'] === 'merge' && !this.#ctx.state.paused;
+    if (!merge && now - this.#askedAt < EVERY_MS) return;
+    const packed = this.#spheres();
+    if (!packed || (this.#packed && !merge && same(packed, this.#packed) && this.#result)) return;
+    this.#askedAt = now;
+    this.#search(packed).catch(() => {});
+  }
+
+  /** Searches `packed` spheres; the figure's iso level at the time decides what is news. */
+  #search(packed) {
+    const before = this.#result ? countsAt(this.#result, Number(this.#ctx.state.iso)) : null;
+    this.#pending = criticalPoints(packed).then((result) => {
+      this.#packed = packed;
+      this.#result = result;
+      this.#take(result, before);
+      return result;
+    }).finally(() => { this.#pending = null; });
+    return this.#pending;
+  }
+
+  #take(result, before) {
+    const iso = Number(this.#ctx.state.iso);
+    const now = countsAt(result, iso);
+    if (before && now && now.blobs < before.blobs && this.#ctx.state['pause-on'] === 'merge' && !this.#ctx.state.paused) {
+      this.#ctx.set('paused', true);
+      const join = result.points.filter((p) => p.role === 'join' && p.value > iso).sort((a, b) => a.value - b.value)[0];
+      const where = join ? ` where the field joins them (f = ${round4(join.value)} at the saddle)` : '';
+      this.#ctx.each('announce', `${before.blobs} blobs → ${now.blobs}, paused${where}`);
+    }
+    this.#showHud();
+    if (this.#open) this.#drawPanel();
+    this.#ctx.redraw(1);
+  }
+
+  /** For scripts: resolves to the search's result for the spheres now, with the counts at the iso level. */
+  async result() {
+    const packed = this.#spheres();
+    if (!packed) throw new Error('the figure is not drawing');
+    const result = await this.#search(packed);
+    return { ...result, iso: Number(this.#ctx.state.iso), counts: countsAt(result, Number(this.#ctx.state.iso)) };
+  }
+
+  // ------------------------------------------------------------------ the HUD
+
+  #showHud() {
+    const $ = (id) => this.#ctx.$(id);
+    if (!$('hud-field') || !this.#result) return;
+    const iso = Number(this.#ctx.state.iso);
+    const counts = countsAt(this.#result, iso);
+    if (!counts) return;
+    $('hud-field').hidden = false;
+    const walls = iso <= this.#result.wallLevel ? ' · reaches the walls' : '';
+    $('hud-field-text').textContent = `${counts.surfaces} surface${counts.surfaces === 1 ? '' : 's'} · genus ${counts.genus}${walls}`;
+    const mesh = this.#ctx.get(TopologyWatch)?.latest;
+    const text = mesh && !walls ? disagreement(this.#result, counts, mesh, iso, Number(this.#ctx.state.resolution)) : '';
+    $('hud-field-warning').hidden = !text;
+    $('hud-field-warning').textContent = text;
+  }
+
+  shape() { this.#showHud(); }
+
+  // ------------------------------------------------------------------ markers over the figure
+
+  afterTick() {
+    const on = this.#ctx.state.critical === true || this.#ctx.state.critical === 'true';
+    if (!on || !this.#result || !this.#ctx.view) {
+      if (this.#marks) this.#marks.hidden = true;
+      return;
+    }
+    if (!this.#marks) {
+      this.#marks = document.createElement('div');
+      this.#marks.id = 'critical-marks';
+      this.#marks.setAttribute('aria-hidden', 'true');
+      this.#ctx.canvas.after(this.#marks);
+    }
+    this.#marks.hidden = false;
+    const points = this.#result.points.filter((p) => p.inBox);
+    const at = this.#ctx.view.points_on_screen(Float32Array.from(points.flatMap((p) => p.position)));
+    const scale = this.#ctx.canvas.width / Math.max(1, this.#ctx.canvas.clientWidth);
+    while (this.#marks.children.length > points.length) this.#marks.lastChild.remove();
+    points.forEach((p, k) => {
+      let mark = this.#marks.children[k];
+      if (!mark) {
+        mark = document.createElement('span');
+        this.#marks.append(mark);
+      }
+      const [x, y] = [at[2 * k] / scale, at[2 * k + 1] / scale];
+      mark.hidden = !Number.isFinite(x);
+      mark.style.transform = `translate(${x}px, ${y}px)`;
+      mark.style.color = ROLE_COLORS[p.role];
+      mark.textContent = `${MARK[p.index]} ${round4(p.value)}`;
+      mark.title = `f = ${round4(p.value)}: ${ROLE_WORDS[p.role]}`;
+    });
+  }
+
+  // ------------------------------------------------------------------ the panel
+
+  #control({ element, makeButton }) {
+    const body = element('div', { className: 'levels', hidden: true });
+    const button = makeButton('levels', 'Along the iso level',
+      'Find where the field\'s critical points change the surface, plot blobs and genus against the iso level and draw the merge tree', () => {
+        this.#open = !this.#open;
+        body.hidden = !this.#open;
+        button.setAttribute('aria-expanded', String(this.#open));
+        if (this.#open) {
+          this.#measures = null;
+          const packed = this.#spheres();
+          if (packed) this.#search(packed).catch((error) => { body.textContent = `The search stopped: ${error?.message ?? error}`; });
+        }
+      });
+    button.setAttribute('aria-expanded', 'false');
+    this.#panel = body;
+    return [element('div', { className: 'buttons' }, button), body];
+  }
+
+  refresh() {
+    if (this.#open && this.#result) this.#drawPanel();
+    this.#showHud();
+  }
+
+  #setIso(value) {
+    this.#ctx.set('iso', value);
+  }
+
+  /** Sets the iso level just below join `k` of the tree: where the neck is a cell and a half across. */
+  #chooseJoin(k) {
+    const result = this.#result;
+    const join = result.points[result.tree[k].point];
+    const cell = 2 / Number(this.#ctx.state.resolution);
+    const drop = Math.abs(join.eigenvalues[0]) * (0.75 * cell) ** 2 / 2;
+    const lower = result.points.map((p) => p.value).filter((v) => v < join.value * 0.9999 && v > 0).sort((a, b) => b - a)[0];
+    const floor = lower ? Math.sqrt(lower * join.value) : join.value * 0.5;
+    const iso = round4(Math.max(floor, Math.min(join.value - drop, join.value * 0.999)));
+    this.#setIso(iso);
+    const [a, b] = result.tree[k].children.map((c) => result.tree[c].spheres.join(', '));
+    this.#ctx.each('announce', `spheres ${a} and ${b} meet: iso ${iso}, just below ${round4(join.value)}`);
+  }
+
+  #drawPanel() {
+    const body = this.#panel;
+    const result = this.#result;
+    if (!body || !result) return;
+    const iso = Number(this.#ctx.state.iso);
+    if (this.#dragging && this.#plot) {
+      this.#plot.moveCursor(iso);
+      return;
+    }
+    const [low, high] = plotRange(result, iso);
+    const levels = Array.from({ length: 24 }, (_, i) => low * (high / low) ** ((i + 0.5) / 24));
+    if (!this.#measures || this.#measures.packed !== this.#packed) {
+      const packed = this.#packed;
+      this.#measures = { packed, values: null };
+      measuresAlong(packed, levels, 32).then((values) => {
+        if (this.#measures?.packed !== packed) return;
+        this.#measures.values = values;
+        this.#measures.levels = levels;
+        this.#drawPanel();
+      }, () => {});
+    }
+    const counts = countsAt(result, iso);
+    const status = document.createElement('p');
+    status.className = 'hint';
+    status.setAttribute('role', 'status');
+    const proof = result.complete && result.undecided === 0 ? 'all found, with proof' : 'the search may have missed some';
+    status.textContent = `${result.points.length} critical points (${proof}, ${result.milliseconds.toFixed(0)} ms). `
+      + (counts ? `At iso ${round4(iso)}: ${counts.blobs} blob${counts.blobs === 1 ? '' : 's'}, ${counts.cavities} cavit${counts.cavities === 1 ? 'y' : 'ies'}, genus ${counts.genus}.` : '');
+    this.#plot = drawPlot(result, iso, {
+      measures: this.#measures?.values,
+      levels: this.#measures?.levels ?? [],
+      onIso: (v) => this.#setIso(v),
+      onDrag: (on) => {
+        this.#dragging = on;
+        if (!on) this.#drawPanel();
+      },
+    });
+    const { svg } = this.#plot;
+    const key = document.createElement('p');
+    key.className = 'hint';
+    key.innerHTML = '<span style="color:#e77661">━</span> surfaces · <span style="color:#4aa3ff">╍</span> genus · <span style="color:#5ec962">━</span> area · <span style="color:#21918c">╍</span> volume (scaled) · shaded: the surface reaches the walls';
+    const tree = drawTree(result, iso, (k) => this.#chooseJoin(k));
+    const list = document.createElement('ol');
+    list.className = 'critical-levels';
+    list.tabIndex = 0;
+    list.setAttribute('aria-label', 'Critical levels, highest first');
+    for (const p of result.points.filter((q) => q.value > 0).slice(0, 24)) {
+      const item = document.createElement('li');
+      item.innerHTML = `<i style="color:${ROLE_COLORS[p.role]}">${MARK[p.index]}</i> f = ${round4(p.value)}: ${ROLE_WORDS[p.role]}`;
+      list.append(item);
+    }
+    const focused = body.contains(this.#ctx.root.activeElement) ? this.#ctx.root.activeElement.getAttribute('class') : null;
+    body.replaceChildren(status, svg, key, tree, list);
+    if (focused === 'cursor') svg.querySelector('.cursor')?.focus();
+  }
+}
+
+function same(a, b) {
+  return a.length === b.length && a.every((v, i) => v === b[i]);
+}
+
+/**
+ * Where the mesh's shape differs from the field's at `iso`: what the field does near there and why a
+ * mesh at `n`³ misses it, or ''.
+ */
+export function disagreement(result, counts, mesh, iso, n) {
+  const cell = 2 / n;
+  if (mesh.components > counts.surfaces) {
+    const join = result.points.filter((p) => p.role === 'join' && p.value > iso).sort((a, b) => a.value - b.value)[0];
+    if (!join) return `The mesh has ${mesh.components} pieces where the field has ${counts.surfaces}.`;
+    const spheres = join.ends.map((e) => e?.sphere).filter((s) => s !== undefined);
+    const width = 2 * Math.sqrt((2 * (join.value - iso)) / Math.abs(join.eigenvalues[0]));
+    return `The field joins spheres ${spheres.join(' and ')} here, f = ${round4(join.value)} at the saddle; the neck is ${(width / cell).toFixed(1)} cells wide at ${n}³.`;
+  }
+  if (mesh.components < counts.surfaces) {
+    const join = result.points.filter((p) => p.role === 'join' && p.value < iso).sort((a, b) => b.value - a.value)[0];
+    const gap = join ? `; they join only below f = ${round4(join.value)}` : '';
+    return `The mesh joins what the field keeps apart (${counts.surfaces} surfaces, the mesh ${mesh.components})${gap}: the grid is too coarse there.`;
+  }
+  if (mesh.genus !== counts.genus) {
+    return `The mesh's genus is ${mesh.genus} where the field's is ${counts.genus}: a tunnel the grid or the table (classic) does not resolve.`;
+  }
+  return '';
+}
