@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the page and lays out what an author puts on a static host in dist/: index.html, embed.html,
 # www/ (the element and the page's script, bundled; the stylesheets; the lecture example), pkg/ (the
-# WebAssembly), pkg-webgl/ (the WebGL2 build, fetched only by browsers without WebGPU) and widget.js (the
+# WebAssembly), pkg-webgl/ (the WebGL2 build, fetched only by browsers without WebGPU), pkg-levels/ (the
+# critical points' module, fetched only by a figure that shows them) and widget.js (the
 # notebook widget's module, for anywidget hosts such as MyST's {anywidget} directive). Every path inside
 # is relative, so the folder works under any sub-path of any host.
 #

@@ -87,8 +87,9 @@ def test_the_wasm_is_sent_when_the_figure_asks():
     widget.send = lambda content, buffers=None: sent.append((content, buffers))
     widget._answer(widget, {"type": "wasm", "build": "webgpu"}, [])
     widget._answer(widget, {"type": "wasm", "build": "elsewhere"}, [])
-    assert len(sent) == 1 and sent[0][0] == {"type": "wasm", "build": "webgpu"}
-    assert bytes(sent[0][1][0][:4]) == b"\0asm"
+    widget._answer(widget, {"type": "wasm", "build": "levels"}, [])
+    assert [c for c, _ in sent] == [{"type": "wasm", "build": "webgpu"}, {"type": "wasm", "build": "levels"}]
+    assert all(bytes(b[0][:4]) == b"\0asm" for _, b in sent)
     widget.close()
 
 
@@ -126,6 +127,14 @@ def test_what_is_asked_of_the_figure_comes_back_as_it_answers():
         widget._answer(widget, {"type": "answer", "id": asked[-1]["id"], "value": figures}, [])
         assert await stats == {**{k: v for k, v in figures.items() if k != "frameTime"}, "frame_time": 12.5}
         assert (widget.triangles, widget.adapter) == (5900, "WebGL2")
+
+        # The critical points, as the figure's criticalPoints() resolves them.
+        found = asyncio.ensure_future(widget.critical_points())
+        await asyncio.sleep(0)
+        assert asked[-1]["method"] == "criticalPoints"
+        result = {"points": [{"value": 0.78125, "role": "join"}], "counts": {"blobs": 2}}
+        widget._answer(widget, {"type": "answer", "id": asked[-1]["id"], "value": result}, [])
+        assert await found == result
         widget.close()
 
     asyncio.run(scenario())

@@ -27,10 +27,10 @@ export const FLAGS = [
   '--disable-quic',
 ];
 
-// What the build scripts make their outputs from: the WebAssembly (pkg/ and pkg-webgl/, from the crate
-// and its shaders), the page, the element and the widget's module.
-const WASM_SOURCES = ['src', 'shaders', 'Cargo.toml', 'Cargo.lock'];
-const SOURCES = [...WASM_SOURCES, 'pkg', 'pkg-webgl', 'www', 'python/js', 'index.html', 'embed.html'];
+// What the build scripts make their outputs from: the WebAssembly (pkg/, pkg-webgl/ and pkg-levels/,
+// from the crates and the shaders), the page, the element and the widget's module.
+const WASM_SOURCES = ['src', 'core', 'scene', 'levels', 'shaders', 'Cargo.toml', 'Cargo.lock'];
+const SOURCES = [...WASM_SOURCES, 'pkg', 'pkg-webgl', 'pkg-levels', 'www', 'python/js', 'index.html', 'embed.html'];
 
 function newestChange(file) {
   if (!existsSync(file)) return 0;
@@ -81,7 +81,8 @@ export async function builtBy(script, output) {
   if (newerThan(output, SOURCES)) return;
   await exclusively(async () => {
     if (newerThan(output, SOURCES)) return;
-    const wasmBuilt = ['pkg', 'pkg-webgl'].every((dir) => newerThan(`${dir}/metaballs_bg.wasm`, WASM_SOURCES));
+    const wasmBuilt = ['pkg/metaballs_bg.wasm', 'pkg-webgl/metaballs_bg.wasm', 'pkg-levels/metaballs_levels_bg.wasm']
+      .every((file) => newerThan(file, WASM_SOURCES));
     console.log(`building ${output} (bash ${script})`);
     try {
       execFileSync('bash', [path.join(root, script)], {

@@ -26,6 +26,8 @@ const CELLS = [
     'png = await w.picture()',
     "print('PNG', png[:4] == bytes([137, 80, 78, 71]), len(png))",
     'await w.load_scene(await w.save_scene())',
+    'found = await w.critical_points()',
+    "print('CRITICAL', len(found['points']), found['complete'], found['counts']['blobs'])",
     'try:',
     "    await w.load_scene('{')",
     'except ValueError as error:',
@@ -171,6 +173,10 @@ test('in JupyterLab the widget draws, follows Python, reports back, exports, sha
   assert.equal(reported, drawn);
   assert.match(printed, /PNG True \d{4,}/);
   assert.match(printed, /REFUSED .+/);
+  // The critical points' module came through the kernel too: two spheres, their join, proven complete.
+  const critical = printed.match(/CRITICAL (\d+) (\w+) (\d+)/);
+  assert.ok(critical, `the cell printed: ${printed}`);
+  assert.ok(Number(critical[1]) >= 1 && critical[2] === 'True', printed);
 
   // Cell 5: a second widget shares the page's one device (scrolled to, as a person reading on would).
   await run(page, 4);
