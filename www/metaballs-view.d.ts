@@ -105,6 +105,8 @@ export declare class MetaballsView extends HTMLElement {
   blend: 'sum' | 'max';
   /** Saddle: table, center, decider. Attribute `saddle`; default "table". */
   saddle: 'table' | 'center' | 'decider';
+  /** Levels: a boolean attribute. Attribute `levels`; default false. */
+  levels: boolean;
   /** Light: all, none, or a comma list of point, directional, spot. Attribute `light`; default "point". */
   light: string;
   /** Spot cone angle (degrees): 2 to 80. Attribute `spot-angle`; default 15. */
@@ -139,7 +141,7 @@ export declare class MetaballsView extends HTMLElement {
   get sphereList(): MetaballsSphere[];
   /** Sphere-list: x,y,z,radius[,vx,vy,vz] per sphere joined by ; (a negative radius subtracts). Attribute `sphere-list`; default "". */
   set sphereList(value: string | MetaballsSphere[]);
-  /** Controls: all, none, or a comma list of spheres, iso, resolution, lod, lod-pixels, lod-freeze, mesh-on, method, speed, seed, paused, pause-on, step, view, display, compare, grid, color-by, ambiguous, critical, color, theme, antialiasing, slice, interpolation, table, blend, saddle, inspector, step-through, error-plot, levels, light, spot-angle, spot-softness, ambient, diffuse, specular, shininess, projection, fov, edit, scene, export. Attribute `controls`; default "none". */
+  /** Controls: all, none, or a comma list of spheres, iso, resolution, lod, lod-pixels, lod-freeze, mesh-on, method, speed, seed, paused, pause-on, step, view, display, compare, grid, color-by, ambiguous, critical, color, theme, antialiasing, slice, interpolation, table, blend, saddle, levels, inspector, step-through, error-plot, light, spot-angle, spot-softness, ambient, diffuse, specular, shininess, projection, fov, edit, scene, export. Attribute `controls`; default "none". */
   controls: string;
   /** Hud: on, off. Attribute `hud`; default "off". */
   hud: 'on' | 'off';

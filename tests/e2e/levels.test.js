@@ -37,10 +37,13 @@ test('criticalPoints() finds the saddle between two spheres where the closed for
 test('the plot\'s cursor sets the iso level, and a join of the merge tree brings the two blobs together', async () => {
   const { page, errors } = await open(`?balls=${BALLS}&res=32&paused=1&controls=all&hud=on&critical=1`);
   await settledTriangles(page);
+  // The panel's "Along the iso level" opens the box (the `levels` setting, which the link then carries).
   await page.click('text=Teaching');
-  await page.click('#levels');
+  await page.check('#levels');
+  assert.equal(await page.$eval('metaballs-view', (e) => e.levels), true);
   // Drawn once the area and volume along the level are in (the plot is drawn again then).
   await page.waitForSelector('div.levels svg.levels-plot path[stroke="#5ec962"]', { timeout: 60000 });
+  assert.equal(await page.isVisible('#levels-box'), true);
   const status = await page.textContent('div.levels p[role=status]');
   assert.match(status, /1 critical points \(all found, with proof/);
   assert.match(status, /2 blobs, 0 cavities, genus 0/);
@@ -74,6 +77,10 @@ test('the plot\'s cursor sets the iso level, and a join of the merge tree brings
     return span && !span.hidden && span.textContent;
   }, null, { timeout: 20000 });
   assert.match(await mark.jsonValue(), /◆ 0\.7812/);
+  // The box's × closes it.
+  await page.click('#levels-box button.close');
+  assert.equal(await page.$eval('metaballs-view', (e) => e.levels), false);
+  assert.equal(await page.isVisible('#levels-box'), false);
   // The HUD gives the field's count.
   await page.waitForFunction(() => /^1 surface · genus 0/.test(document.querySelector('metaballs-view').shadowRoot
     .getElementById('hud-field-text').textContent), null, { timeout: 20000 });

@@ -148,6 +148,7 @@ pub const PARAMETERS: &[Parameter] = &[
         .group(Teaching)
         .compute()
         .renderer(word!(saddle: Saddle)),
+    row("levels", "Along the iso level", Kind::Boolean, "false").group(Teaching).page_only(),
     // Light
     row("light", "Lights", Kind::List(LIGHT_KINDS), "point").group(Light).renderer(Field::View {
         set: |o, v| o.lights = Lights::from_list(v.text()),
@@ -233,7 +234,6 @@ pub const ACTIONS: &[Action] = &[
     Action { name: "inspector", aliases: &[], label: "Cell inspector", group: Teaching },
     Action { name: "step-through", aliases: &[], label: "Step through the march", group: Teaching },
     Action { name: "error-plot", aliases: &["error_plot"], label: "Error vs resolution", group: Teaching },
-    Action { name: "levels", aliases: &[], label: "Along the iso level", group: Teaching },
     Action { name: "scene", aliases: &[], label: "Scene file", group: Scene },
     Action { name: "export", aliases: &[], label: "Export", group: Scene },
 ];

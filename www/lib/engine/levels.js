@@ -4,7 +4,7 @@
 // the modules, else on the page's thread (a notebook widget's, whose module comes from a blob: URL and
 // is given its wasm by the host, `setLevelsSource`).
 
-import { levelsFiles as files } from './wasm.js';
+import { LEVELS_FILES as files } from './wasm.js';
 
 let worker;
 let ready = null;
@@ -21,8 +21,7 @@ export function setLevelsSource(source) {
 
 function startWorker() {
   try {
-    const { glue, wasm, worker: url } = files();
-    const made = new Worker(url, { type: 'module', name: 'metaballs topology' });
+    const made = new Worker(files.worker(), { type: 'module', name: 'metaballs topology' });
     ready = new Promise((resolve, reject) => {
       made.onmessage = ({ data }) => {
         if (data.ready) resolve(made);
@@ -41,7 +40,7 @@ function startWorker() {
         waiting.clear();
       };
     });
-    made.postMessage({ glue: String(glue), wasm: String(wasm) });
+    made.postMessage({ glue: String(files.glue()), wasm: String(files.wasm()) });
     return made;
   } catch {
     return null;
@@ -49,8 +48,8 @@ function startWorker() {
 }
 
 async function onThisThread() {
-  mainThread ??= files().load().then(async (module) => {
-    await module.default({ module_or_path: given ? await given() : files().wasm });
+  mainThread ??= files.load().then(async (module) => {
+    await module.default({ module_or_path: given ? await given() : files.wasm() });
     return module;
   });
   return mainThread;

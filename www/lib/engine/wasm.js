@@ -69,15 +69,16 @@ const WEBGL_BUILD = {
 };
 
 /**
- * The critical points' module (pkg-levels/, lib/engine/levels.js): its JavaScript's URL and a function
- * importing it, its WebAssembly and its worker's module. Named here, where the paths hold once bundled.
+ * The critical points' module (pkg-levels/, lib/engine/levels.js): its JavaScript's URL and its import,
+ * its WebAssembly's URL and its worker's module's, each made when asked (a module imported from a blob:
+ * URL has no place to resolve them against). Named here, where the paths hold once bundled.
  */
-export const levelsFiles = () => ({
-  glue: new URL('../../../pkg-levels/metaballs_levels.js', import.meta.url),
+export const LEVELS_FILES = {
+  glue: () => new URL('../../../pkg-levels/metaballs_levels.js', import.meta.url),
   load: () => import('../../../pkg-levels/metaballs_levels.js'),
-  wasm: new URL('../../../pkg-levels/metaballs_levels_bg.wasm', import.meta.url),
-  worker: new URL('./levels-worker.js', import.meta.url),
-});
+  wasm: () => new URL('../../../pkg-levels/metaballs_levels_bg.wasm', import.meta.url),
+  worker: () => new URL('./levels-worker.js', import.meta.url),
+};
 
 // Each build's compiled WebAssembly.Module, where it was fetched from beside this module.
 const compiledModules = new Map();

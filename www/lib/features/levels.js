@@ -1,9 +1,9 @@
 // Topology along the iso level, from the field itself: the critical points of the current spheres
 // (found with proof on the topology worker, lib/engine/levels.js), searched again as the spheres move
 // while anything shows them. What shows them:
-//   - the panel's "Along the iso level" (the `levels` control): the plot of blobs, genus, area and
-//     volume against the iso level with a cursor, the merge tree whose joins set the iso level just
-//     below them, and the critical levels in words;
+//   - `levels` ("Along the iso level", a box in the figure's lower left): the plot of blobs, genus,
+//     area and volume against the iso level with a cursor, the merge tree whose joins set the iso level
+//     just below them, and the critical levels in words;
 //   - `critical` (markers over the figure, by kind, with their values);
 //   - `pause-on=merge`: the animation waits for each frame's search, and stops at the frame the field's
 //     blobs join (not when a mesh notices);
@@ -19,13 +19,12 @@ const EVERY_MS = 300;
 const MARK = { 3: '▲', 2: '◆', 1: '●', 0: '▼' };
 
 export class IsoLevels {
-  static attributes = ['critical'];
+  static attributes = ['critical', 'levels'];
   #ctx;
   #result = null;
   #packed = null;
   #pending = null;
   #askedAt = -Infinity;
-  #open = false;
   #panel = null;
   #marks = null;
   #measures = null;
@@ -41,16 +40,17 @@ export class IsoLevels {
   get latest() { return this.#result; }
 
   changed(name) {
-    if (name === 'critical') this.#ctx.redraw(2);
+    if (name === 'levels') this.#showBox();
+    this.#ctx.redraw(2);
   }
 
-  controls() {
-    return { levels: (panel) => this.#control(panel) };
-  }
+  connected() { this.#showBox(); }
+
+  get #open() { return on(this.#ctx.state.levels); }
 
   #wanted() {
     const s = this.#ctx.state;
-    return this.#open || s.critical === true || s.critical === 'true' || (s['pause-on'] === 'merge' && !s.paused);
+    return this.#open || on(s.critical) || (s['pause-on'] === 'merge' && !s.paused);
   }
 
   holds() {
@@ -132,8 +132,7 @@ export class IsoLevels {
   // ------------------------------------------------------------------ markers over the figure
 
   afterTick() {
-    const on = this.#ctx.state.critical === true || this.#ctx.state.critical === 'true';
-    if (!on || !this.#result || !this.#ctx.view) {
+    if (!on(this.#ctx.state.critical) || !this.#result || !this.#ctx.view) {
       if (this.#marks) this.#marks.hidden = true;
       return;
     }
@@ -165,23 +164,37 @@ export class IsoLevels {
 
   // ------------------------------------------------------------------ the panel
 
-  #control({ element, makeButton }) {
-    const body = element('div', { className: 'levels', hidden: true });
-    const button = makeButton('levels', 'Along the iso level',
-      'Find where the field\'s critical points change the surface, plot blobs and genus against the iso level and draw the merge tree', () => {
-        this.#open = !this.#open;
-        body.hidden = !this.#open;
-        button.setAttribute('aria-expanded', String(this.#open));
-        if (this.#open) {
-          this.#measures = null;
-          const packed = this.#spheres();
-          if (packed) this.#search(packed).catch((error) => { body.textContent = `The search stopped: ${error?.message ?? error}`; });
-        }
-      });
-    button.setAttribute('aria-expanded', 'false');
-    this.#panel = body;
-    return [element('div', { className: 'buttons' }, button), body];
+  /** Shows or hides the box as `levels` says, searching when it opens. */
+  #showBox() {
+    const box = this.#ctx.$('levels-box');
+    if (!box) return;
+    if (!this.#open) {
+      box.hidden = true;
+      return;
+    }
+    if (!this.#panel) {
+      const close = document.createElement('button');
+      close.className = 'close';
+      close.textContent = '×';
+      close.title = 'Close (levels=false)';
+      close.setAttribute('aria-label', 'Close along the iso level');
+      close.addEventListener('click', () => this.#ctx.set('levels', false));
+      const title = document.createElement('h3');
+      title.textContent = 'Along the iso level';
+      this.#panel = document.createElement('div');
+      this.#panel.className = 'levels';
+      this.#panel.textContent = 'Finding the critical points…';
+      box.replaceChildren(close, title, this.#panel);
+    }
+    box.hidden = false;
+    this.#measures = null;
+    const packed = this.#spheres();
+    if (packed) {
+      this.#search(packed).catch((error) => { this.#panel.textContent = `The search stopped: ${error?.message ?? error}`; });
+    }
   }
+
+  started() { if (this.#open) this.#showBox(); }
 
   refresh() {
     if (this.#open && this.#result) this.#drawPanel();
@@ -262,6 +275,9 @@ export class IsoLevels {
     if (focused === 'cursor') svg.querySelector('.cursor')?.focus();
   }
 }
+
+/** A flag's value in the state (a boolean, or its text). */
+const on = (value) => value === true || value === 'true';
 
 function same(a, b) {
   return a.length === b.length && a.every((v, i) => v === b[i]);

@@ -67,7 +67,7 @@ const STYLE = `
 @media print {
   :host { box-shadow: none !important; break-inside: avoid; }
   canvas, #panel, #hud, #play, #notice, #wheel-hint, #confirm, #inspector, #march, #sphere-box, #edit-overlay,
-  #critical-marks, #message { display: none !important; }
+  #critical-marks, #levels-box, #message { display: none !important; }
   #poster[src] { display: block; }
   #print-frame[src] { display: block; }
 }
@@ -261,6 +261,13 @@ svg .corner-number { fill: var(--muted); font-size: 9px; }
 #inspector[hidden] { display: none; }
 /* The step-through of the march: the left column, over the panel. */
 #march { position: absolute; left: 8px; top: 8px; bottom: 8px; width: min(300px, 40%); z-index: 1; }
+/* Along the iso level: the lower left, over the panel. */
+#levels-box { position: absolute; left: 8px; bottom: 8px; width: min(300px, 45%); max-height: calc(100% - 16px);
+  overflow-y: auto; padding: 4px 10px 8px; background: var(--panel); border-radius: 8px; font-size: 12px; z-index: 1; }
+#levels-box[hidden] { display: none; }
+#levels-box h3 { margin: 2px 0; font-size: 12px; font-weight: 600; }
+#levels-box button.close { float: right; }
+#play:not([hidden]) ~ #levels-box { bottom: 48px; }
 #march[hidden] { display: none; }
 #play:not([hidden]) ~ #march { bottom: 48px; }
 /* Above the play button when both show. */
@@ -360,6 +367,7 @@ export const TEMPLATE = `
     </details>
   </section>
   <button id="play" type="button" hidden>▶ Play</button>
+  <section id="levels-box" aria-label="Along the iso level" hidden></section>
   <section id="inspector" aria-label="Cell inspector" hidden></section>
   <section id="march" aria-label="Step through the march" hidden></section>
   <svg id="edit-overlay" aria-hidden="true"><circle id="hover-ring" hidden></circle><circle id="selected-ring" hidden></circle></svg>
