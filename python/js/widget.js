@@ -52,7 +52,19 @@ function tellWasmSources(model) {
     if (folder || typeof model.send !== 'function' || import.meta.url.startsWith('http')) return beside(build);
     return fromKernel(model, build).catch(() => beside(build));
   };
-  View.wasmSources = { webgpu: source('webgpu'), webgl2: source('webgl2'), levels: source('levels') };
+  // The critical points' module is asked for a few seconds after the figure starts, not when Python
+  // first asks for them: a cell awaiting `w.critical_points()` then waits on nothing but the figure.
+  const levels = source('levels');
+  let pending = null;
+  const levelsBytes = () => {
+    pending ??= Promise.resolve(levels()).catch((error) => {
+      pending = null;
+      throw error;
+    });
+    return pending;
+  };
+  setTimeout(() => levelsBytes().catch(() => {}), 3000);
+  View.wasmSources = { webgpu: source('webgpu'), webgl2: source('webgl2'), levels: levelsBytes };
 }
 
 // What Python may ask the figure (`Metaballs.save_scene()` and the rest), by the element's method names.

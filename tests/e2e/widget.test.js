@@ -61,6 +61,12 @@ test('under a plain anywidget host the figure draws, follows its traits and repo
   await page.waitForFunction(() => document.querySelector('metaballs-view').sphereList.length === 3);
   assert.deepEqual(await figure.evaluate((e) => e.sphereList[2].center), [0, 0.5, 0]);
 
+  // The critical points, from the module beside the widget's (its own small WebAssembly): the three
+  // spheres placed from Python join at two saddles.
+  const found = await figure.evaluate((e) => e.criticalPoints());
+  assert.equal(found.points.filter((p) => p.role === 'join').length, 2, JSON.stringify(found.points));
+  assert.equal(found.complete, true);
+
   // A bad value from the model: the figure keeps its value and says why.
   await page.evaluate(() => window.host.set('display', 'sketch'));
   assert.equal(await figure.evaluate((e) => e.display), 'shaded');

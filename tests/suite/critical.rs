@@ -6,7 +6,7 @@
 use crate::common;
 
 use common::*;
-use glam::{DVec3, Vec3};
+use glam::DVec3;
 use metaballs::critical::interval::{Source, derivatives};
 use metaballs::critical::morse::End;
 use metaballs::critical::{self, Critical, Role};
@@ -242,13 +242,45 @@ fn between_critical_levels_the_oracle_mesh_has_the_predicted_blobs_cavities_and_
 }
 
 #[test]
-fn the_search_moves_with_the_spheres_and_keeps_its_proof() {
-    let mut scene = Scene::new(3, 16).unwrap();
-    for _ in 0..5 {
-        scene.step(0.2).unwrap();
+fn as_the_spheres_move_the_search_keeps_finding_what_a_brute_force_search_finds() {
+    let mut scene = Scene::new(3, 6).unwrap();
+    let mut spheres = scene.spheres().to_vec();
+    spheres[4].charge = -1.0;
+    spheres[4].radius *= 0.6;
+    scene = Scene::from_spheres(spheres).unwrap();
+    let mut seen = 0;
+    for step in 0..5 {
+        scene.step(0.3).unwrap();
         let found = critical::find(scene.spheres());
-        assert!(found.complete && found.undecided == 0 && found.unresolved == 0);
-        let at = |p: Vec3| p.length();
-        assert!(scene.spheres().iter().all(|s| at(s.center) < 2.0));
+        assert!(found.complete && found.undecided == 0 && found.unresolved == 0, "step {step}");
+        let brute = brute_force(scene.spheres(), 1.0, 64);
+        assert_found_all(&found, &brute, &format!("step {step}"));
+        seen += found.points.len();
     }
+    assert!(seen >= 10, "{seen}");
+}
+
+#[test]
+fn where_subtracting_spheres_outweigh_the_adding_ones_the_counts_are_not_claimed() {
+    // f ≤ 0 far away: a subtracting pocket may reach infinity with no critical point on the way.
+    let spheres = [sphere([-0.5, 0.0, 0.0], 0.3), Sphere { charge: -1.0, ..sphere([0.5, 0.0, 0.0], 0.4) }];
+    let found = critical::find(&spheres);
+    assert!(!found.complete);
+    assert!(found.counts_unknown().is_some());
+    let text = metaballs::critical::json::to_json(&found, 0.0);
+    assert!(text.contains("\"bands\":[]") && text.contains("\"countsUnknown\":\"the subtracting"), "{text}");
+}
+
+#[test]
+fn spheres_that_cancel_leave_no_field_and_nothing_to_search() {
+    // An adding and a subtracting sphere of one centre and radius: f ≡ 0.
+    let spheres = [sphere([0.1, 0.0, 0.0], 0.3), Sphere { charge: -1.0, ..sphere([0.1, 0.0, 0.0], 0.3) }];
+    let found = critical::find(&spheres);
+    assert!(found.points.is_empty() && found.tree.is_empty());
+    assert_eq!(found.pieces, 0, "nothing to search");
+    // Two spheres on one centre are one term: a lone sphere has no critical point.
+    let found = critical::find(&[sphere([0.1, 0.0, 0.0], 0.3), sphere([0.1, 0.0, 0.0], 0.2)]);
+    assert!(found.points.is_empty());
+    assert_eq!(found.tree.len(), 1);
+    assert_eq!(found.counts(1.0).blobs, 1);
 }

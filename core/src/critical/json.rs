@@ -55,10 +55,11 @@ pub fn to_json(found: &Critical, milliseconds: f64) -> String {
         })
         .collect();
     // The counts in each band between consecutive levels above zero, from the highest down.
-    let levels = found.levels();
+    let levels = if found.counts_unknown().is_some() { vec![] } else { found.levels() };
     let mut bands = String::new();
     let mut above = f64::INFINITY;
-    for (k, &below) in levels.iter().chain([0.0].iter()).enumerate() {
+    let last = if found.counts_unknown().is_some() { &[][..] } else { &[0.0][..] };
+    for (k, &below) in levels.iter().chain(last.iter()).enumerate() {
         let iso = if above.is_finite() { 0.5 * (above + below) } else { below * 2.0 + 1.0 };
         let c = found.counts(iso);
         let _ = write!(
@@ -75,10 +76,11 @@ pub fn to_json(found: &Critical, milliseconds: f64) -> String {
         above = below;
     }
     format!(
-        "{{\"points\":[{}],\"tree\":[{}],\"bands\":[{bands}],\"complete\":{},\"undecided\":{},\"unresolved\":{},\"pieces\":{},\"reach\":{},\"wallLevel\":{},\"milliseconds\":{}}}",
+        "{{\"points\":[{}],\"tree\":[{}],\"bands\":[{bands}],\"complete\":{},\"countsUnknown\":{},\"undecided\":{},\"unresolved\":{},\"pieces\":{},\"reach\":{},\"wallLevel\":{},\"milliseconds\":{}}}",
         points.join(","),
         tree.join(","),
         found.complete,
+        found.counts_unknown().map_or("null".into(), |why| format!("\"{why}\"")),
         found.undecided,
         found.unresolved,
         found.pieces,

@@ -140,16 +140,60 @@ pub struct Critical {
     pub unresolved: usize,
 }
 
+impl Critical {
+    /// Why the counts along the iso level cannot be trusted, or `None` where they are exact: the
+    /// search must be proven complete, every piece decided and every saddle's flow followed.
+    pub fn counts_unknown(&self) -> Option<&'static str> {
+        if !self.complete {
+            Some("the subtracting spheres outweigh the adding ones, so no bound holds every critical point")
+        } else if self.undecided > 0 {
+            Some("a degenerate critical point (its Hessian singular) was found")
+        } else if self.unresolved > 0 {
+            Some("a saddle's flow could not be followed to its ends")
+        } else {
+            None
+        }
+    }
+}
+
 /// The box's half-width (`BOX_HALF_EXTENT`).
 const BOX: f64 = crate::scene::sphere::BOX_HALF_EXTENT as f64;
 
 /// The critical points of the spheres' field, with what each does.
 pub fn find(spheres: &[Sphere]) -> Critical {
-    let sources: Vec<Source> = spheres
-        .iter()
-        .map(|s| Source { centre: s.center.as_dvec3(), weight: f64::from(s.weight()) })
-        .collect();
+    // Spheres sharing a centre are one term (their weights summed); a term whose weights cancel is
+    // none. `owner[k]`: the first sphere of term k, which the results name.
+    let (mut sources, mut owner) = (Vec::<Source>::new(), Vec::new());
+    for (i, s) in spheres.iter().enumerate() {
+        let (centre, weight) = (s.center.as_dvec3(), f64::from(s.weight()));
+        match sources.iter().position(|t| t.centre == centre) {
+            Some(k) => sources[k].weight += weight,
+            None => {
+                sources.push(Source { centre, weight });
+                owner.push(i);
+            }
+        }
+    }
+    let kept: Vec<usize> = (0..sources.len()).filter(|&k| sources[k].weight != 0.0).collect();
+    let sources: Vec<Source> = kept.iter().map(|&k| sources[k]).collect();
+    let owner: Vec<usize> = kept.iter().map(|&k| owner[k]).collect();
+    let adding: Vec<bool> = sources.iter().map(|s| s.weight > 0.0).collect();
     let (reach, complete) = reach(&sources);
+    if sources.is_empty() {
+        // f ≡ 0: no surface at any iso level above zero, and nothing to search.
+        return Critical {
+            points: vec![],
+            tree: vec![],
+            reach,
+            complete,
+            undecided: 0,
+            pieces: 0,
+            wall_level: 0.0,
+            positive: 0,
+            negative: 0,
+            unresolved: 0,
+        };
+    }
     let domain = Cube { low: DVec3::splat(-reach), high: DVec3::splat(reach) };
     let zeros = search::zeros(&sources, domain);
     let mut points: Vec<CriticalPoint> = zeros
@@ -173,10 +217,24 @@ pub fn find(spheres: &[Sphere]) -> Critical {
         .collect();
     points.sort_by(|a, b| b.value.total_cmp(&a.value));
     follow_saddles(&sources, &mut points, reach);
-    let positive = spheres.iter().filter(|s| !s.is_subtractive()).count();
-    let tree = merge_tree(spheres, &mut points);
-    sublevel_roles(spheres, &mut points);
+    let positive = adding.iter().filter(|&&a| a).count();
+    let mut tree = merge_tree(&adding, &mut points);
+    sublevel_roles(&adding, &mut points);
     let unresolved = points.iter().filter(|p| p.role == Role::Unresolved).count();
+    // Terms by the spheres they came from.
+    for point in &mut points {
+        for end in &mut point.ends {
+            if let End::Sphere(k) = end {
+                *end = End::Sphere(owner[*k]);
+            }
+        }
+    }
+    for node in &mut tree {
+        for s in &mut node.spheres {
+            *s = owner[*s];
+        }
+        node.spheres.sort_unstable();
+    }
     Critical {
         wall_level: wall_level(&sources),
         points,
@@ -186,7 +244,7 @@ pub fn find(spheres: &[Sphere]) -> Critical {
         undecided: zeros.undecided.len(),
         pieces: zeros.pieces,
         positive,
-        negative: spheres.len() - positive,
+        negative: sources.len() - positive,
         unresolved,
     }
 }
@@ -231,17 +289,17 @@ fn follow_saddles(sources: &[Source], points: &mut [CriticalPoint], reach: f64) 
 
 /// The blobs, from the top down: each adding sphere (and maximum) starts one; a join saddle whose flow
 /// reaches two different blobs joins them; one reaching the same blob twice opens a tunnel.
-fn merge_tree(spheres: &[Sphere], points: &mut [CriticalPoint]) -> Vec<TreeNode> {
-    let n = spheres.len();
+fn merge_tree(adding: &[bool], points: &mut [CriticalPoint]) -> Vec<TreeNode> {
+    let n = adding.len();
     let mut sets = Sets::new(n + points.len());
     let mut node_of = vec![usize::MAX; n + points.len()];
     let mut tree = Vec::new();
-    for (i, _) in spheres.iter().enumerate().filter(|(_, s)| !s.is_subtractive()) {
+    for i in (0..n).filter(|&i| adding[i]) {
         node_of[i] = tree.len();
         tree.push(TreeNode { value: f64::INFINITY, children: vec![], point: None, spheres: vec![i] });
     }
     let element = |end: End| match end {
-        End::Sphere(i) if !spheres[i].is_subtractive() => Some(i),
+        End::Sphere(i) if adding[i] => Some(i),
         End::Point(k) => Some(n + k),
         _ => None,
     };
@@ -288,12 +346,12 @@ fn merge_tree(spheres: &[Sphere], points: &mut [CriticalPoint]) -> Vec<TreeNode>
 /// The pockets of f < iso, from the bottom up: the outside, each subtracting sphere and each minimum
 /// starts one; a closing saddle whose flow reaches two different pockets joins them (below its value
 /// they are apart: one is a cavity), one reaching the same pocket twice closes a tunnel.
-fn sublevel_roles(spheres: &[Sphere], points: &mut [CriticalPoint]) {
-    let n = spheres.len();
+fn sublevel_roles(adding: &[bool], points: &mut [CriticalPoint]) {
+    let n = adding.len();
     let outside = n + points.len();
     let mut sets = Sets::new(outside + 1);
     let element = |end: End| match end {
-        End::Sphere(i) if spheres[i].is_subtractive() => Some(i),
+        End::Sphere(i) if !adding[i] => Some(i),
         End::Point(k) => Some(n + k),
         End::Outside => Some(outside),
         _ => None,
@@ -358,10 +416,13 @@ fn wall_level(sources: &[Source]) -> f64 {
         }
     }
     let mut settled = f64::NEG_INFINITY;
+    let scale: f64 = sources.iter().map(|s| s.weight.abs()).sum::<f64>().max(f64::MIN_POSITIVE);
+    let mut pieces = 0;
     while let Some(piece) = stack.pop() {
+        pieces += 1;
         best = best.max(value(sources, piece.centre()));
         let Some(bounds) = value_bounds(sources, &piece) else { continue };
-        if bounds.hi <= best + 0.01 * best.abs() {
+        if bounds.hi <= best + 0.01 * best.abs() + 1e-9 * scale || pieces > 100_000 {
             settled = settled.max(bounds.hi);
             continue;
         }

@@ -10,7 +10,7 @@ use glam::{DMat3, DVec3};
 /// Halvings before a piece is reported undecided: 2⁻²² of the domain.
 const MAX_DEPTH: u32 = 22;
 /// Pieces tried at most, so that a degenerate scene cannot take the search without end.
-const MAX_PIECES: usize = 4_000_000;
+const MAX_PIECES: usize = 1_000_000;
 
 /// What the search found.
 #[derive(Clone, Debug, Default)]
@@ -98,10 +98,11 @@ fn examine(sources: &[Source], cube: &Cube, depth: u32) -> Krawczyk {
     }
     if let Some(hb) = hessian_bounds(sources, cube) {
         let (_, g, _) = derivatives(sources, centre);
+        let rounding = gradient_rounding(sources, centre);
         let r = cube.half();
         let excluded = (0..3).any(|a| {
             let spread: f64 = (0..3).map(|j| hb[a][j].magnitude() * r[j]).sum();
-            g[a].abs() > spread * (1.0 + 1e-9) + 1e-300
+            g[a].abs() - rounding > spread * (1.0 + 1e-9) + 1e-300
         });
         if excluded {
             return Krawczyk::None;
@@ -125,6 +126,7 @@ fn krawczyk(sources: &[Source], cube: &Cube, hb: &[[Interval; 3]; 3]) -> Krawczy
     }
     let y = hm.inverse();
     let step = y * g;
+    let rounding = gradient_rounding(sources, m);
     let mut inside = true;
     for i in 0..3 {
         let mut spread = 0.0;
@@ -137,7 +139,9 @@ fn krawczyk(sources: &[Source], cube: &Cube, hb: &[[Interval; 3]; 3]) -> Krawczy
             spread += entry.magnitude() * r[j];
         }
         let centre = m[i] - step[i];
-        let slack = 1e-12 * (1.0 + m[i].abs() + step[i].abs());
+        // Rounding in ∇f(m), carried through Y, and in the step itself.
+        let carried: f64 = (0..3).map(|k| y.col(k)[i].abs()).sum::<f64>() * rounding;
+        let slack = carried + 1e-12 * (1.0 + m[i].abs() + step[i].abs());
         let k = Interval::new(centre - spread - slack, centre + spread + slack);
         if k.hi < cube.low[i] || k.lo > cube.high[i] {
             return Krawczyk::None;
@@ -145,6 +149,12 @@ fn krawczyk(sources: &[Source], cube: &Cube, hb: &[[Interval; 3]; 3]) -> Krawczy
         inside &= k.lo > cube.low[i] && k.hi < cube.high[i];
     }
     if inside { Krawczyk::Unique } else { Krawczyk::Unknown }
+}
+
+/// A bound on the rounding error of ∇f at `p` as `derivatives` sums it: far above `f64`'s, against
+/// the sum of the terms' magnitudes.
+fn gradient_rounding(sources: &[Source], p: DVec3) -> f64 {
+    1e-13 * sources.iter().map(|s| 2.0 * s.weight.abs() / (p - s.centre).length().powi(3)).sum::<f64>()
 }
 
 /// Newton's method on ∇f from `start`, kept to the piece (a little beyond it, for rounding).

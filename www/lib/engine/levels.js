@@ -25,7 +25,10 @@ function startWorker() {
     ready = new Promise((resolve, reject) => {
       made.onmessage = ({ data }) => {
         if (data.ready) resolve(made);
-        if (data.failed) reject(new Error(`the topology worker could not start (${data.failed})`));
+        if (data.failed) {
+          made.terminate();
+          reject(new Error(`the topology worker could not start (${data.failed})`));
+        }
         const job = waiting.get(data.id);
         if (!job) return;
         waiting.delete(data.id);
@@ -34,6 +37,7 @@ function startWorker() {
       };
       made.onerror = (event) => {
         event.preventDefault?.();
+        made.terminate();
         const why = new Error(`the topology worker stopped (${event.message || 'it could not load'})`);
         reject(why);
         for (const job of waiting.values()) job.reject(why);
@@ -52,7 +56,11 @@ async function onThisThread() {
     await module.default({ module_or_path: given ? await given() : files.wasm() });
     return module;
   });
-  return mainThread;
+  // A load that failed is tried again next time.
+  return mainThread.catch((error) => {
+    mainThread = null;
+    throw error;
+  });
 }
 
 async function ask(message) {

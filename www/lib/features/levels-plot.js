@@ -3,7 +3,15 @@
 // dragged, and the merge tree of the blobs (leaves the spheres, joins at their saddles' levels), each
 // join a button. SVG, from a search's result (lib/engine/levels.js); no state of their own.
 
+import { rowOf } from '../core/table.js';
+
 const SVG = 'http://www.w3.org/2000/svg';
+
+/** The iso level the table accepts nearest to `value`, to four significant digits. */
+export function isoWithin(value) {
+  const { min, max } = rowOf('iso');
+  return Number(Math.min(max, Math.max(min, value)).toPrecision(4));
+}
 
 /** Colours of the critical points by what they do, as the markers in the figure show them. */
 export const ROLE_COLORS = {
@@ -30,10 +38,11 @@ function node(tag, attributes = {}, text = '') {
 
 /** The iso range the plot spans: a little beyond the critical levels above zero. */
 export function plotRange(result, iso) {
+  const { min, max } = rowOf('iso');
   const levels = result.points.map((p) => p.value).filter((v) => v > 0);
   const low = Math.min(iso, ...levels, result.wallLevel > 0 ? result.wallLevel : Infinity);
   const high = Math.max(iso, ...levels);
-  return [Math.max(1e-3, low / 2), Math.max(high * 2, low * 4)];
+  return [Math.max(min, low / 2), Math.min(max, Math.max(high * 2, low * 4))];
 }
 
 /** Round to four significant digits, as the iso level is written. */
@@ -97,32 +106,35 @@ export function drawPlot(result, iso, { measures = null, levels = [], onIso, onD
   svg.append(cursor);
   const toIso = (event) => {
     const box = svg.getBoundingClientRect();
-    return round4(Math.min(high, Math.max(low, xToIso(((event.clientX - box.left) / box.width) * w))));
+    return isoWithin(Math.min(high, Math.max(low, xToIso(((event.clientX - box.left) / box.width) * w))));
   };
   svg.addEventListener('pointerdown', (event) => {
+    if (event.button !== 0) return;
     svg.setPointerCapture?.(event.pointerId);
     onDrag(true);
     onIso(toIso(event));
     const move = (e) => onIso(toIso(e));
-    const up = () => {
-      svg.removeEventListener('pointermove', move);
-      svg.removeEventListener('pointerup', up);
+    const end = () => {
+      for (const [type, f] of [['pointermove', move], ['pointerup', end], ['pointercancel', end], ['lostpointercapture', end]]) {
+        svg.removeEventListener(type, f);
+      }
       onDrag(false);
     };
     svg.addEventListener('pointermove', move);
-    svg.addEventListener('pointerup', up);
+    for (const type of ['pointerup', 'pointercancel', 'lostpointercapture']) svg.addEventListener(type, end);
   });
   // Arrows move 2 %; Page Up and Page Down jump past the next critical level.
   cursor.addEventListener('keydown', (event) => {
-    const levelsAbove = result.points.map((p) => p.value).filter((v) => v > iso * 1.0001).sort((a, b) => a - b);
-    const levelsBelow = result.points.map((p) => p.value).filter((v) => v < iso * 0.9999).sort((a, b) => b - a);
+    const levels = result.points.map((p) => p.value).filter((v) => v > 0);
+    const levelsAbove = levels.filter((v) => v > iso * 1.0001).sort((a, b) => a - b);
+    const levelsBelow = levels.filter((v) => v < iso * 0.9999).sort((a, b) => b - a);
     const moves = {
       ArrowRight: iso * 1.02, ArrowUp: iso * 1.02, ArrowLeft: iso / 1.02, ArrowDown: iso / 1.02,
       PageUp: levelsAbove.length ? levelsAbove[0] * 1.01 : null, PageDown: levelsBelow.length ? levelsBelow[0] * 0.99 : null,
     };
     if (!(event.key in moves) || moves[event.key] === null) return;
     event.preventDefault();
-    onIso(round4(moves[event.key]));
+    onIso(isoWithin(moves[event.key]));
   });
   // Moves the cursor to `value` without drawing the plot again (while it is dragged).
   const moveCursor = (value) => {
@@ -142,9 +154,10 @@ export function drawTree(result, iso, onJoin) {
   const order = [];
   const visit = (k) => (tree[k].children.length ? tree[k].children.forEach(visit) : order.push(k));
   roots.forEach(visit);
-  const joins = tree.filter((n) => n.value !== null).map((n) => n.value);
+  const joins = tree.filter((n) => n.value !== null && n.value > 0).map((n) => n.value);
   const [low, high] = joins.length ? [Math.min(...joins, iso) / 1.5, Math.max(...joins, iso) * 1.5] : [iso / 2, iso * 2];
-  const y = (v) => (v === null ? top : top + 6 + ((Math.log10(high) - Math.log10(v)) / (Math.log10(high) - Math.log10(low))) * (h - top - bottom - 6));
+  const y = (v) => (v === null ? top
+    : top + 6 + ((Math.log10(high) - Math.log10(Math.min(high, Math.max(low, v)))) / (Math.log10(high) - Math.log10(low))) * (h - top - bottom - 6));
   const xOf = new Map();
   order.forEach((k, i) => xOf.set(k, left + ((i + 0.5) / order.length) * (w - left - 8)));
   const x = (k) => {

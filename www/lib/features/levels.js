@@ -12,7 +12,7 @@
 // `criticalPoints()` gives the same result to scripts.
 
 import { countsAt, criticalPoints, measuresAlong, packSpheres } from '../engine/levels.js';
-import { drawPlot, drawTree, plotRange, ROLE_COLORS, ROLE_WORDS, round4 } from './levels-plot.js';
+import { drawPlot, drawTree, isoWithin, plotRange, ROLE_COLORS, ROLE_WORDS, round4 } from './levels-plot.js';
 import { TopologyWatch } from './topology.js';
 
 const EVERY_MS = 300;
@@ -78,18 +78,22 @@ export class IsoLevels {
 
   /** Searches `packed` spheres; the figure's iso level at the time decides what is news. */
   #search(packed) {
-    const before = this.#result ? countsAt(this.#result, Number(this.#ctx.state.iso)) : null;
-    this.#pending = criticalPoints(packed).then((result) => {
+    const asked = criticalPoints(packed).then((result) => {
+      // The blobs before and after, both at the iso level now (a change of level is not a merge).
+      const iso = Number(this.#ctx.state.iso);
+      const before = this.#result ? countsAt(this.#result, iso) : null;
       this.#packed = packed;
       this.#result = result;
-      this.#take(result, before);
+      this.#take(result, before, iso);
       return result;
-    }).finally(() => { this.#pending = null; });
-    return this.#pending;
+    }).finally(() => {
+      if (this.#pending === asked) this.#pending = null;
+    });
+    this.#pending = asked;
+    return asked;
   }
 
-  #take(result, before) {
-    const iso = Number(this.#ctx.state.iso);
+  #take(result, before, iso) {
     const now = countsAt(result, iso);
     if (before && now && now.blobs < before.blobs && this.#ctx.state['pause-on'] === 'merge' && !this.#ctx.state.paused) {
       this.#ctx.set('paused', true);
@@ -114,10 +118,14 @@ export class IsoLevels {
 
   #showHud() {
     const $ = (id) => this.#ctx.$(id);
-    if (!$('hud-field') || !this.#result) return;
+    if (!$('hud-field')) return;
     const iso = Number(this.#ctx.state.iso);
-    const counts = countsAt(this.#result, iso);
-    if (!counts) return;
+    // Only while a search follows the spheres (an older result is of spheres that have moved on).
+    const counts = this.#result && this.#wanted() ? countsAt(this.#result, iso) : null;
+    if (!counts) {
+      $('hud-field').hidden = $('hud-field-warning').hidden = true;
+      return;
+    }
     $('hud-field').hidden = false;
     const walls = iso <= this.#result.wallLevel ? ' · reaches the walls' : '';
     $('hud-field-text').textContent = `${counts.surfaces} surface${counts.surfaces === 1 ? '' : 's'} · genus ${counts.genus}${walls}`;
@@ -202,18 +210,17 @@ export class IsoLevels {
   }
 
   #setIso(value) {
-    this.#ctx.set('iso', value);
+    this.#ctx.set('iso', isoWithin(value));
   }
 
-  /** Sets the iso level just below join `k` of the tree: where the neck is a cell and a half across. */
-  #chooseJoin(k) {
-    const result = this.#result;
+  /** Sets the iso level just below join `k` of `result`'s tree: where the neck is a cell and a half across. */
+  #chooseJoin(result, k) {
     const join = result.points[result.tree[k].point];
     const cell = 2 / Number(this.#ctx.state.resolution);
     const drop = Math.abs(join.eigenvalues[0]) * (0.75 * cell) ** 2 / 2;
     const lower = result.points.map((p) => p.value).filter((v) => v < join.value * 0.9999 && v > 0).sort((a, b) => b - a)[0];
     const floor = lower ? Math.sqrt(lower * join.value) : join.value * 0.5;
-    const iso = round4(Math.max(floor, Math.min(join.value - drop, join.value * 0.999)));
+    const iso = isoWithin(Math.max(floor, Math.min(join.value - drop, join.value * 0.999)));
     this.#setIso(iso);
     const [a, b] = result.tree[k].children.map((c) => result.tree[c].spheres.join(', '));
     this.#ctx.each('announce', `spheres ${a} and ${b} meet: iso ${iso}, just below ${round4(join.value)}`);
@@ -246,7 +253,8 @@ export class IsoLevels {
     status.setAttribute('role', 'status');
     const proof = result.complete && result.undecided === 0 ? 'all found, with proof' : 'the search may have missed some';
     status.textContent = `${result.points.length} critical points (${proof}, ${result.milliseconds.toFixed(0)} ms). `
-      + (counts ? `At iso ${round4(iso)}: ${counts.blobs} blob${counts.blobs === 1 ? '' : 's'}, ${counts.cavities} cavit${counts.cavities === 1 ? 'y' : 'ies'}, genus ${counts.genus}.` : '');
+      + (counts ? `At iso ${round4(iso)}: ${counts.blobs} blob${counts.blobs === 1 ? '' : 's'}, ${counts.cavities} cavit${counts.cavities === 1 ? 'y' : 'ies'}, genus ${counts.genus}.` : '')
+      + (result.countsUnknown ? `The counts along the level are not known here: ${result.countsUnknown}.` : '');
     this.#plot = drawPlot(result, iso, {
       measures: this.#measures?.values,
       levels: this.#measures?.levels ?? [],
@@ -260,7 +268,7 @@ export class IsoLevels {
     const key = document.createElement('p');
     key.className = 'hint';
     key.innerHTML = '<span style="color:#e77661">━</span> surfaces · <span style="color:#4aa3ff">╍</span> genus · <span style="color:#5ec962">━</span> area · <span style="color:#21918c">╍</span> volume (scaled) · shaded: the surface reaches the walls';
-    const tree = drawTree(result, iso, (k) => this.#chooseJoin(k));
+    const tree = drawTree(result, iso, (k) => this.#chooseJoin(result, k));
     const list = document.createElement('ol');
     list.className = 'critical-levels';
     list.tabIndex = 0;
@@ -270,9 +278,16 @@ export class IsoLevels {
       item.innerHTML = `<i style="color:${ROLE_COLORS[p.role]}">${MARK[p.index]}</i> f = ${round4(p.value)}: ${ROLE_WORDS[p.role]}`;
       list.append(item);
     }
-    const focused = body.contains(this.#ctx.root.activeElement) ? this.#ctx.root.activeElement.getAttribute('class') : null;
+    // Focus stays where it was across the redraw: the cursor, a join of the tree, or the list.
+    const active = this.#ctx.root.activeElement;
+    const focused = active && body.contains(active)
+      ? (active.dataset?.node !== undefined ? `g.join[data-node="${active.dataset.node}"]` : active.matches('.cursor') ? '.cursor'
+        : active.matches('ol') ? 'ol' : null)
+      : null;
+    const scrolled = body.querySelector('ol')?.scrollTop ?? 0;
     body.replaceChildren(status, svg, key, tree, list);
-    if (focused === 'cursor') svg.querySelector('.cursor')?.focus();
+    list.scrollTop = scrolled;
+    if (focused) body.querySelector(focused)?.focus();
   }
 }
 
