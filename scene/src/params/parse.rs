@@ -194,7 +194,9 @@ mod tests {
         assert_eq!(message("color", "red"), "color must be a colour written #rrggbb, got \"red\"");
         assert!(message("controls", "iso,zoom").contains("comma list of spheres, iso"));
         assert!(message("autoplay", "always").contains("one of visible, off"));
-        assert!(message("nonsense", "1").starts_with("parameter name must be one of spheres"));
+        assert!(message("nonsense", "1").starts_with("parameter name must be one of the table's"));
+        assert!(message("critcal", "1").contains("those starting with 'c': "), "{}", message("critcal", "1"));
+        assert!(message("critcal", "1").contains("critical"));
         assert_eq!(parse_parameter("edit", "on"), Ok(Value::Boolean(true)));
         assert_eq!(parse_parameter("balls", "0, 0,0,0.40"), Ok(Value::Text("0,0,0,0.4".into())));
         assert_eq!(parse_parameter("balls", ""), Ok(Value::Text(String::new())));

@@ -265,13 +265,18 @@ pub fn control(name: &str) -> Option<&'static str> {
     setting.or_else(|| ACTIONS.iter().find(|a| a.name == name || a.aliases.contains(&name)).map(|a| a.name))
 }
 
-/// Refusal of a name that no row of the table answers to.
+/// Refusal of a name that no row of the table answers to. It names the rows that start with the same
+/// letter (a misspelling usually keeps its first), not all of them: the table outgrows a notice.
 pub(super) fn unknown(name: &str) -> ParamError {
-    ParamError::Invalid {
-        name: "parameter name",
-        value: name.to_string(),
-        expected: format!("one of {}", PARAMETERS.iter().map(|p| p.name).collect::<Vec<_>>().join(", ")),
-    }
+    let first = name.chars().next().map(|c| c.to_ascii_lowercase());
+    let alike: Vec<&str> =
+        PARAMETERS.iter().map(|p| p.name).filter(|n| first.is_some_and(|c| n.starts_with(c))).collect();
+    let all = format!("one of the table's {} names (docs/embedding.md lists them", PARAMETERS.len());
+    let expected = match first {
+        Some(c) if !alike.is_empty() => format!("{all}; those starting with {c:?}: {})", alike.join(", ")),
+        _ => format!("{all}: spheres, iso, resolution, …)"),
+    };
+    ParamError::Invalid { name: "parameter name", value: name.to_string(), expected }
 }
 
 impl Parameter {
