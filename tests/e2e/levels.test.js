@@ -76,7 +76,7 @@ test('the plot\'s cursor sets the iso level, and a join of the merge tree brings
     const span = document.querySelector('metaballs-view').shadowRoot.querySelector('#critical-marks span');
     return span && !span.hidden && span.textContent;
   }, null, { timeout: 20000 });
-  assert.match(await mark.jsonValue(), /◆ 0\.7812/);
+  assert.match(await mark.jsonValue(), /◆ 0\.781/);
   // The box's × closes it.
   await page.click('#levels-box button.close');
   assert.equal(await page.$eval('metaballs-view', (e) => e.levels), false);

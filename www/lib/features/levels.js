@@ -155,6 +155,8 @@ export class IsoLevels {
     const at = this.#ctx.view.points_on_screen(Float32Array.from(points.flatMap((p) => p.position)));
     const scale = this.#ctx.canvas.width / Math.max(1, this.#ctx.canvas.clientWidth);
     while (this.#marks.children.length > points.length) this.#marks.lastChild.remove();
+    // A value is written beside a mark only where it keeps clear of the values already written.
+    const labelled = [];
     points.forEach((p, k) => {
       let mark = this.#marks.children[k];
       if (!mark) {
@@ -165,7 +167,9 @@ export class IsoLevels {
       mark.hidden = !Number.isFinite(x);
       mark.style.transform = `translate(${x}px, ${y}px)`;
       mark.style.color = ROLE_COLORS[p.role];
-      mark.textContent = `${MARK[p.index]} ${round4(p.value)}`;
+      const clear = labelled.every(([lx, ly]) => Math.abs(lx - x) > 48 || Math.abs(ly - y) > 13);
+      if (clear) labelled.push([x, y]);
+      mark.textContent = clear ? `${MARK[p.index]} ${Number(p.value.toPrecision(3))}` : MARK[p.index];
       mark.title = `f = ${round4(p.value)}: ${ROLE_WORDS[p.role]}`;
     });
   }
@@ -177,6 +181,7 @@ export class IsoLevels {
     const box = this.#ctx.$('levels-box');
     if (!box) return;
     if (!this.#open) {
+      if (!box.hidden) this.#ctx.$('panel').inert = false;
       box.hidden = true;
       return;
     }
@@ -195,6 +200,8 @@ export class IsoLevels {
       box.replaceChildren(close, title, this.#panel);
     }
     box.hidden = false;
+    // The panel behind the box takes no focus while the box covers it.
+    this.#ctx.$('panel').inert = true;
     this.#measures = null;
     const packed = this.#spheres();
     if (packed) {

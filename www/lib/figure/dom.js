@@ -169,7 +169,7 @@ div.levels .branch { stroke: currentColor; fill: none; opacity: 0.7; }
 div.levels .join { cursor: pointer; }
 div.levels .join:focus-visible circle, div.levels .cursor:focus-visible rect { stroke: var(--accent); stroke-width: 2; }
 div.levels ol.critical-levels { margin: 4px 0 0; padding-left: 18px; font-size: 11px; max-height: 8em; overflow: auto; }
-#hud-field-warning { color: #ffb86b; max-width: 28em; }
+#hud #hud-field-warning { color: #ffb86b; max-width: 28em; white-space: normal; overflow: visible; text-overflow: clip; }
 #critical-marks { position: absolute; inset: 0; pointer-events: none; overflow: hidden; }
 #critical-marks span { position: absolute; left: 0; top: 0; margin: -0.6em 0 0 -0.45em; font: 11px/1 system-ui, sans-serif;
   text-shadow: 0 0 2px #000, 0 0 2px #000; white-space: nowrap; }
@@ -261,9 +261,10 @@ svg .corner-number { fill: var(--muted); font-size: 9px; }
 #inspector[hidden] { display: none; }
 /* The step-through of the march: the left column, over the panel. */
 #march { position: absolute; left: 8px; top: 8px; bottom: 8px; width: min(300px, 40%); z-index: 1; }
-/* Along the iso level: the lower left, over the panel. */
-#levels-box { position: absolute; left: 8px; bottom: 8px; width: min(300px, 45%); max-height: calc(100% - 16px);
-  overflow-y: auto; padding: 4px 10px 8px; background: var(--panel); border-radius: 8px; font-size: 12px; z-index: 1; }
+/* Along the iso level: the left column, over the panel (blurred behind it, and inert). */
+#levels-box { position: absolute; left: 8px; top: 8px; bottom: 8px; width: min(300px, 45%); overflow-y: auto;
+  padding: 4px 10px 8px; background: var(--panel); backdrop-filter: blur(8px); border-radius: 8px; font-size: 12px;
+  z-index: 1; }
 #levels-box[hidden] { display: none; }
 #levels-box h3 { margin: 2px 0; font-size: 12px; font-weight: 600; }
 #levels-box button.close { float: right; }
@@ -359,7 +360,7 @@ export const TEMPLATE = `
     <div id="hud-error" hidden><span class="key">Error</span> <span id="hud-error-text"></span></div>
     <div id="hud-topology" hidden><span class="key">Topology</span> <span id="hud-topology-text"></span></div>
     <div id="hud-field" hidden title="The surface's shape from the field's critical points, exact at any resolution"><span class="key">Field</span> <span id="hud-field-text"></span></div>
-    <div id="hud-field-warning" class="wide warning" role="status" hidden></div>
+    <div id="hud-field-warning" class="warning" role="status" hidden></div>
     <div id="hud-quality" hidden><span class="key">Quality</span> <span id="hud-quality-bars" role="img"></span></div>
     <div id="hud-lod-cell" hidden title="The largest a cell looks on screen: larger while frames are slow, from lod-pixels up to max-lod-pixels"><span class="key">LOD cell</span> <span id="hud-lod-cell-text"></span></div>
     <div id="hud-lod" hidden><span class="key">LOD</span> <span id="hud-lod-summary"></span><ol id="hud-lod-levels"></ol></div>
