@@ -284,4 +284,3 @@ fn spheres_that_cancel_leave_no_field_and_nothing_to_search() {
     assert_eq!(found.tree.len(), 1);
     assert_eq!(found.counts(1.0).blobs, 1);
 }
-
