@@ -6,6 +6,7 @@
 // The light theme's colours (theme="light", and theme="auto" where the reader prefers light).
 const LIGHT = `
   --panel: var(--metaballs-panel-background, rgba(250, 251, 253, 0.92));
+  --panel-solid: var(--metaballs-panel-background, rgb(250, 251, 253));
   --text: var(--metaballs-text, #1b1f27);
   --muted: var(--metaballs-muted, #4a5263);
   --accent: var(--metaballs-accent, #b2412c);
@@ -19,6 +20,7 @@ const LIGHT = `
 const STYLE = `
 :host {
   --panel: var(--metaballs-panel-background, rgba(14, 17, 24, 0.88));
+  --panel-solid: var(--metaballs-panel-background, rgb(14, 17, 24));
   --text: var(--metaballs-text, #e6e9ef);
   --muted: var(--metaballs-muted, #a9b1c2);
   --accent: var(--metaballs-accent, #e77661);
@@ -261,10 +263,9 @@ svg .corner-number { fill: var(--muted); font-size: 9px; }
 #inspector[hidden] { display: none; }
 /* The step-through of the march: the left column, over the panel. */
 #march { position: absolute; left: 8px; top: 8px; bottom: 8px; width: min(300px, 40%); z-index: 1; }
-/* Along the iso level: the left column, over the panel (blurred behind it, and inert). */
+/* Along the iso level: the left column, opaque over the panel (which is inert behind it). */
 #levels-box { position: absolute; left: 8px; top: 8px; bottom: 8px; width: min(300px, 45%); overflow-y: auto;
-  padding: 4px 10px 8px; background: var(--panel); backdrop-filter: blur(8px); border-radius: 8px; font-size: 12px;
-  z-index: 1; }
+  padding: 4px 10px 8px; background: var(--panel-solid); border-radius: 8px; font-size: 12px; z-index: 1; }
 #levels-box[hidden] { display: none; }
 #levels-box h3 { margin: 2px 0; font-size: 12px; font-weight: 600; }
 #levels-box button.close { float: right; }
