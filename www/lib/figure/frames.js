@@ -297,14 +297,18 @@ export class FigureFrames {
       ctx.each('beforeFrame', now, view);
       const forPrint = this.#printOnce;
       if (forPrint) this.#dirty = Math.max(this.#dirty, ONE_FRAME);
-      const elapsed = this.#last ? Math.min(Math.max(now - this.#last, 0) / 1000, 0.1) : 0;
+      // A figure that pauses on an event steps at most a 60 Hz frame at a time, however slow the
+      // frames come (each waits on a search, or on the mesher worker), so that the pause lands within
+      // one such step of it.
+      const longest = state['pause-on'] !== 'none' ? 1 / 60 : 0.1;
+      const elapsed = this.#last ? Math.min(Math.max(now - this.#last, 0) / 1000, longest) : 0;
       this.#last = now;
       // A sphere being dragged, a shape check that pause-on waits for, or a sync leader holds the
       // animation still.
       animating = !state.paused && state.speed > 0 && !ctx.some('holds');
       if (animating || this.#dirty > 0 || this.#stepRequested || view.needs_redraw()) {
         const dt = animating ? elapsed * state.speed : this.#stepRequested ? 1 / 60 : 0;
-        const step = this.#elsewhere.step(view, dt, !animating && ctx.some('holds'));
+        const step = this.#elsewhere.step(view, dt, !animating && ctx.some('holds'), longest);
         if (step === null) return true;
         this.#printOnce = false;
         this.#stepRequested = false;

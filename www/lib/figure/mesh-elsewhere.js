@@ -31,11 +31,12 @@ export class MeshElsewhere {
    * The step (in seconds) to draw `view`'s next frame with after advancing it by `dt`, or null while
    * its mesh is being made elsewhere (the frame is drawn on a later animation frame). `here`: the scene
    * is driven from outside (a sync leader's spheres, a drag), so the frame meshes on the page's thread.
+   * `longest`: the most time one step moves the spheres on, however much was owed while the worker was busy.
    */
-  step(view, dt, here = false) {
+  step(view, dt, here = false, longest = MAX_STEP) {
     const request = this.#request;
     if (request?.busy) {
-      this.#owed = Math.min(this.#owed + dt, MAX_STEP);
+      this.#owed = Math.min(this.#owed + dt, longest);
       return null;
     }
     if (request) {
@@ -48,7 +49,7 @@ export class MeshElsewhere {
       // The job changed while it was meshed (a setting, spheres placed): this frame meshes here.
       here = true;
     }
-    const step = Math.min(this.#owed + dt, MAX_STEP);
+    const step = Math.min(this.#owed + dt, longest);
     this.#owed = 0;
     // Every frame waits for the worker to start, the page's first too: it is handed the page's compiled
     // wasm, so it starts within tens of milliseconds, while a first mesh takes the page's thread for as
