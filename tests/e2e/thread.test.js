@@ -56,6 +56,72 @@ test('four animating figures of 128³ × 16 spheres mesh off the page\'s thread:
   assert.deepEqual(errors, []);
 });
 
+// Counts the page's animation frames from its start.
+function countAnimationFrames() {
+  window.animationFrames = 0;
+  const count = () => { window.animationFrames += 1; requestAnimationFrame(count); };
+  requestAnimationFrame(count);
+}
+
+const LIGHT = 'tests/e2e/fixtures/grid.html?n=1&cols=1&aspect=3/2&res=32&spheres=4';
+// The share of animation frames a lightly meshed figure draws on at least, meshed by the worker: each
+// mesh is made while the frame before it shows, so none waits a whole animation frame for its own.
+const DRAWN_SHARE = 0.8;
+
+test('a lightly meshed figure meshed by the worker draws on nearly every animation frame', async () => {
+  const { page, errors } = await open(LIGHT, { initScript: countAnimationFrames });
+  await page.waitForFunction(() => document.querySelector('metaballs-view')?.framesDrawn >= 30, null, { timeout: 60_000 });
+  assert.equal(await page.evaluate(() => customElements.get('metaballs-view').meshingOffThread), true);
+  const counts = () => page.evaluate(() => [window.animationFrames, document.querySelector('metaballs-view').framesDrawn]);
+  const [framesBefore, drawnBefore] = await counts();
+  await page.waitForTimeout(4000);
+  const [framesAfter, drawnAfter] = await counts();
+  const [frames, drawn] = [framesAfter - framesBefore, drawnAfter - drawnBefore];
+  console.log(`32³ × 4 spheres meshed by the worker: drawn on ${drawn} of ${frames} animation frames`);
+  assert.ok(frames > 20, `only ${frames} animation frames in 4 s`);
+  assert.ok(drawn >= DRAWN_SHARE * frames, `drawn on ${drawn} of ${frames} animation frames`);
+  assert.deepEqual(errors, []);
+});
+
+// Spheres placed by hand, as `sphere-list` takes them.
+const PLACED = ['-0.4,0,0,0.32;0.4,0.05,0,0.3;0,0.45,0.1,0.25', '-0.2,-0.3,0,0.4;0.5,0.4,-0.2,0.22'];
+
+test('a paused figure draws exactly the spheres set, with the worker as on the page\'s thread', async () => {
+  const drawnTriangles = async (initScript) => {
+    const { page, errors } = await open(LIGHT.replace('res=32', 'res=64'), initScript ? { initScript } : {});
+    await page.waitForFunction(() => document.querySelector('metaballs-view')?.framesDrawn >= 3, null, { timeout: 60_000 });
+    const triangles = await page.evaluate(async (placed) => {
+      const figure = document.querySelector('metaballs-view');
+      figure.pause();
+      const out = [];
+      for (const list of [placed[0], placed[1], placed[0]]) {
+        figure.setAttribute('sphere-list', list);
+        out.push((await figure.nextFrame()).triangles);
+      }
+      // A list set while the last one's mesh may still be on its way: the frame asked for is of the last.
+      figure.setAttribute('sphere-list', placed[0]);
+      await new Promise(requestAnimationFrame);
+      figure.setAttribute('sphere-list', placed[1]);
+      out.push((await figure.nextFrame()).triangles);
+      return out;
+    }, PLACED);
+    const offThread = await page.evaluate(() => customElements.get('metaballs-view').meshingOffThread);
+    assert.deepEqual(errors, []);
+    await page.context().close();
+    return { triangles, offThread };
+  };
+  const worker = await drawnTriangles(null);
+  const here = await drawnTriangles(noWorkers);
+  console.log(`triangles drawn of the lists set: worker ${worker.triangles.join(', ')}; page's thread ${here.triangles.join(', ')}`);
+  assert.equal(worker.offThread, true);
+  assert.equal(here.offThread, false);
+  assert.deepEqual(worker.triangles, here.triangles);
+  const [first, second, again, last] = worker.triangles;
+  assert.notEqual(first, second);
+  assert.equal(again, first);
+  assert.equal(last, second);
+});
+
 for (const [path, initScript] of [['the mesher worker', null], ['the page\'s thread', noWorkers]]) {
   test(`meshing on ${path}: the figures draw, print and come back after a lost device`, async () => {
     const { page, errors } = await open(FOUR, initScript ? { initScript } : {});

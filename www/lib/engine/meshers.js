@@ -1,65 +1,86 @@
-// Meshing off the page's thread: one worker per page (mesh-worker.js) meshes the jobs of every figure
-// whose CPU mesher makes its mesh, so that the page's thread stays free while they animate. Where the
-// page cannot start a module worker (no Worker, the element's modules on another origin) or its wasm
-// was given by the host rather than fetched from beside the modules (a notebook widget's, whose worker
-// would have no file to start from), `meshWorker()` is null and the figures mesh on the page's thread.
+// Meshing off the page's thread: a pool of workers per page (mesh-worker.js), each a second instance of
+// the page's wasm, meshes the jobs of every figure whose CPU mesher makes its mesh, so that the page's
+// thread stays free while they animate. Each job goes to the worker with the fewest jobs in hand, so the
+// page's figures share the pool: one worker where the machine has one or two cores (the page's thread
+// and the browser's rasteriser need theirs), one for each further core up to four. Where the page cannot
+// start a module worker (no Worker, the element's modules on another origin) or its wasm was given by
+// the host rather than fetched from beside the modules (a notebook widget's, whose worker would have no
+// file to start from), `meshWorker()` is null and the figures mesh on the page's thread.
 
 import { buildFiles, wasmBesideModule, wasmModule } from './wasm.js';
 
-let worker;
-// The worker has started its wasm (the page's compiled module, instantiated again): meshes asked for
-// meanwhile wait for it; what asks only a ready worker (pictures for print) is done on the page's thread.
-let ready = false;
+/** The most mesher workers a page starts. */
+const MAX_WORKERS = 4;
+
+/** How many mesher workers a page with `cores` logical cores starts. */
+export const poolSize = (cores) => Math.max(1, Math.min(MAX_WORKERS, (Number(cores) || 1) - 1));
+
+// The pool (undefined until first asked for; null where there is none), each member
+// `{ worker, ready, jobs }` with its jobs in hand, by id.
+let pool;
 let asked = 0;
-const waiting = new Map();
 
 // Every job still waiting fails with `why`, and no new one is taken.
 function stop(why) {
-  worker?.terminate();
-  worker = null;
-  for (const { reject } of waiting.values()) reject(new Error(why));
-  waiting.clear();
+  for (const member of pool ?? []) {
+    member.worker.terminate();
+    for (const { reject } of member.jobs.values()) reject(new Error(why));
+    member.jobs.clear();
+  }
+  pool = null;
+}
+
+function start(index) {
+  const { glue, wasm, compiled, worker: url } = buildFiles();
+  const member = { worker: new Worker(url, { type: 'module', name: `metaballs mesher ${index + 1}` }), ready: false, jobs: new Map() };
+  member.worker.onmessage = ({ data }) => {
+    if (data.ready) member.ready = true;
+    if (data.failed) stop(`the mesher worker could not start (${data.failed})`);
+    const job = member.jobs.get(data.id);
+    member.jobs.delete(data.id);
+    if (!job) return;
+    if (data.error) job.reject(new Error(data.error));
+    else job.resolve(data.shape ?? data.png ?? data.decided ?? [data.vertices, data.indices, data.blocks, data.cells]);
+  };
+  member.worker.onerror = (event) => {
+    event.preventDefault?.();
+    stop(`the mesher worker stopped (${event.message || 'it could not load'})`);
+  };
+  member.worker.postMessage({ glue: String(glue), wasm: String(wasm), compiled });
+  return member;
 }
 
 function make() {
   try {
-    const { glue, wasm, compiled, worker: url } = buildFiles();
-    const made = new Worker(url, { type: 'module', name: 'metaballs mesher' });
-    made.onmessage = ({ data }) => {
-      if (data.ready) ready = true;
-      if (data.failed) stop(`the mesher worker could not start (${data.failed})`);
-      const job = waiting.get(data.id);
-      waiting.delete(data.id);
-      if (!job) return;
-      if (data.error) job.reject(new Error(data.error));
-      else job.resolve(data.shape ?? data.png ?? data.decided ?? [data.vertices, data.indices, data.blocks, data.cells]);
-    };
-    made.onerror = (event) => {
-      event.preventDefault?.();
-      stop(`the mesher worker stopped (${event.message || 'it could not load'})`);
-    };
-    made.postMessage({ glue: String(glue), wasm: String(wasm), compiled });
-    return made;
+    return Array.from({ length: poolSize(globalThis.navigator?.hardwareConcurrency) }, (_, i) => start(i));
   } catch {
+    stop('the mesher workers could not start');
     return null;
   }
 }
 
+// The member to give the next job: the one with the fewest in hand, the first such.
+const leastBusy = (members) => members.reduce((best, m) => (m.jobs.size < best.jobs.size ? m : best));
+
 /**
- * The page's mesher worker (made on first use, once the wasm has loaded), or null where there is none
- * or, unless `starting` is true, while it is still starting (what is asked of it meanwhile waits until it
- * has):
+ * The page's mesher workers (started on first use, once the wasm has loaded), or null where there are
+ * none or, unless `starting` is true, while none has started yet (what is asked meanwhile waits until
+ * one has):
  * `{ mesh(job) }` resolves with `[vertices, indices, activeBlocks, activeCells]` for `View.give_mesh`;
  * `{ shape(vertices, triangles) }`, `{ png(pixels, width, height) }` and `{ decided(job) }` as `meshShape`,
  * `pngOf` (look.js) and `decidedCells`.
  */
 export function meshWorker(starting = false) {
-  if (worker === undefined) worker = typeof Worker === 'function' && wasmBesideModule() ? make() : null;
-  if (!worker || !(ready || starting)) return null;
+  if (pool === undefined) pool = typeof Worker === 'function' && wasmBesideModule() ? make() : null;
+  if (!pool) return null;
+  const ready = pool.filter((m) => m.ready);
+  if (!(ready.length || starting)) return null;
   const ask = (message, transfer = []) => new Promise((resolve, reject) => {
+    // A started worker takes the job; while none has, the first.
+    const member = leastBusy(ready.length ? ready : pool);
     asked += 1;
-    waiting.set(asked, { resolve, reject });
-    worker.postMessage({ id: asked, ...message }, transfer);
+    member.jobs.set(asked, { resolve, reject });
+    member.worker.postMessage({ id: asked, ...message }, transfer);
   });
   return {
     mesh: (job) => ask({ job }),
@@ -93,4 +114,4 @@ export async function decidedCells(job) {
 }
 
 /** Whether the figures' meshes are made off the page's thread (false until a figure has asked). */
-export const meshingOffThread = () => Boolean(worker) && ready;
+export const meshingOffThread = () => Boolean(pool?.some((m) => m.ready));

@@ -22,6 +22,7 @@ export class Hud {
     this.root = ctx.root;
     this.frames = 0;
     this.since = 0;
+    this.ticksAtSince = 0;
     this.overflows = 0;
     this.stats = { triangles: 0, fps: 0, frameTime: 0, adapter: '', mesher: '', overflowed: false, lod: null, error: null, quality: null, topology: null, renderScale: 1 };
     this.adapterLabel = '';
@@ -46,8 +47,14 @@ export class Hud {
   /** Every animation frame: the readouts, and the frame times measured for the features that use them. */
   afterTick(now, view, { animating }) {
     const since = this.since;
+    const ticks = this.#ctx.frames.animationFrames - this.ticksAtSince;
     const frameMs = this.update(now, view);
-    if (frameMs) this.#ctx.each('timed', { since, frameMs, animating });
+    if (!frameMs) return;
+    // The time between the animation frames the figure was given, drawn or not: a frame that waited
+    // for its mesh from the worker cost the page nothing, and fewer pixels would not bring it sooner.
+    const tickMs = ticks > 0 ? (now - since) / ticks : frameMs;
+    this.ticksAtSince = this.#ctx.frames.animationFrames;
+    this.#ctx.each('timed', { since, frameMs, tickMs: Math.min(tickMs, frameMs), animating });
   }
 
   /** True once the statistics read back are of frame `frame` or later. */

@@ -43,7 +43,7 @@ export class Sync {
     const frames = this.leader?.#ctx.frames;
     if (!frames?.view || frames.framesDrawn === this.#ledFrame) return;
     this.#ledFrame = frames.framesDrawn;
-    view.set_spheres(frames.view.spheres());
+    view.set_spheres(frames.shownSpheres());
     this.#ctx.redraw(ONE_FRAME);
   }
 

@@ -55,14 +55,17 @@ export class FigureDetail {
     if (name === 'lod' && value) this.#cells.reset();
   }
 
-  /** Frame times came in: an animating figure's detail follows them. */
-  timed({ frameMs, animating }) {
+  /**
+   * Frame times came in: an animating figure's detail follows the time between the animation frames
+   * it drew or waited in (`tickMs`), not the time it waited for a mesh from the worker.
+   */
+  timed({ tickMs, animating }) {
     if (!animating) return;
     const chain = [{ ladder: this.#cells, floor: this.#cellFloor }];
     // Benchmarks fix the render scale to compare figures at the same pixels.
     if (!globalThis.metaballsFixedScale) chain.unshift({ ladder: this.#scale, floor: this.#ctx.state['min-render-scale'] });
     const scale = this.renderScale;
-    if (this.#budget.observe(frameMs, frameBudget(), chain) && this.renderScale !== scale) this.#ctx.frames.resize();
+    if (this.#budget.observe(tickMs, frameBudget(), chain) && this.renderScale !== scale) this.#ctx.frames.resize();
   }
 
   /** Before each frame: the renderer draws the cells at the size in effect. */

@@ -34,6 +34,9 @@ export class FigureFrames {
   #stepRequested = false;
   #last = 0;
   #framesDrawn = 0;
+  // Animation frames this figure was given while it animated or had a frame to draw, whether it drew
+  // or waited for its mesh: the page's pace, which the render scale follows.
+  #animationFrames = 0;
   #held = false;
   // One frame is drawn off screen, for print, when the page is idle.
   #printOnce = false;
@@ -74,6 +77,9 @@ export class FigureFrames {
   get software() { return this.#software; }
   get failed() { return this.#failed; }
   get framesDrawn() { return this.#framesDrawn; }
+  get animationFrames() { return this.#animationFrames; }
+  /** The spheres of the frame on screen (the scene may be a step ahead while its next mesh is made). */
+  shownSpheres() { return this.#view ? this.#elsewhere.shownSpheres(this.#view) : null; }
   /** Spheres kept on the CPU while no renderer holds them (after a loss, or before the start). */
   get savedSpheres() { return this.#savedSpheres; }
   set savedSpheres(packed) { this.#savedSpheres = packed; }
@@ -306,7 +312,9 @@ export class FigureFrames {
       // A sphere being dragged, a shape check that pause-on waits for, or a sync leader holds the
       // animation still.
       animating = !state.paused && state.speed > 0 && !ctx.some('holds');
-      if (animating || this.#dirty > 0 || this.#stepRequested || view.needs_redraw()) {
+      // A mesh on its way from the worker is drawn when it is back, whatever else changed.
+      if (animating || this.#dirty > 0 || this.#stepRequested || this.#elsewhere.pending || view.needs_redraw()) {
+        this.#animationFrames += 1;
         const dt = animating ? elapsed * state.speed : this.#stepRequested ? 1 / 60 : 0;
         const step = this.#elsewhere.step(view, dt, !animating && ctx.some('holds'), longest);
         if (step === null) return true;
@@ -329,6 +337,9 @@ export class FigureFrames {
         }
         this.#framesDrawn += 1;
         ctx.each('frameDrawn', now, frame);
+        // The next frame's mesh is made while this one shows, unless the animation stopped with this
+        // frame (paused, or held by what the frame started: a drag, pause-on's search).
+        if (!state.paused && state.speed > 0 && !ctx.some('holds')) this.#elsewhere.ahead(view, longest);
       } else {
         view.poll();
         ctx.each('idle', now, view);

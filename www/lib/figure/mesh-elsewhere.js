@@ -1,8 +1,11 @@
-// A figure's frames whose mesh the page's mesher worker makes: before such a frame the scene advances
-// and the view's mesh job goes to the worker; the frame is drawn, without a further step, once the mesh
-// is back. Meanwhile the page's thread is free, and the time that passes is owed to the next step. A
-// figure whose meshes come from compute passes, whose scene another figure or a gesture drives, or on a
-// page without the worker, draws at once.
+// A figure's frames whose mesh the page's mesher worker makes, pipelined: while frame N is drawn, the
+// scene has already moved on to frame N + 1 and the worker is meshing it, so a figure draws on every
+// animation frame whose mesh is back, one step behind the scene at most, and the page's thread only
+// uploads and draws. Each step moves the spheres on by the time that passed since the last one (what
+// passed while the worker was busy included). A still figure (paused, a step asked for, a setting
+// changed) meshes exactly its state and draws it once back. A figure whose meshes come from compute
+// passes, whose scene another figure or a gesture drives, or on a page without the worker, draws at
+// once.
 
 import { meshWorker } from '../engine/meshers.js';
 import { within } from '../engine/wasm.js';
@@ -15,10 +18,14 @@ const sameJob = (a, b) => a !== undefined && b !== undefined && a.length === b.l
 export class MeshElsewhere {
   #element;
   #request = null;
-  // Time that passed while a mesh was made, taken in the next step.
+  // Time that passed since the scene last moved, taken in its next step.
   #owed = 0;
   // The worker failed this figure once: it meshes on the page's thread from then on.
   #failed = false;
+  // The frame being drawn has a mesh from the worker: the next one is meshed there too.
+  #given = false;
+  // The spheres of the frame on screen while the scene is a step ahead of it (else null).
+  #shown = null;
   #requestFrame;
 
   /** `requestFrame()` asks the page for a frame once a mesh is back. */
@@ -27,29 +34,41 @@ export class MeshElsewhere {
     this.#requestFrame = requestFrame;
   }
 
+  /** True while a mesh is being made, or is back and not drawn yet: the figure has a frame to draw. */
+  get pending() {
+    return this.#request !== null;
+  }
+
+  /** The spheres of the frame on screen (packed as `View.spheres`): the view's, unless it is a step ahead. */
+  shownSpheres(view) {
+    return this.#shown ?? view.spheres();
+  }
+
   /**
-   * The step (in seconds) to draw `view`'s next frame with after advancing it by `dt`, or null while
-   * its mesh is being made elsewhere (the frame is drawn on a later animation frame). `here`: the scene
-   * is driven from outside (a sync leader's spheres, a drag), so the frame meshes on the page's thread.
-   * `longest`: the most time one step moves the spheres on, however much was owed while the worker was busy.
+   * Before a frame: the step (in seconds) to draw `view`'s frame with, `dt` having passed, or null
+   * while its mesh is being made elsewhere (the frame is drawn on a later animation frame). A mesh
+   * back from the worker is drawn as it is (step 0) and the time is owed to `ahead`. `here`: the
+   * scene is driven from outside (a sync leader's spheres, a drag), so the frame meshes on the page's
+   * thread. `longest`: the most time one step moves the spheres on, however much was owed.
    */
   step(view, dt, here = false, longest = MAX_STEP) {
     const request = this.#request;
-    if (request?.busy) {
-      this.#owed = Math.min(this.#owed + dt, longest);
-      return null;
-    }
+    this.#owed = Math.min(this.#owed + dt, longest);
+    this.#given = false;
+    if (request?.busy) return null;
+    this.#shown = null;
     if (request) {
       this.#request = null;
       const job = within(this.#element, () => view.cpu_job(false));
       if (request.mesh && sameJob(job, request.job)) {
         within(this.#element, () => view.give_mesh(request.job, ...request.mesh));
+        this.#given = true;
         return 0;
       }
       // The job changed while it was meshed (a setting, spheres placed): this frame meshes here.
       here = true;
     }
-    const step = Math.min(this.#owed + dt, longest);
+    const step = this.#owed;
     this.#owed = 0;
     // Every frame waits for the worker to start, the page's first too: it is handed the page's compiled
     // wasm, so it starts within tens of milliseconds, while a first mesh takes the page's thread for as
@@ -57,8 +76,30 @@ export class MeshElsewhere {
     const worker = this.#failed || here ? null : meshWorker(true);
     if (!worker) return step;
     within(this.#element, () => view.advance(step));
+    return this.#send(worker, view) ? null : 0;
+  }
+
+  /**
+   * After a frame of an animating figure is drawn: the scene takes its next step (the time owed, at
+   * most `longest`) and the worker meshes it while this frame shows. Only after a frame whose mesh
+   * came from the worker: one meshed on the page's thread or on the GPU takes its steps as it draws.
+   */
+  ahead(view, longest = MAX_STEP) {
+    if (!this.#given || this.#request || this.#failed) return;
+    this.#given = false;
+    const worker = meshWorker(false);
+    if (!worker) return;
+    const step = Math.min(this.#owed, longest);
+    this.#owed = 0;
+    this.#shown = within(this.#element, () => view.spheres());
+    within(this.#element, () => view.advance(step));
+    this.#send(worker, view);
+  }
+
+  // Sends the view's job to the worker; false when the view meshes on the GPU (nothing to send).
+  #send(worker, view) {
     const job = within(this.#element, () => view.cpu_job(false));
-    if (!job) return 0;
+    if (!job) return false;
     const made = { job, busy: true, mesh: null };
     this.#request = made;
     worker.mesh(job).then((mesh) => { made.mesh = mesh; }, (error) => {
@@ -68,12 +109,14 @@ export class MeshElsewhere {
       made.busy = false;
       this.#requestFrame();
     });
-    return null;
+    return true;
   }
 
   /** The view is gone (released, lost): a mesh being made for it is dropped. */
   forget() {
     this.#request = null;
+    this.#given = false;
+    this.#shown = null;
     this.#owed = 0;
   }
 }
