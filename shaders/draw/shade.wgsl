@@ -77,16 +77,19 @@ fn view_direction(world: vec3<f32>) -> vec3<f32> {
 override LIGHT_SLOTS: u32 = 7u;
 
 // One light's Blinn-Phong term for surface colour `albedo` at `world` with unit normal `n`, seen along `v`.
-fn light_term(light: Light, albedo: vec3<f32>, world: vec3<f32>, n: vec3<f32>, v: vec3<f32>) -> vec3<f32> {
+// `kind` is the light's slot's kind (slot 0 holds the point light, 1 the directional, 2 the spot), a
+// constant, so the branches for the other kinds compile away rather than run masked on a software
+// rasteriser.
+fn light_term(light: Light, kind: u32, albedo: vec3<f32>, world: vec3<f32>, n: vec3<f32>, v: vec3<f32>) -> vec3<f32> {
     if (light.kind == 0u) {
         return vec3<f32>(0.0);
     }
     var l = -light.direction;
     var strength = 1.0;
-    if (light.kind != LIGHT_DIRECTIONAL) {
+    if (kind != LIGHT_DIRECTIONAL) {
         l = normalize(light.position - world);
     }
-    if (light.kind == LIGHT_SPOT) {
+    if (kind == LIGHT_SPOT) {
         strength = smoothstep(light.cos_outer, light.cos_inner, dot(-l, light.direction));
     }
     let lambert = max(dot(n, l), 0.0);
@@ -102,20 +105,25 @@ fn lit(albedo: vec3<f32>, world: vec3<f32>, n: vec3<f32>) -> vec3<f32> {
     let v = view_direction(world);
     var color = albedo * shading.ambient;
     if ((LIGHT_SLOTS & 1u) != 0u) {
-        color += light_term(shading.lights[0], albedo, world, n, v);
+        color += light_term(shading.lights[0], LIGHT_POINT, albedo, world, n, v);
     }
     if ((LIGHT_SLOTS & 2u) != 0u) {
-        color += light_term(shading.lights[1], albedo, world, n, v);
+        color += light_term(shading.lights[1], LIGHT_DIRECTIONAL, albedo, world, n, v);
     }
     if ((LIGHT_SLOTS & 4u) != 0u) {
-        color += light_term(shading.lights[2], albedo, world, n, v);
+        color += light_term(shading.lights[2], LIGHT_SPOT, albedo, world, n, v);
     }
     return color;
 }
 
+// Whether `to_output` encodes sRGB: 0 never, 1 always (the shading pipelines, built for one output
+// format, say which), 2 as `shading.encode_srgb` says (the teaching views). A software rasteriser runs
+// both sides of a branch on a uniform, so the constant spares it the encoding where the format does it.
+override ENCODE_SRGB: u32 = 2u;
+
 fn to_output(linear: vec3<f32>) -> vec4<f32> {
     var c = clamp(linear, vec3<f32>(0.0), vec3<f32>(1.0));
-    if (shading.encode_srgb == 1u) {
+    if (ENCODE_SRGB == 1u || (ENCODE_SRGB == 2u && shading.encode_srgb == 1u)) {
         let low = c * 12.92;
         let high = 1.055 * pow(c, vec3<f32>(1.0 / 2.4)) - 0.055;
         c = select(high, low, c <= vec3<f32>(0.0031308));

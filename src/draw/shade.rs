@@ -121,7 +121,8 @@ struct SurfaceSource {
 impl SurfaceSource {
     /// A pipeline of the shading shader drawing `topology` with `entries` (vertex, fragment), culling
     /// the faces given, writing depth or drawing behind everything, with `constants` for the shader's
-    /// overrides.
+    /// overrides. Each encodes sRGB itself exactly when the format does not (`ENCODE_SRGB`), as the
+    /// renderer's `encode_srgb` uniform says for the views.
     fn pipeline(
         &self,
         label: &str,
@@ -131,7 +132,9 @@ impl SurfaceSource {
         depth_write: bool,
         constants: &[(&str, f64)],
     ) -> wgpu::RenderPipeline {
-        let options = wgpu::PipelineCompilationOptions { constants, ..Default::default() };
+        let encode = [("ENCODE_SRGB", if self.format.is_srgb() { 0.0 } else { 1.0 })];
+        let constants: Vec<(&str, f64)> = constants.iter().chain(&encode).copied().collect();
+        let options = wgpu::PipelineCompilationOptions { constants: &constants, ..Default::default() };
         self.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
             label: Some(label),
             layout: Some(&self.pipeline_layout),

@@ -168,6 +168,10 @@ impl View {
         let copyable = gpu.adapter.get_info().backend == wgpu::Backend::BrowserWebGpu
             || capabilities.usages.contains(wgpu::TextureUsages::COPY_SRC);
         let picture = picture::FramePicture::new(copyable);
+        // Drawn through an sRGB view of the canvas's texture, so the blending hardware encodes the
+        // colours (the canvas offers only linear formats): a software rasteriser then runs no encoding
+        // of its own for every pixel.
+        let drawn = format.add_srgb_suffix();
         let config = wgpu::SurfaceConfiguration {
             usage: wgpu::TextureUsages::RENDER_ATTACHMENT | picture.usage(),
             format,
@@ -176,11 +180,11 @@ impl View {
             present_mode: wgpu::PresentMode::Fifo,
             desired_maximum_frame_latency: 2,
             alpha_mode: wgpu::CompositeAlphaMode::Opaque,
-            view_formats: vec![],
+            view_formats: if drawn == format { vec![] } else { vec![drawn] },
             color_space: wgpu::SurfaceColorSpace::Auto,
         };
         let renderer =
-            Renderer::on_context(&gpu.context, format, width, height, settings).map_err(js_error)?;
+            Renderer::on_context(&gpu.context, drawn, width, height, settings).map_err(js_error)?;
         surface.configure(&device, &config);
         Ok(View { renderer, surface, config, device, error: Rc::default(), picture })
     }
@@ -198,7 +202,8 @@ impl View {
         };
         let validation = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
         let memory = self.device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
-        let view = texture.texture.create_view(&wgpu::TextureViewDescriptor::default());
+        let format = self.config.view_formats.first().copied();
+        let view = texture.texture.create_view(&wgpu::TextureViewDescriptor { format, ..Default::default() });
         self.renderer.render(&view);
         self.picture.frame_drawn(&self.device, self.renderer.queue(), &texture.texture);
         self.renderer.queue().present(texture);
