@@ -73,7 +73,8 @@ export async function runBenchmark(view, container, { hasCompute = true } = {}) 
     }
   }
   // Level of detail: the finest cells near the camera at a resolution no uniform grid holds.
-  const lodResolution = listParam(query, 'bench_lod', [1024])[0];
+  // `bench_lod=0`: no row with level of detail.
+  const lodResolution = query.get('bench_lod') === '0' ? 0 : listParam(query, 'bench_lod', [1024])[0];
   for (const mesher of lodResolution ? meshers : []) {
     showTable(container, records, `Running ${lodResolution}³ cells with level of detail × 16 spheres, ${mesher} mesher…`);
     view.set_parameter('mesh-on', mesher);

@@ -34,6 +34,26 @@ pub fn mesh_job(packed: &[f32]) -> Result<js_sys::Array, JsError> {
     })
 }
 
+/// Meshes the layers of cells `from` to `to` of a job `View::cpu_job` packed (marching cubes only):
+/// `[vertices (Float32Array), indices (Uint32Array), active blocks, active cells, the grid edge of
+/// each vertex (Uint32Array)]`, joined with the other slabs' by the page (`www/lib/engine/slabs.js`).
+#[wasm_bindgen]
+pub fn mesh_slab(packed: &[f32], from: u32, to: u32) -> Result<js_sys::Array, JsError> {
+    MESHERS.with(|meshers| {
+        let mut meshers = meshers.borrow_mut();
+        let slab = meshers.mesh_slab(packed, from, to).map_err(js_error)?;
+        let [blocks, cells] = slab.counts;
+        let out = js_sys::Array::of4(
+            &js_sys::Float32Array::from(slab.vertices),
+            &js_sys::Uint32Array::from(slab.indices),
+            &blocks.into(),
+            &cells.into(),
+        );
+        out.push(&js_sys::Uint32Array::from(slab.keys));
+        Ok(out)
+    })
+}
+
 /// The shape of a mesh of `vertex_count` vertices and `triangles` (three indices each, as
 /// `View::mesh_triangles` gives them): `[components, genus, closed (0/1), manifold (0/1)]`.
 #[wasm_bindgen]

@@ -38,6 +38,7 @@ const SHARED = [
   'levels.test.js', // 20
   'size.test.js', // 0.1
   'frame-cost.test.js', // 0.3
+  'slabs.test.js', // 5
 ];
 // A click on a figure drawing a heavy frame must be handled within a second, and the page's long tasks
 // are counted: these run alone.

@@ -110,7 +110,7 @@ async function logged(browser, url, prefix) {
 const ours = async (browser, base) => {
   const rows = await logged(browser, `${base}index.html?bench&bench_meshers=cpu&bench_resolutions=64,128&bench_spheres=16`
     + '&bench_lod=0&bench_frames=10', 'metaballs-bench ');
-  return Object.fromEntries((rows ?? []).map((r) => [r.resolution, { mesh_ms: r.mesh_ms, frame_ms: r.frame_ms }]));
+  return Object.fromEntries((rows ?? []).filter((r) => !r.lod).map((r) => [r.resolution, { mesh_ms: r.mesh_ms, frame_ms: r.frame_ms }]));
 };
 const three = async (browser, base, res) => logged(browser, `${base}tests/e2e/fixtures/three-bench.html?res=${res}&spheres=16`,
   'three-bench ');

@@ -83,10 +83,14 @@ test('a lightly meshed figure meshed by the worker draws on nearly every animati
   assert.deepEqual(errors, []);
 });
 
+// The page's pool of mesher workers, whatever the machine's cores: one, or two that mesh a grid in slabs.
+const oneWorker = () => { window.metaballsMeshWorkers = 1; };
+const twoWorkers = () => { window.metaballsMeshWorkers = 2; };
+
 // Spheres placed by hand, as `sphere-list` takes them.
 const PLACED = ['-0.4,0,0,0.32;0.4,0.05,0,0.3;0,0.45,0.1,0.25', '-0.2,-0.3,0,0.4;0.5,0.4,-0.2,0.22'];
 
-test('a paused figure draws exactly the spheres set, with the worker as on the page\'s thread', async () => {
+test('a paused figure draws exactly the spheres set, with one worker, with two meshing in slabs, and on the page\'s thread', async () => {
   const drawnTriangles = async (initScript) => {
     const { page, errors } = await open(LIGHT.replace('res=32', 'res=64'), initScript ? { initScript } : {});
     await page.waitForFunction(() => document.querySelector('metaballs-view')?.framesDrawn >= 3, null, { timeout: 60_000 });
@@ -110,12 +114,16 @@ test('a paused figure draws exactly the spheres set, with the worker as on the p
     await page.context().close();
     return { triangles, offThread };
   };
-  const worker = await drawnTriangles(null);
+  const worker = await drawnTriangles(oneWorker);
+  const pool = await drawnTriangles(twoWorkers);
   const here = await drawnTriangles(noWorkers);
-  console.log(`triangles drawn of the lists set: worker ${worker.triangles.join(', ')}; page's thread ${here.triangles.join(', ')}`);
+  console.log(`triangles drawn of the lists set: one worker ${worker.triangles.join(', ')}; two workers, in slabs `
+    + `${pool.triangles.join(', ')}; page's thread ${here.triangles.join(', ')}`);
   assert.equal(worker.offThread, true);
+  assert.equal(pool.offThread, true);
   assert.equal(here.offThread, false);
   assert.deepEqual(worker.triangles, here.triangles);
+  assert.deepEqual(pool.triangles, here.triangles);
   const [first, second, again, last] = worker.triangles;
   assert.notEqual(first, second);
   assert.equal(again, first);

@@ -33,6 +33,7 @@ mod parameters;
 mod scene_file;
 mod scene_render;
 mod shared_device;
+mod slabs;
 mod surface_nets;
 mod table;
 mod ties;

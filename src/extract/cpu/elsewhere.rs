@@ -59,11 +59,45 @@ impl Meshers {
         Ok(mesher.given(packed.to_vec()))
     }
 
+    /// Meshes the layers of cells `from..to` of a packed marching-cubes job (a slab of it, one of
+    /// `slab_ranges`'): its vertices, triangles and active blocks and cells as `mesh` gives them, and the
+    /// grid edge each vertex lies on (point index times three plus the axis), to join the slabs by.
+    pub fn mesh_slab(&mut self, packed: &[f32], from: u32, to: u32) -> Result<SlabMesh<'_>, String> {
+        let (method, spheres, iso, grid, construction) = unpack(packed)?;
+        let n = grid.cells_per_axis;
+        if method != Method::MarchingCubes {
+            return Err(format!("only marching cubes meshes in slabs, not {}", method.word()));
+        }
+        if !(from < to && to <= n) {
+            return Err(format!("a slab of layers {from} to {to} is not within a grid of {n} cells"));
+        }
+        self.marched = true;
+        let mesher = &mut self.marching_cubes;
+        mesher.mesh_layers(&spheres, iso, grid, construction, from..to);
+        let stats = mesher.stats();
+        Ok(SlabMesh {
+            vertices: &mesher.vertices,
+            indices: &mesher.indices,
+            keys: mesher.vertex_keys(),
+            counts: [stats.active_blocks, stats.active_cells],
+        })
+    }
+
     /// The cells of the last job's mesh whose triangles the asymptotic decider or MC33 changes, with
     /// their kind (`CpuMesher::decided_cells`), whatever its table; none after a surface-nets job.
     pub fn decided_cells(&self) -> &[[u32; 4]] {
         if self.marched { self.marching_cubes.decided_cells() } else { &[] }
     }
+}
+
+/// A slab's mesh (`Meshers::mesh_slab`), borrowed from the mesher that made it.
+pub struct SlabMesh<'a> {
+    pub vertices: &'a [f32],
+    pub indices: &'a [u32],
+    /// The grid edge of each vertex.
+    pub keys: &'a [u32],
+    /// Active blocks and cells.
+    pub counts: [u32; 2],
 }
 
 /// A CPU mesher as the job runner sees it.

@@ -4,7 +4,8 @@
 // nothing itself, so it works wherever a bundler copies it) and given the page's compiled module
 // (`compiled`, so it only instantiates it) where there is one, and says when it is ready (or why it
 // failed), then answers each `{ id, job }` (a view's packed mesh job) with the mesh's vertices and
-// indices, handed over without a copy, each `{ id, shape: [vertex count, triangles] }` with the
+// indices, handed over without a copy, each `{ id, job, slab: [from, to] }` with the mesh of the
+// layers of cells from `from` to `to` and the grid edge of each vertex (`mesh_slab`, for slabs.js), each `{ id, shape: [vertex count, triangles] }` with the
 // mesh's shape (`mesh_shape`: blobs, genus, closed, manifold) and each `{ id, png: [pixels, width,
 // height] }` (RGBA8 rows, top first) with the picture as a PNG blob, each `{ id, decided: job }` (a
 // view's `cpu_job(true)`) with the cells whose triangles the asymptotic decider or MC33 changes, with
@@ -37,7 +38,7 @@ self.onmessage = async ({ data }) => {
     started.then(() => self.postMessage({ ready: true }), (error) => self.postMessage({ failed: String(error?.message ?? error) }));
     return;
   }
-  const { id, job, shape, png, decided } = data;
+  const { id, job, slab, shape, png, decided } = data;
   try {
     if (png) {
       self.postMessage({ id, png: await encodePng(...png) });
@@ -51,6 +52,12 @@ self.onmessage = async ({ data }) => {
     if (decided) {
       const cells = module.mesh_job(decided)[4];
       self.postMessage({ id, decided: cells }, [cells.buffer]);
+      return;
+    }
+    if (slab) {
+      const [vertices, indices, blocks, cells, keys] = module.mesh_slab(job, ...slab);
+      self.postMessage({ id, slab: [slab[0], vertices, indices, keys, blocks, cells] },
+        [vertices.buffer, indices.buffer, keys.buffer]);
       return;
     }
     const [vertices, indices, blocks, cells] = module.mesh_job(job);

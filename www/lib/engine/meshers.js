@@ -1,16 +1,21 @@
 // Meshing off the page's thread: a pool of workers per page (mesh-worker.js), each a second instance of
 // the page's wasm, meshes the jobs of every figure whose CPU mesher makes its mesh, so that the page's
 // thread stays free while they animate. Each job goes to the worker with the fewest jobs in hand, so the
-// page's figures share the pool: one worker where the machine has one or two cores (the page's thread
-// and the browser's rasteriser need theirs), one for each further core up to four. Where the page cannot
-// start a module worker (no Worker, the element's modules on another origin) or its wasm was given by
-// the host rather than fetched from beside the modules (a notebook widget's, whose worker would have no
-// file to start from), `meshWorker()` is null and the figures mesh on the page's thread.
+// page's figures share the pool, and a large one is cut into slabs of z, one for each worker, joined
+// into the mesh one worker would make (slabs.js). The pool has one worker where the machine
+// has one or two cores (the page's thread and the browser's rasteriser need theirs), and one more for
+// each further core, up to four. Where the page cannot start a module worker (no Worker, the element's
+// modules on another origin) or its wasm was given by the host rather than fetched from beside the
+// modules (a notebook widget's, whose worker would have no file to start from), `meshWorker()` is null
+// and the figures mesh on the page's thread.
 
+import { joinSlabs, slabRanges } from './slabs.js';
 import { buildFiles, wasmBesideModule, wasmModule } from './wasm.js';
 
 /** The most mesher workers a page starts. */
 const MAX_WORKERS = 4;
+/** Grids of fewer cells per axis are meshed whole: the slabs' seams would cost more than they save. */
+const MIN_SLAB_GRID = 64;
 
 /** How many mesher workers a page with `cores` logical cores starts. */
 export const poolSize = (cores) => Math.max(1, Math.min(MAX_WORKERS, (Number(cores) || 1) - 1));
@@ -40,7 +45,7 @@ function start(index) {
     member.jobs.delete(data.id);
     if (!job) return;
     if (data.error) job.reject(new Error(data.error));
-    else job.resolve(data.shape ?? data.png ?? data.decided ?? [data.vertices, data.indices, data.blocks, data.cells]);
+    else job.resolve(data.slab ?? data.shape ?? data.png ?? data.decided ?? [data.vertices, data.indices, data.blocks, data.cells]);
   };
   member.worker.onerror = (event) => {
     event.preventDefault?.();
@@ -52,7 +57,9 @@ function start(index) {
 
 function make() {
   try {
-    return Array.from({ length: poolSize(globalThis.navigator?.hardwareConcurrency) }, (_, i) => start(i));
+    // Benchmarks and tests may set the number of workers.
+    const size = globalThis.metaballsMeshWorkers ?? poolSize(globalThis.navigator?.hardwareConcurrency);
+    return Array.from({ length: size }, (_, i) => start(i));
   } catch {
     stop('the mesher workers could not start');
     return null;
@@ -66,7 +73,8 @@ const leastBusy = (members) => members.reduce((best, m) => (m.jobs.size < best.j
  * The page's mesher workers (started on first use, once the wasm has loaded), or null where there are
  * none or, unless `starting` is true, while none has started yet (what is asked meanwhile waits until
  * one has):
- * `{ mesh(job) }` resolves with `[vertices, indices, activeBlocks, activeCells]` for `View.give_mesh`;
+ * `{ mesh(job) }` resolves with `[vertices, indices, activeBlocks, activeCells]` for `View.give_mesh`
+ * (from slabs meshed by several workers, joined);
  * `{ shape(vertices, triangles) }`, `{ png(pixels, width, height) }` and `{ decided(job) }` as `meshShape`,
  * `pngOf` (look.js) and `decidedCells`.
  */
@@ -82,8 +90,15 @@ export function meshWorker(starting = false) {
     member.jobs.set(asked, { resolve, reject });
     member.worker.postMessage({ id: asked, ...message }, transfer);
   });
+  // A large marching-cubes job is cut into as many slabs as there are started workers, meshed at once
+  // and joined here (a copy of the vertices and a pass over the indices).
+  const mesh = (job) => {
+    const ranges = ready.length > 1 && job[0] === 0 && job[2] >= MIN_SLAB_GRID ? slabRanges(job[2], ready.length) : [];
+    if (ranges.length < 2) return ask({ job });
+    return Promise.all(ranges.map((slab) => ask({ job, slab }))).then((slabs) => joinSlabs(job[2], slabs));
+  };
   return {
-    mesh: (job) => ask({ job }),
+    mesh,
     shape: (vertices, triangles) => ask({ shape: [vertices, triangles] }, [triangles.buffer]),
     png: (pixels, width, height) => ask({ png: [pixels, width, height] }, [pixels.buffer]),
     decided: (job) => ask({ decided: job }),

@@ -20,6 +20,7 @@ use crate::extract::tables::EDGE_TABLE;
 use crate::scene::params::view::{Blend, March};
 use crate::scene::{BOX_HALF_EXTENT, Sphere};
 use glam::Vec3;
+use std::ops::Range;
 
 /// Blocks per side of the groups bounded before their blocks.
 const GROUP_BLOCKS: u32 = 2;
@@ -131,11 +132,32 @@ impl CpuMesher {
         };
     }
 
+    /// The grid edge each vertex of the last mesh lies on (point index times three plus the axis, as
+    /// `metaballs::extract::cpu::slabs::edge_key` makes it), for joining slabs.
+    pub fn vertex_keys(&self) -> &[u32] {
+        &self.vertex_edges
+    }
+
     /// Extracts the surface f = `iso` of `spheres` on `grid`.
     pub fn mesh(&mut self, spheres: &[Sphere], iso: f32, grid: Grid, construction: Construction) {
+        self.mesh_layers(spheres, iso, grid, construction, 0..grid.cells_per_axis);
+    }
+
+    /// [`CpuMesher::mesh`] of the layers of cells `layers` alone (a slab a whole number of blocks
+    /// thick, or ending at the grid's end): the vertices their cells use, in the order the whole grid's
+    /// mesh makes them, their triangles, and their blocks and cells in the figures.
+    pub fn mesh_layers(
+        &mut self,
+        spheres: &[Sphere],
+        iso: f32,
+        grid: Grid,
+        construction: Construction,
+        layers: Range<u32>,
+    ) {
         let n = grid.cells_per_axis;
         self.prepare(spheres, grid);
-        self.classify_blocks(iso, n, construction.blend);
+        let block_layers = layers.start / BLOCK_CELLS..layers.end.div_ceil(BLOCK_CELLS);
+        self.classify_blocks(iso, n, construction.blend, block_layers);
         let points = (n as usize + 1).pow(2);
         for plane in 0..2 {
             self.values[plane].resize(points, 0.0);
@@ -147,8 +169,8 @@ impl CpuMesher {
         self.vertex_edges.clear();
         self.decided.clear();
         self.stats.active_cells = 0;
-        self.sample_plane(0, n, construction.blend);
-        for z in 0..n {
+        self.sample_plane(layers.start, n, construction.blend);
+        for z in layers {
             self.sample_plane(z + 1, n, construction.blend);
             self.march_layer(spheres, z, iso, grid, construction);
         }
@@ -161,16 +183,18 @@ impl CpuMesher {
         self.coords.extend((0..=grid.cells_per_axis).map(|i| -BOX_HALF_EXTENT + i as f32 * cell));
     }
 
-    /// Keeps the blocks whose field bounds straddle `iso`, as `classify_blocks` in
-    /// `shaders/extract/blocks.wgsl` does, and lists them by layer. Groups of blocks that cannot hold the
-    /// surface are passed over first, then each block of the other groups is bounded on its own.
-    fn classify_blocks(&mut self, iso: f32, n: u32, blend: Blend) {
+    /// Keeps the blocks of the layers `block_layers` whose field bounds straddle `iso`, as
+    /// `classify_blocks` in `shaders/extract/blocks.wgsl` does, and lists them by layer (the other
+    /// layers' lists are left empty). Groups of blocks that cannot hold the surface are passed over
+    /// first, then each block of the other groups is bounded on its own.
+    fn classify_blocks(&mut self, iso: f32, n: u32, blend: Blend, block_layers: Range<u32>) {
         let nb = n.div_ceil(BLOCK_CELLS);
         let total = (nb as usize).pow(3);
         let ng = nb.div_ceil(GROUP_BLOCKS);
         let by_max = blend == Blend::Max;
         self.groups.clear();
-        for gz in 0..ng {
+        self.groups.resize((ng * ng * (block_layers.start / GROUP_BLOCKS)) as usize, false);
+        for gz in block_layers.start / GROUP_BLOCKS..block_layers.end.div_ceil(GROUP_BLOCKS) {
             for gy in 0..ng {
                 for gx in 0..ng {
                     let first = [gx, gy, gz].map(|g| g * GROUP_BLOCKS);
@@ -188,9 +212,11 @@ impl CpuMesher {
         self.layer_blocks.resize_with(nb as usize, Vec::new);
         self.layer_blocks.truncate(nb as usize);
         let mut active = 0;
-        for bz in 0..nb {
-            let layer = &mut self.layer_blocks[bz as usize];
+        for layer in &mut self.layer_blocks {
             layer.clear();
+        }
+        for bz in block_layers {
+            let layer = &mut self.layer_blocks[bz as usize];
             for by in 0..nb {
                 for bx in 0..nb {
                     let [gx, gy, gz] = [bx, by, bz].map(|b| b / GROUP_BLOCKS);
