@@ -49,11 +49,12 @@ export class Hud {
     const since = this.since;
     const ticks = this.#ctx.frames.animationFrames - this.ticksAtSince;
     const frameMs = this.update(now, view);
+    // A new window of counts began.
+    if (this.since !== since) this.ticksAtSince = this.#ctx.frames.animationFrames;
     if (!frameMs) return;
     // The time between the animation frames the figure was given, drawn or not: a frame that waited
     // for its mesh from the worker cost the page nothing, and fewer pixels would not bring it sooner.
     const tickMs = ticks > 0 ? (now - since) / ticks : frameMs;
-    this.ticksAtSince = this.#ctx.frames.animationFrames;
     this.#ctx.each('timed', { since, frameMs, tickMs: Math.min(tickMs, frameMs), animating });
   }
 
