@@ -131,6 +131,12 @@ export class FigureFrames {
 
   #rest() {
     if (this.#onScreen || !this.#view || this.#held || this.#frameWaiters.length) return;
+    // A frame for print is on its way (its mesh queued behind the figures on screen): it is let go
+    // of once that frame is drawn, not before.
+    if (this.#printOnce) {
+      this.#restTimer = setTimeout(() => this.#rest(), releaseDelay());
+      return;
+    }
     try {
       this.#savedSpheres = this.#view.spheres();
     } catch { /* keep what was saved before */ }
