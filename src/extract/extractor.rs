@@ -150,6 +150,10 @@ pub trait Extractor: wgpu::WasmNotSendSync {
     /// the job is still the frame's; others make their own).
     fn give_mesh(&mut self, _mesh: GivenMesh) {}
 
+    /// The next frame meshes anew even when its job is the last one's, which an extractor that keeps
+    /// its mesh would draw again (benchmarks time the meshing itself).
+    fn forget_mesh(&mut self) {}
+
     /// The latest mesh as written (clamped as the buffers held it), where it is kept on the CPU.
     fn cpu_mesh(&self) -> Option<IndexedMesh> {
         None

@@ -327,8 +327,10 @@ impl Renderer {
     }
 
     /// Makes the mesh alone for the current state, without drawing or waiting: the chosen extractor's
-    /// work and its upload (benchmarks time it against `Queue::on_submitted_work_done`).
+    /// work and its upload (benchmarks time it against `Queue::on_submitted_work_done`), meshed anew
+    /// even where the mesh of the same state is kept.
     pub fn extract(&mut self) {
+        self.stage.forget_meshes();
         self.write_uniforms();
         let mut encoder = self
             .device

@@ -71,6 +71,13 @@ impl MeshStage {
         }
     }
 
+    /// The next frame meshes anew whatever its extractor kept of the last one.
+    pub fn forget_meshes(&mut self) {
+        for extractor in &mut self.extractors {
+            extractor.forget_mesh();
+        }
+    }
+
     /// The extractor that made the latest frame's mesh.
     pub fn active(&self) -> &dyn Extractor {
         self.extractors[self.active].as_ref()

@@ -130,6 +130,43 @@ test('a paused figure draws exactly the spheres set, with one worker, with two m
   assert.equal(last, second);
 });
 
+// Counts the meshes asked of the page's mesher workers (whole grids and slabs).
+function countJobs() {
+  window.jobsPosted = 0;
+  const post = Worker.prototype.postMessage;
+  Worker.prototype.postMessage = function postMessage(data, ...rest) {
+    if (data?.job) window.jobsPosted += 1;
+    return post.call(this, data, ...rest);
+  };
+}
+
+test('a paused figure turned by its camera draws each frame from the mesh it has, without meshing again', async () => {
+  const { page, errors } = await open(LIGHT.replace('res=32', 'res=64'), { initScript: [oneWorker, countJobs] });
+  await page.waitForFunction(() => document.querySelector('metaballs-view')?.framesDrawn >= 3, null, { timeout: 60_000 });
+  assert.equal(await page.evaluate(() => customElements.get('metaballs-view').meshingOffThread), true);
+  const seen = await page.evaluate(async () => {
+    const figure = document.querySelector('metaballs-view');
+    figure.pause();
+    await figure.nextFrame();
+    const [jobs, drawn] = [window.jobsPosted, figure.framesDrawn];
+    for (let yaw = 10; yaw <= 80; yaw += 10) {
+      figure.yaw = yaw;
+      await figure.nextFrame();
+    }
+    const turned = [window.jobsPosted - jobs, figure.framesDrawn - drawn];
+    // A change to what the mesh is made of is meshed again.
+    figure.iso = figure.iso * 1.1;
+    await figure.nextFrame();
+    return { turned, changed: window.jobsPosted - jobs - turned[0] };
+  });
+  console.log(`turned 8 times: ${seen.turned[1]} frames drawn, ${seen.turned[0]} meshes asked of the worker; `
+    + `the iso level changed: ${seen.changed}`);
+  assert.ok(seen.turned[1] >= 8, `${seen.turned[1]} frames drawn for 8 turns`);
+  assert.equal(seen.turned[0], 0, 'the camera turning meshed the same spheres again');
+  assert.ok(seen.changed >= 1, 'a new iso level was not meshed');
+  assert.deepEqual(errors, []);
+});
+
 for (const [path, initScript] of [['the mesher worker', null], ['the page\'s thread', noWorkers]]) {
   test(`meshing on ${path}: the figures draw, print and come back after a lost device`, async () => {
     const { page, errors } = await open(FOUR, initScript ? { initScript } : {});

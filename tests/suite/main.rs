@@ -23,6 +23,7 @@ mod gpu_matches_oracle;
 mod hostile_inputs;
 mod image;
 mod js_layers;
+mod kept_mesh;
 mod lab;
 mod lod;
 mod manifest;

@@ -80,6 +80,9 @@ pub struct CpuMeshExtractor<M> {
     front: Vec<u32>,
     /// A mesh made elsewhere for a frame not drawn yet.
     given: Option<GivenMesh>,
+    /// The job (packed) of the mesh held, when it is whole: a frame of the same job (the camera turned,
+    /// a view changed, a still figure drawn again) draws it without meshing again.
+    held: Vec<f32>,
 }
 
 impl<M: CpuMeshing> CpuMeshExtractor<M> {
@@ -122,15 +125,15 @@ impl<M: CpuMeshing> Extractor for CpuMeshExtractor<M> {
     /// Meshes the frame; the buffers need room for its vertices and indices only (it fills no block or
     /// cell lists, and asking for room in them would grow them for nothing).
     fn prepare(&mut self, job: &Job) -> Option<Counters> {
+        // Part way through the march the frame meshes its cells on its own, and its mesh is not whole.
+        let whole = job.construction.march.is_none();
+        let packed = if whole { elsewhere::pack(M::METHOD, job) } else { Vec::new() };
         match self.given.take() {
-            // A mesh made elsewhere is whole: a frame part way through the march meshes on its own.
-            Some(given)
-                if given.job == elsewhere::pack(M::METHOD, job) && job.construction.march.is_none() =>
-            {
-                self.mesher.install(given)
-            }
+            Some(given) if whole && given.job == packed => self.mesher.install(given),
+            _ if whole && self.held == packed => {}
             _ => self.mesher.mesh_job(job),
         }
+        self.held = packed;
         let Counters { vertices, indices, .. } = self.counters();
         Some(Counters { active_blocks: 0, vertices, indices, active_cells: 0 })
     }
@@ -156,6 +159,10 @@ impl<M: CpuMeshing> Extractor for CpuMeshExtractor<M> {
 
     fn give_mesh(&mut self, mesh: GivenMesh) {
         self.given = Some(mesh);
+    }
+
+    fn forget_mesh(&mut self) {
+        self.held.clear();
     }
 
     fn cpu_mesh(&self) -> Option<IndexedMesh> {

@@ -13,7 +13,7 @@ import { within } from '../engine/wasm.js';
 // The longest step the animation takes at once, in seconds (as a slow frame's).
 const MAX_STEP = 0.1;
 
-const sameJob = (a, b) => a !== undefined && b !== undefined && a.length === b.length && a.every((x, i) => x === b[i]);
+const sameJob = (a, b) => a != null && b != null && a.length === b.length && a.every((x, i) => x === b[i]);
 
 export class MeshElsewhere {
   #element;
@@ -26,6 +26,9 @@ export class MeshElsewhere {
   #given = false;
   // The spheres of the frame on screen while the scene is a step ahead of it (else null).
   #shown = null;
+  // The job of the mesh from the worker that the renderer holds: a still frame of the same job (the
+  // camera turned, a view changed) draws it again at once, without meshing.
+  #held = null;
   #requestFrame;
 
   /** `requestFrame()` asks the page for a frame once a mesh is back. */
@@ -63,6 +66,7 @@ export class MeshElsewhere {
       if (request.mesh && sameJob(job, request.job)) {
         within(this.#element, () => view.give_mesh(request.job, ...request.mesh));
         this.#given = true;
+        this.#held = request.job;
         return 0;
       }
       // The job changed while it was meshed (a setting, spheres placed): this frame meshes here.
@@ -74,9 +78,14 @@ export class MeshElsewhere {
     // wasm, so it starts within tens of milliseconds, while a first mesh takes the page's thread for as
     // long on a small machine.
     const worker = this.#failed || here ? null : meshWorker(true);
-    if (!worker) return step;
+    if (!worker) {
+      this.#held = null;
+      return step;
+    }
     within(this.#element, () => view.advance(step));
-    return this.#send(worker, view) ? null : 0;
+    const job = within(this.#element, () => view.cpu_job(false));
+    if (sameJob(job, this.#held)) return 0;
+    return this.#send(worker, job) ? null : 0;
   }
 
   /**
@@ -93,12 +102,11 @@ export class MeshElsewhere {
     this.#owed = 0;
     this.#shown = within(this.#element, () => view.spheres());
     within(this.#element, () => view.advance(step));
-    this.#send(worker, view);
+    this.#send(worker, within(this.#element, () => view.cpu_job(false)));
   }
 
-  // Sends the view's job to the worker; false when the view meshes on the GPU (nothing to send).
-  #send(worker, view) {
-    const job = within(this.#element, () => view.cpu_job(false));
+  // Sends the view's job (`cpu_job`) to the worker; false when the view meshes on the GPU (no job).
+  #send(worker, job) {
     if (!job) return false;
     const made = { job, busy: true, mesh: null };
     this.#request = made;
@@ -117,6 +125,7 @@ export class MeshElsewhere {
     this.#request = null;
     this.#given = false;
     this.#shown = null;
+    this.#held = null;
     this.#owed = 0;
   }
 }
