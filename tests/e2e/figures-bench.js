@@ -8,7 +8,13 @@
 // `npm run bench:figures` (after www/build.sh). Options: `--root DIR`, repeatable, measures other
 // checkouts built the same way, interleaved with this one, for a before and after in one run;
 // `--passes N` (1) repeats everything; `--only TEXT` keeps the cases whose name holds TEXT; `--fixed`
-// holds every figure at full render scale; `--workers N` starts N mesher workers whatever the cores.
+// holds every figure at full render scale; `--workers N` starts N mesher workers whatever the cores;
+// `--threads` also says, per case, how busy each of the browser's threads was over the same seconds
+// (from a trace: wall and CPU milliseconds per second of its top-level tasks), which shows whether
+// the page, the mesher worker or the GPU process (SwiftShader's rasteriser behind its main thread)
+// holds the frames back. One more case, "turned while paused", draws a still 128³ × 16 figure whose
+// camera turns every animation frame: the mesh is kept, so it is the rate of drawing alone, at full
+// scale and at the pixels of the lowest render scale.
 // Prints a line per measurement and a JSON line starting "metaballs-figures ". Not a test: figures
 // depend on the machine.
 
@@ -26,6 +32,7 @@ const passes = number('passes', 1);
 const only = values('only')[0] ?? '';
 const fixed = process.argv.includes('--fixed');
 const workers = values('workers')[0];
+const threads = process.argv.includes('--threads');
 
 const CASES = [
   { name: 'one figure 32³ × 4', query: 'n=1&cols=1&aspect=3/2&res=32&spheres=4' },
@@ -33,6 +40,9 @@ const CASES = [
   { name: 'four figures 128³ × 16', query: 'n=4&cols=2&res=128&spheres=16' },
 ].flatMap((c) => ['WebGPU', 'WebGL2'].flatMap((api) => [true, false].map((worker) => ({
   ...c, api, worker, name: `${c.name}, ${api}, ${worker ? 'workers' : 'no worker'}`,
+})))).concat(['WebGPU', 'WebGL2'].flatMap((api) => [1, 0.5].map((ratio) => ({
+  name: `one figure 128³ × 16 turned while paused${ratio < 1 ? ', half the pixels' : ''}, ${api}`,
+  query: 'n=1&cols=1&aspect=3/2&res=128&spheres=16', api, worker: true, turn: ratio,
 })))).filter((c) => c.name.includes(only));
 
 // Before the page's scripts: its animation frames counted; the Worker or WebGPU taken away.
@@ -56,7 +66,44 @@ function serve(directory) {
   });
 }
 
-async function figures(browser, base, { query, api, worker }) {
+// Pauses every figure and turns its camera by a degree each animation frame, at `ratio` CSS pixels per
+// pixel at most (0.5: the pixels an animating figure draws at its lowest render scale).
+function turnWhilePaused(ratio) {
+  for (const figure of document.querySelectorAll('metaballs-view')) {
+    figure.pause();
+    figure.setAttribute('max-pixel-ratio', String(ratio));
+    const turn = () => {
+      figure.yaw = (figure.yaw + 1) % 360;
+      requestAnimationFrame(turn);
+    };
+    requestAnimationFrame(turn);
+  }
+}
+
+// Wall and CPU milliseconds per second of each thread's top-level tasks in a trace over `seconds`,
+// the busiest by CPU first: "process / thread".
+function busyThreads(trace, seconds) {
+  const events = JSON.parse(trace.toString()).traceEvents;
+  const names = new Map();
+  const processes = new Map();
+  for (const e of events) {
+    if (e.name === 'thread_name') names.set(`${e.pid}:${e.tid}`, e.args.name);
+    if (e.name === 'process_name') processes.set(e.pid, e.args.name);
+  }
+  const busy = new Map();
+  for (const e of events) {
+    if (e.ph !== 'X' || !e.cat?.split(',').includes('toplevel')) continue;
+    const key = `${processes.get(e.pid) ?? e.pid} / ${names.get(`${e.pid}:${e.tid}`) ?? e.tid}`;
+    const b = busy.get(key) ?? { wall_ms: 0, cpu_ms: 0 };
+    b.wall_ms += e.dur / 1000 / seconds;
+    b.cpu_ms += (e.tdur ?? 0) / 1000 / seconds;
+    busy.set(key, b);
+  }
+  return [...busy].sort((a, b) => b[1].cpu_ms - a[1].cpu_ms).slice(0, 4)
+    .map(([thread, b]) => ({ thread, wall_ms: Math.round(b.wall_ms), cpu_ms: Math.round(b.cpu_ms) }));
+}
+
+async function figures(browser, base, { query, api, worker, turn }) {
   const context = await browser.newContext({ viewport: { width: 960, height: 700 } });
   const page = await context.newPage();
   for (const script of [countAnimationFrames, worker ? null : noWorker, api === 'WebGL2' ? noWebgpu : null,
@@ -66,14 +113,17 @@ async function figures(browser, base, { query, api, worker }) {
     await page.goto(`${base}tests/e2e/fixtures/grid.html?${query}`);
     await page.waitForFunction(() => [...document.querySelectorAll('metaballs-view')].every((e) => e.stats?.triangles > 0),
       null, { timeout: 120_000 });
+    if (turn) await page.evaluate(turnWhilePaused, turn);
     await page.waitForTimeout(settle * 1000);
     const count = () => page.evaluate(() => ({
       frames: window.animationFrames,
       drawn: [...document.querySelectorAll('metaballs-view')].map((e) => e.framesDrawn),
     }));
+    if (threads) await browser.startTracing(page, { categories: ['toplevel', '__metadata'] });
     const start = await count();
     await page.waitForTimeout(seconds * 1000);
     const end = await count();
+    const busy = threads ? busyThreads(await browser.stopTracing(), seconds) : undefined;
     const seen = await page.evaluate(() => [...document.querySelectorAll('metaballs-view')].map((e) => ({
       scale: e.renderScale, adapter: e.stats?.adapter,
     })));
@@ -85,6 +135,7 @@ async function figures(browser, base, { query, api, worker }) {
       drawn_share: Math.round((Math.min(...drawn) / frames) * 100) / 100,
       render_scale: seen.map((s) => s.scale),
       adapter: seen[0]?.adapter,
+      busy,
     };
   } finally {
     await context.close();
@@ -128,6 +179,7 @@ try {
         console.log(`${c.name}${roots.length > 1 ? ` [${roots[k]}]` : ''}: ${seen.fps.join(' / ')} fps, drawn on `
           + `${Math.round(seen.drawn_share * 100)} % of ${seen.animation_fps} animation frames/s, render scale `
           + `${seen.render_scale.map((s) => s?.toFixed(2)).join(', ')} (${seen.adapter})`);
+        for (const b of seen.busy ?? []) console.log(`    ${b.thread}: busy ${b.wall_ms} ms/s, CPU ${b.cpu_ms} ms/s`);
       }
     }
     for (const [k, { base }] of servers.entries()) {
