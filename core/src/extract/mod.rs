@@ -4,7 +4,8 @@
 //! - [`decider`]: the triangles of cells whose ambiguous faces the asymptotic decider resolves.
 //! - [`interior`]: the joins inside a cell that MC33 makes (tunnels between loops).
 //! - [`reference`]: the CPU oracle every extractor must equal exactly.
-//! - [`field`]: the field on the CPU as the passes evaluate it (bounds, rows of samples).
+//! - [`field`]: the field on the CPU as the passes evaluate it (bounds, rows of samples), in vectors
+//!   of four lanes where it can (`lanes`).
 //! - [`mesh`]: triangle meshes and the properties the tests hold them to.
 //! - [`cpu`]: the CPU meshers (marching cubes and surface nets).
 
@@ -12,6 +13,7 @@ pub mod cpu;
 pub mod decider;
 pub mod field;
 pub mod interior;
+mod lanes;
 pub mod mesh;
 pub mod reference;
 pub mod tables;

@@ -2,48 +2,30 @@
 //! the same tables, block bounds and arithmetic as the GPU passes and the oracle, so that it yields the
 //! oracle's triangles exactly, in the vertex and index layout the shading pass draws.
 //!
-//! The grid is swept one plane of points at a time. Blocks of 4³ cells are bounded first, as on the GPU;
-//! only the points of kept blocks get field values, each computed once, in rows of consecutive points
-//! with the sphere loop outside so the compiler can vectorise across points (every point still sums its
-//! spheres in order, as the oracle does). Then the cells of kept blocks between two planes are
-//! classified and their triangles emitted, each vertex made once on first use and found again through
-//! the edge it lies on. Every array is kept between frames: after warm-up a frame allocates nothing.
+//! The grid is swept one plane of points at a time. Blocks of 4³ cells are bounded first, as on the GPU
+//! (four at a time, in vectors), then the blocks kept are bounded again over their boxes, more tightly;
+//! only the points of blocks both keep get field values, each computed once, in rows of consecutive
+//! points, chunks of eight points summing all the spheres in vectors (every point still sums its
+//! spheres in order, as the oracle does), with a bit per point saying whether it lies inside. Then the
+//! cells of those blocks between two planes are classified from the bits, four at a time where all
+//! their corners agree, and their triangles emitted, each vertex numbered on first use and found again
+//! through the edge it lies on; vertices are placed after each layer, their normals summed in vectors.
+//! Every array is kept between frames: after warm-up a frame allocates nothing.
 
+use crate::extract::cpu::blocks::Blocks;
+use crate::extract::cpu::planes::{ALL_INSIDE, Planes, Sweep};
+use crate::extract::cpu::vertices::{EdgeVertices, Field};
 use crate::extract::decider::{
-    MAX_DECIDED_TRIANGLES, ambiguous_faces, face_choices, has_tunnel, tunnel_possible,
+    MAX_DECIDED_TRIANGLES, ambiguous_faces, decided_triangles, face_choices, has_tunnel, tunnel_possible,
 };
-use crate::extract::field::{BLOCK_CELLS, Spheres, sample_run};
+use crate::extract::field::{BLOCK_CELLS, Spheres};
 use crate::extract::interior::interior_code;
 use crate::extract::mesh::IndexedMesh;
-use crate::extract::reference::{self, Construction, Grid};
+use crate::extract::reference::{Construction, Grid};
 use crate::extract::tables::EDGE_TABLE;
-use crate::scene::params::view::{Blend, March};
+use crate::scene::params::view::{Blend, CaseTable, March};
 use crate::scene::{BOX_HALF_EXTENT, Sphere};
-use glam::Vec3;
 use std::ops::Range;
-
-/// Blocks per side of the groups bounded before their blocks.
-const GROUP_BLOCKS: u32 = 2;
-
-/// Marks an edge without a vertex yet.
-const NONE: u32 = u32::MAX;
-
-/// Edge `e` of a cell starts at this corner offset and runs along this axis (`EDGE_CORNERS` in
-/// `src/extract/tables.rs`, each edge from its lower corner).
-const EDGE_START: [([u32; 3], usize); 12] = [
-    ([0, 0, 0], 0),
-    ([1, 0, 0], 1),
-    ([0, 1, 0], 0),
-    ([0, 0, 0], 1),
-    ([0, 0, 1], 0),
-    ([1, 0, 1], 1),
-    ([0, 1, 1], 0),
-    ([0, 0, 1], 1),
-    ([0, 0, 0], 2),
-    ([1, 0, 0], 2),
-    ([1, 1, 0], 2),
-    ([0, 1, 0], 2),
-];
 
 /// What a mesh took: the counts the HUD and the statistics show.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -68,20 +50,12 @@ pub struct CpuMesher {
     spheres: Spheres,
     /// Coordinate of grid point `i` along any axis.
     coords: Vec<f32>,
-    /// Per group of `GROUP_BLOCKS`³ blocks: whether its blocks need bounding one by one.
-    groups: Vec<bool>,
-    /// Per layer of blocks: the kept blocks' (x, y) block coordinates.
-    layer_blocks: Vec<Vec<(u32, u32)>>,
-    /// Per column of blocks in the current plane: its points are needed.
-    columns: Vec<bool>,
-    /// Field values of two planes of points (plane z at `z % 2`).
-    values: [Vec<f32>; 2],
-    /// The vertex on the x and y edges leaving each point of two planes.
-    plane_edges: [Vec<u32>; 2],
-    /// The vertex on the z edge leaving each point of the lower plane of the current layer of cells.
-    z_edges: Vec<u32>,
-    /// The grid edge of each vertex, so a stale entry in the edge arrays is told from a current one.
-    vertex_edges: Vec<u32>,
+    /// The kept blocks, by layer.
+    blocks: Blocks,
+    /// Field values and inside bits of two planes of points.
+    planes: Planes,
+    /// The vertices, found through the edges they lie on.
+    edges: EdgeVertices,
     /// The crossed cells whose triangles the decider or MC33 changes, with their kind, whatever the
     /// table (`decided_cells`).
     decided: Vec<[u32; 4]>,
@@ -112,6 +86,12 @@ impl CpuMesher {
         IndexedMesh::from_interleaved(&self.vertices, &self.indices)
     }
 
+    /// The grid edge of each vertex of the last mesh made here, as `(x + (n + 1) (y + (n + 1) z)) · 3 +
+    /// axis` of the edge's lower end.
+    pub fn vertex_keys(&self) -> &[u32] {
+        self.edges.keys()
+    }
+
     /// The cells of the last mesh whose triangles a table changes, each as x, y, z and a kind: bit 0
     /// where the asymptotic decider joins an ambiguous face (the classic table's triangles and the
     /// decider's differ), bit 1 where MC33 draws a tunnel (the decider's and MC33's differ).
@@ -132,20 +112,14 @@ impl CpuMesher {
         };
     }
 
-    /// The grid edge each vertex of the last mesh lies on (point index times three plus the axis, as
-    /// `metaballs::extract::cpu::slabs::edge_key` makes it), for joining slabs.
-    pub fn vertex_keys(&self) -> &[u32] {
-        &self.vertex_edges
-    }
-
     /// Extracts the surface f = `iso` of `spheres` on `grid`.
     pub fn mesh(&mut self, spheres: &[Sphere], iso: f32, grid: Grid, construction: Construction) {
         self.mesh_layers(spheres, iso, grid, construction, 0..grid.cells_per_axis);
     }
 
     /// [`CpuMesher::mesh`] of the layers of cells `layers` alone (a slab a whole number of blocks
-    /// thick, or ending at the grid's end): the vertices their cells use, in the order the whole grid's
-    /// mesh makes them, their triangles, and their blocks and cells in the figures.
+    /// thick, or ending at the grid's end): the vertices their cells use, in the order the whole
+    /// grid's mesh makes them, their triangles, and their blocks and cells in the figures.
     pub fn mesh_layers(
         &mut self,
         spheres: &[Sphere],
@@ -158,21 +132,34 @@ impl CpuMesher {
         self.prepare(spheres, grid);
         let block_layers = layers.start / BLOCK_CELLS..layers.end.div_ceil(BLOCK_CELLS);
         self.classify_blocks(iso, n, construction.blend, block_layers);
-        let points = (n as usize + 1).pow(2);
-        for plane in 0..2 {
-            self.values[plane].resize(points, 0.0);
-            self.plane_edges[plane].resize(2 * points, NONE);
-        }
-        self.z_edges.resize(points, NONE);
+        self.edges.start(n);
+        self.planes.resize(n);
         self.vertices.clear();
         self.indices.clear();
-        self.vertex_edges.clear();
         self.decided.clear();
         self.stats.active_cells = 0;
-        self.sample_plane(layers.start, n, construction.blend);
+        let mut planes = std::mem::take(&mut self.planes);
+        let blend = construction.blend;
+        planes.sample(layers.start, &self.sweep(n, iso, blend));
         for z in layers {
-            self.sample_plane(z + 1, n, construction.blend);
-            self.march_layer(spheres, z, iso, grid, construction);
+            planes.sample(z + 1, &self.sweep(n, iso, blend));
+            self.march_layer(&planes, z, iso, grid, construction);
+            let field = Field { n, iso, construction, coords: &self.coords, spheres, arrays: &self.spheres };
+            self.edges.place(&planes, &field, &mut self.vertices);
+        }
+        self.planes = planes;
+        self.edges.end(n);
+    }
+
+    /// What sampling a plane reads.
+    fn sweep(&self, n: u32, iso: f32, blend: Blend) -> Sweep<'_> {
+        Sweep {
+            n,
+            iso,
+            blend,
+            coords: &self.coords,
+            spheres: &self.spheres,
+            layer_blocks: &self.blocks.layers,
         }
     }
 
@@ -183,140 +170,55 @@ impl CpuMesher {
         self.coords.extend((0..=grid.cells_per_axis).map(|i| -BOX_HALF_EXTENT + i as f32 * cell));
     }
 
-    /// Keeps the blocks of the layers `block_layers` whose field bounds straddle `iso`, as
-    /// `classify_blocks` in `shaders/extract/blocks.wgsl` does, and lists them by layer (the other
-    /// layers' lists are left empty). Groups of blocks that cannot hold the surface are passed over
-    /// first, then each block of the other groups is bounded on its own.
-    fn classify_blocks(&mut self, iso: f32, n: u32, blend: Blend, block_layers: Range<u32>) {
-        let nb = n.div_ceil(BLOCK_CELLS);
-        let total = (nb as usize).pow(3);
-        let ng = nb.div_ceil(GROUP_BLOCKS);
-        let by_max = blend == Blend::Max;
-        self.groups.clear();
-        self.groups.resize((ng * ng * (block_layers.start / GROUP_BLOCKS)) as usize, false);
-        for gz in block_layers.start / GROUP_BLOCKS..block_layers.end.div_ceil(GROUP_BLOCKS) {
-            for gy in 0..ng {
-                for gx in 0..ng {
-                    let first = [gx, gy, gz].map(|g| g * GROUP_BLOCKS);
-                    self.groups.push(self.spheres.group_straddles(
-                        &self.coords,
-                        first,
-                        GROUP_BLOCKS,
-                        n,
-                        iso,
-                        by_max,
-                    ));
-                }
-            }
-        }
-        self.layer_blocks.resize_with(nb as usize, Vec::new);
-        self.layer_blocks.truncate(nb as usize);
-        let mut active = 0;
-        for layer in &mut self.layer_blocks {
-            layer.clear();
-        }
-        for bz in block_layers {
-            let layer = &mut self.layer_blocks[bz as usize];
-            for by in 0..nb {
-                for bx in 0..nb {
-                    let [gx, gy, gz] = [bx, by, bz].map(|b| b / GROUP_BLOCKS);
-                    if self.groups[(gx + ng * (gy + ng * gz)) as usize]
-                        && self.spheres.block_straddles(&self.coords, [bx, by, bz], n, iso, by_max)
-                    {
-                        layer.push((bx, by));
-                        active += 1;
-                    }
-                }
-            }
-        }
-        self.stats.active_blocks = active;
-        self.stats.total_blocks = total as u32;
-    }
-
-    /// Field values at the points of plane `z` that kept blocks use (boundary points read 0).
-    fn sample_plane(&mut self, z: u32, n: u32, blend: Blend) {
-        let nb = n.div_ceil(BLOCK_CELLS);
-        let width = n as usize + 1;
-        // The block layers holding this plane: the one above it and, on a layer boundary, the one below.
-        self.columns.clear();
-        self.columns.resize((nb * nb) as usize, false);
-        let layers = [z / BLOCK_CELLS, (z / BLOCK_CELLS).wrapping_sub(1)];
-        for (k, &layer) in layers.iter().enumerate() {
-            if layer >= nb || (k == 1 && !z.is_multiple_of(BLOCK_CELLS)) {
-                continue;
-            }
-            for &(bx, by) in &self.layer_blocks[layer as usize] {
-                self.columns[(bx + nb * by) as usize] = true;
-            }
-        }
-        let values = &mut self.values[(z % 2) as usize];
-        let boundary_plane = z == 0 || z == n;
-        let pz = self.coords[z as usize];
-        for y in 0..=n {
-            let rows = [y / BLOCK_CELLS, (y / BLOCK_CELLS).wrapping_sub(1)];
-            let needed = |bx: u32| {
-                rows.iter().enumerate().any(|(k, &by)| {
-                    by < nb
-                        && (k == 0 || y.is_multiple_of(BLOCK_CELLS))
-                        && self.columns[(bx + nb * by) as usize]
-                })
-            };
-            let row = &mut values[y as usize * width..(y as usize + 1) * width];
-            // Runs of consecutive needed blocks become runs of points.
-            let mut bx = 0;
-            while bx < nb {
-                if !needed(bx) {
-                    bx += 1;
-                    continue;
-                }
-                let start = bx;
-                while bx < nb && needed(bx) {
-                    bx += 1;
-                }
-                let x0 = (start * BLOCK_CELLS) as usize;
-                let x1 = ((bx * BLOCK_CELLS).min(n)) as usize;
-                let run = &mut row[x0..=x1];
-                if boundary_plane || y == 0 || y == n {
-                    run.fill(0.0);
-                    continue;
-                }
-                sample_run(run, &self.coords[x0..=x1], self.coords[y as usize], pz, &self.spheres, blend);
-                if x0 == 0 {
-                    run[0] = 0.0;
-                }
-                if x1 == n as usize {
-                    run[x1 - x0] = 0.0;
-                }
-            }
-        }
+    /// Keeps the blocks whose field bounds straddle `iso`, as `classify_blocks` in
+    /// `shaders/extract/blocks.wgsl` does, and lists them by layer.
+    fn classify_blocks(&mut self, iso: f32, n: u32, blend: Blend, layers: Range<u32>) {
+        let bounds = (iso, blend == Blend::Max);
+        self.stats.active_blocks = self.blocks.classify(&self.spheres, &self.coords, bounds, n, layers);
+        self.stats.total_blocks = n.div_ceil(BLOCK_CELLS).pow(3);
     }
 
     /// Classifies the cells of kept blocks between planes `z` and `z + 1` and emits their triangles.
-    fn march_layer(&mut self, spheres: &[Sphere], z: u32, iso: f32, grid: Grid, construction: Construction) {
+    fn march_layer(&mut self, planes: &Planes, z: u32, iso: f32, grid: Grid, construction: Construction) {
         let n = grid.cells_per_axis;
+        let nb = n.div_ceil(BLOCK_CELLS) as usize;
         let width = n as usize + 1;
         let (low, high) = ((z % 2) as usize, ((z + 1) % 2) as usize);
-        let blocks = std::mem::take(&mut self.layer_blocks[(z / BLOCK_CELLS) as usize]);
+        let (lo, hi) = (&planes.values[low], &planes.values[high]);
+        let blocks = std::mem::take(&mut self.blocks.layers[(z / BLOCK_CELLS) as usize]);
+        self.edges.start_layer(z);
         for &(bx, by) in &blocks {
             let y_end = (by * BLOCK_CELLS + BLOCK_CELLS).min(n);
             let x_end = (bx * BLOCK_CELLS + BLOCK_CELLS).min(n);
             for y in by * BLOCK_CELLS..y_end {
+                // The inside bits of the four rows of points around this row of cells.
+                let row = |plane: usize, y: u32| planes.inside[plane][y as usize * nb + bx as usize];
+                let rows = [row(low, y), row(low, y + 1), row(high, y), row(high, y + 1)];
+                let (all, any) =
+                    (rows[0] & rows[1] & rows[2] & rows[3], rows[0] | rows[1] | rows[2] | rows[3]);
+                if any == 0 || all == ALL_INSIDE {
+                    continue;
+                }
                 for x in bx * BLOCK_CELLS..x_end {
-                    if !March::reached(construction.march, [x, y, z]) {
-                        continue;
-                    }
-                    let at = x as usize + width * y as usize;
-                    let corners = [at, at + 1, at + 1 + width, at + width];
-                    let (lo, hi) = (&self.values[low], &self.values[high]);
-                    let mut case = 0usize;
-                    for (c, &p) in corners.iter().enumerate() {
-                        case |= ((lo[p] > iso) as usize) << c;
-                        case |= ((hi[p] > iso) as usize) << (c + 4);
-                    }
-                    if EDGE_TABLE[case] == 0 {
+                    let k = x - bx * BLOCK_CELLS;
+                    // Corners 0 to 3 at (x, y), (x + 1, y), (x + 1, y + 1), (x, y + 1), below then above.
+                    let bit = |r: u8, dx: u32| ((r >> (k + dx)) & 1) as usize;
+                    let case = bit(rows[0], 0)
+                        | bit(rows[0], 1) << 1
+                        | bit(rows[1], 1) << 2
+                        | bit(rows[1], 0) << 3
+                        | bit(rows[2], 0) << 4
+                        | bit(rows[2], 1) << 5
+                        | bit(rows[3], 1) << 6
+                        | bit(rows[3], 0) << 7;
+                    if EDGE_TABLE[case] == 0
+                        || (construction.march.is_some() && !March::reached(construction.march, [x, y, z]))
+                    {
                         continue;
                     }
                     self.stats.active_cells += 1;
+                    let at = x as usize + width * y as usize;
+                    let corners = [at, at + 1, at + 1 + width, at + width];
                     let values = [
                         lo[corners[0]],
                         lo[corners[1]],
@@ -330,77 +232,38 @@ impl CpuMesher {
                     // What the decider changes (its faces) and what MC33 changes beyond them (a
                     // tunnel), whatever the table drawn.
                     let joined = if ambiguous_faces(case) != 0 { face_choices(case, values, iso) } else { 0 };
-                    let tunnel =
-                        tunnel_possible(case) && has_tunnel(case, joined, interior_code(values, iso));
+                    let code = if tunnel_possible(case) { interior_code(values, iso) } else { 0 };
+                    let tunnel = code != 0 && has_tunnel(case, joined, code);
                     let kind = (joined != 0) as u32 | (tunnel as u32) << 1;
                     if kind != 0 {
                         self.decided.push([x, y, z, kind]);
                     }
+                    // The triangles `Construction::cell_triangles` gives, from the choices made above
+                    // (where no interior join can make a tunnel, every one gives the same triangles).
+                    let (joined, code) = match construction.case_table {
+                        CaseTable::Classic => (0, 0),
+                        CaseTable::Decider => (joined, 0),
+                        CaseTable::Mc33 => (joined, code),
+                    };
                     let mut triangles = [[0; 3]; MAX_DECIDED_TRIANGLES];
-                    let count = construction.cell_triangles(case, values, iso, &mut triangles);
-                    for t in &triangles[..count] {
-                        // The tables wind clockwise seen from outside; emit counter-clockwise.
-                        for k in [0, 2, 1] {
-                            let id = self.vertex_on(spheres, t[k], [x, y, z], iso, grid, construction);
-                            self.indices.push(id);
-                        }
+                    let mut count = 0;
+                    for (slot, t) in triangles.iter_mut().zip(decided_triangles(case, joined, code)) {
+                        *slot = t;
+                        count += 1;
                     }
+                    // The tables wind clockwise seen from outside; emit counter-clockwise.
+                    self.edges.number([x, y, z], &triangles[..count], &mut self.indices);
                 }
             }
         }
-        self.layer_blocks[(z / BLOCK_CELLS) as usize] = blocks;
-    }
-
-    /// The vertex on edge `edge` of `cell`, made on first use.
-    fn vertex_on(
-        &mut self,
-        spheres: &[Sphere],
-        edge: usize,
-        cell: [u32; 3],
-        iso: f32,
-        grid: Grid,
-        construction: Construction,
-    ) -> u32 {
-        let n = grid.cells_per_axis;
-        let width = n as usize + 1;
-        let (offset, axis) = EDGE_START[edge];
-        let a = [cell[0] + offset[0], cell[1] + offset[1], cell[2] + offset[2]];
-        let planar = a[0] as usize + width * a[1] as usize;
-        let key = (a[0] + (n + 1) * (a[1] + (n + 1) * a[2])) * 3 + axis as u32;
-        let plane = (a[2] % 2) as usize;
-        let slot = match axis {
-            2 => &mut self.z_edges[planar],
-            _ => &mut self.plane_edges[plane][2 * planar + axis],
-        };
-        let known = *slot;
-        if (known as usize) < self.vertex_edges.len() && self.vertex_edges[known as usize] == key {
-            return known;
-        }
-        let id = self.vertex_edges.len() as u32;
-        *slot = id;
-        self.vertex_edges.push(key);
-
-        let mut b = a;
-        b[axis] += 1;
-        let value = |p: [u32; 3]| self.values[(p[2] % 2) as usize][p[0] as usize + width * p[1] as usize];
-        let (fa, fb) = (value(a), value(b));
-        let point = |p: [u32; 3]| Vec3::from_array(p.map(|i| self.coords[i as usize]));
-        let boundary = |p: [u32; 3]| p.contains(&0) || p.contains(&n);
-        let (p, normal) = reference::surface_vertex(
-            spheres,
-            iso,
-            construction,
-            (point(a), fa, boundary(a)),
-            (point(b), fb, boundary(b)),
-        );
-        self.vertices.extend_from_slice(&[p.x, p.y, p.z, normal.x, normal.y, normal.z]);
-        id
+        self.blocks.layers[(z / BLOCK_CELLS) as usize] = blocks;
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::extract::reference;
     use crate::scene::Scene;
 
     fn assert_matches_oracle(spheres: &[Sphere], iso: f32, n: u32, construction: Construction) {
