@@ -9,8 +9,9 @@ use std::cell::RefCell;
 use wasm_bindgen::prelude::*;
 
 thread_local! {
-    /// This instance's meshers, whose buffers are kept from job to job.
-    static MESHERS: RefCell<Meshers> = RefCell::default();
+    /// This instance's meshers, whose buffers are kept from job to job (boxed: a pointer to set up
+    /// rather than every field).
+    static MESHERS: RefCell<Box<Meshers>> = RefCell::default();
 }
 
 /// Meshes a job `View::cpu_job` packed: `[vertices (Float32Array), indices

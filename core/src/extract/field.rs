@@ -66,70 +66,28 @@ impl Spheres {
         Bounds::straddle(adding, subtracting, touches_walls, iso)
     }
 
-    /// [`Spheres::ball_straddles`] of four balls at once, a ball to a lane: each lane sums its terms
-    /// in sphere order, so each answer is that function's.
-    pub fn balls_straddle(&self, balls: [Ball; 4], iso: f32, by_max: bool) -> [bool; 4] {
-        let lane = |f: &dyn Fn(&Ball) -> f32| F32x4::from_array(balls.map(|ball| f(&ball)));
-        let (cx, cy, cz) = (lane(&|b| b.centre.x), lane(&|b| b.centre.y), lane(&|b| b.centre.z));
-        let (h, infinity) = (lane(&|b| b.h), F32x4::splat(f32::INFINITY));
-        self.lanes_straddle(balls.map(|b| b.touches_walls), iso, by_max, |[x, y, z], r2| {
-            let (dx, dy, dz) = (cx - x, cy - y, cz - z);
-            let d = (dx * dx + dy * dy + dz * dz).sqrt();
-            let gap = d - h;
-            (r2 / ((d + h) * (d + h)), gap.if_not_positive(infinity, r2 / (gap * gap)))
-        })
-    }
-
-    /// [`Spheres::balls_straddle`] over four boxes, each from `low` to `high`: the bounds of each
-    /// term at the box's nearest and farthest points from the sphere's centre, tighter than over the
-    /// ball holding the box, so a box a ball keeps may still be passed over (with the same margin).
-    pub fn boxes_straddle(&self, boxes: [Block; 4], iso: f32, by_max: bool) -> [bool; 4] {
-        let lane = |f: &dyn Fn(&Block) -> f32| F32x4::from_array(boxes.map(|b| f(&b)));
-        let low = [lane(&|b| b.low.x), lane(&|b| b.low.y), lane(&|b| b.low.z)];
-        let high = [lane(&|b| b.high.x), lane(&|b| b.high.y), lane(&|b| b.high.z)];
-        let (zero, infinity) = (F32x4::splat(0.0), F32x4::splat(f32::INFINITY));
-        self.lanes_straddle(boxes.map(|b| b.touches_walls), iso, by_max, |centre, r2| {
-            // Per axis, how far the box's nearest and farthest points lie from the centre.
-            let near: [F32x4; 3] =
-                std::array::from_fn(|a| (low[a] - centre[a]).at_least(centre[a] - high[a]).at_least(zero));
-            let far: [F32x4; 3] = std::array::from_fn(|a| (centre[a] - low[a]).at_least(high[a] - centre[a]));
-            let squared = |d: [F32x4; 3]| d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-            let (near, far) = (squared(near), squared(far));
-            (r2 / far, near.if_not_positive(infinity, r2 / near))
-        })
-    }
-
-    /// The answers of four lanes whose boxes touch the walls where `touches_walls` says, from the
-    /// lower and upper bounds `terms` gives of each sphere's term (at its centre, with its weight's
-    /// size), summed in sphere order.
-    fn lanes_straddle(
-        &self,
-        touches_walls: [bool; 4],
-        iso: f32,
-        by_max: bool,
-        terms: impl Fn([F32x4; 3], F32x4) -> (F32x4, F32x4),
-    ) -> [bool; 4] {
-        // The lower and upper bounds of the adding terms, then of the subtracting ones.
-        let mut sums = [F32x4::splat(0.0); 4];
+    /// [`Spheres::straddles`] over the box `b` with the bounds of each term at the box's nearest and
+    /// farthest points from the sphere's centre, tighter than over the ball holding the box, so a box
+    /// a ball keeps may still be passed over (with the same margin).
+    pub fn box_straddles(&self, b: Block, iso: f32, by_max: bool) -> bool {
+        let mut adding = Bounds::default();
+        let mut subtracting = Bounds::default();
+        let (low, high) = (b.low.to_array(), b.high.to_array());
         for i in 0..self.r2.len() {
-            let centre = [self.x[i], self.y[i], self.z[i]].map(F32x4::splat);
-            let (low, high) = terms(centre, F32x4::splat(self.r2[i].abs()));
-            let kind = if self.r2[i] < 0.0 { 2 } else { 0 };
-            let [lower, upper] = [kind, kind + 1];
-            if by_max {
-                sums[lower] = sums[lower].at_least(low);
-                sums[upper] = sums[upper].at_least(high);
-            } else {
-                sums[lower] = sums[lower] + low;
-                sums[upper] = sums[upper] + high;
-            }
+            let c = [self.x[i], self.y[i], self.z[i]];
+            // Per axis, how far the box's nearest and farthest points lie from the centre.
+            let at_least = |x: f32, floor: f32| if x < floor { floor } else { x };
+            let near: [f32; 3] =
+                std::array::from_fn(|a| at_least(at_least(low[a] - c[a], c[a] - high[a]), 0.0));
+            let far: [f32; 3] = std::array::from_fn(|a| at_least(c[a] - low[a], high[a] - c[a]));
+            let squared = |d: [f32; 3]| d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            let (near, far) = (squared(near), squared(far));
+            let r2 = self.r2[i].abs();
+            let high_term = if near <= 0.0 { f32::INFINITY } else { r2 / near };
+            let bounds = if self.r2[i] < 0.0 { &mut subtracting } else { &mut adding };
+            bounds.add(r2 / far, high_term, by_max);
         }
-        let [add_low, add_high, sub_low, sub_high] = sums.map(F32x4::to_array);
-        std::array::from_fn(|l| {
-            let adding = Bounds { lower: add_low[l], upper: add_high[l] };
-            let subtracting = Bounds { lower: sub_low[l], upper: sub_high[l] };
-            Bounds::straddle(adding, subtracting, touches_walls[l], iso)
-        })
+        Bounds::straddle(adding, subtracting, b.touches_walls, iso)
     }
 }
 
@@ -141,7 +99,7 @@ pub struct Block {
     pub touches_walls: bool,
 }
 
-/// A ball the field is bounded over (by [`Spheres::balls_straddle`]): its centre and radius, and
+/// A ball the field is bounded over (by [`Spheres::ball_straddles`]): its centre and radius, and
 /// whether the box it holds touches the walls.
 #[derive(Clone, Copy)]
 pub struct Ball {
@@ -250,20 +208,19 @@ impl Bounds {
     }
 }
 
-/// Field values along a run of points sharing y and z: for blend by sum, chunks of points whose
-/// partial sums stay in registers while the sphere loop runs, so the inner loop has no dependence
-/// between iterations and vectorises; each point still sums its spheres in order. With blend by max,
-/// the sphere loop runs outside over the whole run, and the largest subtracting term is taken off
-/// after it, as `field_at` in `shaders/common.wgsl` does.
+/// Field values along a run of points sharing y and z, in chunks of points whose partial sums stay in
+/// registers while the sphere loop runs, so the inner loop has no dependence between iterations;
+/// each point still takes its spheres in order. With blend by max, the largest adding term less the
+/// largest subtracting term, as `field_at` in `shaders/common.wgsl` makes it.
 pub fn sample_run(run: &mut [f32], xs: &[f32], py: f32, pz: f32, s: &Spheres, blend: Blend) {
     let xs = &xs[..run.len()];
-    if blend == Blend::Sum {
-        let count = s.r2.len();
-        let (sx, sy, sz, sr) = (&s.x[..count], &s.y[..count], &s.z[..count], &s.r2[..count]);
-        let floor = F32x4::splat(MIN_DISTANCE_SQUARED);
-        for start in (0..run.len()).step_by(LANES) {
-            let (x, len) = lanes::load(xs, start);
-            let mut f = [F32x4::splat(0.0); 2];
+    let count = s.r2.len();
+    let (sx, sy, sz, sr) = (&s.x[..count], &s.y[..count], &s.z[..count], &s.r2[..count]);
+    let floor = F32x4::splat(MIN_DISTANCE_SQUARED);
+    for start in (0..run.len()).step_by(LANES) {
+        let (x, len) = lanes::load(xs, start);
+        let mut f = [F32x4::splat(0.0); 2];
+        if blend == Blend::Sum {
             for i in 0..count {
                 let (dy, dz) = (py - sy[i], pz - sz[i]);
                 let (dy2, dz2) = (F32x4::splat(dy * dy), F32x4::splat(dz * dz));
@@ -273,47 +230,33 @@ pub fn sample_run(run: &mut [f32], xs: &[f32], py: f32, pz: f32, s: &Spheres, bl
                     f[v] = f[v] + r2 / (dx * dx + dy2 + dz2).at_least(floor);
                 }
             }
-            lanes::store(run, start, f, len);
-        }
-        return;
-    }
-    run.fill(0.0);
-    let mut subtracting = false;
-    for i in 0..s.r2.len() {
-        let (dy, dz, r2) = (py - s.y[i], pz - s.z[i], s.r2[i]);
-        let (dy2, dz2, cx) = (dy * dy, dz * dz, s.x[i]);
-        if r2 < 0.0 {
-            subtracting = true;
-            continue;
-        }
-        for (f, &x) in run.iter_mut().zip(xs) {
-            let dx = x - cx;
-            let d2 = dx * dx + dy2 + dz2;
-            let term = r2 / if d2 < MIN_DISTANCE_SQUARED { MIN_DISTANCE_SQUARED } else { d2 };
-            *f = if term > *f { term } else { *f };
-        }
-    }
-    if subtracting {
-        for (f, &x) in run.iter_mut().zip(xs) {
-            let mut dent = 0.0f32;
-            for i in (0..s.r2.len()).filter(|&i| s.r2[i] < 0.0) {
-                let d2 = (Vec3::new(x, py, pz) - Vec3::new(s.x[i], s.y[i], s.z[i])).length_squared();
-                dent = dent.max(-s.r2[i] / d2.max(MIN_DISTANCE_SQUARED));
+        } else {
+            // The largest adding term, and the largest subtracting one (the dent).
+            let mut dent = f;
+            for i in 0..count {
+                let (dy, dz) = (py - sy[i], pz - sz[i]);
+                let (dy2, dz2) = (F32x4::splat(dy * dy), F32x4::splat(dz * dz));
+                let (cx, size) = (F32x4::splat(sx[i]), F32x4::splat(sr[i].abs()));
+                let largest = if sr[i] < 0.0 { &mut dent } else { &mut f };
+                for v in 0..2 {
+                    let dx = x[v] - cx;
+                    largest[v] = largest[v].at_least(size / (dx * dx + dy2 + dz2).at_least(floor));
+                }
             }
-            *f -= dent;
+            f = [f[0] - dent[0], f[1] - dent[1]];
         }
+        lanes::store(run, start, f, len);
     }
 }
 
 impl Spheres {
-    /// −∇f / 2 with blend by sum at the points `x`, `y`, `z` into `g`, as
+    /// −∇f / 2 with blend by sum at the points `x`, `y`, `z`, in their place, as
     /// [`reference::outward_gradient`](crate::extract::reference::outward_gradient) sums it for each
     /// (the same terms in the same order), a chunk of points at a time with the sphere loop outside.
-    pub fn outward_gradients(&self, [x, y, z]: [&[f32]; 3], g: [&mut [f32]; 3]) {
+    pub fn outward_gradients(&self, [x, y, z]: [&mut [f32]; 3]) {
         let count = self.r2.len();
         let (sx, sy, sz, sr) = (&self.x[..count], &self.y[..count], &self.z[..count], &self.r2[..count]);
-        let [gx, gy, gz] = g;
-        let (y, z) = (&y[..x.len()], &z[..x.len()]);
+        let (y, z) = (&mut y[..x.len()], &mut z[..x.len()]);
         let floor = F32x4::splat(MIN_DISTANCE_SQUARED);
         for start in (0..x.len()).step_by(LANES) {
             let ((px, len), (py, _), (pz, _)) =
@@ -331,9 +274,9 @@ impl Spheres {
                     g[2][v] = g[2][v] + dz * s;
                 }
             }
-            lanes::store(gx, start, g[0], len);
-            lanes::store(gy, start, g[1], len);
-            lanes::store(gz, start, g[2], len);
+            lanes::store(x, start, g[0], len);
+            lanes::store(y, start, g[1], len);
+            lanes::store(z, start, g[2], len);
         }
     }
 }
@@ -347,27 +290,6 @@ mod tests {
     fn groups(nb: u32, group: u32) -> impl Iterator<Item = [u32; 3]> {
         let side = move || (0..nb).step_by(group as usize);
         side().flat_map(move |z| side().flat_map(move |y| side().map(move |x| [x, y, z])))
-    }
-
-    /// Four blocks bounded at once get the answers each gets on its own, with adding and subtracting
-    /// spheres, both blends and iso levels near and far from the spheres' values.
-    #[test]
-    fn blocks_bounded_four_at_a_time_are_bounded_as_one_at_a_time() {
-        let mut spheres = Scene::new(3, 40).unwrap().spheres().to_vec();
-        spheres.iter_mut().step_by(3).for_each(|sphere| sphere.charge = -1.0);
-        let mut s = Spheres::default();
-        s.set(&spheres);
-        let n = 37u32;
-        let coords: Vec<f32> = (0..=n).map(|i| -1.0 + i as f32 * 2.0 / n as f32).collect();
-        let blocks: Vec<[u32; 3]> = groups(n.div_ceil(BLOCK_CELLS), 1).collect();
-        for (iso, by_max) in [(0.05, false), (0.4, true), (1.0, false), (3.0, true)] {
-            for four in blocks.chunks_exact(4) {
-                let four: [[u32; 3]; 4] = four.try_into().unwrap();
-                let balls = [0, 1, 2, 3].map(|k| block_ball(&coords, four[k], n));
-                let one_at_a_time = four.map(|block| s.block_straddles(&coords, block, n, iso, by_max));
-                assert_eq!(s.balls_straddle(balls, iso, by_max).to_vec(), one_at_a_time);
-            }
-        }
     }
 
     /// Where a group's bound passes its blocks over (groups of 2³ and of 4³ blocks, as the CPU mesher

@@ -33,21 +33,10 @@ mod imp {
             ]
         }
 
-        #[inline(always)]
-        pub fn sqrt(self) -> Self {
-            Self(f32x4_sqrt(self.0))
-        }
-
         /// `if x < floor { floor } else { x }` in each lane.
         #[inline(always)]
         pub fn at_least(self, floor: Self) -> Self {
             Self(f32x4_pmax(self.0, floor.0))
-        }
-
-        /// `if self <= 0.0 { then } else { otherwise }` in each lane.
-        #[inline(always)]
-        pub fn if_not_positive(self, then: Self, otherwise: Self) -> Self {
-            Self(v128_bitselect(then.0, otherwise.0, f32x4_le(self.0, f32x4_splat(0.0))))
         }
     }
 
@@ -95,21 +84,10 @@ mod imp {
             Self(std::array::from_fn(|l| f(self.0[l], o.0[l])))
         }
 
-        #[inline(always)]
-        pub fn sqrt(self) -> Self {
-            Self(self.0.map(f32::sqrt))
-        }
-
         /// `if x < floor { floor } else { x }` in each lane.
         #[inline(always)]
         pub fn at_least(self, floor: Self) -> Self {
             self.zip(floor, |x, floor| if x < floor { floor } else { x })
-        }
-
-        /// `if self <= 0.0 { then } else { otherwise }` in each lane.
-        #[inline(always)]
-        pub fn if_not_positive(self, then: Self, otherwise: Self) -> Self {
-            Self(std::array::from_fn(|l| if self.0[l] <= 0.0 { then.0[l] } else { otherwise.0[l] }))
         }
     }
 
@@ -146,22 +124,36 @@ pub fn load(xs: &[f32], start: usize) -> (Chunk, usize) {
         let at = |h: usize| F32x4::from_array([xs[h], xs[h + 1], xs[h + 2], xs[h + 3]]);
         return ([at(0), at(4)], LANES);
     }
+    load_end(xs, start)
+}
+
+/// [`load`] at the end of `xs`, where fewer than `LANES` values are left (once per run: out of line).
+#[cold]
+#[inline(never)]
+fn load_end(xs: &[f32], start: usize) -> (Chunk, usize) {
     let last = xs.len() - 1;
     let at = |l: usize| xs[(start + l).min(last)];
-    let chunk = [0, 4].map(|h| F32x4::from_array([at(h), at(h + 1), at(h + 2), at(h + 3)]));
+    let chunk =
+        [F32x4::from_array([at(0), at(1), at(2), at(3)]), F32x4::from_array([at(4), at(5), at(6), at(7)])];
     (chunk, (xs.len() - start).min(LANES))
 }
 
 /// Writes the first `len` values of `chunk` to `out` from `start` on.
 #[inline(always)]
 pub fn store(out: &mut [f32], start: usize, chunk: Chunk, len: usize) {
+    if len == LANES {
+        let [a, b] = chunk.map(F32x4::to_array);
+        out[start..start + LANES].copy_from_slice(&[a[0], a[1], a[2], a[3], b[0], b[1], b[2], b[3]]);
+    } else {
+        store_end(out, start, chunk, len);
+    }
+}
+
+/// [`store`] of fewer than `LANES` values (once per run: out of line).
+#[cold]
+#[inline(never)]
+fn store_end(out: &mut [f32], start: usize, chunk: Chunk, len: usize) {
     let [a, b] = chunk.map(F32x4::to_array);
     let values = [a[0], a[1], a[2], a[3], b[0], b[1], b[2], b[3]];
-    if len == LANES {
-        out[start..start + LANES].copy_from_slice(&values);
-    } else {
-        for (o, &v) in out[start..start + len].iter_mut().zip(&values) {
-            *o = v;
-        }
-    }
+    out[start..start + len].copy_from_slice(&values[..len]);
 }

@@ -1,7 +1,7 @@
 //! The blocks the CPU mesher keeps, as `classify_blocks` in `shaders/extract/blocks.wgsl` keeps them:
 //! those whose field bounds straddle the iso level. Groups of blocks that cannot hold the surface are
 //! passed over first, coarse ones then the fine ones inside the coarse ones kept, then each block of
-//! the fine groups kept is bounded on its own. Balls are bounded four at a time, one to a lane.
+//! the fine groups kept is bounded on its own, then again over its box.
 
 use crate::extract::field::{BLOCK_CELLS, Ball, Spheres, block_ball, block_box, group_ball};
 use std::ops::Range;
@@ -20,42 +20,14 @@ pub struct Blocks {
     coarse: Vec<bool>,
     /// Per fine group of `GROUP_BLOCKS`³ blocks: whether its blocks need bounding one by one.
     fine: Vec<bool>,
+    /// The groups or blocks being bounded, each with a key: a group's index, a block's x and y.
+    balls: Vec<(u32, Ball)>,
 }
 
-/// The field's bounds over balls, four at a time: each ball given with a key, and the keys handed
-/// back in the same order with whether their balls straddle the iso level.
-struct Batch<'a, T> {
-    spheres: &'a Spheres,
-    iso: f32,
-    by_max: bool,
-    pending: [(T, Ball); 4],
-    count: usize,
-}
-
-impl<'a, T: Copy> Batch<'a, T> {
-    fn new(spheres: &'a Spheres, iso: f32, by_max: bool, filler: (T, Ball)) -> Self {
-        Self { spheres, iso, by_max, pending: [filler; 4], count: 0 }
-    }
-
-    fn push(&mut self, key: T, ball: Ball, kept: impl FnMut(T, bool)) {
-        self.pending[self.count] = (key, ball);
-        self.count += 1;
-        if self.count == 4 {
-            self.flush(kept);
-        }
-    }
-
-    fn flush(&mut self, mut kept: impl FnMut(T, bool)) {
-        if self.count == 0 {
-            return;
-        }
-        let balls = [0, 1, 2, 3].map(|k| self.pending[k.min(self.count - 1)].1);
-        let straddle = self.spheres.balls_straddle(balls, self.iso, self.by_max);
-        for (&(key, _), straddles) in self.pending[..self.count].iter().zip(straddle) {
-            kept(key, straddles);
-        }
-        self.count = 0;
-    }
+/// Keeps of `balls` (each with a key) those over which the field's bounds straddle the iso level
+/// (`by_max`: with blend by max), in order.
+fn keep_straddling(spheres: &Spheres, (iso, by_max): (f32, bool), balls: &mut Vec<(u32, Ball)>) {
+    balls.retain(|(_, b)| spheres.ball_straddles(b.centre, b.h, b.touches_walls, iso, by_max));
 }
 
 impl Blocks {
@@ -66,85 +38,69 @@ impl Blocks {
         &mut self,
         spheres: &Spheres,
         coords: &[f32],
-        (iso, by_max): (f32, bool),
+        bounds: (f32, bool),
         n: u32,
         layers: Range<u32>,
     ) -> u32 {
+        let (iso, by_max) = bounds;
         let nb = n.div_ceil(BLOCK_CELLS);
         let ng = nb.div_ceil(GROUP_BLOCKS);
         let nc = ng.div_ceil(GROUP_BLOCKS);
         let coarse = GROUP_BLOCKS * GROUP_BLOCKS;
-        let filler = Ball { centre: glam::Vec3::ZERO, h: 0.0, touches_walls: false };
-        let mut batch = Batch::new(spheres, iso, by_max, (0, filler));
-        self.coarse.clear();
-        self.coarse.resize((nc as usize).pow(3), false);
-        let mut keep = |at: usize, kept: bool| self.coarse[at] = kept;
-        let within = |first: [u32; 3], size: u32| first[2] < layers.end && first[2] + size > layers.start;
-        for (at, first) in cubes(nc, coarse).enumerate().filter(|&(_, first)| within(first, coarse)) {
-            batch.push(at, group_ball(coords, first, coarse, n), &mut keep);
-        }
-        batch.flush(&mut keep);
-        self.fine.clear();
-        self.fine.resize((ng as usize).pow(3), false);
-        let mut keep = |at: usize, kept: bool| self.fine[at] = kept;
-        for (at, first) in cubes(ng, GROUP_BLOCKS).enumerate() {
-            let [cx, cy, cz] = first.map(|b| b / coarse);
-            if within(first, GROUP_BLOCKS) && self.coarse[(cx + nc * (cy + nc * cz)) as usize] {
-                batch.push(at, group_ball(coords, first, GROUP_BLOCKS, n), &mut keep);
+        let within = |first: u32, size: u32| first < layers.end && first + size > layers.start;
+        // Coarse groups, then the fine groups of the coarse ones kept (groups a side, blocks a side of a
+        // group).
+        for level in 0..2 {
+            let (count, size) = if level == 0 { (nc, coarse) } else { (ng, GROUP_BLOCKS) };
+            self.balls.clear();
+            for z in 0..count {
+                for y in 0..count {
+                    for x in 0..count {
+                        let first = [x, y, z].map(|g| g * size);
+                        let [cx, cy, cz] = first.map(|b| b / coarse);
+                        if within(first[2], size)
+                            && (level == 0 || self.coarse[(cx + nc * (cy + nc * cz)) as usize])
+                        {
+                            let at = x + count * (y + count * z);
+                            self.balls.push((at, group_ball(coords, first, size, n)));
+                        }
+                    }
+                }
+            }
+            keep_straddling(spheres, bounds, &mut self.balls);
+            let answers = if level == 0 { &mut self.coarse } else { &mut self.fine };
+            answers.clear();
+            answers.resize((count as usize).pow(3), false);
+            for &(at, _) in &self.balls {
+                answers[at as usize] = true;
             }
         }
-        batch.flush(&mut keep);
         self.layers.resize_with(nb as usize, Vec::new);
         self.layers.truncate(nb as usize);
-        let mut batch = Batch::new(spheres, iso, by_max, ((0, 0), filler));
         let mut active = 0;
         for layer in &mut self.layers {
             layer.clear();
         }
         for bz in layers {
-            let layer = &mut self.layers[bz as usize];
-            let mut keep = |block: (u32, u32), kept: bool| {
-                if kept {
-                    layer.push(block);
-                    active += 1;
-                }
-            };
+            self.balls.clear();
             for by in 0..nb {
                 for bx in 0..nb {
                     let [gx, gy, gz] = [bx, by, bz].map(|b| b / GROUP_BLOCKS);
                     if self.fine[(gx + ng * (gy + ng * gz)) as usize] {
-                        batch.push((bx, by), block_ball(coords, [bx, by, bz], n), &mut keep);
+                        self.balls.push((bx | by << 16, block_ball(coords, [bx, by, bz], n)));
                     }
                 }
             }
-            batch.flush(&mut keep);
+            keep_straddling(spheres, bounds, &mut self.balls);
+            active += self.balls.len() as u32;
+            let layer = &mut self.layers[bz as usize];
+            layer.extend(self.balls.iter().map(|&(key, _)| (key & 0xffff, key >> 16)));
             // Of the blocks kept, those whose box's tighter bounds keep every point on one side are
             // passed over: no cell of theirs is crossed, and their points need no field values.
-            let mut tight = 0;
-            for first in (0..layer.len()).step_by(4) {
-                let end = (first + 4).min(layer.len());
-                let block = |k: usize| {
-                    let (bx, by) = layer[(first + k).min(end - 1)];
-                    block_box(coords, [bx, by, bz], n)
-                };
-                let straddle = spheres.boxes_straddle([0, 1, 2, 3].map(block), iso, by_max);
-                for k in first..end {
-                    if straddle[k - first] {
-                        layer[tight] = layer[k];
-                        tight += 1;
-                    }
-                }
-            }
-            layer.truncate(tight);
+            layer.retain(|&(bx, by)| spheres.box_straddles(block_box(coords, [bx, by, bz], n), iso, by_max));
         }
         active
     }
-}
-
-/// The first blocks of the groups of `size`³ blocks that cover `count`³ groups, x fastest.
-fn cubes(count: u32, size: u32) -> impl Iterator<Item = [u32; 3]> {
-    (0..count)
-        .flat_map(move |z| (0..count).flat_map(move |y| (0..count).map(move |x| [x, y, z].map(|g| g * size))))
 }
 
 #[cfg(test)]

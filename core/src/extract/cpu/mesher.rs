@@ -2,8 +2,8 @@
 //! the same tables, block bounds and arithmetic as the GPU passes and the oracle, so that it yields the
 //! oracle's triangles exactly, in the vertex and index layout the shading pass draws.
 //!
-//! The grid is swept one plane of points at a time. Blocks of 4³ cells are bounded first, as on the GPU
-//! (four at a time, in vectors), then the blocks kept are bounded again over their boxes, more tightly;
+//! The grid is swept one plane of points at a time. Blocks of 4³ cells are bounded first, as on the GPU,
+//! then the blocks kept are bounded again over their boxes, more tightly;
 //! only the points of blocks both keep get field values, each computed once, in rows of consecutive
 //! points, chunks of eight points summing all the spheres in vectors (every point still sums its
 //! spheres in order, as the oracle does), with a bit per point saying whether it lies inside. Then the
@@ -40,7 +40,6 @@ pub struct CpuMeshStats {
 
 /// A reusable CPU mesher. `mesh` fills `vertices` (position then outward normal, 6 `f32` each) and
 /// `indices` (three per triangle, counter-clockwise seen from outside).
-#[derive(Default)]
 pub struct CpuMesher {
     /// Position then normal of each vertex.
     pub vertices: Vec<f32>,
@@ -61,9 +60,27 @@ pub struct CpuMesher {
     decided: Vec<[u32; 4]>,
 }
 
+impl Default for CpuMesher {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
 impl CpuMesher {
+    /// An empty mesher (made in one place, not wherever one is made: it sets up many arrays).
+    #[inline(never)]
     pub fn new() -> Self {
-        Self::default()
+        Self {
+            vertices: Vec::new(),
+            indices: Vec::new(),
+            stats: CpuMeshStats::default(),
+            spheres: Spheres::default(),
+            coords: Vec::new(),
+            blocks: Blocks::default(),
+            planes: Planes::default(),
+            edges: EdgeVertices::default(),
+            decided: Vec::new(),
+        }
     }
 
     /// Figures of the last mesh.
@@ -217,18 +234,13 @@ impl CpuMesher {
                         continue;
                     }
                     self.stats.active_cells += 1;
+                    // The values at (x, y) and (x + 1, y), then at (x, y + 1) and (x + 1, y + 1).
                     let at = x as usize + width * y as usize;
-                    let corners = [at, at + 1, at + 1 + width, at + width];
-                    let values = [
-                        lo[corners[0]],
-                        lo[corners[1]],
-                        lo[corners[2]],
-                        lo[corners[3]],
-                        hi[corners[0]],
-                        hi[corners[1]],
-                        hi[corners[2]],
-                        hi[corners[3]],
-                    ];
+                    let pair =
+                        |plane: &[f32], at: usize| -> [f32; 2] { plane[at..at + 2].try_into().unwrap() };
+                    let ([a, b], [d, c]) = (pair(lo, at), pair(lo, at + width));
+                    let ([e, f], [h, g]) = (pair(hi, at), pair(hi, at + width));
+                    let values = [a, b, c, d, e, f, g, h];
                     // What the decider changes (its faces) and what MC33 changes beyond them (a
                     // tunnel), whatever the table drawn.
                     let joined = if ambiguous_faces(case) != 0 { face_choices(case, values, iso) } else { 0 };

@@ -9,45 +9,35 @@ use glam::Vec3;
 /// Vertices waiting for their normals.
 #[derive(Default)]
 pub struct PendingNormals {
-    /// Each vertex's index in the mesh.
-    ids: Vec<u32>,
-    /// Positions, one array per axis.
+    /// Each vertex's index in the mesh, and its normal where the gradient vanishes: along the edge,
+    /// out of the solid.
+    ids: Vec<(u32, Vec3)>,
+    /// Positions, one array per axis; then the gradients there.
     positions: [Vec<f32>; 3],
-    /// The normal where the gradient vanishes: along the edge, out of the solid.
-    fallbacks: Vec<Vec3>,
-    /// The gradients, one array per axis.
-    gradients: [Vec<f32>; 3],
 }
 
 impl PendingNormals {
     /// Vertex `id` at `p` waits for its normal.
     pub fn push(&mut self, id: u32, p: Vec3, fallback: Vec3) {
-        self.ids.push(id);
+        self.ids.push((id, fallback));
         for (axis, positions) in self.positions.iter_mut().enumerate() {
             positions.push(p[axis]);
         }
-        self.fallbacks.push(fallback);
     }
 
     /// Writes the waiting vertices' normals into `vertices` (position then normal, 6 `f32` each) as
     /// [`reference::surface_vertex`](crate::extract::reference::surface_vertex) makes them, and
     /// forgets them.
     pub fn finish(&mut self, spheres: &Spheres, vertices: &mut [f32]) {
-        let count = self.ids.len();
-        for g in &mut self.gradients {
-            g.resize(count, 0.0);
-        }
-        let [x, y, z] = &self.positions;
-        let [gx, gy, gz] = &mut self.gradients;
-        spheres.outward_gradients([x, y, z], [gx, gy, gz]);
-        for (k, &id) in self.ids.iter().enumerate() {
-            let g = Vec3::new(gx[k], gy[k], gz[k]);
-            let normal = g.try_normalize().unwrap_or(self.fallbacks[k].normalize());
+        let [x, y, z] = &mut self.positions;
+        spheres.outward_gradients([x, y, z]);
+        for (k, &(id, fallback)) in self.ids.iter().enumerate() {
+            let g = Vec3::new(x[k], y[k], z[k]);
+            let normal = g.try_normalize().unwrap_or_else(|| fallback.normalize());
             let at = 6 * id as usize + 3;
             vertices[at..at + 3].copy_from_slice(&normal.to_array());
         }
         self.ids.clear();
-        self.fallbacks.clear();
         for positions in &mut self.positions {
             positions.clear();
         }

@@ -21,6 +21,12 @@ pub struct Planes {
     columns: Vec<u64>,
 }
 
+/// `v` with `len` values (in one place for each type, not wherever one is resized).
+#[inline(never)]
+fn sized<T: Copy + Default>(v: &mut Vec<T>, len: usize) {
+    v.resize(len, T::default());
+}
+
 /// The plane sampled and what it reads.
 pub struct Sweep<'a> {
     pub n: u32,
@@ -39,8 +45,8 @@ impl Planes {
         let points = (n as usize + 1).pow(2);
         let rows = (n as usize + 1) * n.div_ceil(BLOCK_CELLS) as usize;
         for plane in 0..2 {
-            self.values[plane].resize(points, 0.0);
-            self.inside[plane].resize(rows, 0);
+            sized(&mut self.values[plane], points);
+            sized(&mut self.inside[plane], rows);
         }
     }
 
@@ -103,11 +109,14 @@ impl Planes {
                     }
                     for bx in start..end {
                         let from = ((bx - start) * BLOCK_CELLS) as usize;
-                        let points = &run[from..(from + BLOCK_CELLS as usize + 1).min(run.len())];
-                        row_inside[bx as usize] = points
-                            .iter()
-                            .enumerate()
-                            .fold(0, |bits, (k, &f)| bits | ((f > sweep.iso) as u8) << k);
+                        // The block's points (fewer where the grid ends), a bit each.
+                        let mut bits = 0;
+                        for k in 0..=BLOCK_CELLS as usize {
+                            if let Some(&f) = run.get(from + k) {
+                                bits |= ((f > sweep.iso) as u8) << k;
+                            }
+                        }
+                        row_inside[bx as usize] = bits;
                     }
                 }
             }
