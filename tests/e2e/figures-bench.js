@@ -12,7 +12,8 @@
 // `--threads` also says, per case, how busy each of the browser's threads was over the same seconds
 // (from a trace: wall and CPU milliseconds per second of its top-level tasks), which shows whether
 // the page, the mesher worker or the GPU process (SwiftShader's rasteriser behind its main thread)
-// holds the frames back. One more case, "turned while paused", draws a still 128³ × 16 figure whose
+// holds the frames back; and a canvas of the same size only cleared every animation frame (the floor:
+// what the browser's compositing and presenting alone allow). One more case, "turned while paused", draws a still 128³ × 16 figure whose
 // camera turns every animation frame: the mesh is kept, so it is the rate of drawing alone, at full
 // scale and at the pixels of the lowest render scale.
 // Prints a line per measurement and a JSON line starting "metaballs-figures ". Not a test: figures
@@ -142,6 +143,25 @@ async function figures(browser, base, { query, api, worker, turn }) {
   }
 }
 
+// The floor under every figure's frame rate in this browser: a canvas of the one figure's size
+// (fixtures/clear-canvas.html) cleared every animation frame and nothing else drawn, frames per second.
+async function floor(browser, base, api, ratio) {
+  const page = await browser.newPage({ viewport: { width: 960, height: 700 } });
+  try {
+    await page.addInitScript(countAnimationFrames);
+    await page.goto(`${base}tests/e2e/fixtures/clear-canvas.html?api=${api.toLowerCase()}&ratio=${ratio}`);
+    await page.waitForFunction(() => window.framesDrawn > 10, null, { timeout: 60_000 });
+    await page.waitForTimeout(2000);
+    const count = () => page.evaluate(() => [window.framesDrawn, window.animationFrames]);
+    const [drawn, frames] = await count();
+    await page.waitForTimeout(seconds * 1000);
+    const [drawnAfter, framesAfter] = await count();
+    return { fps: round((drawnAfter - drawn) / seconds), animation_fps: round((framesAfter - frames) / seconds) };
+  } finally {
+    await page.close();
+  }
+}
+
 // Records logged on the console as a line starting with `prefix`, by the page at `url`.
 async function logged(browser, url, prefix) {
   const page = await browser.newPage({ viewport: { width: 960, height: 640 } });
@@ -160,10 +180,10 @@ async function logged(browser, url, prefix) {
 
 const ours = async (browser, base) => {
   const rows = await logged(browser, `${base}index.html?bench&bench_meshers=cpu&bench_resolutions=64,128&bench_spheres=16`
-    + '&bench_lod=0&bench_frames=10', 'metaballs-bench ');
+    + '&bench_lod=0&bench_frames=40', 'metaballs-bench ');
   return Object.fromEntries((rows ?? []).filter((r) => !r.lod).map((r) => [r.resolution, { mesh_ms: r.mesh_ms, frame_ms: r.frame_ms }]));
 };
-const three = async (browser, base, res) => logged(browser, `${base}tests/e2e/fixtures/three-bench.html?res=${res}&spheres=16`,
+const three = async (browser, base, res) => logged(browser, `${base}tests/e2e/fixtures/three-bench.html?res=${res}&spheres=16&frames=40`,
   'three-bench ');
 
 const round = (x) => Math.round(x * 10) / 10;
@@ -180,6 +200,16 @@ try {
           + `${Math.round(seen.drawn_share * 100)} % of ${seen.animation_fps} animation frames/s, render scale `
           + `${seen.render_scale.map((s) => s?.toFixed(2)).join(', ')} (${seen.adapter})`);
         for (const b of seen.busy ?? []) console.log(`    ${b.thread}: busy ${b.wall_ms} ms/s, CPU ${b.cpu_ms} ms/s`);
+      }
+    }
+    for (const api of ['WebGPU', 'WebGL2']) {
+      for (const ratio of [1, 0.5]) {
+        const name = `cleared canvas, ${api}, ratio ${ratio}`;
+        if (!name.includes(only)) continue;
+        const seen = await floor(browser, servers[0].base, api, ratio);
+        results.push({ pass, case: name, ...seen });
+        console.log(`a 960×640 canvas at ${ratio} pixels per CSS pixel, only cleared every frame, ${api}: `
+          + `${seen.fps} fps of ${seen.animation_fps} animation frames/s`);
       }
     }
     for (const [k, { base }] of servers.entries()) {
