@@ -2,8 +2,12 @@
 // and `&bench_meshers=gpu,cpu`): the same fixed sequence as `metaballs bench`, for each mesher the
 // adapter has (the GPU's compute passes and the CPU mesher; WebGL2 has only the CPU), timed with the
 // GPU queue synchronised after each frame, then a row per mesher with level of detail at `bench_lod`
-// cells per axis (1024 unless given; 0 for none) and 16 spheres. Shows a table, says which mesher `auto` picks here, and logs
-// the records as JSON on the console (a line starting with "metaballs-bench ") for headless runs.
+// cells per axis (1024 unless given; 0 for none) and 16 spheres. The CPU mesher's rows also time it
+// alone, as the mesher worker runs it (no upload, no GPU). Shows a table, says which mesher `auto` picks
+// here, and logs the records as JSON on the console (a line starting with "metaballs-bench ") for
+// headless runs.
+
+import { wasmModule } from './lib/engine/wasm.js';
 
 const median = (values) => [...values].sort((a, b) => a - b)[Math.floor(values.length / 2)];
 
@@ -24,12 +28,26 @@ async function timeFrames(view, frames, step) {
   return median(times);
 }
 
+// The CPU mesher alone, as the page's mesher worker runs it: the frame's job meshed into arrays handed
+// to JavaScript, with no upload and no GPU to wait for (what three.js's `MarchingCubes` does in its
+// `update()`); the median over `frames` meshes, in milliseconds.
+function meshedAlone(view, frames) {
+  const job = view.cpu_job(true);
+  const times = [];
+  for (let i = 0; i < frames; i++) {
+    const start = performance.now();
+    wasmModule().mesh_job(job);
+    times.push(performance.now() - start);
+  }
+  return median(times);
+}
+
 function showTable(container, records, status) {
   const rows = records.map((r) => `<tr><td>${r.mesher}</td><td>${r.resolution}${r.lod ? ' LOD' : ''}</td><td>${r.spheres}</td><td>${r.frame_ms.toFixed(1)}</td>`
-    + `<td>${r.mesh_ms.toFixed(1)}</td><td>${r.triangles}</td><td>${(100 * r.active_cell_fraction).toFixed(2)}</td>`
+    + `<td>${r.mesh_ms.toFixed(1)}</td><td>${r.alone_ms?.toFixed(1) ?? '–'}</td><td>${r.triangles}</td><td>${(100 * r.active_cell_fraction).toFixed(2)}</td>`
     + `<td>${(100 * r.active_block_fraction).toFixed(1)}</td><td>${(r.mesh_bytes / 1048576).toFixed(1)}</td></tr>`);
   container.innerHTML = `<h2>Benchmark</h2><p>${status}</p><table><thead><tr><th>mesher</th><th>cells</th><th>spheres</th>`
-    + '<th>frame ms</th><th>mesh ms</th><th>triangles</th><th>cells %</th><th>blocks %</th><th>mesh MiB</th>'
+    + '<th>frame ms</th><th>mesh ms</th><th>mesher alone ms</th><th>triangles</th><th>cells %</th><th>blocks %</th><th>mesh MiB</th>'
     + `</tr></thead><tbody>${rows.join('')}</tbody></table>`;
 }
 
@@ -54,6 +72,7 @@ export async function runBenchmark(view, container, { hasCompute = true } = {}) 
         await timeFrames(view, 3, () => view.frame(1 / 60));
         const frame_ms = await timeFrames(view, frames, () => view.frame(1 / 60));
         const mesh_ms = await timeFrames(view, frames, () => view.extract());
+        const alone_ms = view.mesh_source() === 'cpu' ? meshedAlone(view, frames) : null;
         await timeFrames(view, 2, () => view.frame(0));
         const stats = view.stats();
         const [blocks, cells] = view.active_fractions();
@@ -63,6 +82,7 @@ export async function runBenchmark(view, container, { hasCompute = true } = {}) 
           spheres,
           frame_ms,
           mesh_ms,
+          alone_ms,
           triangles: stats?.triangles ?? 0,
           active_cell_fraction: cells,
           active_block_fraction: blocks,

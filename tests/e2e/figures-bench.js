@@ -181,7 +181,8 @@ async function logged(browser, url, prefix) {
 const ours = async (browser, base) => {
   const rows = await logged(browser, `${base}index.html?bench&bench_meshers=cpu&bench_resolutions=64,128&bench_spheres=16`
     + '&bench_lod=0&bench_frames=40', 'metaballs-bench ');
-  return Object.fromEntries((rows ?? []).filter((r) => !r.lod).map((r) => [r.resolution, { mesh_ms: r.mesh_ms, frame_ms: r.frame_ms }]));
+  return Object.fromEntries((rows ?? []).filter((r) => !r.lod)
+    .map((r) => [r.resolution, { mesh_ms: r.mesh_ms, alone_ms: r.alone_ms, frame_ms: r.frame_ms }]));
 };
 const three = async (browser, base, res) => logged(browser, `${base}tests/e2e/fixtures/three-bench.html?res=${res}&spheres=16&frames=40`,
   'three-bench ');
@@ -216,7 +217,8 @@ try {
       const mine = await ours(browser, base);
       results.push({ pass, root: roots[k], case: '?bench', ...mine });
       console.log(`?bench CPU mesher, 16 spheres${roots.length > 1 ? ` [${roots[k]}]` : ''}: `
-        + Object.entries(mine).map(([n, r]) => `${n}³ mesh ${round(r.mesh_ms)} ms, frame ${round(r.frame_ms)} ms`).join('; '));
+        + Object.entries(mine).map(([n, r]) => `${n}³ mesh ${round(r.mesh_ms)} ms (the mesher alone `
+          + `${r.alone_ms == null ? '–' : round(r.alone_ms)} ms), frame ${round(r.frame_ms)} ms`).join('; '));
     }
     for (const res of [64, 128]) {
       const theirs = await three(browser, servers[0].base, res);
