@@ -42,7 +42,7 @@ canvas { display: block; width: 100%; height: 100%; touch-action: none; cursor: 
 }`;
 
 // The figure's settings, each declared once: the rows of the parameter table it shares with
-// <metaballs-view> and its own (src/scene/params/plane.rs, written into attributes.js).
+// <metaballs-view> and its own (scene/src/params/plane.rs, written into attributes.js).
 const ROWS = new Map(PLANE_TABLE.map((row) => [row.name, row]));
 const rowOf = (name) => ROWS.get(name);
 // The settings a scene document holds (beside the circles).

@@ -63,6 +63,17 @@ pub const METHODS: &[(&str, &str, &str)] = &[
     ("downloadPicture", "(scale?: number): Promise<void>", "Saves a PNG of the view."),
     ("showNotice", "(text: string, ms?: number): void", "Shows a short message inside the figure."),
     (
+        "sphereOnScreen",
+        "(index: number): { x: number; y: number; radius: number } | null",
+        "Where sphere `index` is drawn: its centre and radius in CSS pixels from the figure's top left, or null.",
+    ),
+    (
+        "printable",
+        "(): Promise<void>",
+        "Resolves once the figure has a picture for print (its poster, or one of a drawn frame).",
+    ),
+    ("topology", "(): Promise<MetaballsTopology>", "The surface's shape now: its components, genus, closedness and manifoldness."),
+    (
         "withView",
         "<T>(f: (view: unknown) => T): Promise<T>",
         "Runs `f` with the wasm view while the element's own frames are held.",
@@ -76,13 +87,19 @@ pub const READ_ONLY: &[(&str, &str, &str)] = &[
     ("inspected", "MetaballsCellReport | null", "What marching cubes decided in the inspected cell."),
     ("selectedSphere", "number", "The selected sphere's index in edit mode, or -1."),
     ("pendingChange", "Record<string, unknown> | null", "A costly change waiting for confirmation."),
+    (
+        "renderScale",
+        "number",
+        "The fraction of its pixel ratio the figure draws at now (below 1 while an animating figure's frames are slow).",
+    ),
+    ("gpuBytes", "number", "GPU memory this figure's renderer holds, in bytes (0 while it has none)."),
 ];
 
 /// Events (they bubble and cross the shadow boundary): name, TypeScript type of `detail`, when.
 pub const EVENTS: &[(&str, &str, &str)] = &[
     (
         "metaballs-change",
-        "{ property: string; value: number | boolean | string }",
+        "{ property: string; attribute: string; value: number | boolean | string }",
         "A setting changed (from an attribute, a property, a control or a gesture).",
     ),
     ("metaballs-inspect", "{ cell: MetaballsCellReport | null }", "A cell was selected or let go."),
@@ -287,7 +304,7 @@ pub fn attributes_js() -> String {
         items.iter().map(|item| format!("{indent}{item},")).collect::<Vec<_>>().join("\n")
     };
     format!(
-        "// The parameter table (src/scene/params/rows.rs), written by `metaballs manifest --out www`.\n\
+        "// The parameter table (scene/src/params/rows.rs), written by `metaballs manifest --out www`.\n\
          // Each row: attribute, property and Python names, short name in links, older spellings, label,\n\
          // kind, accepted words, range, slider, default as text and as a value, panel group, who holds\n\
          // it (creation, renderer, element), whether its control needs compute shaders, whether a scene\n\
@@ -297,7 +314,7 @@ pub fn attributes_js() -> String {
          export const CONTROLS = Object.freeze([\n{}\n]);\n\n\
          // Ranges that are not settings, for gestures and the sphere editor.\n\
          export const LIMITS = Object.freeze({});\n\n\
-         // The 2D figure's settings (src/scene/params/plane.rs): the rows it shares, then its own.\n\
+         // The 2D figure's settings (scene/src/params/plane.rs): the rows it shares, then its own.\n\
          export const PLANE_TABLE = Object.freeze([\n{}\n]);\n",
         lines(rows(), "  "),
         lines(controls(), "    "),
@@ -371,7 +388,7 @@ pub fn custom_elements_json() -> String {
 pub fn declarations() -> String {
     let mut out = String::from(
         "// TypeScript declarations of <metaballs-view>, written by `metaballs manifest --out www` from the\n\
-         // parameter table. Do not edit: change the table (or src/manifest.rs) and run the command.\n\n\
+         // parameter table. Do not edit: change the table (or src/manifest/mod.rs) and run the command.\n\n\
          export interface MetaballsStats {\n  triangles: number;\n  fps: number;\n  frameTime: number;\n  \
          adapter: string;\n  mesher: string;\n  overflowed: boolean;\n  [name: string]: unknown;\n}\n\n\
          export interface MetaballsSphere {\n  center: [number, number, number];\n  radius: number;\n  \
@@ -382,6 +399,8 @@ pub fn declarations() -> String {
          export interface MetaballsCriticalPoint {\n  position: [number, number, number];\n  value: number;\n  \
          index: 0 | 1 | 2 | 3;\n  role: 'join' | 'loop' | 'hole' | 'cavity' | 'fill' | 'birth' | 'unresolved';\n  \
          eigenvalues: [number, number, number];\n  ends: unknown[];\n  inBox: boolean;\n}\n\n\
+         /** The surface's shape (`topology()`). */\n\
+         export interface MetaballsTopology {\n  components: number;\n  genus: number;\n  closed: boolean;\n  manifold: boolean;\n}\n\n\
          export interface MetaballsLevelCounts {\n  blobs: number;\n  cavities: number;\n  genus: number;\n  surfaces: number;\n}\n\n\
          export interface MetaballsCriticalPoints {\n  points: MetaballsCriticalPoint[];\n  \
          tree: { value: number | null; children: number[]; point: number | null; spheres: number[] }[];\n  \

@@ -39,6 +39,8 @@ const SHARED = [
   'size.test.js', // 0.1
   'frame-cost.test.js', // 0.3
   'slabs.test.js', // 5
+  'hooks.test.js', // 0.2
+  'api.test.js', // 0.1
 ];
 // A click on a figure drawing a heavy frame must be handled within a second, and the page's long tasks
 // are counted: these run alone.

@@ -1,4 +1,4 @@
-// The parameter table (src/scene/params/rows.rs), written by `metaballs manifest --out www`.
+// The parameter table (scene/src/params/rows.rs), written by `metaballs manifest --out www`.
 // Each row: attribute, property and Python names, short name in links, older spellings, label,
 // kind, accepted words, range, slider, default as text and as a value, panel group, who holds
 // it (creation, renderer, element), whether its control needs compute shaders, whether a scene
@@ -110,7 +110,7 @@ export const CONTROLS = Object.freeze([
 // Ranges that are not settings, for gestures and the sphere editor.
 export const LIMITS = Object.freeze({"radius":[0.01,1]});
 
-// The 2D figure's settings (src/scene/params/plane.rs): the rows it shares, then its own.
+// The 2D figure's settings (scene/src/params/plane.rs): the rows it shares, then its own.
 export const PLANE_TABLE = Object.freeze([
   {"name":"iso","property":"iso","python":"iso","url":"iso","aliases":[],"label":"Iso level","kind":"number","words":[],"min":0.05,"max":20,"sliderMin":0.1,"sliderMax":4,"step":0.01,"default":"1","value":1,"group":"Surface","scope":"creation","compute":false,"scene":true},
   {"name":"interpolation","property":"interpolation","python":"interpolation","url":"interp","aliases":[],"label":"Vertices","kind":"choice","words":["linear","midpoint"],"min":0,"max":0,"sliderMin":0,"sliderMax":0,"step":0,"default":"linear","value":"linear","group":"Teaching","scope":"renderer","compute":false,"scene":true},

@@ -4,17 +4,10 @@
 // the features that own it.
 //
 // A feature is an object made with the context. It names the settings it owns (`static attributes`,
-// '*' for all) and implements the hooks it needs, each optional:
-//   changed(name, value)      a setting it owns was changed (by attribute, property, panel or gesture)
-//   refresh(state)            any setting changed, was adopted or went back (redraw what shows them)
-//   veto(name, value)         true holds a change back (the slow-frame guard asks first)
-//   beforeSet(name, value)    a change from inside (panel, gesture, method) is about to be made
-//   madeInside(name, value, share)  a change from inside took effect
-//   connected(), disconnected(), started(view) (a renderer was made)
-//   beforeFrame(now, view), holds() (true keeps the animation still), frameDrawn(now, frame),
-//   idle(now, view) (no frame was due), afterTick(now, view) (every animation frame on screen)
-//   controls()                the panel's controls it builds itself: { name: (panel) => node }
+// '*' for all) and implements the hooks it needs, each optional: the hooks are declared, each with
+// what it tells a feature, in hooks.js, and the context calls no other name.
 
+import { checkHook } from './hooks.js';
 import { propertyName } from './table.js';
 
 export class FigureContext {
@@ -53,16 +46,19 @@ export class FigureContext {
 
   /** Calls `hook(...args)` on every feature that has it. */
   each(hook, ...args) {
+    checkHook(hook);
     for (const feature of this.#features) feature[hook]?.(...args);
   }
 
   /** The results of `hook(...args)` of every feature that has it. */
   collect(hook, ...args) {
+    checkHook(hook);
     return this.#features.filter((feature) => feature[hook]).map((feature) => feature[hook](...args));
   }
 
   /** True when any feature's `hook(...args)` returns true. */
   some(hook, ...args) {
+    checkHook(hook);
     return this.#features.some((feature) => feature[hook]?.(...args) === true);
   }
 
