@@ -1,5 +1,5 @@
 // TypeScript declarations of <metaballs-view>, written by `metaballs manifest --out www` from the
-// parameter table. Do not edit: change the table (or src/manifest.rs) and run the command.
+// parameter table. Do not edit: change the table (or src/manifest/mod.rs) and run the command.
 
 export interface MetaballsStats {
   triangles: number;
@@ -31,6 +31,14 @@ export interface MetaballsCriticalPoint {
   eigenvalues: [number, number, number];
   ends: unknown[];
   inBox: boolean;
+}
+
+/** The surface's shape (`topology()`). */
+export interface MetaballsTopology {
+  components: number;
+  genus: number;
+  closed: boolean;
+  manifold: boolean;
 }
 
 export interface MetaballsLevelCounts {
@@ -157,7 +165,7 @@ export declare class MetaballsView extends HTMLElement {
   alt: string;
   /** An image URL shown before the first frame and in print until a frame is drawn. Attribute `poster`; default "". */
   poster: string;
-  /** Sync. Attribute `sync`; default "". */
+  /** A group name: the figures of a page with the same one share their spheres, animation time and camera (the first on the page leads). Attribute `sync`; default "". */
   sync: string;
   /** Figures of the newest frames. */
   readonly stats: MetaballsStats;
@@ -169,6 +177,10 @@ export declare class MetaballsView extends HTMLElement {
   readonly selectedSphere: number;
   /** A costly change waiting for confirmation. */
   readonly pendingChange: Record<string, unknown> | null;
+  /** The fraction of its pixel ratio the figure draws at now (below 1 while an animating figure's frames are slow). */
+  readonly renderScale: number;
+  /** GPU memory this figure's renderer holds, in bytes (0 while it has none). */
+  readonly gpuBytes: number;
   /** Starts the animation. */
   play(): void;
   /** Stops the animation. */
@@ -203,13 +215,19 @@ export declare class MetaballsView extends HTMLElement {
   downloadPicture(scale?: number): Promise<void>;
   /** Shows a short message inside the figure. */
   showNotice(text: string, ms?: number): void;
+  /** Where sphere `index` is drawn: its centre and radius in CSS pixels from the figure's top left, or null. */
+  sphereOnScreen(index: number): { x: number; y: number; radius: number } | null;
+  /** Resolves once the figure has a picture for print (its poster, or one of a drawn frame). */
+  printable(): Promise<void>;
+  /** The surface's shape now: its components, genus, closedness and manifoldness. */
+  topology(): Promise<MetaballsTopology>;
   /** Runs `f` with the wasm view while the element's own frames are held. */
   withView<T>(f: (view: unknown) => T): Promise<T>;
 }
 
 export interface MetaballsViewEventMap {
   /** A setting changed (from an attribute, a property, a control or a gesture). */
-  'metaballs-change': CustomEvent<{ property: string; value: number | boolean | string }>;
+  'metaballs-change': CustomEvent<{ property: string; attribute: string; value: number | boolean | string }>;
   /** A cell was selected or let go. */
   'metaballs-inspect': CustomEvent<{ cell: MetaballsCellReport | null }>;
   /** A sphere was added, moved, resized or removed by hand. */

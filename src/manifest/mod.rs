@@ -72,7 +72,11 @@ pub const METHODS: &[(&str, &str, &str)] = &[
         "(): Promise<void>",
         "Resolves once the figure has a picture for print (its poster, or one of a drawn frame).",
     ),
-    ("topology", "(): Promise<MetaballsTopology>", "The surface's shape now: its components, genus, closedness and manifoldness."),
+    (
+        "topology",
+        "(): Promise<MetaballsTopology>",
+        "The surface's shape now: its components, genus, closedness and manifoldness.",
+    ),
     (
         "withView",
         "<T>(f: (view: unknown) => T): Promise<T>",
@@ -209,6 +213,9 @@ fn description(p: &Parameter) -> String {
             "poster" => {
                 "An image URL shown before the first frame and in print until a frame is drawn.".into()
             }
+            "sync" => "A group name: the figures of a page with the same one share their spheres, \
+                       animation time and camera (the first on the page leads)."
+                .into(),
             _ => format!("{noun}."),
         },
     }
