@@ -3,7 +3,8 @@
 //! both vertex placements, both blends and both ways of joining ambiguous faces.
 
 use super::sphere;
-use metaballs::extract::reference::Construction;
+use metaballs::extract::extractor::Job;
+use metaballs::extract::reference::{Construction, Grid};
 use metaballs::scene::params::view::{Blend, CaseTable, Interpolation};
 use metaballs::{Scene, Sphere};
 use rand::{RngExt, SeedableRng};
@@ -15,6 +16,19 @@ pub struct OracleScene {
     pub iso: f32,
     pub resolution: u32,
     pub construction: Construction,
+}
+
+impl OracleScene {
+    /// The scene as an extractor's job on its uniform grid.
+    pub fn job(&self) -> Job<'_> {
+        Job {
+            spheres: &self.spheres,
+            iso: self.iso,
+            grid: Grid { cells_per_axis: self.resolution },
+            construction: self.construction,
+            lod: None,
+        }
+    }
 }
 
 /// `how_many` scenes drawn from a fixed seed (sphere count, resolution, iso level, layout and time), so

@@ -1,6 +1,6 @@
 // The author's API of <metaballs-view> is the one its manifest declares, in Node: every public method
 // and property the element's class writes (www/metaballs-view.js) is in custom-elements.json and in
-// metaballs-view.d.ts (both written by `metaballs manifest` from src/manifest/mod.rs), and every member
+// metaballs-view.d.ts (both written by `metaballs manifest` from src/manifest/api.rs), and every member
 // they declare is on the element, as a member of its class or as the property of a row of the
 // parameter table. The calls the page's hub makes on each figure are not the author's and are listed
 // here; a new public member fails until it is declared, documented and typed.

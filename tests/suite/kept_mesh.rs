@@ -58,13 +58,7 @@ fn meshed(extractor: &mut CpuMeshExtractor<Counting>, job: &Job) -> bool {
 #[test]
 fn a_frame_of_the_same_job_draws_the_kept_mesh_and_any_change_meshes_anew() {
     let scene = random_scenes(1).remove(0);
-    let job = Job {
-        spheres: &scene.spheres,
-        iso: scene.iso,
-        grid: Grid { cells_per_axis: scene.resolution },
-        construction: scene.construction,
-        lod: None,
-    };
+    let job = scene.job();
     let mut extractor = CpuMeshExtractor::<Counting>::default();
     assert!(meshed(&mut extractor, &job), "the first frame meshes");
     assert!(!meshed(&mut extractor, &job), "a frame of the same job meshed again");

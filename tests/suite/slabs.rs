@@ -62,13 +62,7 @@ fn area(mesh: &IndexedMesh) -> f64 {
 }
 
 fn check(scene: &OracleScene) -> bool {
-    let job = Job {
-        spheres: &scene.spheres,
-        iso: scene.iso,
-        grid: Grid { cells_per_axis: scene.resolution },
-        construction: scene.construction,
-        lod: None,
-    };
+    let job = scene.job();
     let packed = pack(Method::MarchingCubes, &job);
     let whole = Meshers::default().mesh(&packed).unwrap();
     let mesh = IndexedMesh::from_interleaved(&whole.vertices, &whole.indices);

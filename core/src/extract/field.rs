@@ -282,9 +282,21 @@ impl Spheres {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::scene::Scene;
+
+    /// The spheres of the scene of `seed` with `count` spheres, every third from the second one
+    /// subtracting.
+    pub(crate) fn mixed_spheres(seed: u64, count: u32) -> Vec<crate::scene::Sphere> {
+        let mut spheres = Scene::new(seed, count).unwrap().spheres().to_vec();
+        for (k, sphere) in spheres.iter_mut().enumerate() {
+            if k % 3 == 1 {
+                sphere.charge = -1.0;
+            }
+        }
+        spheres
+    }
 
     /// The first blocks of the groups of `group`³ blocks of a grid of `nb`³ blocks.
     fn groups(nb: u32, group: u32) -> impl Iterator<Item = [u32; 3]> {
@@ -300,12 +312,7 @@ mod tests {
     fn a_group_passed_over_holds_no_block_that_straddles() {
         let mut groups_passed = 0;
         for (seed, count, n) in [(1, 16, 64u32), (2, 5, 37), (3, 40, 50), (4, 3, 22), (5, 64, 29)] {
-            let mut spheres = Scene::new(seed, count).unwrap().spheres().to_vec();
-            for (k, sphere) in spheres.iter_mut().enumerate() {
-                if k % 3 == 1 {
-                    sphere.charge = -1.0;
-                }
-            }
+            let spheres = mixed_spheres(seed, count);
             let mut s = Spheres::default();
             s.set(&spheres);
             let cell = 2.0 * crate::scene::BOX_HALF_EXTENT / n as f32;

@@ -106,9 +106,10 @@ impl Blocks {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::extract::field::tests::mixed_spheres;
     use crate::extract::reference::{self, Grid};
+    use crate::scene::BOX_HALF_EXTENT;
     use crate::scene::params::view::Blend;
-    use crate::scene::{BOX_HALF_EXTENT, Scene};
 
     /// Every block left out of the layers (by its groups', its ball's or its box's bounds) holds no
     /// cell the oracle's field crosses, with adding and subtracting spheres, both blends, and iso levels
@@ -118,12 +119,7 @@ mod tests {
     fn the_blocks_left_out_hold_no_crossed_cell() {
         let (mut left_out_by_boxes, mut blocks) = (0, Blocks::default());
         for (seed, count, n) in [(1, 16, 48u32), (2, 5, 37), (3, 40, 30), (5, 64, 29)] {
-            let mut spheres = Scene::new(seed, count).unwrap().spheres().to_vec();
-            for (k, sphere) in spheres.iter_mut().enumerate() {
-                if k % 3 == 1 {
-                    sphere.charge = -1.0;
-                }
-            }
+            let spheres = mixed_spheres(seed, count);
             let mut s = Spheres::default();
             s.set(&spheres);
             let grid = Grid { cells_per_axis: n };
