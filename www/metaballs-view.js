@@ -9,16 +9,16 @@
 // look, lib/figure/look.js), each owning its settings, its reaction to their changes, its part of each
 // frame and its methods; the renderer and its frames are lib/figure/frames.js.
 
-import {
-  canonical, nameOfKind, NAMES, OLD_PROPERTIES, propertyName, rowOf, TABLE, TEXT_NAMES,
-} from './lib/core/table.js';
+import { canonical, nameOfKind, rowOf, TABLE, TEXT_NAMES, VIEW_ROWS } from './lib/core/table.js';
 import { FigureState } from './lib/core/state.js';
+import { defineSettingProperties, flasher, takeAttribute } from './lib/core/element.js';
+import { readsInJavaScript, readValue } from './lib/core/read.js';
 import { FigureContext } from './lib/core/context.js';
 import { hub } from './lib/engine/hub.js';
 import { loadWarning, loadWasm, parseParameter, wasmLoaded } from './lib/engine/wasm.js';
 import { FigureBase } from './lib/engine/element-base.js';
 import { pageWatch, unwatch } from './lib/engine/page-watch.js';
-import { elementStyle, flasher, TEMPLATE } from './lib/figure/dom.js';
+import { elementStyle, TEMPLATE } from './lib/figure/dom.js';
 import { FigureFrames } from './lib/figure/frames.js';
 import { FigureSize } from './lib/figure/size.js';
 import { FigureDetail } from './lib/figure/detail.js';
@@ -40,6 +40,12 @@ import { IsoLevels } from './lib/features/levels.js';
 
 // The setting that holds spheres placed by hand, as text.
 const SPHERE_LIST = nameOfKind('spheres');
+
+// A setting's text read by the table's reader, or by the wasm's parser for slices, cells and spheres.
+const readSetting = (spelling, text) => {
+  const row = rowOf(spelling);
+  return readsInJavaScript(row) ? readValue(row, text, spelling) : parseParameter(spelling, text);
+};
 
 // The features every figure has, in the order they hear of changes and frames.
 const FEATURES = [FigureSize, FigureDetail, Look, Guard, Hud, Playback, Camera, Inspector, Stepper, SphereEditor,
@@ -64,7 +70,7 @@ export class MetaballsView extends FigureBase {
     const root = this.attachShadow({ mode: 'open', delegatesFocus: true });
     root.adoptedStyleSheets = [elementStyle()];
     root.innerHTML = TEMPLATE;
-    const ctx = new FigureContext(this, root, new FigureState(this, parseParameter));
+    const ctx = new FigureContext(this, root, new FigureState(this, VIEW_ROWS, readSetting));
     this.#ctx = ctx;
     ctx.flash = flasher(root);
     for (const Feature of FEATURES) ctx.use(Feature);
@@ -79,20 +85,7 @@ export class MetaballsView extends FigureBase {
   // writing goes through the same checks as the attribute. The spellings of earlier versions
   // (`color_by`, `balls`) are kept as properties that forward to the same setting.
   static {
-    for (const name of NAMES) {
-      if (Object.hasOwn(this.prototype, propertyName(name))) continue;
-      Object.defineProperty(this.prototype, propertyName(name), {
-        get() { return this.#ctx.state[name]; },
-        set(value) { this.setAttribute(name, String(value)); },
-      });
-    }
-    for (const [property, name] of OLD_PROPERTIES) {
-      if (Object.hasOwn(this.prototype, property)) continue;
-      Object.defineProperty(this.prototype, property, {
-        get() { return this.#ctx.state[name]; },
-        set(value) { this.setAttribute(name, String(value)); },
-      });
-    }
+    defineSettingProperties(this, VIEW_ROWS, (element) => element.#ctx.state);
   }
 
   // ---------------------------------------------------------------- lifecycle
@@ -136,31 +129,9 @@ export class MetaballsView extends FigureBase {
   schemeChanged() { this.#ctx.get(Look).schemeChanged(); }
 
   attributeChangedCallback(spelling, _old, text) {
-    const settings = this.#ctx.settings;
-    if (settings.reflecting) return;
-    const name = canonical(spelling);
     // Before the wasm arrives only plain text is taken; the rest is read when it loads.
-    if (!wasmLoaded() && !TEXT_NAMES.has(name)) return;
-    if (text === null) {
-      // Removed: another spelling still given holds, else the default.
-      const [other] = settings.present(name);
-      if (other) {
-        this.attributeChangedCallback(other, null, this.getAttribute(other));
-        return;
-      }
-      settings.given.delete(name);
-      this.#ctx.accept(name, rowOf(name).value);
-      return;
-    }
-    const { value, message } = settings.parse(name, text, spelling);
-    if (message) {
-      console.warn(`<metaballs-view> ${message}`);
-      this.#ctx.notice(message);
-      this.#ctx.emit('metaballs-error', { message, attribute: spelling });
-      return;
-    }
-    settings.given.add(name);
-    this.#ctx.accept(name, value);
+    if (!wasmLoaded() && !TEXT_NAMES.has(canonical(spelling))) return;
+    takeAttribute(this.#ctx, 'metaballs-view', spelling, text);
   }
 
   // ---------------------------------------------------------------- the renderer and its frames

@@ -13,7 +13,7 @@ out=target/npm/package
 rm -rf "$out"
 mkdir -p "$out/www" "$out/pkg" "$out/pkg-webgl" "$out/pkg-levels"
 cp embed.html "$out/"
-cp -r www/lib www/metaballs-view.js www/metaballs-2d.js www/metaballs-view.d.ts www/metaballs-view.css www/custom-elements.json \
+cp -r www/lib www/metaballs-view.js www/metaballs-2d.js www/metaballs-view.d.ts www/metaballs-2d.d.ts www/metaballs-view.css www/custom-elements.json \
     www/page.js www/bench.js www/style.css "$out/www/"
 cp pkg/metaballs.js pkg/metaballs_bg.wasm "$out/pkg/"
 cp pkg-webgl/metaballs.js pkg-webgl/metaballs_bg.wasm "$out/pkg-webgl/"

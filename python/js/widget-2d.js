@@ -32,14 +32,11 @@ function render({ model, el }) {
     return [event, listener];
   });
   // Figure → Python: a setting changed inside it (its panel, circles added, moved or removed).
+  // The event carries the value typed as the trait holds it (the table's reader made it).
   const changed = (event) => {
     const { attribute, value } = event.detail;
-    const row = PLANE_TABLE.find((r) => r.name === attribute);
-    if (!row) return;
-    const typed = value === null ? row.value
-      : row.kind === 'number' || row.kind === 'integer' ? Number(value)
-        : row.kind === 'boolean' ? value !== 'false' : value;
-    model.set(attribute.replace(/-/g, '_'), typed);
+    if (!PLANE_TABLE.some((r) => r.name === attribute)) return;
+    model.set(attribute.replace(/-/g, '_'), value);
     quietly(() => model.save_changes());
   };
   figure.addEventListener('metaballs-change', changed);

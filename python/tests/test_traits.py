@@ -12,7 +12,7 @@ import pytest
 import traitlets
 
 from metaballs_widget import Metaballs
-from metaballs_widget._parameters import STATIC, TABLE, Refused, attribute_text, check, trait_name
+from metaballs_widget._parameters import PLANE_TABLE, STATIC, TABLE, Refused, attribute_text, check, read, trait_name
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 CLI = os.environ.get("METABALLS_CLI", str(ROOT / "target" / "debug" / "metaballs"))
@@ -40,6 +40,28 @@ def test_the_table_is_the_one_the_build_wrote():
     written = json.loads((ROOT / "www" / "parameters.json").read_text(encoding="utf-8"))
     assert [row["name"] for row in TABLE] == [row["name"] for row in written]
     assert (STATIC / "widget.js").stat().st_size > 10_000, "the widget's module was not bundled"
+
+
+def test_the_rust_parsers_vectors_read_the_same_in_python():
+    """Every text the Rust parser answered (www/parameter-vectors.json, written by `metaballs manifest`)
+    reads the same here: the same value, or the same message."""
+    vectors = json.loads((ROOT / "www" / "parameter-vectors.json").read_text(encoding="utf-8"))
+    assert len(vectors) > 2000
+    wrong = []
+    for v in vectors:
+        row = next(r for r in (PLANE_TABLE if v["table"] == "plane" else TABLE) if r["name"] == v["name"])
+        try:
+            got = {"value": read(row, v["text"], v.get("given"))}
+        except Refused as refused:
+            got = {"message": str(refused)}
+        if "value" in v:
+            same = "value" in got and got["value"] == v["value"] and type(got["value"]) is type(v["value"])
+            same = same or (isinstance(v["value"], float) and got.get("value") == v["value"])
+        else:
+            same = got.get("message") == v["message"]
+        if not same:
+            wrong.append(f"{v['table']} {v.get('given', v['name'])}={v['text']!r}: {got}, Rust: {v}")
+    assert wrong == [], "\n".join(wrong[:20])
 
 
 def test_every_parameter_is_a_synced_trait_with_the_tables_default():
@@ -170,3 +192,10 @@ def test_the_2d_widget_takes_good_values_and_refuses_bad_ones_keeping_its_own():
             setattr(w, trait_name(name), value)
         assert str(refused.value).startswith(said), str(refused.value)
     assert (w.saddle, w.resolution, w.show) == ("decider", 12, "grid,contour")
+    # `levels` is the older name of `iso_levels`; hexadecimal and "no" mean what they mean to the figure.
+    w = Metaballs2d(levels="0.5, 1.5")
+    assert w.iso_levels == "0.5,1.5" and w.levels == "0.5,1.5"
+    with pytest.raises(traitlets.TraitError, match="must be a number from 0.05 to 20"):
+        w.iso = "0x10"
+    w.paused = "no"
+    assert w.paused is False

@@ -15,6 +15,7 @@ use serde_json::{Value as Json, json};
 
 mod api;
 mod plane;
+mod vectors;
 
 pub use api::{CSS_PROPERTIES, EVENTS, METHODS, PARTS, READ_ONLY};
 
@@ -28,7 +29,8 @@ fn kind_word(kind: Kind) -> &'static str {
         Kind::Boolean => "boolean",
         Kind::Color => "color",
         Kind::Choice(_) => "choice",
-        Kind::List(_) | Kind::Controls => "list",
+        Kind::List(..) | Kind::Controls => "list",
+        Kind::Levels => "levels",
         Kind::Slice => "slice",
         Kind::Cell => "cell",
         Kind::Spheres => "spheres",
@@ -73,8 +75,11 @@ fn description(p: &Parameter) -> String {
     match p.kind {
         Kind::Integer | Kind::Number => format!("{noun}: {} to {}.", number(p.min), number(p.max)),
         Kind::Choice(words) => format!("{noun}: {}.", words.join(", ")),
-        Kind::List(_) | Kind::Controls => {
+        Kind::List(..) | Kind::Controls => {
             format!("{noun}: all, none, or a comma list of {}.", p.words().join(", "))
+        }
+        Kind::Levels => {
+            format!("{noun}s: a comma list of numbers from {} to {}.", number(p.min), number(p.max))
         }
         Kind::Boolean => format!("{noun}: a boolean attribute."),
         Kind::Color => format!("{noun}: #rrggbb."),
@@ -93,6 +98,14 @@ fn description(p: &Parameter) -> String {
             "sync" => "A group name: the figures of a page with the same one share their spheres, \
                        animation time and camera (the first on the page leads)."
                 .into(),
+            "circles" => "The circles, x,y,r per circle joined by ; (a negative r subtracts); without it, \
+                          `spheres` circles from `seed`."
+                .into(),
+            "march" => "The step-through of the march, open at a square i,j or a step (off: closed).".into(),
+            "slice-of" => {
+                "The id of a <metaballs-view> with a slice: its slice plane is drawn instead of circles."
+                    .into()
+            }
             _ => format!("{noun}."),
         },
     }
@@ -106,14 +119,35 @@ fn rows() -> Vec<Json> {
 }
 
 fn row_json(p: &Parameter) -> Json {
-    json!({
+    let mut row = json!({
         "name": p.name, "property": p.property(), "python": p.python(), "url": p.link_name(),
         "aliases": p.aliases, "label": p.label, "kind": kind_word(p.kind), "words": p.words(),
         "min": number(p.min), "max": number(p.max), "sliderMin": number(p.slider.0),
         "sliderMax": number(p.slider.1), "step": number(p.slider.2), "default": p.default,
         "value": typed_default(p), "group": p.group.title(), "scope": p.scope.word(),
-        "compute": p.compute, "scene": p.in_scene,
-    })
+        "compute": p.compute, "scene": p.in_scene, "noun": p.noun,
+    });
+    let aliases = word_aliases(p);
+    if aliases.as_object().is_some_and(|a| !a.is_empty()) {
+        row["wordAliases"] = aliases;
+    }
+    row
+}
+
+/// The older or shorter spellings a list's words may be given by, each with the word it reads as:
+/// for the controls, every other name of a setting with a control and the actions' older names.
+fn word_aliases(p: &Parameter) -> Json {
+    let pairs: Vec<(&str, &str)> = match p.kind {
+        Kind::List(_, older) => older.to_vec(),
+        Kind::Controls => PARAMETERS
+            .iter()
+            .filter(|q| q.group != crate::scene::params::Group::None)
+            .flat_map(|q| q.names().filter(move |n| *n != q.name).map(move |n| (n, q.name)))
+            .chain(ACTIONS.iter().flat_map(|a| a.aliases.iter().map(move |o| (*o, a.name))))
+            .collect(),
+        _ => Vec::new(),
+    };
+    Json::Object(pairs.into_iter().map(|(old, new)| (old.to_string(), json!(new))).collect())
 }
 
 /// The panel's controls in order: each setting with a group, and the actions.
@@ -159,22 +193,7 @@ fn described<'a>(parameters: impl Iterator<Item = &'a Parameter>) -> String {
         .map(|p| {
             let mut row = row_json(p);
             row["description"] = json!(description(p));
-            row["noun"] = json!(if p.noun.is_empty() { p.name } else { p.noun });
             row["expected"] = json!(expected(p));
-            if p.kind == Kind::Controls {
-                // The older spellings of the controls a list may name.
-                let aliases: serde_json::Map<String, Json> = PARAMETERS
-                    .iter()
-                    .filter(|q| q.group != crate::scene::params::Group::None)
-                    .flat_map(|q| q.aliases.iter().map(move |a| (a.to_string(), json!(q.name))))
-                    .chain(
-                        ACTIONS
-                            .iter()
-                            .flat_map(|a| a.aliases.iter().map(move |o| (o.to_string(), json!(a.name)))),
-                    )
-                    .collect();
-                row["wordAliases"] = Json::Object(aliases);
-            }
             row
         })
         .collect();
@@ -329,5 +348,7 @@ pub fn files() -> Vec<(&'static str, String)> {
         ("plane-parameters.json", described(plane::plane_parameters())),
         ("custom-elements.json", custom_elements_json()),
         ("metaballs-view.d.ts", declarations()),
+        ("metaballs-2d.d.ts", plane::declarations()),
+        ("parameter-vectors.json", vectors::vectors_json()),
     ]
 }

@@ -41,6 +41,7 @@ const SHARED = [
   'slabs.test.js', // 5
   'hooks.test.js', // 0.2
   'api.test.js', // 0.1
+  'read.test.js', // 0.3
 ];
 // A click on a figure drawing a heavy frame must be handled within a second, and the page's long tasks
 // are counted: these run alone.

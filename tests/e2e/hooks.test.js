@@ -1,5 +1,5 @@
 // The features' protocol, in Node: every hook the sources call by name (`each`, `collect`, `some`) is
-// declared in www/lib/core/hooks.js, every hook declared is called, no feature of <metaballs-view> has a
+// declared in www/lib/core/hooks.js, every hook declared is called, no feature of either element has a
 // method named like a hook that is not one (a misspelt hook is never called: the same name in another
 // case, or one letter off, two for names of eight letters or more), and the context refuses a name that
 // is no hook.
@@ -36,9 +36,9 @@ test('every hook called is declared, and every hook declared is called', () => {
   assert.deepEqual(Object.keys(HOOKS).filter((hook) => !called.has(hook)), [], 'hooks declared that nothing calls');
 });
 
-// The features <metaballs-view> makes (its FEATURES list), each with the file its class is in.
-function features() {
-  const element = FILES.find(({ file }) => file === 'www/metaballs-view.js').text;
+// The features an element makes (its FEATURES list), each with the file its class is in.
+function features(elementFile = 'www/metaballs-view.js') {
+  const element = FILES.find(({ file }) => file === elementFile).text;
   const list = element.match(/const FEATURES = \[([^\]]+)\]/)[1].split(',').map((s) => s.trim()).filter(Boolean);
   const imports = new Map();
   for (const [, names, from] of element.matchAll(/import \{([^}]+)\} from '([^']+)'/g)) {
@@ -64,8 +64,12 @@ function features() {
 }
 
 test('no feature has a method named like a hook that is not one, and each hook has a feature', () => {
-  const made = features();
-  assert.ok(made.length >= 10, `${made.length} features found`);
+  const view = features();
+  assert.ok(view.length >= 10, `${view.length} features found`);
+  // The 2D figure's features are held to the same names.
+  const plane = features('www/metaballs-2d.js');
+  assert.ok(plane.length >= 5, `${plane.length} features of the 2D figure found`);
+  const made = [...view, ...plane];
   const hooks = Object.keys(HOOKS);
   const nearMisses = made.flatMap(({ name, methods }) => methods.filter((m) => !isHook(m)).flatMap((m) => {
     const near = hooks.filter((hook) => m.toLowerCase() === hook.toLowerCase()

@@ -63,7 +63,7 @@ test('each setting changes the picture; the saddle rule changes the contour; a b
   const { page, errors } = await lecture();
   let before = await shot(page);
   for (const [name, value] of [['saddle', 'table'], ['iso', '0.9'], ['resolution', '20'], ['interpolation', 'midpoint'],
-    ['levels', '0.5'], ['show', 'grid,contour'], ['theme', 'light']]) {
+    ['iso-levels', '0.5'], ['show', 'grid,contour'], ['theme', 'light']]) {
     await set(page, name, value);
     await drawn(page);
     const after = await shot(page);
@@ -80,14 +80,16 @@ test('each setting changes the picture; the saddle rule changes the contour; a b
   const center = await contours(page);
   assert.ok(center.saddles.every((s) => Math.abs(s.value - 1.2) > 0 && s.joined === s.value > 1.2));
   // Bad values: a notice saying what is accepted, and the figure keeps its setting.
-  for (const [name, value, said] of [['iso', 'abc', /iso: "abc" is not a number from 0.05 to 20/],
-    ['saddle', 'middle', /saddle: "middle" is not one of table, center, decider/],
-    ['circles', '0,0', /circles: "0,0" is not x,y,r/], ['show', 'grid,sparkles', /show: sparkles is not one of/]]) {
+  for (const [name, value, said] of [['iso', 'abc', /^iso="abc": iso level must be a number from 0.05 to 20, got "abc"/],
+    ['iso', '0x10', /^iso="0x10": iso level must be a number from 0.05 to 20, got "0x10"/],
+    ['saddle', 'middle', /^saddle="middle": saddle must be one of table, center, decider, got "middle"/],
+    ['circles', '0,0', /^circles="0,0": circles: "0,0" is not x,y,r/],
+    ['show', 'grid,sparkles', /^show="grid,sparkles": show must be all, none, or a comma list of grid, values/]]) {
     await set(page, name, value);
     await drawn(page);
     const notice = await page.$eval('#squares metaballs-2d', (e) => e.shadowRoot.getElementById('notice').textContent);
     assert.match(notice, said);
-    assert.match(notice, /kept the previous value/);
+    assert.match(notice, /; keeping /);
   }
   assert.equal((await contours(page)).iso, 1.2);
   assert.deepEqual(errors, []);
@@ -230,7 +232,7 @@ test('the 2D page: each panel control changes the picture and goes into the link
     ['iso', (c) => c.locator('#control-iso').fill('1.6'), '1.6'],
     ['resolution', (c) => c.locator('#control-resolution').fill('20'), '20'],
     ['interpolation', (c) => c.locator('#control-interpolation').selectOption('midpoint'), 'midpoint'],
-    ['levels', async (c) => { await c.locator('#control-levels').fill('0.8,2.4'); await c.locator('#control-levels').press('Enter'); }, '0.8,2.4'],
+    ['iso-levels', async (c) => { await c.locator('#control-iso-levels').fill('0.8,2.4'); await c.locator('#control-iso-levels').press('Enter'); }, '0.8,2.4'],
     ['show', (c) => c.locator('input[data-show="values"]').uncheck(), null],
     ['theme', (c) => c.locator('#control-theme').selectOption('light'), 'light'],
   ];
@@ -274,12 +276,14 @@ test('the 2D page: each panel control changes the picture and goes into the link
   await settle();
   assert.equal(link().get('march'), '1,0');
   // A bad value typed in the panel gets the notice and stays out of the figure and the link.
-  await el.locator('#control-levels').fill('0.8,abc');
-  await el.locator('#control-levels').press('Enter');
+  await el.locator('#control-iso-levels').fill('0.8,abc');
+  await el.locator('#control-iso-levels').press('Enter');
   await settle();
-  assert.match(await page.$eval('metaballs-2d', (e) => e.shadowRoot.getElementById('notice').textContent), /levels: "abc" is not a number|iso: "abc"/);
-  assert.equal(link().get('levels'), '0.8,2.4');
-  // A panel built again hears each click once: the step-through closes and stays closed.
+  assert.match(await page.$eval('metaballs-2d', (e) => e.shadowRoot.getElementById('notice').textContent),
+    /^iso-levels="0.8,abc": iso level must be a number from 0.05 to 20, got "abc"; keeping "0.8,2.4"/);
+  assert.equal(link().get('iso-levels'), '0.8,2.4');
+  // A panel built again hears each click once: the step-through closes and stays closed. (`levels` is
+  // the older name of the levels' control.)
   await page.$eval('metaballs-2d', (e) => e.setAttribute('controls', 'step-through,levels'));
   await el.locator('summary').click();
   await el.locator('button[data-action="step-through"]').click();
@@ -302,7 +306,8 @@ test('2D scene files: saved and loaded back the same figure; a bad file changes 
   assert.equal(doc.format, 'metaballs-2d-scene');
   assert.deepEqual(doc.circles[1], { center: [0.08, -0.37], radius: 0.25, charge: -1 });
   assert.equal(doc.settings.saddle, 'decider');
-  assert.deepEqual(doc.settings.levels, [0.8, 2]);
+  // The link's `levels` is the older name of `iso-levels`.
+  assert.deepEqual(doc.settings['iso-levels'], [0.8, 2]);
   const before = await pixels();
   // Saved from the panel: the download is the same document.
   await el.locator('summary').click();
@@ -320,7 +325,7 @@ test('2D scene files: saved and loaded back the same figure; a bad file changes 
   // Bad documents: each refused with what is wrong, the figure unchanged.
   for (const [bad, said] of [
     ['{"format": "metaballs-2d-scene", "version": 1, "circles": [{"center": [3, 0], "radius": 0.2}]}', /circles\[0\]\.center \(3, 0\) is outside the box/],
-    ['{"format": "metaballs-2d-scene", "version": 1, "circles": [{"center": [0, 0], "radius": 0.2}], "settings": {"iso": 99}}', /settings\.iso: "99" is not a number from 0\.05 to 20/],
+    ['{"format": "metaballs-2d-scene", "version": 1, "circles": [{"center": [0, 0], "radius": 0.2}], "settings": {"iso": 99}}', /settings\.iso: iso level must be between 0\.05 and 20, got 99/],
     ['{"format": "metaballs-2d-scene", "version": 2, "circles": []}', /version 2/],
     ['not json', /not JSON/],
   ]) {

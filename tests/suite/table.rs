@@ -25,12 +25,13 @@ fn other_value(p: &Parameter) -> String {
         Kind::Boolean => (p.default != "true").to_string(),
         Kind::Color => "#123456".into(),
         Kind::Choice(words) => words.iter().find(|w| **w != p.default).unwrap().to_string(),
-        Kind::List(words) => words.last().unwrap().to_string(),
+        Kind::List(words, _) => words.last().unwrap().to_string(),
         Kind::Controls => control_names()[1].to_string(),
         Kind::Slice => "z:0.25".into(),
         Kind::Cell => "1,2,3".into(),
         Kind::Spheres => "0,0,0,0.3".into(),
         Kind::Text => "a figure".into(),
+        Kind::Levels => "0.5,1.5".into(),
     }
 }
 

@@ -14,6 +14,7 @@ from ._parameters import PLANE_TABLE, STATIC, TABLE, Refused, check, older_names
 _ROWS = {row["python"]: row for row in TABLE}
 _PLANE_ROWS = {row["python"]: row for row in PLANE_TABLE}
 _OLDER = older_names()
+_PLANE_OLDER = older_names(PLANE_TABLE)
 _WASM = {
     "webgpu": "pkg/metaballs_bg.wasm",
     "webgl2": "pkg-webgl/metaballs_bg.wasm",
@@ -178,6 +179,11 @@ Metaballs = type(
 class _Plane(_Asking):
     _esm = STATIC / "widget-2d.js"
 
+    def __init__(self, **kwargs):
+        # Older spellings (``levels=``) are the settings' current names.
+        kwargs = {_PLANE_OLDER.get(name, name): value for name, value in kwargs.items()}
+        super().__init__(**kwargs)
+
     async def contours(self) -> dict:
         """The contour at the iso level as data: ``iso``, ``cells``, ``rings`` (closed lists of points in
         the box [-1, 1]², the inside on their left), ``saddles``, ``crossings`` and each square's case."""
@@ -196,6 +202,7 @@ Metaballs2d = type(
     (_Plane,),
     {
         **_settings(_PLANE_ROWS),
+        **{old: _older(new) for old, new in _PLANE_OLDER.items()},
         "__doc__": "Marching squares over circles, as a widget: ``Metaballs2d(circles='0.3,0.1,0.35;-0.35,-0.2,0.3', "
         "saddle='decider')``. Every setting of the 2D figure is a trait, synced both ways.",
         "__module__": __name__,

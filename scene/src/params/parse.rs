@@ -84,16 +84,29 @@ impl Parameter {
                     Err(invalid(format!("one of {}", words.join(", "))))
                 }
             }
-            Kind::List(words) => {
+            Kind::List(words, older) => {
                 let list = trimmed.to_ascii_lowercase();
                 if list == "all" || list == "none" {
                     return Ok(Value::Text(list));
                 }
-                let items: Vec<&str> = list.split(',').map(str::trim).filter(|s| !s.is_empty()).collect();
-                if items.is_empty() || !items.iter().all(|item| words.contains(item)) {
-                    return Err(invalid(format!("all, none, or a comma list of {}", words.join(", "))));
+                let word = |item: &str| {
+                    let item = older.iter().find(|(old, _)| *old == item).map_or(item, |(_, new)| *new);
+                    words.iter().find(|w| **w == item).copied()
+                };
+                let items: Option<Vec<&str>> =
+                    list.split(',').map(str::trim).filter(|s| !s.is_empty()).map(word).collect();
+                match items {
+                    Some(items) if !items.is_empty() => Ok(Value::Text(items.join(","))),
+                    _ => Err(invalid(format!("all, none, or a comma list of {}", words.join(", ")))),
                 }
-                Ok(Value::Text(items.join(",")))
+            }
+            Kind::Levels => {
+                let mut levels = Vec::new();
+                for item in trimmed.split(',').map(str::trim).filter(|s| !s.is_empty()) {
+                    let level = Parameter { kind: Kind::Number, ..*self };
+                    levels.push(level.parse_as(given, item)?.to_text());
+                }
+                Ok(Value::Text(levels.join(",")))
             }
             Kind::Controls => {
                 let list = trimmed.to_ascii_lowercase();

@@ -17,7 +17,7 @@ pub const PLANE_CONTROLS: &[&str] = &[
     "resolution",
     "interpolation",
     "saddle",
-    "levels",
+    "iso-levels",
     "show",
     "paused",
     "speed",
@@ -40,12 +40,18 @@ pub const PLANE_PARAMETERS: &[Parameter] = &[
         .slider(8.0, 256.0, 1.0)
         .group(Group::Surface),
     row("circles", "Circles", Kind::Text, ""),
-    row("levels", "Levels", Kind::Text, "").group(Group::Display),
-    row("show", "Show", Kind::List(SHOWN), "grid,values,corners,cases,crossings,contour,saddles,bands")
+    // Further iso levels, drawn as lines and bands: `levels` before the name said which levels (the 3D
+    // figure's `levels` is its "Along the iso level" box).
+    number("iso-levels", "Levels", "iso level", (0.05, 20.0), "")
+        .kind(Kind::Levels)
+        .url("iso-levels")
+        .aliases(&["levels"])
+        .group(Group::Display),
+    row("show", "Show", Kind::List(SHOWN, &[]), "grid,values,corners,cases,crossings,contour,saddles,bands")
         .group(Group::Display),
     row("march", "Step-through", Kind::Text, "").page_only(),
     row("slice-of", "Slice of", Kind::Text, "").page_only(),
-    row("controls", "Controls", Kind::List(PLANE_CONTROLS), "none").page_only(),
+    row("controls", "Controls", Kind::List(PLANE_CONTROLS, &[("levels", "iso-levels")]), "none").page_only(),
 ];
 
 /// Every setting of the 2D figure: the shared rows, then its own.
@@ -71,6 +77,22 @@ mod tests {
         }
         assert!(p_words("show").contains(&"circles"));
         assert_eq!(plane_parameters().count(), PLANE_SHARED.len() + PLANE_PARAMETERS.len());
+    }
+
+    #[test]
+    fn further_levels_are_numbers_in_the_iso_range_and_controls_take_the_older_word() {
+        let levels = plane_parameters().find(|p| p.name == "iso-levels").unwrap();
+        assert_eq!(levels.aliases, &["levels"]);
+        assert_eq!(levels.parse(" 0.5, ,1.50 "), Ok(crate::params::Value::Text("0.5,1.5".into())));
+        assert_eq!(levels.parse(""), Ok(crate::params::Value::Text(String::new())));
+        let refused = levels.parse("0.5,30").unwrap_err().to_string();
+        assert_eq!(refused, "iso level must be between 0.05 and 20, got 30");
+        assert!(levels.parse("0x10").is_err());
+        let controls = plane_parameters().find(|p| p.name == "controls").unwrap();
+        assert_eq!(controls.parse("iso, LEVELS"), Ok(crate::params::Value::Text("iso,iso-levels".into())));
+        assert!(
+            controls.parse("iso,zoom").unwrap_err().to_string().contains("comma list of iso, resolution")
+        );
     }
 
     fn p_words(name: &str) -> Vec<&'static str> {

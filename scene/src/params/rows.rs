@@ -150,7 +150,7 @@ pub const PARAMETERS: &[Parameter] = &[
         .renderer(word!(saddle: Saddle)),
     row("levels", "Along the iso level", Kind::Boolean, "false").group(Teaching).page_only(),
     // Light
-    row("light", "Lights", Kind::List(LIGHT_KINDS), "point").group(Light).renderer(Field::View {
+    row("light", "Lights", Kind::List(LIGHT_KINDS, &[]), "point").group(Light).renderer(Field::View {
         set: |o, v| o.lights = Lights::from_list(v.text()),
         get: |o| Value::Text(o.lights.text()),
     }),
@@ -283,7 +283,7 @@ impl Parameter {
     /// The words it accepts (choices and lists).
     pub fn words(&self) -> Vec<&'static str> {
         match self.kind {
-            Kind::Choice(words) | Kind::List(words) => words.to_vec(),
+            Kind::Choice(words) | Kind::List(words, _) => words.to_vec(),
             Kind::Controls => control_names(),
             _ => Vec::new(),
         }

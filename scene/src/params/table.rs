@@ -20,8 +20,12 @@ pub enum Kind {
     Color,
     /// One of a fixed list of words.
     Choice(&'static [&'static str]),
-    /// `all`, `none`, or a comma list of words from a fixed list.
-    List(&'static [&'static str]),
+    /// `all`, `none`, or a comma list of words from a fixed list; the pairs are older spellings of
+    /// words, read as the word (`levels` → `iso-levels`).
+    List(&'static [&'static str], &'static [(&'static str, &'static str)]),
+    /// Empty (none), or a comma list of numbers each in the row's range (`0.5, 1.5`), held as the
+    /// list of their shortest decimals.
+    Levels,
     /// `all`, `none`, or a comma list of the panel's controls ([`control_names`]), by any of their names.
     Controls,
     /// `off`, or an axis and a position in the box: `z:0.25`.
@@ -208,6 +212,9 @@ pub(super) const fn number(
 impl Parameter {
     pub(super) const fn whole(self) -> Self {
         Parameter { kind: Kind::Integer, slider: (self.slider.0, self.slider.1, 1.0), ..self }
+    }
+    pub(super) const fn kind(self, kind: Kind) -> Self {
+        Parameter { kind, ..self }
     }
     pub(super) const fn url(self, url: &'static str) -> Self {
         Parameter { url, ..self }

@@ -8,7 +8,6 @@
 // what it tells a feature, in hooks.js, and the context calls no other name.
 
 import { checkHook } from './hooks.js';
-import { propertyName } from './table.js';
 
 export class FigureContext {
   /** The renderer's frames (a FigureFrames), set by the element. */
@@ -118,6 +117,6 @@ export class FigureContext {
 
   #changed(name, value) {
     this.each('refresh', this.state);
-    this.emit('metaballs-change', { property: propertyName(name), attribute: name, value });
+    this.emit('metaballs-change', { property: this.settings.rows.propertyName(name), attribute: name, value });
   }
 }

@@ -1,15 +1,14 @@
 // A figure's settings as the parameter table defines them, by canonical name: the values in effect,
 // the ones the renderer holds, the ones changed since the last frame, and which the author gave.
-// Attributes are read through the table's parser (`parse`, the wasm's, handed in by the element) and
-// written back, under the spelling the author used, without being taken in again.
-
-import { defaults, spellingsOf, TEXT_NAMES } from './table.js';
+// Attributes are read through the table's reader (`parser`, handed in by the element: read.js, and the
+// wasm's parser for the kinds with grammars of their own) and written back, under the spelling the
+// author used, without being taken in again.
 
 export class FigureState {
   /** The values in effect. */
-  state = defaults();
+  state;
   /** The values the renderer holds. */
-  applied = { ...this.state };
+  applied;
   /** Names changed since the renderer last took them. */
   changed = new Set();
   /** Names the author or the person set (the others follow the adapter's defaults). */
@@ -18,10 +17,16 @@ export class FigureState {
   #parser;
   #reflecting = false;
 
-  /** `parser(name, text)` reads a value or throws an Error saying what is accepted. */
-  constructor(element, parser) {
+  /**
+   * `rows`: the figure's table (a Rows); `parser(spelling, text)` reads a value or throws an Error
+   * saying what is accepted.
+   */
+  constructor(element, rows, parser) {
     this.#element = element;
+    this.rows = rows;
     this.#parser = parser;
+    this.state = rows.defaults();
+    this.applied = { ...this.state };
   }
 
   /** True while a value is being written back to its attribute (its callback must not take it in). */
@@ -32,12 +37,16 @@ export class FigureState {
    * `{ message }` saying what is wrong and what is kept.
    */
   parse(name, text, spelling = name) {
-    if (TEXT_NAMES.has(name)) return { value: text };
     try {
-      return { value: this.#parser(spelling, text) };
+      return { value: this.read(spelling, text) };
     } catch (error) {
       return { message: `${spelling}="${text}": ${error.message}; keeping ${this.format(name)}` };
     }
+  }
+
+  /** Reads `text` given under `spelling`: the value, or throws an Error saying what is accepted. */
+  read(spelling, text) {
+    return this.#parser(spelling, text);
   }
 
   /** The value in effect, as an attribute would show it. */
@@ -48,7 +57,7 @@ export class FigureState {
 
   /** The spellings of `name` the element carries as attributes now. */
   present(name) {
-    return spellingsOf(name).filter((spelling) => this.#element.hasAttribute(spelling));
+    return this.rows.spellingsOf(name).filter((spelling) => this.#element.hasAttribute(spelling));
   }
 
   /**

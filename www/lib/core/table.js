@@ -4,57 +4,36 @@
 // defaults and ranges before the wasm arrives; nothing here names a setting.
 
 import { CONTROLS, LIMITS, TABLE } from '../attributes.js';
+import { Rows } from './rows.js';
 
 export { CONTROLS, LIMITS, TABLE };
 
+/** The 3D figure's rows by every spelling. */
+export const VIEW_ROWS = new Rows(TABLE);
+
 /** Canonical attribute names, in panel order. */
-export const NAMES = TABLE.map((p) => p.name);
-
-// Each spelling of a parameter: its name, its short name in links and its older spellings.
-const spellings = (row) => [...new Set([row.name, row.url, ...(row.aliases ?? [])])];
-
-const ROWS = new Map();
-for (const row of TABLE) {
-  for (const spelling of spellings(row)) ROWS.set(spelling, row);
-}
+export const NAMES = VIEW_ROWS.names;
 
 /** Every spelling an attribute may be given under: the names, short names and older spellings. */
-export const SPELLINGS = [...ROWS.keys()];
+export const SPELLINGS = VIEW_ROWS.spellings;
 
 /** The table's row for a name or any of its aliases, or undefined. */
-export const rowOf = (spelling) => ROWS.get(spelling);
+export const rowOf = (spelling) => VIEW_ROWS.rowOf(spelling);
 
 /** The canonical name of a name or alias (itself when unknown). */
-export const canonical = (spelling) => ROWS.get(spelling)?.name ?? spelling;
+export const canonical = (spelling) => VIEW_ROWS.canonical(spelling);
 
 /** The spellings of one parameter: its name first, then its short name and older spellings. */
-export const spellingsOf = (name) => {
-  const row = ROWS.get(name);
-  return row ? spellings(row) : [name];
-};
-
-const camel = (text) => text.replace(/[-_]([a-z])/g, (_, c) => c.toUpperCase());
+export const spellingsOf = (name) => VIEW_ROWS.spellingsOf(name);
 
 /** The element's property for a parameter (`max-pixel-ratio` → `maxPixelRatio`). */
-export const propertyName = (spelling) => ROWS.get(spelling)?.property ?? camel(spelling);
+export const propertyName = (spelling) => VIEW_ROWS.propertyName(spelling);
 
-/**
- * Property spellings kept from earlier versions (`color_by`, `spot_angle`, `balls`): each spelling of a
- * parameter and its Python name, read as a property as earlier versions did, where it differs from the
- * row's own property. Maps the old property to the canonical name.
- */
-export const OLD_PROPERTIES = new Map();
-for (const row of TABLE) {
-  // Not the short names of links (`res`, `aa`): they were never properties.
-  for (const spelling of [row.name, ...(row.aliases ?? []), row.python]) {
-    const property = spelling.replace(/-([a-z])/g, (_, c) => c.toUpperCase());
-    if (property !== row.property) OLD_PROPERTIES.set(property, row.name);
-  }
-}
-for (const row of TABLE) OLD_PROPERTIES.delete(row.property);
+/** Property spellings kept from earlier versions (`color_by`, `spot_angle`, `balls`) → canonical name. */
+export const OLD_PROPERTIES = VIEW_ROWS.oldProperties;
 
 /** Attributes of plain text (a description, a URL): taken as written, even before the wasm arrives. */
-export const TEXT_NAMES = new Set(TABLE.filter((p) => p.kind === 'text').map((p) => p.name));
+export const TEXT_NAMES = VIEW_ROWS.textNames;
 
 /** Settings a renderer takes when it is made. */
 export const CREATION = new Set(TABLE.filter((p) => p.scope === 'creation').map((p) => p.name));
@@ -69,16 +48,14 @@ export const nameOfKind = (kind) => TABLE.find((p) => p.kind === kind)?.name;
 export const CONTROL_NAMES = CONTROLS.map((c) => c.name);
 
 /** The default values of every parameter, typed. */
-export function defaults() {
-  return Object.fromEntries(TABLE.map((p) => [p.name, p.value]));
-}
+export const defaults = () => VIEW_ROWS.defaults();
 
 /** The default value of one parameter, typed. */
-export const defaultOf = (name) => ROWS.get(name).value;
+export const defaultOf = (name) => rowOf(name).value;
 
 /** The range a parameter accepts: [min, max]. */
 export const rangeOf = (name) => {
-  const row = ROWS.get(name);
+  const row = rowOf(name);
   return [row.min, row.max];
 };
 
@@ -94,7 +71,7 @@ export const clampTo = (name, value) => {
  * that styles and scripts written against earlier panels still find it.
  */
 export function controlId(name) {
-  const row = ROWS.get(name);
+  const row = rowOf(name);
   if (!row) return name;
   const aliases = row.aliases ?? [];
   if (aliases.includes(row.python)) return row.python;

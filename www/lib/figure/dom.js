@@ -387,18 +387,6 @@ export const TEMPLATE = `
     <button id="retry" type="button" hidden>Try again</button>
   </div>`;
 
-/** A function showing `text` in the box with id `id` in `root` for `ms` milliseconds (a later call replaces it). */
-export function flasher(root) {
-  const timers = {};
-  return (id, text, ms) => {
-    const box = root.getElementById(id);
-    box.textContent = text;
-    box.hidden = false;
-    clearTimeout(timers[id]);
-    timers[id] = setTimeout(() => { box.hidden = true; }, ms);
-  };
-}
-
 /** The figure's message box (`#message` in `root`): a title, a text and perhaps "Try again". */
 export function messageBox(root) {
   const $ = (id) => root.getElementById(id);

@@ -6,6 +6,9 @@
 
 import { PLANE_TABLE } from '../attributes.js';
 import { SHOWN } from './picture.js';
+import { shownList } from './frames.js';
+import { PlaneInside } from './plane-circles.js';
+import { PlaneScene } from './scene-file.js';
 
 /** The panel's controls, in order (the words of the table's `controls` row); `all` lists them all. */
 export const PANEL_CONTROLS = PLANE_TABLE.find((row) => row.name === 'controls').words;
@@ -40,8 +43,8 @@ export function planePanel(host, names, rowOf, figure) {
     if (name === 'show') {
       return `<span class="label">Show</span><span class="checks" role="group" aria-label="Show">${SHOWN.map((w) => `<label><input type="checkbox" data-show="${w}"> ${w}</label>`).join('')}</span>`;
     }
-    if (name === 'levels') {
-      return `<label for="${id}">Levels</label><input id="${id}" class="wide" data-name="levels" placeholder="e.g. 0.6,1.6">`;
+    if (row?.kind === 'levels') {
+      return `<label for="${id}">${html(row.label)}</label><input id="${id}" class="wide" data-name="${name}" placeholder="e.g. 0.6,1.6">`;
     }
     if (name === 'step-through') return '<span></span><button type="button" class="wide" data-action="step-through">Step through the march</button>';
     if (name === 'circles') return '<span></span><span class="wide">Double-click to add a circle or remove one; drag to move it.</span>';
@@ -88,17 +91,39 @@ export function planePanel(host, names, rowOf, figure) {
       else input.value = value;
       if (input.type === 'range') input.nextElementSibling.textContent = value;
     }
-    const shown = figure.get('show').split(',');
+    const shown = shownList(figure.get('show'));
     for (const s of shows) s.checked = shown.includes(s.dataset.show);
   };
 }
 
-/** The control names `controls` lists (`all`, `none`, or names of `PANEL_CONTROLS`); throws for others. */
-export function readControls(text) {
-  const words = String(text ?? '').split(',').map((w) => w.trim()).filter(Boolean);
-  if (words.length === 1 && words[0] === 'all') return PANEL_CONTROLS;
-  if (words.length === 0 || (words.length === 1 && words[0] === 'none')) return [];
-  const unknown = words.filter((w) => !PANEL_CONTROLS.includes(w));
-  if (unknown.length) throw new Error(`controls: ${unknown.join(', ')} is not one of ${PANEL_CONTROLS.join(', ')} (or all, none)`);
-  return words;
+/**
+ * The panel as a feature of the 2D figure: built from `controls` (the table's reader has checked the
+ * names), showing the values in effect after every change, each control setting its value as the
+ * figure's attribute would be set, each button running the figure's action of its name.
+ */
+export class PlanePanel {
+  static attributes = ['controls'];
+  #ctx;
+  #update = null;
+
+  constructor(ctx) { this.#ctx = ctx; }
+
+  changed(_name, text) {
+    const names = text === 'all' ? PANEL_CONTROLS : text === 'none' ? [] : text.split(',');
+    const host = this.#ctx.root.querySelector('.controls');
+    this.#update = null;
+    host.replaceChildren();
+    if (names.length === 0) return;
+    const ctx = this.#ctx;
+    this.#update = planePanel(host, names, (name) => ctx.settings.rows.rowOf(name), {
+      get: (name) => String(ctx.state[name]),
+      set: (name, value) => ctx.get(PlaneInside).setText(name, value),
+      action: (name) => (name === 'load-scene' ? host.querySelector('input[type=file]').click() : ctx.actions[name]()),
+    });
+    const file = host.querySelector('input[type=file]');
+    file?.addEventListener('change', () => ctx.get(PlaneScene).loadFile(file));
+    this.#update();
+  }
+
+  refresh() { this.#update?.(); }
 }

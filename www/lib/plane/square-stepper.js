@@ -3,7 +3,7 @@
 // draw again, and where the step goes (its `march` attribute, so that links and widgets carry it).
 
 import { SQUARE_TABLE, squareAccount, stepperPanel } from './stepper-panel.js';
-import { nextCrossed, Playhead } from './stepper.js';
+import { nextCrossed, Playhead, readStep } from './stepper.js';
 
 export class SquareStepper {
   /** The step shown (square j · cells + i; cells² at the end), or null when the step-through is off. */
@@ -69,5 +69,60 @@ export class SquareStepper {
     const k = this.step;
     const square = k < cells * cells ? result.square(k % cells, Math.floor(k / cells)) : null;
     this.#update({ playing: this.playing, lit: square?.case ?? null, account: squareAccount(k, cells * cells, square, iso) });
+  }
+}
+
+/**
+ * The step-through as a feature of the 2D figure: opened, moved and closed by `march` (a square `i,j`
+ * or a step; `off`, `none` or no attribute closes it), kept on its square when the grid changes, and
+ * each step the person takes written back to `march`.
+ */
+export class PlaneStepper {
+  static attributes = ['march', 'resolution'];
+  #ctx;
+
+  constructor(ctx) {
+    this.#ctx = ctx;
+    const frames = () => ctx.frames;
+    this.stepper = new SquareStepper(ctx.root.querySelector('.side'), {
+      cells: () => frames().cells,
+      result: () => frames().result ?? frames().draw(),
+      redraw: () => frames().redraw(),
+      moved: (k) => this.reflect(k),
+    });
+    ctx.actions['step-through'] = () => this.toggle();
+  }
+
+  changed(name) {
+    const text = this.#ctx.state.march;
+    // A square named i,j stays that square on a new grid.
+    if (name === 'resolution' && this.stepper.step === null) return;
+    try {
+      if (!text || /^\s*(off|none)\s*$/i.test(text)) this.stepper.close();
+      else this.stepper.to(readStep(text, this.#ctx.frames.cells));
+    } catch (error) {
+      this.#ctx.notice(error.message);
+    }
+  }
+
+  /** Opens it at step `k` (clamped to the march), or moves it there, and writes the step to `march`. */
+  to(k) {
+    this.stepper.to(k);
+    this.reflect(this.stepper.step);
+  }
+
+  /** Opens or closes it (the panel's button). */
+  toggle() {
+    if (this.stepper.step === null) this.#ctx.set('march', '0');
+    else this.#ctx.element.removeAttribute('march');
+  }
+
+  // The step as `march` (`i,j`, or the step number at the end), so that links carry it.
+  reflect(k) {
+    const cells = this.#ctx.frames.cells;
+    const text = k < cells * cells ? `${k % cells},${Math.floor(k / cells)}` : String(k);
+    const given = this.#ctx.state.march;
+    const same = Boolean(given) && (() => { try { return readStep(given, cells) === k; } catch { return false; } })();
+    if (!same) this.#ctx.set('march', text);
   }
 }

@@ -1,0 +1,78 @@
+// The 2D figure's circles as a feature: the ones given (`circles`) or seeded (`spheres`, `seed`), kept
+// as they move, dragged, added and removed by hand (circle-gestures.js), and written back to `circles`
+// when an edit ends, so that links, scene files and notebooks carry them.
+
+import { CircleGestures } from './circle-gestures.js';
+import { circlesText, parseCircles, seededCircles } from './circles.js';
+
+export class PlaneCircles {
+  static attributes = ['circles', 'spheres', 'seed'];
+  #ctx;
+  #list = null;
+
+  constructor(ctx) {
+    this.#ctx = ctx;
+    this.gestures = new CircleGestures(ctx.canvas, {
+      circles: () => this.list,
+      size: () => ctx.frames.size,
+      locked: () => Boolean(ctx.state['slice-of']),
+      moved: () => {
+        ctx.frames.draw();
+        ctx.emit('metaballs-2d-drag', { circles: this.list });
+      },
+      edited: () => ctx.get(PlaneInside).setText('circles', circlesText(this.list)),
+      refused: (text) => ctx.notice(text),
+    });
+  }
+
+  /** The circles, as placed (each `{ x, y, r, charge, vx, vy }`). */
+  get list() {
+    const s = this.#ctx.state;
+    this.#list ??= s.circles ? parseCircles(s.circles) : seededCircles(s.seed, s.spheres);
+    return this.#list;
+  }
+
+  /** Places circles given as `{ x, y, r, charge }`. */
+  place(list) {
+    this.#ctx.get(PlaneInside).setText('circles', circlesText(list.map((c) => ({
+      x: c.x, y: c.y, r: Math.abs(c.r), charge: c.charge ?? (Math.sign(c.r) || 1),
+    }))));
+  }
+
+  changed() { this.#list = null; }
+}
+
+/**
+ * Changes made inside the figure (its panel, a gesture, a method), given as text: read as an attribute
+ * would be, refused with a notice (the panel then shows the value kept), else set and reflected.
+ */
+export class PlaneInside {
+  #ctx;
+
+  constructor(ctx) { this.#ctx = ctx; }
+
+  setText(name, text) {
+    const ctx = this.#ctx;
+    const { value, message } = ctx.settings.parse(name, text);
+    if (message) {
+      ctx.notice(message);
+      ctx.each('refresh', ctx.state);
+      return false;
+    }
+    ctx.set(name, value);
+    return true;
+  }
+}
+
+/** The figure's accessible name: the author's `alt`, else what it shows. */
+export class PlaneLabel {
+  #ctx;
+
+  constructor(ctx) { this.#ctx = ctx; }
+
+  refresh(s) {
+    const count = this.#ctx.get(PlaneCircles).list.length;
+    this.#ctx.canvas.setAttribute('aria-label', s.alt
+      || `Marching squares: ${count} circles on ${s.resolution} × ${s.resolution} squares, contour at iso ${s.iso}`);
+  }
+}
