@@ -8,8 +8,8 @@
 // It is built as <metaballs-view> is: a figure context (lib/core/context.js) holding its settings, read
 // from attributes, properties, its panel and scene files by the table's reader (lib/core/read.js) with
 // the rows of its table (scene/src/params/plane.rs, written into lib/attributes.js), and its features
-// (lib/plane/): the circles and their gestures, the step-through, the panel, the scene files; its
-// frames are lib/plane/frames.js.
+// (lib/plane/): the circles and their gestures, the step-through, the panel, the scene files, its
+// accessible name and print; its frames are lib/plane/frames.js.
 
 import { PLANE_TABLE } from './lib/attributes.js';
 import { Rows } from './lib/core/rows.js';
@@ -20,7 +20,7 @@ import { readValue } from './lib/core/read.js';
 import { PANEL_CONTROLS, PlanePanel } from './lib/plane/panel.js';
 import { parseCircles } from './lib/plane/circles.js';
 import { PlaneCircles, PlaneInside, PlaneLabel } from './lib/plane/plane-circles.js';
-import { PlaneFrames } from './lib/plane/frames.js';
+import { PlaneFrames, PlanePrint } from './lib/plane/frames.js';
 import { PlaneScene } from './lib/plane/scene-file.js';
 import { PlaneStepper } from './lib/plane/square-stepper.js';
 import { readStep } from './lib/plane/stepper.js';
@@ -51,17 +51,19 @@ canvas { display: block; width: 100%; height: 100%; touch-action: none; cursor: 
 export const PLANE_ROWS = new Rows(PLANE_TABLE);
 
 // A setting's text read by the table's reader; circles and the step-through's square also by their own
-// grammar (a square on the grid of `cells` squares per axis).
-function readSetting(spelling, text, cells) {
+// grammar (a square of the finest grid: the step-through says so when it is not one of the grid drawn,
+// which may change after it).
+const FINEST = PLANE_ROWS.rowOf('resolution').max;
+function readSetting(spelling, text) {
   const row = PLANE_ROWS.rowOf(spelling);
   const value = readValue(row, text, spelling);
   if (row.name === 'circles' && value.trim()) parseCircles(value);
-  if (row.name === 'march' && !/^\s*(off|none)?\s*$/i.test(value)) readStep(value, cells());
+  if (row.name === 'march' && !/^\s*(off|none)?\s*$/i.test(value)) readStep(value, FINEST);
   return value;
 }
 
 // The features of the figure, in the order they hear of changes.
-const FEATURES = [PlaneInside, PlaneCircles, PlaneStepper, PlaneScene, PlanePanel, PlaneLabel];
+const FEATURES = [PlaneInside, PlaneCircles, PlaneStepper, PlaneScene, PlanePanel, PlaneLabel, PlanePrint];
 
 // Where there is no DOM (a static-site build importing the module), a plain class stands in.
 const Base = globalThis.HTMLElement ?? class {};
@@ -79,8 +81,7 @@ export class Metaballs2d extends Base {
     const root = this.attachShadow({ mode: 'open' });
     root.innerHTML = `<style>${STYLE}</style><div class="figure"><div class="print"></div><canvas id="view" part="canvas" role="img"></canvas>`
       + '<div id="notice" part="notice" role="status" hidden></div><div class="controls"></div></div><div class="side"></div>';
-    const read = (spelling, text) => readSetting(spelling, text, () => ctx.frames.cells);
-    const ctx = new FigureContext(this, root, new FigureState(this, PLANE_ROWS, read));
+    const ctx = new FigureContext(this, root, new FigureState(this, PLANE_ROWS, readSetting));
     this.#ctx = ctx;
     ctx.flash = flasher(root);
     for (const Feature of FEATURES) ctx.use(Feature);
@@ -99,14 +100,16 @@ export class Metaballs2d extends Base {
     this.#observer = new ResizeObserver(() => { if (this.isConnected) this.#ctx.frames.draw(); });
     this.#observer.observe(this);
     this.#ctx.each('refresh', this.#ctx.state);
-    this.#ctx.frames.connected();
+    this.#ctx.each('connected');
+    this.#ctx.frames.start();
   }
 
   #observer = null;
 
   disconnectedCallback() {
     this.#observer?.disconnect();
-    this.#ctx.frames.disconnected();
+    this.#ctx.each('disconnected');
+    this.#ctx.frames.stop();
   }
 
   attributeChangedCallback(spelling, _old, text) {

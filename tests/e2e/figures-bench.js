@@ -19,10 +19,9 @@
 // Prints a line per measurement and a JSON line starting "metaballs-figures ". Not a test: figures
 // depend on the machine.
 
-import { spawn } from 'node:child_process';
 import path from 'node:path';
 import { chromium } from 'playwright-core';
-import { root as here, CHROMIUM, FLAGS, freePort, waitForServer } from './helpers.js';
+import { root as here, CHROMIUM, FLAGS, serve } from './helpers.js';
 
 const values = (name) => process.argv.flatMap((a, i) => (a === `--${name}` ? [process.argv[i + 1]] : []));
 const number = (name, fallback) => Number(values(name)[0] ?? fallback);
@@ -56,16 +55,6 @@ const noWorker = () => { delete window.Worker; };
 const noWebgpu = () => { delete Navigator.prototype.gpu; };
 const fixedScale = () => { window.metaballsFixedScale = true; };
 const poolOf = (n) => { window.metaballsMeshWorkers = n; };
-
-function serve(directory) {
-  return freePort().then(async (port) => {
-    const server = spawn('python3', ['-m', 'http.server', '--bind', '127.0.0.1', String(port), '--directory', directory],
-      { stdio: 'ignore' });
-    const base = `http://127.0.0.1:${port}/`;
-    await waitForServer(base);
-    return { base, stop: () => server.kill() };
-  });
-}
 
 // Pauses every figure and turns its camera by a degree each animation frame, at `ratio` CSS pixels per
 // pixel at most (0.5: the pixels an animating figure draws at its lowest render scale).

@@ -123,20 +123,26 @@ export async function waitForServer(url, timeoutMs = 10_000) {
 }
 
 /** Serves `directory` (the repository by default) and starts the browser before a file's tests. */
+/** Serves `directory` on a free port of 127.0.0.1 (for benchmarks of other checkouts): `{ base, stop() }`. */
+export async function serve(directory) {
+  const port = await freePort();
+  const server = spawn('python3', ['-m', 'http.server', '--bind', '127.0.0.1', String(port), '--directory', directory],
+    { stdio: 'ignore' });
+  const base = `http://127.0.0.1:${port}/`;
+  await waitForServer(base);
+  return { base, stop: () => server.kill() };
+}
+
 export function useServerAndBrowser({ directory = root, launch = null } = {}) {
 before(async () => {
-  const port = await freePort();
-  server = spawn('python3', ['-m', 'http.server', '--bind', '127.0.0.1', String(port), '--directory', directory], {
-    stdio: 'ignore',
-  });
-  baseUrl = `http://127.0.0.1:${port}/`;
-  await waitForServer(baseUrl);
+  server = await serve(directory);
+  baseUrl = server.base;
   browser = launch ? await launch() : await chromium.launch({ executablePath: CHROMIUM, args: FLAGS, headless: true });
 });
 
 after(async () => {
   await browser?.close();
-  server?.kill();
+  server?.stop();
 });
 }
 

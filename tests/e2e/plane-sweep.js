@@ -1,15 +1,14 @@
 // What the 2D figure's page (`squares.html`) makes of hostile values in its link, in headless Chromium:
 // for each setting and value, whether the figure refused it (its notice) or took it, and what it then
-// draws: the iso level and grid of its contour, whether its circles move (paused or not), the shown
-// and the further levels as its attributes hold them. `node plane-sweep.js` (no build needed: the 2D
-// figure has no WebAssembly). Options: `--root DIR`, repeatable, runs the same sweep on other
-// checkouts (a before and after). Prints a line per value and checkout, and a JSON line starting
-// "metaballs-plane-sweep ". Not a test: it reports what happens, and `table.test.js` holds the reader.
+// draws: the iso level and grid of its contour, whether its circles move, and its further levels.
+// `npm run sweep:plane` (no build needed: the 2D figure has no WebAssembly). Options: `--root DIR`,
+// repeatable, runs the same sweep on other checkouts (a before and after). Prints a line per value and
+// checkout, and a JSON line starting "metaballs-plane-sweep ". Not a test: it reports what happens;
+// `table.test.js` holds the reader.
 
-import { spawn } from 'node:child_process';
 import path from 'node:path';
 import { chromium } from 'playwright-core';
-import { root as here, CHROMIUM, FLAGS, freePort, waitForServer } from './helpers.js';
+import { root as here, CHROMIUM, FLAGS, serve } from './helpers.js';
 
 const args = process.argv.slice(2);
 const roots = [here, ...args.flatMap((a, i) => (a === '--root' ? [path.resolve(args[i + 1])] : []))];
@@ -27,16 +26,6 @@ const SWEEP = {
   levels: ['0x1', 'Infinity', '0.5,abc', '0.5, 1.5'],
   'iso-levels': ['0.5,1.5', '30'],
 };
-
-function serve(directory) {
-  return freePort().then(async (port) => {
-    const server = spawn('python3', ['-m', 'http.server', '--bind', '127.0.0.1', String(port), '--directory', directory],
-      { stdio: 'ignore' });
-    const base = `http://127.0.0.1:${port}/`;
-    await waitForServer(base);
-    return { base, stop: () => server.kill() };
-  });
-}
 
 async function sweepOne(browser, base, name, value) {
   const context = await browser.newContext({ viewport: { width: 720, height: 720 } });
@@ -56,7 +45,7 @@ async function sweepOne(browser, base, name, value) {
     return {
       refused: notice.hidden ? null : notice.textContent, iso, cells,
       moving: JSON.stringify(e.samples().values.slice(0, 40)) !== before,
-      show: e.getAttribute('show'), levels: e.getAttribute('iso-levels') ?? e.getAttribute('levels'),
+      levels: e.getAttribute('iso-levels') ?? e.getAttribute('levels'),
     };
   });
   await context.close();

@@ -29,7 +29,7 @@ export const HOOKS = Object.freeze({
   beforeFrame: '(now, view) an animation frame is about to be drawn: what changes the picture first',
   holds: '() true keeps the animation still (a drag, a search pause-on waits for, a sync leader)',
   beforeDraw: '(now, frame) the frame is about to be drawn',
-  drawn: '(now, frame) the frame was drawn (shown or not)',
+  drawn: '(now, frame) the frame was drawn (shown or not); the 2D figure\'s frame is { changing }',
   frameDrawn: '(now, frame) a frame someone sees was drawn',
   idle: '(now, view) no frame was due on this animation frame',
   afterTick: '(now, view, { animating }) every animation frame the figure is on screen',

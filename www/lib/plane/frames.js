@@ -1,6 +1,6 @@
 // The 2D figure's frames: what is sampled (its circles, or a followed 3D figure's slice plane), the
-// picture drawn on the canvas at the device's pixel ratio, the animation (circles moving, the
-// step-through playing, a followed figure watched), and the picture kept as vector art for print.
+// picture drawn on the canvas at the device's pixel ratio, and the animation (circles moving, the
+// step-through playing, a followed figure watched); each frame drawn is told to the features (`drawn`).
 
 import { paint, picture, SHOWN, toSvg } from './picture.js';
 import { moveCircles } from './circles.js';
@@ -24,7 +24,6 @@ export class PlaneFrames {
   #frame = 0;
   #last = 0;
   #size = 0;
-  #printTimer = 0;
   // What a followed figure's samples depended on when last drawn (undefined: draw on the next frame).
   #lastFollowed = null;
 
@@ -124,27 +123,44 @@ export class PlaneFrames {
     this.#lastFollowed = key;
     if (changing || s['slice-of']) this.#request();
     else this.#last = 0;
-    // The picture for print, once a changed picture has settled.
-    if (drawing) clearTimeout(this.#printTimer);
-    if (drawing && !changing) this.#printTimer = setTimeout(this.forPrint, 300);
+    if (drawing) this.#ctx.each('drawn', now, { changing });
   }
 
-  /** The picture for print, as vector art: made while the figure is still, and before printing. */
-  forPrint = () => {
+  /** Starts drawing (the element was connected). */
+  start() { this.redraw(); }
+
+  /** Stops drawing (the element was disconnected). */
+  stop() {
+    cancelAnimationFrame(this.#frame);
+    this.#frame = 0;
+  }
+}
+
+/**
+ * The 2D figure in print: its picture as vector art in place of the canvas, made once a changed
+ * picture has settled (the figure still) and again before printing.
+ */
+export class PlanePrint {
+  #ctx;
+  #timer = 0;
+
+  constructor(ctx) { this.#ctx = ctx; }
+
+  #make = () => {
     const print = this.#ctx.root.querySelector('.print');
-    print.innerHTML = this.svg(Math.max(1, this.#size));
+    print.innerHTML = this.#ctx.frames.svg(Math.max(1, this.#ctx.frames.size));
     print.firstElementChild?.setAttribute('aria-hidden', 'true');
   };
 
-  connected() {
-    globalThis.addEventListener('beforeprint', this.forPrint);
-    this.redraw();
-  }
+  connected() { globalThis.addEventListener('beforeprint', this.#make); }
 
   disconnected() {
-    globalThis.removeEventListener('beforeprint', this.forPrint);
-    clearTimeout(this.#printTimer);
-    cancelAnimationFrame(this.#frame);
-    this.#frame = 0;
+    globalThis.removeEventListener('beforeprint', this.#make);
+    clearTimeout(this.#timer);
+  }
+
+  drawn(_now, { changing }) {
+    clearTimeout(this.#timer);
+    if (!changing) this.#timer = setTimeout(this.#make, 300);
   }
 }
