@@ -23,7 +23,6 @@ import { PlaneCircles, PlaneInside, PlaneLabel } from './lib/plane/plane-circles
 import { PlaneFrames, PlanePrint } from './lib/plane/frames.js';
 import { PlaneScene } from './lib/plane/scene-file.js';
 import { PlaneStepper } from './lib/plane/square-stepper.js';
-import { readStep } from './lib/plane/stepper.js';
 
 const STYLE = `
 :host { display: block; position: relative; max-width: 100%; contain: content; font: 13px system-ui, sans-serif; }
@@ -51,14 +50,20 @@ canvas { display: block; width: 100%; height: 100%; touch-action: none; cursor: 
 export const PLANE_ROWS = new Rows(PLANE_TABLE);
 
 // A setting's text read by the table's reader; circles and the step-through's square also by their own
-// grammar (a square of the finest grid: the step-through says so when it is not one of the grid drawn,
-// which may change after it).
-const FINEST = PLANE_ROWS.rowOf('resolution').max;
+// grammar. A `march` given empty opens the step-through at its first square, `off` or `none` closes it;
+// a square is checked against the grid drawn when the step-through opens (the grid may change after).
 function readSetting(spelling, text) {
   const row = PLANE_ROWS.rowOf(spelling);
   const value = readValue(row, text, spelling);
   if (row.name === 'circles' && value.trim()) parseCircles(value);
-  if (row.name === 'march' && !/^\s*(off|none)?\s*$/i.test(value)) readStep(value, FINEST);
+  if (row.name === 'march') {
+    const march = value.trim();
+    if (/^(off|none)$/i.test(march)) return '';
+    if (!/^[0-9]+\s*(,\s*[0-9]+)?$/.test(march || '0')) {
+      throw new Error(`march: "${text}" is not a square i,j, a step number, off or none`);
+    }
+    return march || '0';
+  }
   return value;
 }
 
@@ -113,7 +118,11 @@ export class Metaballs2d extends Base {
   }
 
   attributeChangedCallback(spelling, _old, text) {
-    takeAttribute(this.#ctx, 'metaballs-2d', spelling, text);
+    const ctx = this.#ctx;
+    const again = !ctx.settings.reflecting && PLANE_ROWS.canonical(spelling) === 'march' && ctx.state.march;
+    takeAttribute(ctx, 'metaballs-2d', spelling, text);
+    // The square it holds, asked for again, is shown again (the step-through may have played on).
+    if (again && ctx.state.march === again) ctx.get(PlaneStepper).changed('march');
   }
 
   /** Shows a short message inside the figure. */

@@ -40,7 +40,12 @@ const HOSTILE: &[&str] = &[
     "\u{200b}8",
     "12345678901234567890123456789",
     "1e39",
+    "1e400",
     "1e-50",
+    // Powers of two, where an f32's shortest decimal is not the nearest one of its length.
+    "1.2621774483536188887e-29",
+    "154742504910672534362390528",
+    "1237940039285380274899124224",
     "-0",
     "say \"hi\" \\ é 中 🙂",
     "combining e\u{301} and \u{1b}[0m",
@@ -94,11 +99,17 @@ fn outcome(p: &Parameter, given: &'static str, text: &str) -> Json {
     }
 }
 
+/// A whole number too long for a double.
+fn ones() -> String {
+    "1".repeat(400)
+}
+
 /// The vectors of one table (`view` or `plane`).
 fn table_vectors<'a>(table: &str, rows: impl Iterator<Item = &'a Parameter>) -> Vec<Json> {
     let mut out = Vec::new();
     for p in rows.filter(|p| read_in_javascript(p.kind)) {
         let mut texts: Vec<String> = HOSTILE.iter().map(|t| t.to_string()).collect();
+        texts.push(ones());
         texts.extend(own_texts(p));
         let mut seen = std::collections::HashSet::new();
         for text in texts.into_iter().filter(|t| seen.insert(t.clone())) {

@@ -122,7 +122,6 @@ export async function waitForServer(url, timeoutMs = 10_000) {
   throw new Error(`the server at ${url} did not start`);
 }
 
-/** Serves `directory` (the repository by default) and starts the browser before a file's tests. */
 /** Serves `directory` on a free port of 127.0.0.1 (for benchmarks of other checkouts): `{ base, stop() }`. */
 export async function serve(directory) {
   const port = await freePort();
@@ -133,6 +132,7 @@ export async function serve(directory) {
   return { base, stop: () => server.kill() };
 }
 
+/** Serves `directory` (the repository by default) and starts the browser before a file's tests. */
 export function useServerAndBrowser({ directory = root, launch = null } = {}) {
 before(async () => {
   server = await serve(directory);

@@ -25,6 +25,8 @@ const SWEEP = {
   show: ['', 'ALL', 'grid,,contour', 'GRID'],
   levels: ['0x1', 'Infinity', '0.5,abc', '0.5, 1.5'],
   'iso-levels': ['0.5,1.5', '30'],
+  circles: ['  ', '0,0', '0,0,0x1'],
+  march: ['', 'off', '20,3', '1.5'],
 };
 
 async function sweepOne(browser, base, name, value) {
@@ -53,9 +55,10 @@ async function sweepOne(browser, base, name, value) {
 }
 
 const servers = await Promise.all(roots.map(serve));
-const browser = await chromium.launch({ executablePath: CHROMIUM, args: FLAGS, headless: true });
+let browser;
 const results = [];
 try {
+  browser = await chromium.launch({ executablePath: CHROMIUM, args: FLAGS, headless: true });
   for (const [name, values] of Object.entries(SWEEP)) {
     for (const value of values) {
       for (const [k, { base }] of servers.entries()) {
@@ -68,7 +71,7 @@ try {
     }
   }
 } finally {
-  await browser.close();
+  await browser?.close();
   for (const server of servers) server.stop();
 }
 console.log(`metaballs-plane-sweep ${JSON.stringify(results)}`);

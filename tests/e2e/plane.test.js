@@ -178,6 +178,26 @@ test('the stepper walks the march: the lit row is each square\'s case, and the l
   assert.match(await page.$eval('#march metaballs-2d', (e) => e.shadowRoot.getElementById('notice').textContent),
     /march: "9,9" is not a square i,j of the 8 × 8 grid/);
   assert.equal((await state()).step, 64);
+  // Whatever the order of the attributes: a square of the finer grid given first opens there once the
+  // grid is given; `march` given empty opens at the first square; `off` closes it; the square it holds,
+  // asked for again after the step-through played on, is shown again.
+  const steps = await page.evaluate(() => {
+    const figure = (attributes) => {
+      const e = document.createElement('metaballs-2d');
+      for (const [name, value] of attributes) e.setAttribute(name, value);
+      document.body.append(e);
+      const step = e.stepIndex;
+      e.remove();
+      return step;
+    };
+    const e = document.querySelector('#march metaballs-2d');
+    e.setAttribute('march', '1,1');
+    e.stepTo(30);
+    const moved = e.stepIndex;
+    e.setAttribute('march', '1,1');
+    return [figure([['march', '20,3'], ['resolution', '24']]), figure([['march', '']]), figure([['march', 'off']]), moved, e.stepIndex];
+  });
+  assert.deepEqual(steps, [3 * 24 + 20, 0, null, 30, 9]);
   assert.deepEqual(errors, []);
 });
 
@@ -232,7 +252,7 @@ test('the 2D page: each panel control changes the picture and goes into the link
     ['iso', (c) => c.locator('#control-iso').fill('1.6'), '1.6'],
     ['resolution', (c) => c.locator('#control-resolution').fill('20'), '20'],
     ['interpolation', (c) => c.locator('#control-interpolation').selectOption('midpoint'), 'midpoint'],
-    ['iso-levels', async (c) => { await c.locator('#control-iso-levels').fill('0.8,2.4'); await c.locator('#control-iso-levels').press('Enter'); }, '0.8,2.4'],
+    ['iso-levels', async (c) => { await c.locator('#control-levels').fill('0.8,2.4'); await c.locator('#control-levels').press('Enter'); }, '0.8,2.4'],
     ['show', (c) => c.locator('input[data-show="values"]').uncheck(), null],
     ['theme', (c) => c.locator('#control-theme').selectOption('light'), 'light'],
   ];
@@ -276,8 +296,8 @@ test('the 2D page: each panel control changes the picture and goes into the link
   await settle();
   assert.equal(link().get('march'), '1,0');
   // A bad value typed in the panel gets the notice and stays out of the figure and the link.
-  await el.locator('#control-iso-levels').fill('0.8,abc');
-  await el.locator('#control-iso-levels').press('Enter');
+  await el.locator('#control-levels').fill('0.8,abc');
+  await el.locator('#control-levels').press('Enter');
   await settle();
   assert.match(await page.$eval('metaballs-2d', (e) => e.shadowRoot.getElementById('notice').textContent),
     /^iso-levels="0.8,abc": iso level must be a number from 0.05 to 20, got "abc"; keeping "0.8,2.4"/);

@@ -62,23 +62,32 @@ def _plain(text: str) -> str:
 
 
 def _shortest_f32(single: float) -> str:
-    """The shortest decimal that reads back as the single-precision ``single``."""
+    """The shortest decimal that reads back as the single-precision ``single``, the nearest of that length
+    where several do (the neighbours of the nearest are tried: below a power of two the single's interval
+    is half as wide)."""
     if single == 0:
         return "-0" if math.copysign(1, single) < 0 else "0"
-    for digits in range(1, 9):
-        text = f"{single:.{digits - 1}e}"
-        if _f32(float(text)) == single:
-            return text
+    for length in range(1, 10):
+        mantissa, _, power = f"{single:.{length - 1}e}".partition("e")
+        digits, exponent = int(mantissa.replace(".", "")), int(power) - (length - 1)
+        candidates = [f"{d}e{exponent}" for d in (digits - 1, digits, digits + 1) if _f32(float(f"{d}e{exponent}")) == single]
+        if candidates:
+            return min(candidates, key=lambda text: abs(float(text) - single))
     return f"{single:.8e}"
 
 
 def _f32_text(value: float) -> str:
     """A single-precision number as the figure prints it: the shortest text that reads back the same."""
-    return _plain(_shortest_f32(_f32(value)))
+    single = _f32(value)
+    return _f64_text(single) if not math.isfinite(single) else _plain(_shortest_f32(single))
 
 
 def _f64_text(value: float) -> str:
-    """A number as the figure prints a double (``4294967295``, ``0.05``)."""
+    """A number as the figure prints a double (``4294967295``, ``0.05``, ``inf``)."""
+    if math.isnan(value):
+        return "NaN"
+    if math.isinf(value):
+        return "inf" if value > 0 else "-inf"
     return "-0" if value == 0 and math.copysign(1, value) < 0 else _plain(repr(float(value)).replace("e+", "e"))
 
 

@@ -96,19 +96,30 @@ const trim = (text) => String(text).replace(/^\p{White_Space}+|\p{White_Space}+$
 // Rust's `to_ascii_lowercase`: A–Z only.
 const asciiLower = (text) => text.replace(/[A-Z]/g, (c) => c.toLowerCase());
 
-/** The shortest decimal that reads back as the f32 `x` (`x.toPrecision`'s form). */
+/**
+ * The shortest decimal that reads back as the f32 `x`, the nearest of that length where several do, as
+ * Rust writes it (exponent form). The nearest decimal of a length may fall outside the f32's interval
+ * where a neighbour does not (below a power of two the interval is half as wide), so the neighbours of
+ * the nearest are tried too.
+ */
 function shortestF32(x) {
   if (x === 0) return Object.is(x, -0) ? '-0' : '0';
-  for (let digits = 1; digits < 9; digits += 1) {
-    const text = x.toPrecision(digits);
-    if (Math.fround(Number(text)) === x) return text;
+  for (let length = 1; length <= 9; length += 1) {
+    const [mantissa, power] = x.toExponential(length - 1).split('e');
+    const digits = Number(mantissa.replace('.', ''));
+    const exponent = Number(power) - (length - 1);
+    const candidates = [digits - 1, digits, digits + 1].map((d) => `${d}e${exponent}`)
+      .filter((text) => Math.fround(Number(text)) === x);
+    if (candidates.length) {
+      return candidates.reduce((best, text) => (Math.abs(Number(text) - x) < Math.abs(Number(best) - x) ? text : best));
+    }
   }
-  return x.toPrecision(9);
+  return x.toExponential(8);
 }
 
 /** A decimal in exponent form written out in full, as Rust's `{}` writes floats. */
 function plain(text) {
-  const [, sign, whole, fraction = '', exponent = '0'] = /^(-?)([0-9]+)(?:\.([0-9]+))?(?:e([+-][0-9]+))?$/.exec(text);
+  const [, sign, whole, fraction = '', exponent = '0'] = /^(-?)([0-9]+)(?:\.([0-9]+))?(?:e([+-]?[0-9]+))?$/.exec(text);
   let digits = whole + fraction;
   let point = whole.length + Number(exponent);
   const leading = digits.length - digits.replace(/^0+/, '').length;
@@ -120,11 +131,17 @@ function plain(text) {
   return `${sign}${digits.slice(0, point)}.${digits.slice(point)}`;
 }
 
+// What Rust's `{}` writes for a value that is not a finite number.
+const notFinite = (x) => (Number.isNaN(x) ? 'NaN' : x > 0 ? 'inf' : '-inf');
+
 /** An f32 as Rust's `{}` writes it. */
-export const f32Text = (x) => plain(shortestF32(Math.fround(x)));
+export const f32Text = (x) => (Number.isFinite(x) ? plain(shortestF32(Math.fround(x))) : notFinite(x));
 
 /** An f64 as Rust's `{}` writes it. */
-export const f64Text = (x) => (Object.is(x, -0) ? '-0' : plain(String(x)));
+export const f64Text = (x) => {
+  if (!Number.isFinite(x)) return notFinite(x);
+  return Object.is(x, -0) ? '-0' : plain(String(x));
+};
 
 // A number in a message: as written, or as Rust's `{:e}` writes it when its digits run long.
 function shortNumber(text) {

@@ -52,6 +52,20 @@ export class Rows {
   /** The element's property for a parameter (`max-pixel-ratio` → `maxPixelRatio`). */
   propertyName(spelling) { return this.#bySpelling.get(spelling)?.property ?? camel(spelling); }
 
+  /**
+   * The id of a parameter's control in the panel: the name it had in earlier versions (its Python name
+   * where that is an older spelling or its short name, else its first older spelling, else its name),
+   * so that styles and scripts written against earlier panels still find it.
+   */
+  controlId(name) {
+    const row = this.#bySpelling.get(name);
+    if (!row) return name;
+    const aliases = row.aliases ?? [];
+    if (aliases.includes(row.python)) return row.python;
+    if (aliases.length) return aliases[0];
+    return row.url === row.python ? row.python : row.name;
+  }
+
   /** The default values of every parameter, typed. */
   defaults() { return Object.fromEntries(this.rows.map((p) => [p.name, p.value])); }
 }

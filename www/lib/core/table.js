@@ -65,16 +65,5 @@ export const clampTo = (name, value) => {
   return Math.min(max, Math.max(min, value));
 };
 
-/**
- * The id of a parameter's control in the panel: the name it had in earlier versions (its Python name
- * where that is an older spelling or its short name, else its first older spelling, else its name), so
- * that styles and scripts written against earlier panels still find it.
- */
-export function controlId(name) {
-  const row = rowOf(name);
-  if (!row) return name;
-  const aliases = row.aliases ?? [];
-  if (aliases.includes(row.python)) return row.python;
-  if (aliases.length) return aliases[0];
-  return row.url === row.python ? row.python : row.name;
-}
+/** The id of a parameter's control in the panel (see Rows.controlId). */
+export const controlId = (name) => VIEW_ROWS.controlId(name);

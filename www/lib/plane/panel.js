@@ -36,9 +36,10 @@ const html = (text) => String(text).replace(/&/g, '&amp;').replace(/</g, '&lt;')
  * row of the 2D figure's table; `figure` is `{ get(name) (the value in effect, as text), set(name, text),
  * action(name) }`. Returns `update()`, which shows the values in effect.
  */
-export function planePanel(host, names, rowOf, figure) {
+export function planePanel(host, names, rowOf, figure, controlId = (name) => name) {
   const rows = names.map((name) => {
-    const id = `control-${name}`;
+    // Named as in earlier versions (`control-levels`), so that styles and scripts still find it.
+    const id = `control-${controlId(name)}`;
     const row = rowOf(name);
     if (name === 'show') {
       return `<span class="label">Show</span><span class="checks" role="group" aria-label="Show">${SHOWN.map((w) => `<label><input type="checkbox" data-show="${w}"> ${w}</label>`).join('')}</span>`;
@@ -119,7 +120,7 @@ export class PlanePanel {
       get: (name) => String(ctx.state[name]),
       set: (name, value) => ctx.get(PlaneInside).setText(name, value),
       action: (name) => (name === 'load-scene' ? host.querySelector('input[type=file]').click() : ctx.actions[name]()),
-    });
+    }, (name) => ctx.settings.rows.controlId(name));
     const file = host.querySelector('input[type=file]');
     file?.addEventListener('change', () => ctx.get(PlaneScene).loadFile(file));
     this.#update();

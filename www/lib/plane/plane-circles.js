@@ -28,15 +28,14 @@ export class PlaneCircles {
   /** The circles, as placed (each `{ x, y, r, charge, vx, vy }`). */
   get list() {
     const s = this.#ctx.state;
-    this.#list ??= s.circles ? parseCircles(s.circles) : seededCircles(s.seed, s.spheres);
+    this.#list ??= s.circles.trim() ? parseCircles(s.circles) : seededCircles(s.seed, s.spheres);
     return this.#list;
   }
 
-  /** Places circles given as `{ x, y, r, charge }`. */
+  /** Places circles given as `{ x, y, r, charge }` (at full precision; refused like the attribute). */
   place(list) {
-    this.#ctx.get(PlaneInside).setText('circles', circlesText(list.map((c) => ({
-      x: c.x, y: c.y, r: Math.abs(c.r), charge: c.charge ?? (Math.sign(c.r) || 1),
-    }))));
+    const text = list.map((c) => [c.x, c.y, Math.abs(c.r) * ((c.charge ?? Math.sign(c.r)) < 0 ? -1 : 1)].join(',')).join(';');
+    this.#ctx.get(PlaneInside).setText('circles', text);
   }
 
   changed() { this.#list = null; }

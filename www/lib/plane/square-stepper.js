@@ -94,14 +94,16 @@ export class PlaneStepper {
   }
 
   changed(name) {
-    const text = this.#ctx.state.march;
-    // A square named i,j stays that square on a new grid.
-    if (name === 'resolution' && this.stepper.step === null) return;
+    const ctx = this.#ctx;
+    const text = ctx.state.march;
+    // A square named i,j stays that square on a new grid (and one not on the old grid may be on the new).
+    if (name === 'resolution' && !text) return;
     try {
-      if (!text || /^\s*(off|none)\s*$/i.test(text)) this.stepper.close();
-      else this.stepper.to(readStep(text, this.#ctx.frames.cells));
+      if (!text) this.stepper.close();
+      else this.stepper.to(readStep(text, ctx.frames.cells));
     } catch (error) {
-      this.#ctx.notice(error.message);
+      ctx.notice(error.message);
+      ctx.emit('metaballs-error', { message: error.message, attribute: 'march' });
     }
   }
 
