@@ -16,7 +16,7 @@ import { Rows } from './lib/core/rows.js';
 import { FigureState } from './lib/core/state.js';
 import { FigureContext } from './lib/core/context.js';
 import { defineSettingProperties, flasher, takeAttribute } from './lib/core/element.js';
-import { readValue } from './lib/core/read.js';
+import { parseF64, readValue } from './lib/core/read.js';
 import { PANEL_CONTROLS, PlanePanel } from './lib/plane/panel.js';
 import { parseCircles } from './lib/plane/circles.js';
 import { PlaneCircles, PlaneInside, PlaneLabel } from './lib/plane/plane-circles.js';
@@ -55,7 +55,12 @@ export const PLANE_ROWS = new Rows(PLANE_TABLE);
 function readSetting(spelling, text) {
   const row = PLANE_ROWS.rowOf(spelling);
   const value = readValue(row, text, spelling);
-  if (row.name === 'circles' && value.trim()) parseCircles(value);
+  if (row.name === 'circles' && value.trim()) {
+    // Each number as the table's numbers are read (no hexadecimal, no `1_0`).
+    const bad = value.split(/[;,]/).map((part) => part.trim()).find((part) => part && parseF64(part) === null);
+    if (bad !== undefined) throw new Error(`circles: "${bad}" is not a number`);
+    parseCircles(value);
+  }
   if (row.name === 'march') {
     const march = value.trim();
     if (/^(off|none)$/i.test(march)) return '';

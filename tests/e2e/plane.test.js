@@ -84,6 +84,7 @@ test('each setting changes the picture; the saddle rule changes the contour; a b
     ['iso', '0x10', /^iso="0x10": iso level must be a number from 0.05 to 20, got "0x10"/],
     ['saddle', 'middle', /^saddle="middle": saddle must be one of table, center, decider, got "middle"/],
     ['circles', '0,0', /^circles="0,0": circles: "0,0" is not x,y,r/],
+    ['circles', '0,0,0x1', /^circles="0,0,0x1": circles: "0x1" is not a number/],
     ['show', 'grid,sparkles', /^show="grid,sparkles": show must be all, none, or a comma list of grid, values/]]) {
     await set(page, name, value);
     await drawn(page);
