@@ -91,4 +91,5 @@ declare global {
   interface HTMLElementTagNameMap {
     'metaballs-2d': Metaballs2d;
   }
+  interface HTMLElementEventMap extends Metaballs2dEventMap {}
 }

@@ -10,10 +10,12 @@ use crate::scene::params::{
     ACTIONS, Kind, PARAMETERS, ParamError, Parameter, Value, control_names, parameter,
 };
 use crate::scene::sphere::RADIUS_RANGE;
+use element::ElementApi;
 use metaballs_scene::decimal::num;
 use serde_json::{Value as Json, json};
 
 mod api;
+mod element;
 mod plane;
 mod vectors;
 
@@ -226,70 +228,36 @@ pub fn attributes_js() -> String {
     )
 }
 
+/// `<metaballs-view>`'s declaration: its rows and its author's API (`api.rs`).
+fn view_api() -> ElementApi {
+    ElementApi {
+        class: "MetaballsView",
+        tag: "metaballs-view",
+        module: MODULE,
+        description: "Merging spheres drawn with marching cubes in WebGPU compute shaders (WebGL2 and a CPU \
+                      mesher where WebGPU is missing), with teaching views.",
+        parameters: PARAMETERS.iter().collect(),
+        fields: READ_ONLY.iter().map(|&(name, ty, text)| (name, ty, false, text)).collect(),
+        methods: METHODS,
+        events: EVENTS.to_vec(),
+        parts: PARTS,
+        css_properties: CSS_PROPERTIES,
+    }
+}
+
 /// `www/custom-elements.json`: the Custom Elements Manifest (both elements).
 pub fn custom_elements_json() -> String {
-    let declaration = json!({ "name": "MetaballsView", "module": MODULE });
-    let attributes: Vec<Json> = PARAMETERS
-        .iter()
-        .map(|p| {
-            json!({
-                "name": p.name, "fieldName": p.property(), "type": { "text": ts_type(p) },
-                "default": json!(p.default).to_string(), "description": description(p),
-            })
-        })
-        .collect();
-    let mut members: Vec<Json> = PARAMETERS
-        .iter()
-        .map(|p| {
-            json!({
-                "kind": "field", "name": p.property(), "type": { "text": ts_type(p) },
-                "default": typed_default(p).to_string(), "attribute": p.name, "description": description(p),
-            })
-        })
-        .collect();
-    members.extend(READ_ONLY.iter().map(|(name, ty, text)| {
-        json!({ "kind": "field", "name": name, "type": { "text": ty }, "readonly": true, "description": text })
-    }));
-    members.extend(METHODS.iter().map(|(name, signature, text)| {
-        json!({ "kind": "method", "name": name, "description": text, "signature": signature })
-    }));
     let manifest = json!({
         "schemaVersion": "2.1.0",
         "readme": "README.md",
-        "modules": [{
-            "kind": "javascript-module",
-            "path": MODULE,
-            "declarations": [{
-                "kind": "class",
-                "name": "MetaballsView",
-                "tagName": "metaballs-view",
-                "customElement": true,
-                "description": "Merging spheres drawn with marching cubes in WebGPU compute shaders (WebGL2 \
-                                and a CPU mesher where WebGPU is missing), with teaching views.",
-                "superclass": { "name": "HTMLElement" },
-                "attributes": attributes,
-                "members": members,
-                "events": EVENTS.iter().map(|(name, detail, text)| json!({
-                    "name": name, "type": { "text": format!("CustomEvent<{detail}>") }, "description": text,
-                })).collect::<Vec<_>>(),
-                "cssParts": PARTS.iter().map(|(name, text)| json!({ "name": name, "description": text }))
-                    .collect::<Vec<_>>(),
-                "cssProperties": CSS_PROPERTIES.iter().map(|(name, default, text)| json!({
-                    "name": name, "default": default, "description": text,
-                })).collect::<Vec<_>>(),
-            }],
-            "exports": [
-                { "kind": "js", "name": "MetaballsView", "declaration": declaration },
-                { "kind": "custom-element-definition", "name": "metaballs-view", "declaration": declaration },
-            ],
-        }, plane::module()],
+        "modules": [view_api().module_json(), plane::api().module_json()],
     });
     serde_json::to_string_pretty(&manifest).expect("the manifest is JSON") + "\n"
 }
 
 /// `www/metaballs-view.d.ts`: the element's TypeScript declarations.
 pub fn declarations() -> String {
-    let mut out = String::from(
+    let out = String::from(
         "// TypeScript declarations of <metaballs-view>, written by `metaballs manifest --out www` from the\n\
          // parameter table. Do not edit: change the table (or src/manifest/mod.rs) and run the command.\n\n\
          export interface MetaballsStats {\n  triangles: number;\n  fps: number;\n  frameTime: number;\n  \
@@ -310,34 +278,7 @@ pub fn declarations() -> String {
          bands: (MetaballsLevelCounts & { above: number | null; below: number })[];\n  complete: boolean;\n  \
          undecided: number;\n  wallLevel: number;\n  milliseconds: number;\n  iso: number;\n  counts: MetaballsLevelCounts | null;\n}\n\n",
     );
-    out += "export declare class MetaballsView extends HTMLElement {\n";
-    for p in PARAMETERS {
-        let default = typed_default(p);
-        let doc = format!("  /** {} Attribute `{}`; default {}. */\n", description(p), p.name, default);
-        if p.kind == Kind::Spheres {
-            // Read as the spheres in play; set from the attribute's text or from such a list.
-            let name = p.property();
-            out += &format!(
-                "{doc}  get {name}(): MetaballsSphere[];\n{doc}  set {name}(value: {});\n",
-                ts_type(p)
-            );
-        } else {
-            out += &format!("{doc}  {}: {};\n", p.property(), ts_type(p));
-        }
-    }
-    for (name, ty, text) in READ_ONLY {
-        out += &format!("  /** {text} */\n  readonly {name}: {ty};\n");
-    }
-    for (name, signature, text) in METHODS {
-        out += &format!("  /** {text} */\n  {name}{signature};\n");
-    }
-    out += "}\n\nexport interface MetaballsViewEventMap {\n";
-    for (name, detail, text) in EVENTS {
-        out += &format!("  /** {text} */\n  '{name}': CustomEvent<{detail}>;\n");
-    }
-    out += "}\n\ndeclare global {\n  interface HTMLElementTagNameMap {\n    'metaballs-view': MetaballsView;\n  }\n  \
-            interface HTMLElementEventMap extends MetaballsViewEventMap {}\n}\n";
-    out
+    out + &view_api().typescript()
 }
 
 /// Every file the command writes, by path under `www/`.

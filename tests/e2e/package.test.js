@@ -103,9 +103,20 @@ test('publint passes, and the packed manifest lists every attribute of the table
   assert.equal(JSON.parse(readFileSync(path.join(packed, 'package.json'), 'utf8')).customElements, 'www/custom-elements.json');
 });
 
-test('TypeScript checks a file that uses the element\'s properties, methods and events', () => {
+test('TypeScript checks a file that uses both elements\' properties, methods and events', () => {
   writeFileSync(path.join(project, 'use.ts'), `import 'metaballs-view';
 import type { MetaballsView } from 'metaballs-view';
+import type { Metaballs2d } from 'metaballs-view/metaballs-2d';
+
+const plane: Metaballs2d = document.querySelector('metaballs-2d')!;
+plane.isoLevels = '0.5,1.5';
+plane.saddle = 'decider';
+plane.pause();
+plane.circleList = [{ x: 0, y: 0, r: 0.3 }];
+const step: number | null = plane.stepIndex;
+plane.addEventListener('metaballs-2d-drag', (event) => console.log(event.detail.circles.length, step));
+// @ts-expect-error: not a saddle rule
+plane.saddle = 'middle';
 
 const figure = document.querySelector('metaballs-view')!;
 const iso: number = figure.iso;
