@@ -128,8 +128,9 @@ pub trait Extractor: wgpu::WasmNotSendSync {
     /// A new instance for one renderer, sharing what was compiled for the device.
     fn fresh(&self) -> Box<dyn Extractor>;
 
-    /// The buffers were made anew (grown, or for a new resolution): whatever was bound to the old ones
-    /// is bound again on the next [`Extractor::write`].
+    /// The buffers were made anew (grown, or for a new resolution), or another extractor made the last
+    /// frame's mesh in them: whatever was bound to the old ones is bound again, and whatever was
+    /// written into them is written again, on the next [`Extractor::write`].
     fn buffers_changed(&mut self) {}
 
     /// Pipeline sets compiled for the device so far (shared by every renderer's instance): an extractor

@@ -26,9 +26,14 @@ impl Renderer {
     /// Makes this frame's mesh with the chosen extractor: the room it reports is made first (a fixed
     /// triangle budget clamps instead, as on the device), then it writes into the buffers.
     pub(super) fn make_mesh(&mut self, encoder: &mut wgpu::CommandEncoder, timed: bool) -> DrawCount {
+        let previous = self.stage.active;
         self.stage.active = self.next_extractor();
         let job = self.job_of(self.scene.spheres());
         let active = self.stage.active;
+        if active != previous {
+            // The buffers hold another extractor's mesh.
+            self.stage.extractors[active].buffers_changed();
+        }
         if let Some(room) = self.stage.extractors[active].prepare(&job) {
             let room = self.stage.budgeted(room);
             let capacity = self.stage.buffers.capacity;

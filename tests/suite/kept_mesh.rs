@@ -92,3 +92,42 @@ fn a_frame_of_the_same_job_draws_the_kept_mesh_and_any_change_meshes_anew() {
     assert!(!meshed(&mut extractor, &job), "a mesh made elsewhere for the job was meshed again");
     assert!(!meshed(&mut extractor, &job));
 }
+
+/// The picture of a still CPU-meshed scene at `yaw`, drawn by a renderer of its own.
+fn fresh_picture(settings: metaballs::Settings, yaw: f32) -> Vec<u8> {
+    let mut settings = settings;
+    settings.camera.yaw_degrees = yaw;
+    common::with_renderer(settings, 160, 120, |o| o.render_rgba())
+}
+
+#[test]
+fn a_kept_mesh_turned_or_drawn_after_another_extractor_is_the_picture_of_a_fresh_renderer() {
+    use metaballs::scene::params::view::MeshOn;
+    let mut settings = common::settings(3, 6, 40, 1.0);
+    settings.antialiasing = false;
+    settings.view.mesh_on = MeshOn::Cpu;
+    let (turned, after_gpu) = common::with_renderer(settings, 160, 120, |o| {
+        o.render_rgba();
+        // The camera turned: the same job, its vertices already in the buffers.
+        let mut next = settings;
+        next.camera.yaw_degrees = 75.0;
+        o.renderer.set_settings(next).unwrap();
+        let turned = o.render_rgba();
+        // The GPU's mesh in the same buffers, then the CPU's kept mesh again.
+        next.view.mesh_on = MeshOn::Gpu;
+        o.renderer.set_settings(next).unwrap();
+        o.render_rgba();
+        assert_eq!(o.renderer.mesh_source(), "gpu");
+        next.view.mesh_on = MeshOn::Cpu;
+        next.camera.yaw_degrees = 120.0;
+        o.renderer.set_settings(next).unwrap();
+        let after_gpu = o.render_rgba();
+        assert_eq!(o.renderer.mesh_source(), "cpu");
+        (turned, after_gpu)
+    });
+    assert!(turned == fresh_picture(settings, 75.0), "the turned kept mesh differs from a fresh renderer's");
+    assert!(
+        after_gpu == fresh_picture(settings, 120.0),
+        "the kept mesh after the GPU's differs from a fresh renderer's"
+    );
+}

@@ -83,12 +83,19 @@ pub struct CpuMeshExtractor<M> {
     /// The job (packed) of the mesh held, when it is whole: a frame of the same job (the camera turned,
     /// a view changed, a still figure drawn again) draws it without meshing again.
     held: Vec<f32>,
+    /// The buffers hold the vertices of the mesh held: a frame drawing it again writes its indices only.
+    uploaded: bool,
 }
 
 impl<M: CpuMeshing> CpuMeshExtractor<M> {
     /// Runs anywhere: there is nothing to compile.
     pub fn compile(_device: &wgpu::Device) -> Option<Box<dyn Extractor>> {
         Some(Box::<Self>::default())
+    }
+
+    /// The vertices to write: none where the buffers already hold them.
+    fn unsent<'a>(&self, vertices: &'a [f32]) -> &'a [f32] {
+        if self.uploaded { &[] } else { vertices }
     }
 
     /// What the last mesh needs, even past the buffers' capacity.
@@ -128,11 +135,18 @@ impl<M: CpuMeshing> Extractor for CpuMeshExtractor<M> {
         // Part way through the march the frame meshes its cells on its own, and its mesh is not whole.
         let whole = job.construction.march.is_none();
         let packed = if whole { elsewhere::pack(M::METHOD, job) } else { Vec::new() };
-        match self.given.take() {
-            Some(given) if whole && given.job == packed => self.mesher.install(given),
-            _ if whole && self.held == packed => {}
-            _ => self.mesher.mesh_job(job),
-        }
+        let kept = match self.given.take() {
+            Some(given) if whole && given.job == packed => {
+                self.mesher.install(given);
+                false
+            }
+            _ if whole && self.held == packed => true,
+            _ => {
+                self.mesher.mesh_job(job);
+                false
+            }
+        };
+        self.uploaded &= kept;
         self.held = packed;
         let Counters { vertices, indices, .. } = self.counters();
         Some(Counters { active_blocks: 0, vertices, indices, active_cells: 0 })
@@ -146,15 +160,20 @@ impl<M: CpuMeshing> Extractor for CpuMeshExtractor<M> {
         let (written, drawn) = match output.front_faces {
             Some(viewpoint) if fits && M::METHOD == Method::MarchingCubes => {
                 facing::front_faces(vertices, indices, viewpoint, &mut self.front);
-                (needed.indices, output.buffers.upload(output.queue, vertices, &self.front))
+                (needed.indices, output.buffers.upload(output.queue, self.unsent(vertices), &self.front))
             }
             _ => {
-                let written = output.buffers.upload(output.queue, vertices, indices);
+                let written = output.buffers.upload(output.queue, self.unsent(vertices), indices);
                 (written, written)
             }
         };
+        self.uploaded = fits;
         self.written = written;
         MeshCount::Known { needed, indices: written, drawn }
+    }
+
+    fn buffers_changed(&mut self) {
+        self.uploaded = false;
     }
 
     fn give_mesh(&mut self, mesh: GivenMesh) {
