@@ -54,14 +54,15 @@ impl Parameter {
                 let value = parse_f64(trimmed).ok_or_else(|| invalid(range()))?;
                 check_range(noun, value, self.min, self.max).map(Value::Number)
             }
-            Kind::Number => {
-                let (min, max) = (self.min as f32, self.max as f32);
-                let expected = || format!("a number from {} to {}", num(min), num(max));
-                // Read as the f32 the renderer keeps, and held as that f32's shortest decimal: the
-                // value checked is the value used, and it reads back as itself.
-                let value = parse_f32(trimmed).ok_or_else(|| invalid(expected()))?;
-                check_f32(noun, value, min, max)?;
-                Ok(Value::of_f32(value))
+            // Read as the f32 the renderer keeps, and held as that f32's shortest decimal: the value
+            // checked is the value used, and it reads back as itself.
+            Kind::Number => self.read_f32(noun, trimmed, text).map(Value::of_f32),
+            Kind::Levels => {
+                let mut levels = Vec::new();
+                for item in trimmed.split(',').map(str::trim).filter(|s| !s.is_empty()) {
+                    levels.push(num(self.read_f32(noun, item, item)?).to_string());
+                }
+                Ok(Value::Text(levels.join(",")))
             }
             Kind::Boolean => match trimmed.to_ascii_lowercase().as_str() {
                 "" | "1" | "true" | "on" | "yes" => Ok(Value::Boolean(true)),
@@ -85,43 +86,16 @@ impl Parameter {
                 }
             }
             Kind::List(words, older) => {
-                let list = trimmed.to_ascii_lowercase();
-                if list == "all" || list == "none" {
-                    return Ok(Value::Text(list));
-                }
                 let word = |item: &str| {
                     let item = older.iter().find(|(old, _)| *old == item).map_or(item, |(_, new)| *new);
                     words.iter().find(|w| **w == item).copied()
                 };
-                let items: Option<Vec<&str>> =
-                    list.split(',').map(str::trim).filter(|s| !s.is_empty()).map(word).collect();
-                match items {
-                    Some(items) if !items.is_empty() => Ok(Value::Text(items.join(","))),
-                    _ => Err(invalid(format!("all, none, or a comma list of {}", words.join(", ")))),
-                }
+                read_list(trimmed, word)
+                    .ok_or_else(|| invalid(format!("all, none, or a comma list of {}", words.join(", "))))
             }
-            Kind::Levels => {
-                let mut levels = Vec::new();
-                for item in trimmed.split(',').map(str::trim).filter(|s| !s.is_empty()) {
-                    let level = Parameter { kind: Kind::Number, ..*self };
-                    levels.push(level.parse_as(given, item)?.to_text());
-                }
-                Ok(Value::Text(levels.join(",")))
-            }
-            Kind::Controls => {
-                let list = trimmed.to_ascii_lowercase();
-                if list == "all" || list == "none" {
-                    return Ok(Value::Text(list));
-                }
-                let items: Option<Vec<&str>> =
-                    list.split(',').map(str::trim).filter(|s| !s.is_empty()).map(control).collect();
-                match items {
-                    Some(items) if !items.is_empty() => Ok(Value::Text(items.join(","))),
-                    _ => {
-                        Err(invalid(format!("all, none, or a comma list of {}", control_names().join(", "))))
-                    }
-                }
-            }
+            Kind::Controls => read_list(trimmed, control).ok_or_else(|| {
+                invalid(format!("all, none, or a comma list of {}", control_names().join(", ")))
+            }),
             Kind::Slice => Slice::parse(trimmed).map(|slice| Value::Text(Slice::text(slice))),
             Kind::Cell => March::parse(trimmed).map(|cell| Value::Text(March::text(cell))),
             Kind::Text => Ok(Value::Text(text.to_string())),
@@ -135,6 +109,30 @@ impl Parameter {
                 }),
         }
     }
+}
+
+impl Parameter {
+    /// `trimmed` read as an f32 in this parameter's range; the error calls it `noun` and quotes `text`.
+    fn read_f32(&self, noun: &'static str, trimmed: &str, text: &str) -> Result<f32, ParamError> {
+        let (min, max) = (self.min as f32, self.max as f32);
+        let value = parse_f32(trimmed).ok_or_else(|| ParamError::Invalid {
+            name: noun,
+            value: text.to_string(),
+            expected: format!("a number from {} to {}", num(min), num(max)),
+        })?;
+        check_f32(noun, value, min, max)
+    }
+}
+
+/// `all`, `none`, or a comma list of words each read by `word` (normalised); `None` where one is none.
+fn read_list(trimmed: &str, word: impl Fn(&str) -> Option<&'static str>) -> Option<Value> {
+    let list = trimmed.to_ascii_lowercase();
+    if list == "all" || list == "none" {
+        return Some(Value::Text(list));
+    }
+    let items: Option<Vec<&str>> =
+        list.split(',').map(str::trim).filter(|s| !s.is_empty()).map(word).collect();
+    items.filter(|items| !items.is_empty()).map(|items| Value::Text(items.join(",")))
 }
 
 /// Reads `text` as the value of the parameter called `name` (any of its names).
