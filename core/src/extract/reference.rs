@@ -82,6 +82,7 @@ impl Construction {
         let decided = self.case_table != CaseTable::Classic;
         let joined = if decided { face_choices(case, values, iso) } else { 0 };
         let code = if self.case_table == CaseTable::Mc33 { interior_code(values, iso) } else { 0 };
+        let (joined, code) = self.drawn_choices(joined, code);
         let mut n = 0;
         for t in decided_triangles(case, joined, code) {
             out[n] = t;
@@ -92,6 +93,16 @@ impl Construction {
 }
 
 impl Construction {
+    /// Of a cell's face choices (`joined`) and interior code, those its case table draws with: none for
+    /// the classic table, the faces' for the decider, both for MC33.
+    pub fn drawn_choices(&self, joined: u8, code: u32) -> (u8, u32) {
+        match self.case_table {
+            CaseTable::Classic => (0, 0),
+            CaseTable::Decider => (joined, 0),
+            CaseTable::Mc33 => (joined, code),
+        }
+    }
+
     /// Where on an edge from value `fa` to value `fb` the vertex for level `iso` lands, never nearer an
     /// end than `EDGE_MARGIN`.
     pub fn edge_parameter(&self, iso: f32, fa: f32, fb: f32) -> f32 {
@@ -206,18 +217,29 @@ pub fn surface_vertex(
     (pa, fa, a_on_wall): (Vec3, f32, bool),
     (pb, fb, b_on_wall): (Vec3, f32, bool),
 ) -> (Vec3, Vec3) {
-    let t = construction.edge_parameter(iso, fa, fb);
-    let p = pa + (pb - pa) * t;
+    let (p, fallback) = edge_point(construction, iso, (pa, fa), (pb, fb));
     let normal = if a_on_wall {
         (pa - pb).normalize()
     } else if b_on_wall {
         (pb - pa).normalize()
     } else {
         let g = outward_gradient(spheres, p, construction.blend);
-        let fallback = if fa > iso { pb - pa } else { pa - pb };
         g.try_normalize().unwrap_or(fallback.normalize())
     };
     (p, normal)
+}
+
+/// Where the edge from `pa` (value `fa`) to `pb` (value `fb`) crosses `iso`, and the direction along
+/// the edge from inside to outside (the normal where the gradient vanishes), unnormalised.
+pub fn edge_point(
+    construction: Construction,
+    iso: f32,
+    (pa, fa): (Vec3, f32),
+    (pb, fb): (Vec3, f32),
+) -> (Vec3, Vec3) {
+    let t = construction.edge_parameter(iso, fa, fb);
+    let p = pa + (pb - pa) * t;
+    (p, if fa > iso { pb - pa } else { pa - pb })
 }
 
 /// Field values at every grid point, boundary points forced to 0 (outside).

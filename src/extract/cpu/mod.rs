@@ -93,11 +93,6 @@ impl<M: CpuMeshing> CpuMeshExtractor<M> {
         Some(Box::<Self>::default())
     }
 
-    /// The vertices to write: none where the buffers already hold them.
-    fn unsent<'a>(&self, vertices: &'a [f32]) -> &'a [f32] {
-        if self.uploaded { &[] } else { vertices }
-    }
-
     /// What the last mesh needs, even past the buffers' capacity.
     fn counters(&self) -> Counters {
         let (active_blocks, active_cells) = self.mesher.blocks_and_cells();
@@ -157,16 +152,17 @@ impl<M: CpuMeshing> Extractor for CpuMeshExtractor<M> {
         let (vertices, indices) = (self.mesher.vertices(), self.mesher.indices());
         let fits = output.buffers.holds(needed.vertices, needed.indices);
         // A whole marching-cubes mesh is closed, so from outside the box its back faces never show.
-        let (written, drawn) = match output.front_faces {
+        let front = match output.front_faces {
             Some(viewpoint) if fits && M::METHOD == Method::MarchingCubes => {
                 facing::front_faces(vertices, indices, viewpoint, &mut self.front);
-                (needed.indices, output.buffers.upload(output.queue, self.unsent(vertices), &self.front))
+                true
             }
-            _ => {
-                let written = output.buffers.upload(output.queue, self.unsent(vertices), indices);
-                (written, written)
-            }
+            _ => false,
         };
+        // The vertices of a mesh drawn again are in the buffers already.
+        let sent = if self.uploaded { &[][..] } else { vertices };
+        let drawn = output.buffers.upload(output.queue, sent, if front { &self.front } else { indices });
+        let written = if front { needed.indices } else { drawn };
         self.uploaded = fits;
         self.written = written;
         MeshCount::Known { needed, indices: written, drawn }

@@ -16,14 +16,14 @@ use crate::extract::cpu::blocks::Blocks;
 use crate::extract::cpu::planes::{ALL_INSIDE, Planes, Sweep};
 use crate::extract::cpu::vertices::{EdgeVertices, Field};
 use crate::extract::decider::{
-    MAX_DECIDED_TRIANGLES, ambiguous_faces, decided_triangles, face_choices, has_tunnel, tunnel_possible,
+    ambiguous_faces, decided_triangles, face_choices, has_tunnel, tunnel_possible,
 };
 use crate::extract::field::{BLOCK_CELLS, Spheres};
 use crate::extract::interior::interior_code;
 use crate::extract::mesh::IndexedMesh;
 use crate::extract::reference::{Construction, Grid};
 use crate::extract::tables::EDGE_TABLE;
-use crate::scene::params::view::{Blend, CaseTable, March};
+use crate::scene::params::view::{Blend, March};
 use crate::scene::{BOX_HALF_EXTENT, Sphere};
 use std::ops::Range;
 
@@ -252,19 +252,9 @@ impl CpuMesher {
                     }
                     // The triangles `Construction::cell_triangles` gives, from the choices made above
                     // (where no interior join can make a tunnel, every one gives the same triangles).
-                    let (joined, code) = match construction.case_table {
-                        CaseTable::Classic => (0, 0),
-                        CaseTable::Decider => (joined, 0),
-                        CaseTable::Mc33 => (joined, code),
-                    };
-                    let mut triangles = [[0; 3]; MAX_DECIDED_TRIANGLES];
-                    let mut count = 0;
-                    for (slot, t) in triangles.iter_mut().zip(decided_triangles(case, joined, code)) {
-                        *slot = t;
-                        count += 1;
-                    }
+                    let (joined, code) = construction.drawn_choices(joined, code);
                     // The tables wind clockwise seen from outside; emit counter-clockwise.
-                    self.edges.number([x, y, z], &triangles[..count], &mut self.indices);
+                    self.edges.number([x, y, z], decided_triangles(case, joined, code), &mut self.indices);
                 }
             }
         }
@@ -275,6 +265,7 @@ impl CpuMesher {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::extract::decider::MAX_DECIDED_TRIANGLES;
     use crate::extract::reference;
     use crate::scene::Scene;
 

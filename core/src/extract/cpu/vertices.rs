@@ -92,7 +92,12 @@ impl EdgeVertices {
     /// Appends to `indices` the numbers of the vertices on the corners of `triangles` of `cell` (in the
     /// current layer), each triangle's corners in the order `[0, 2, 1]`, numbering the vertices of
     /// edges that have none yet.
-    pub fn number(&mut self, cell: [u32; 3], triangles: &[[usize; 3]], indices: &mut Vec<u32>) {
+    pub fn number(
+        &mut self,
+        cell: [u32; 3],
+        triangles: impl IntoIterator<Item = [usize; 3]>,
+        indices: &mut Vec<u32>,
+    ) {
         // Room for a new vertex on every edge of the cell.
         if self.fresh.len() < self.fresh_count + 12 {
             self.fresh.resize(self.fresh_count + 12, [0; 4]);
@@ -143,11 +148,9 @@ impl EdgeVertices {
             let (pa, pb) = (point(a), point(b));
             let (a_on_wall, b_on_wall) = (boundary(a), boundary(b));
             if by_sum && !a_on_wall && !b_on_wall {
-                // Placed as `reference::surface_vertex` places it; the normal follows with the layer's
-                // others.
-                let t = construction.edge_parameter(iso, fa, fb);
-                let p = pa + (pb - pa) * t;
-                let fallback = if fa > iso { pb - pa } else { pa - pb };
+                // Placed as `reference::surface_vertex` places it (`edge_point`); the normal follows
+                // with the layer's others.
+                let (p, fallback) = reference::edge_point(construction, iso, (pa, fa), (pb, fb));
                 self.normals.push(id, p, fallback);
                 vertices.extend_from_slice(&[p.x, p.y, p.z, 0.0, 0.0, 0.0]);
                 continue;
