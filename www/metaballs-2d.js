@@ -36,6 +36,13 @@ canvas { display: block; width: 100%; height: 100%; touch-action: none; cursor: 
 #notice { position: absolute; left: 8px; right: 8px; bottom: 8px; padding: 6px 8px; border-radius: 6px;
   background: #3b2f12; border: 1px solid #8a6a1f; color: #ffe2a3; }
 #notice[hidden] { display: none; }
+/* A narrow figure: the step-through below the picture, scrolling within its own height; a small one:
+   the panel over the picture's upper part, and controls a finger can hit (at least 24 × 24 CSS px). */
+:host([march]:state(stacked)) { display: block; }
+:host(:state(stacked)) .side { contain: none; height: min(70vh, 480px); margin: 8px 0 0; }
+:host(:state(compact)) .panel { max-height: 55%; }
+:host(:state(compact)) :is(button, select, summary, input) { min-height: 24px; }
+:host(:state(compact)) :is(button, input) { min-width: 24px; }
 /* In print: the picture as vector art (kept while the figure is still, and made before printing) in
    place of the canvas, without the controls or the step-through's panel. */
 .print { display: none; position: absolute; inset: 0; }
@@ -45,6 +52,10 @@ canvas { display: block; width: 100%; height: 100%; touch-action: none; cursor: 
   .print:not(:empty) { display: block; }
   .print:not(:empty) + canvas, .controls, .side, #notice { display: none; }
 }`;
+
+/** Narrower than this (CSS pixels), the step-through goes below the picture; the panel gets smaller. */
+const STACK_PX = 520;
+const COMPACT_PX = 440;
 
 /** The 2D figure's rows of the parameter table, by every spelling. */
 export const PLANE_ROWS = new Rows(PLANE_TABLE);
@@ -107,7 +118,10 @@ export class Metaballs2d extends Base {
   }
 
   connectedCallback() {
-    this.#observer = new ResizeObserver(() => { if (this.isConnected) this.#ctx.frames.draw(); });
+    this.#observer = new ResizeObserver(([entry]) => {
+      this.#fit(entry.contentRect.width);
+      if (this.isConnected) this.#ctx.frames.draw();
+    });
     this.#observer.observe(this);
     this.#ctx.each('refresh', this.#ctx.state);
     this.#ctx.each('connected');
@@ -115,6 +129,17 @@ export class Metaballs2d extends Base {
   }
 
   #observer = null;
+  #states = this.attachInternals?.().states ?? null;
+
+  // A narrow figure (its own width, not the page's) stacks the step-through below the picture
+  // (`:state(stacked)`), and a small one keeps its panel over the picture's upper part (`:state(compact)`).
+  #fit(width) {
+    if (!this.#states || !(width > 0)) return;
+    for (const [state, on] of [['stacked', width < STACK_PX], ['compact', width < COMPACT_PX]]) {
+      if (on) this.#states.add(state);
+      else this.#states.delete(state);
+    }
+  }
 
   disconnectedCallback() {
     this.#observer?.disconnect();

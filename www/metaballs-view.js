@@ -37,6 +37,7 @@ import { Sync } from './lib/features/sync.js';
 import { TableChange } from './lib/features/table-change.js';
 import { TopologyWatch } from './lib/features/topology.js';
 import { IsoLevels } from './lib/features/levels.js';
+import { FigureSheets } from './lib/features/sheets.js';
 
 // The setting that holds spheres placed by hand, as text.
 const SPHERE_LIST = nameOfKind('spheres');
@@ -49,7 +50,7 @@ const readSetting = (spelling, text) => {
 
 // The features every figure has, in the order they hear of changes and frames.
 const FEATURES = [FigureSize, FigureDetail, Look, Guard, Hud, Playback, Camera, Inspector, Stepper, SphereEditor,
-  SceneFiles, TopologyWatch, IsoLevels, TableChange, Sync, ErrorPlot, Panel];
+  SceneFiles, TopologyWatch, IsoLevels, TableChange, Sync, ErrorPlot, Panel, FigureSheets];
 
 export class MetaballsView extends FigureBase {
   /** GPU memory held by every element's buffers and targets, in bytes. */

@@ -101,6 +101,8 @@ export function drawPlot(result, iso, { measures = null, levels = [], onIso, onD
     class: 'cursor', tabindex: 0, role: 'slider', 'aria-label': 'Iso level', 'aria-valuenow': iso,
     'aria-valuemin': round4(low), 'aria-valuemax': round4(high), 'aria-valuetext': `iso ${round4(iso)}`,
   });
+  // A finger's target: 26 units wide (at least 24 CSS px as the plot is drawn), the whole plot high.
+  cursor.append(node('rect', { x: x(iso) - 13, y: top - 6, width: 26, height: h - bottom - top + 6, class: 'hit' }));
   cursor.append(node('line', { x1: x(iso), x2: x(iso), y1: top - 4, y2: h - bottom, class: 'cursor-line' }));
   cursor.append(node('rect', { x: x(iso) - 5, y: top - 6, width: 10, height: 8, rx: 2, class: 'cursor-grip' }));
   svg.append(cursor);
@@ -179,6 +181,7 @@ export function drawTree(result, iso, onJoin) {
     const [left, right] = [tree[a].spheres, tree[b].spheres];
     const label = `Spheres ${left.join(', ')} and ${right.join(', ')} join at f = ${round4(n.value)}`;
     const button = node('g', { class: 'join', tabindex: 0, role: 'button', 'aria-label': label, 'data-node': k });
+    button.append(node('circle', { cx: x(k), cy: level, r: 13, class: 'hit' }));
     button.append(node('circle', { cx: x(k), cy: level, r: 4.5, fill: ROLE_COLORS.join }));
     button.append(node('title', {}, `${label}: choose to set the iso level just below`));
     const choose = (event) => { event.preventDefault(); onJoin(k); };

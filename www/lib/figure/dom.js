@@ -3,6 +3,8 @@
 // import the module). Shadow DOM keeps the host page's rules out and these in; pages restyle the figure
 // through the custom properties and ::part() names below (README, custom-elements.json).
 
+import { COMPACT_STYLE } from './compact-style.js';
+
 // The light theme's colours (theme="light", and theme="auto" where the reader prefers light).
 const LIGHT = `
   --panel: var(--metaballs-panel-background, rgba(250, 251, 253, 0.92));
@@ -69,7 +71,7 @@ const STYLE = `
 @media print {
   :host { box-shadow: none !important; break-inside: avoid; }
   canvas, #panel, #hud, #play, #notice, #wheel-hint, #confirm, #inspector, #march, #sphere-box, #edit-overlay,
-  #critical-marks, #levels-box, #message { display: none !important; }
+  #critical-marks, #levels-box, #message, #tabs { display: none !important; }
   #poster[src] { display: block; }
   #print-frame[src] { display: block; }
 }
@@ -115,7 +117,7 @@ summary:focus-visible { outline: 2px solid var(--accent); outline-offset: -2px; 
   gap: 6px;
   margin: 4px 0;
 }
-.control label { color: var(--muted); overflow: hidden; text-overflow: ellipsis; white-space: nowrap; }
+.control label { color: var(--muted); overflow-wrap: anywhere; }
 .control output { text-align: right; font-variant-numeric: tabular-nums; }
 input { margin: 0; font: inherit; }
 input[type="range"] { width: 100%; accent-color: var(--accent); }
@@ -154,7 +156,7 @@ button:focus-visible, input:focus-visible { outline: 2px solid var(--accent); ou
 #hud[hidden] { display: none; }
 #hud summary { padding: 0 0 2px; font-size: 11.5px; }
 #hud details:not([open]) summary { padding: 0; }
-#hud div { white-space: nowrap; overflow: hidden; text-overflow: ellipsis; }
+#hud div { overflow-wrap: anywhere; }
 #hud #hud-lod ol { list-style: none; margin: 0; padding: 0; }
 #hud #hud-lod li i { display: inline-block; width: 8px; height: 8px; margin-right: 4px; border-radius: 2px; }
 figure.error-plot { margin: 6px 0 0; font-size: 11px; }
@@ -167,9 +169,10 @@ div.levels line.grid { stroke: currentColor; opacity: 0.2; }
 div.levels rect.walls { fill: currentColor; opacity: 0.08; }
 div.levels .cursor-line { stroke: var(--accent); stroke-width: 1.5; }
 div.levels .cursor-grip { fill: var(--accent); cursor: ew-resize; }
+div.levels .hit { fill: transparent; }
 div.levels .branch { stroke: currentColor; fill: none; opacity: 0.7; }
 div.levels .join { cursor: pointer; }
-div.levels .join:focus-visible circle, div.levels .cursor:focus-visible rect { stroke: var(--accent); stroke-width: 2; }
+div.levels .join:focus-visible circle:not(.hit), div.levels .cursor:focus-visible rect:not(.hit) { stroke: var(--accent); stroke-width: 2; }
 div.levels ol.critical-levels { margin: 4px 0 0; padding-left: 18px; font-size: 11px; max-height: 8em; overflow: auto; }
 #hud #hud-field-warning { color: #ffb86b; max-width: 28em; white-space: normal; overflow: visible; text-overflow: clip; }
 #critical-marks { position: absolute; inset: 0; pointer-events: none; overflow: hidden; }
@@ -338,7 +341,7 @@ let sheet = null;
 export function elementStyle() {
   if (!sheet) {
     sheet = new CSSStyleSheet();
-    sheet.replaceSync(STYLE);
+    sheet.replaceSync(STYLE + COMPACT_STYLE);
   }
   return sheet;
 }
@@ -350,6 +353,7 @@ export const TEMPLATE = `
   <canvas id="view" tabindex="0" part="canvas" role="img" aria-describedby="how"></canvas>
   <span id="how" class="visually-hidden">Drag to orbit, click then wheel to zoom; P pauses.</span>
   <div id="announce" class="visually-hidden" role="status" aria-live="polite"></div>
+  <div id="tabs" role="group" aria-label="Boxes" hidden></div>
   <aside id="panel" part="panel" aria-label="Controls" hidden></aside>
   <section id="hud" part="hud" aria-label="Statistics" aria-live="off" hidden>
     <details open><summary>Statistics</summary>
