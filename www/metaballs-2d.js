@@ -37,12 +37,13 @@ canvas { display: block; width: 100%; height: 100%; touch-action: none; cursor: 
   background: #3b2f12; border: 1px solid #8a6a1f; color: #ffe2a3; }
 #notice[hidden] { display: none; }
 /* A narrow figure: the step-through below the picture, scrolling within its own height; a small one:
-   the panel over the picture's upper part, and controls a finger can hit (at least 24 × 24 CSS px). */
+   the panel over the picture's upper part. Controls a finger can hit: at least 24 × 24 CSS px. */
 :host([march]:state(stacked)) { display: block; }
 :host(:state(stacked)) .side { contain: none; height: min(70vh, 480px); margin: 8px 0 0; }
 :host(:state(compact)) .panel { max-height: 55%; }
-:host(:state(compact)) :is(button, select, summary, input) { min-height: 24px; }
-:host(:state(compact)) :is(button, input) { min-width: 24px; }
+:is(button, select, summary, input:not([type=checkbox])) { min-height: 24px; }
+:host(:state(compact)) input[type=checkbox] { width: 24px; height: 24px; margin: 0; }
+button { min-width: 24px; }
 /* In print: the picture as vector art (kept while the figure is still, and made before printing) in
    place of the canvas, without the controls or the step-through's panel. */
 .print { display: none; position: absolute; inset: 0; }

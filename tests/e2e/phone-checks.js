@@ -98,7 +98,7 @@ export function figureContrast(host) {
     if (!own || ['STYLE', 'SCRIPT', 'OPTION'].includes(element.tagName)) continue;
     const style = getComputedStyle(element);
     if (style.display === 'none' || style.visibility === 'hidden' || element.closest('[hidden]')) continue;
-    if (element.getClientRects().length === 0 || element.closest('.visually-hidden')) continue;
+    if (element.getClientRects().length === 0 || element.closest('.visually-hidden, [aria-hidden="true"]')) continue;
     texts += 1;
     // The backgrounds from the text out to the host, each one's opacity included.
     const layers = [];

@@ -106,3 +106,136 @@ test('on a phone, every box of every lecture figure opened in turn leaves the pi
   assert.deepEqual(errors, []);
   await close();
 });
+
+test('on a phone, the 2D page with its panel and its step-through open stays in the figure, its picture in view', async () => {
+  const { page, errors, close } = await openAs(PHONE, 'squares.html');
+  const figure = await page.$('metaballs-2d');
+  await showFigure(page, figure);
+  await assertLaidOut(page, figure, 'the 2D page');
+  await tap(page, page.locator('metaballs-2d >> .panel summary'));
+  await page.waitForFunction((e) => e.shadowRoot.querySelector('.panel').open, figure);
+  await assertLaidOut(page, figure, 'the 2D page with its panel');
+  await page.screenshot({ path: path.join(outputDir, 'phone-squares-panel.png') });
+  const step = page.locator('metaballs-2d >> button[data-action="step-through"]');
+  await step.scrollIntoViewIfNeeded();
+  await tap(page, step);
+  await page.waitForFunction((e) => e.stepIndex !== null, figure);
+  // The step-through below the picture, its steps by touch.
+  const before = await figure.evaluate((e) => e.stepIndex);
+  const forward = page.locator('metaballs-2d >> button[data-do="forward"]');
+  await forward.scrollIntoViewIfNeeded();
+  await tap(page, forward);
+  await page.waitForFunction(([e, k]) => e.stepIndex === k + 1, [figure, before]);
+  await figure.evaluate((e) => e.scrollIntoView({ block: 'start' }));
+  await assertLaidOut(page, figure, 'the 2D page with its step-through');
+  await page.screenshot({ path: path.join(outputDir, 'phone-squares-march.png') });
+  assert.deepEqual(errors, []);
+  await close();
+});
+
+test('the teaching gestures work with a finger: a cell picked, a sphere and a circle dragged, the iso cursor, a join, a step', async () => {
+  const { page, errors, close } = await openAs(PHONE, LECTURE);
+  const figure = async (id) => {
+    const handle = await page.$(`#${id} metaballs-view, #${id} metaballs-2d`);
+    await showFigure(page, handle);
+    return handle;
+  };
+  const at = async (handle, x, y) => {
+    const box = await handle.boundingBox();
+    return [box.x + x, box.y + y];
+  };
+
+  // A cell picked by a tap on the surface: the inspector opens, as the sheet below the picture.
+  const cells = await figure('cells');
+  const sphere = await cells.evaluate((e) => e.sphereOnScreen(0));
+  await page.touchscreen.tap(...(await at(cells, sphere.x, sphere.y)));
+  await page.waitForFunction((e) => e.inspected !== null, cells);
+  await page.waitForFunction((e) => e.shadowRoot.getElementById('inspector').classList.contains('shown'), cells);
+  await cells.evaluate((e) => e.scrollIntoView({ block: 'start' }));
+  await assertLaidOut(page, cells, 'cells with the inspector');
+  await page.screenshot({ path: path.join(outputDir, 'phone-cells-inspector.png') });
+
+  // A sphere grabbed by a long press and dragged: it moves.
+  const byHand = await figure('by-hand');
+  const grabbed = await byHand.evaluate((e) => e.sphereOnScreen(1));
+  const listBefore = await byHand.evaluate((e) => e.sphereList);
+  const from = await at(byHand, grabbed.x, grabbed.y);
+  // A tap first focuses the figure (and selects the sphere), so that a finger's drag is the figure's.
+  await page.touchscreen.tap(...from);
+  await page.waitForFunction((e) => e.selectedSphere === 1, byHand);
+  await touchDrag(page, from, [from[0], from[1] + 50], { holdMs: 700, steps: 8 });
+  await page.waitForFunction(([e, y]) => e.sphereList[1].center[1] < y - 0.05, [byHand, listBefore[1].center[1]]);
+
+  // A circle of the 2D figure dragged.
+  const squares = await figure('squares');
+  const [circle] = await squares.evaluate((e) => e.circleList.map((c) => ({ ...c })));
+  const box = await squares.boundingBox();
+  const inPlane = (x, y) => [box.x + box.width * (0.03 + (0.94 * (x + 1)) / 2), box.y + box.height * (0.03 + (0.94 * (1 - y)) / 2)];
+  await touchDrag(page, inPlane(circle.x, circle.y), inPlane(circle.x - 0.3, circle.y - 0.2), { steps: 8 });
+  const [moved] = await squares.evaluate((e) => e.circleList);
+  assert.ok(Math.abs(moved.x - (circle.x - 0.3)) < 0.05 && Math.abs(moved.y - (circle.y - 0.2)) < 0.05, JSON.stringify(moved));
+
+  // The iso cursor dragged along the plot, and a join of the merge tree chosen.
+  const tree = await figure('merge-tree');
+  await page.waitForSelector('#merge-tree >> div.levels svg.levels-plot', { timeout: 90_000 });
+  const plot = await page.locator('#merge-tree >> div.levels svg.levels-plot').boundingBox();
+  const isoBefore = await tree.evaluate((e) => Number(e.iso));
+  await touchDrag(page, [plot.x + plot.width * 0.6, plot.y + plot.height * 0.5], [plot.x + plot.width * 0.3, plot.y + plot.height * 0.5]);
+  const isoDragged = await tree.evaluate((e) => Number(e.iso));
+  assert.ok(isoDragged < isoBefore, `iso after a drag to the left: ${isoDragged} (was ${isoBefore})`);
+  // (The last join drawn is on top of its neighbours' targets.)
+  const join = page.locator('#merge-tree >> svg.merge-tree g.join').last();
+  const joinLevel = Number((await join.getAttribute('aria-label')).match(/f = ([\d.]+)/)[1]);
+  await join.scrollIntoViewIfNeeded();
+  await tap(page, join);
+  await page.waitForFunction(([e, f]) => Number(e.iso) < f && Number(e.iso) > f * 0.9, [tree, joinLevel]);
+
+  // The march stepped by a tap on its forward button.
+  const march = await figure('march-3d');
+  const where = () => march.evaluate((e) => e.shadowRoot.querySelector('#march .where').textContent);
+  const stepBefore = Number((await where()).match(/Step (\d+)/)[1]);
+  const forward = page.locator('#march-3d >> button[data-do="forward"]');
+  await forward.scrollIntoViewIfNeeded();
+  await tap(page, forward);
+  await page.waitForFunction(([e, k]) => e.shadowRoot.querySelector('#march .where').textContent.startsWith(`Step ${k + 1} `), [march, stepBefore]);
+  assert.deepEqual(errors, []);
+  await close();
+});
+
+/** Waits until every figure of the page has loaded and drawn, each scrolled to in turn. */
+async function everyFigureLoaded(page) {
+  for (const handle of await page.$$('metaballs-view, metaballs-2d')) await showFigure(page, handle);
+}
+
+for (const [width, device] of [['phone', PHONE], ['desktop', DESKTOP]]) {
+  for (const theme of ['dark', 'light']) {
+    test(`axe-core's WCAG 2.2 AA rules and every text's contrast, on the lecture and the 2D page, ${width}, ${theme} theme`, async () => {
+      for (const url of [LECTURE, 'squares.html']) {
+        const { page, errors, close } = await openAs(device, url);
+        if (theme === 'light') await page.$$eval('metaballs-view, metaballs-2d', (all) => all.forEach((e) => e.setAttribute('theme', 'light')));
+        await everyFigureLoaded(page);
+        await page.$$eval('metaballs-view, metaballs-2d', (all) => all.forEach((e) => {
+          for (const d of e.shadowRoot.querySelectorAll('details')) d.open = true;
+        }));
+        let texts = 0;
+        for (const handle of await page.$$('metaballs-view, metaballs-2d')) {
+          const checked = await handle.evaluate(figureContrast);
+          texts += checked.texts;
+          assert.deepEqual(checked.failing, [], `${url}: texts under their contrast`);
+        }
+        assert.ok(texts >= 10, `${url}: ${texts} texts checked`);
+        await page.addScriptTag({ path: path.join(root, 'tests/e2e/node_modules/axe-core/axe.min.js') });
+        const violations = await page.evaluate(async () => {
+          const result = await window.axe.run(document, {
+            runOnly: { type: 'tag', values: ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa', 'wcag22aa'] },
+            resultTypes: ['violations'],
+          });
+          return result.violations.map((v) => `${v.id} (${v.impact}): ${v.nodes.slice(0, 3).map((n) => n.target.join(' ')).join(' | ')}`);
+        });
+        assert.deepEqual(violations, [], `${url}, ${width}, ${theme}`);
+        assert.deepEqual(errors, []);
+        await close();
+      }
+    });
+  }
+}

@@ -274,7 +274,9 @@ export class IsoLevels {
     const { svg } = this.#plot;
     const key = document.createElement('p');
     key.className = 'hint';
-    key.innerHTML = '<span style="color:#e77661">━</span> surfaces · <span style="color:#4aa3ff">╍</span> genus · <span style="color:#5ec962">━</span> area · <span style="color:#21918c">╍</span> volume (scaled) · shaded: the surface reaches the walls';
+    // The swatches are samples of the plot's lines (graphics, not text).
+    const swatch = (color, line) => `<span aria-hidden="true" class="swatch" style="color:${color}">${line}</span>`;
+    key.innerHTML = `${swatch('#e77661', '━')} surfaces · ${swatch('#4aa3ff', '╍')} genus · ${swatch('#5ec962', '━')} area · ${swatch('#21918c', '╍')} volume (scaled) · shaded: the surface reaches the walls`;
     const tree = drawTree(result, iso, (k) => this.#chooseJoin(result, k));
     const list = document.createElement('ol');
     list.className = 'critical-levels';
@@ -282,7 +284,7 @@ export class IsoLevels {
     list.setAttribute('aria-label', 'Critical levels, highest first');
     for (const p of result.points.filter((q) => q.value > 0).slice(0, 24)) {
       const item = document.createElement('li');
-      item.innerHTML = `<i style="color:${ROLE_COLORS[p.role]}">${MARK[p.index]}</i> f = ${round4(p.value)}: ${ROLE_WORDS[p.role]}`;
+      item.innerHTML = `<i aria-hidden="true" style="color:${ROLE_COLORS[p.role]}">${MARK[p.index]}</i> f = ${round4(p.value)}: ${ROLE_WORDS[p.role]}`;
       list.append(item);
     }
     // Focus stays where it was across the redraw: the cursor, a join of the tree, or the list.

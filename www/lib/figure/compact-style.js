@@ -11,7 +11,7 @@ const LOWER = '#play, #tabs, #notice, #wheel-hint';
 const PICTURE = 'calc(100cqw * 9 / 16)';
 
 export const COMPACT_STYLE = `
-button, select, summary { min-height: 24px; }
+button, select, summary, input[type="range"] { min-height: 24px; }
 button { min-width: 24px; }
 #tabs {
   position: absolute;

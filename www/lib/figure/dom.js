@@ -16,6 +16,10 @@ const LIGHT = `
   --button-hover: #dde1e9;
   --border: #a9b1c2;
   --on-accent: #ffffff;
+  --in: #a84b00;
+  --out: #2455c3;
+  --bad: #b3261e;
+  --warn: #8a4500;
   background: var(--metaballs-poster-color, #e4e8ef);
   color-scheme: light;`;
 
@@ -30,6 +34,10 @@ const STYLE = `
   --button-hover: #2c3245;
   --border: #3d4559;
   --on-accent: #1a0d0a;
+  --in: #ff9a3d;
+  --out: #7aa7ff;
+  --bad: #ff6b5e;
+  --warn: #ffb86b;
   display: block;
   position: relative;
   width: 100%;
@@ -174,14 +182,15 @@ div.levels .branch { stroke: currentColor; fill: none; opacity: 0.7; }
 div.levels .join { cursor: pointer; }
 div.levels .join:focus-visible circle:not(.hit), div.levels .cursor:focus-visible rect:not(.hit) { stroke: var(--accent); stroke-width: 2; }
 div.levels ol.critical-levels { margin: 4px 0 0; padding-left: 18px; font-size: 11px; max-height: 8em; overflow: auto; }
-#hud #hud-field-warning { color: #ffb86b; max-width: 28em; white-space: normal; overflow: visible; text-overflow: clip; }
+#hud #hud-field-warning { color: var(--warn); max-width: 28em; white-space: normal; overflow: visible; text-overflow: clip; }
 #critical-marks { position: absolute; inset: 0; pointer-events: none; overflow: hidden; }
-#critical-marks span { position: absolute; left: 0; top: 0; margin: -0.6em 0 0 -0.45em; font: 11px/1 system-ui, sans-serif;
-  text-shadow: 0 0 2px #000, 0 0 2px #000; white-space: nowrap; }
+/* Each mark on a dark chip, so that it reads over any part of the picture. */
+#critical-marks span { position: absolute; left: 0; top: 0; margin: calc(-0.6em - 1px) 0 0 calc(-0.45em - 3px);
+  padding: 1px 3px; border-radius: 3px; background: rgba(11, 13, 18, 0.85); font: 11px/1 system-ui, sans-serif; white-space: nowrap; }
 #hud #hud-quality-bars { display: inline-flex; align-items: flex-end; gap: 1px; height: 14px; vertical-align: middle; }
 #hud #hud-quality-bars i { display: inline-block; width: 6px; background: currentColor; opacity: 0.8; }
 #hud .key { display: inline-block; width: 56px; color: var(--muted); }
-#overflow { color: #ffb347; white-space: normal !important; }
+#overflow { color: var(--warn); white-space: normal !important; }
 /* Small figures keep the statistics to frames per second and triangles. */
 @container (max-width: 480px) { #hud .wide { display: none; } }
 
@@ -287,10 +296,10 @@ svg .corner-number { fill: var(--muted); font-size: 9px; }
 #inspector .inspector-body { display: flex; gap: 8px; align-items: flex-start; }
 #inspector .drawing { display: flex; flex-wrap: wrap; gap: 4px; }
 #inspector canvas.interpolant { position: static; width: 96px; height: 96px; cursor: default; }
-#inspector .in { color: #ff9a3d; }
-#inspector .out { color: #7aa7ff; }
+#inspector .in { color: var(--in); }
+#inspector .out { color: var(--out); }
 #inspector .faces { margin: 2px 0; padding-left: 16px; }
-#inspector .faces .disagrees { color: #ff6b5e; }
+#inspector .faces .disagrees { color: var(--bad); }
 
 /* Edit mode: rings around the hovered and the selected sphere, and the selected sphere's box. */
 canvas.editing { cursor: crosshair; }
