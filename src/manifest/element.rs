@@ -25,6 +25,8 @@ pub(super) struct ElementApi {
     pub events: Vec<Entry>,
     /// `::part()` names and what they are.
     pub parts: &'static [(&'static str, &'static str)],
+    /// Custom states a page may style (`:state(name)`): name, meaning.
+    pub states: &'static [(&'static str, &'static str)],
     /// CSS custom properties: name, default, meaning.
     pub css_properties: &'static [Entry],
 }
@@ -76,6 +78,8 @@ impl ElementApi {
                     "name": name, "type": { "text": format!("CustomEvent<{detail}>") }, "description": text,
                 })).collect::<Vec<_>>(),
                 "cssParts": self.parts.iter().map(|(name, text)| json!({ "name": name, "description": text }))
+                    .collect::<Vec<_>>(),
+                "cssStates": self.states.iter().map(|(name, text)| json!({ "name": name, "description": text }))
                     .collect::<Vec<_>>(),
                 "cssProperties": self.css_properties.iter().map(|(name, default, text)| json!({
                     "name": name, "default": default, "description": text,

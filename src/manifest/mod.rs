@@ -19,7 +19,7 @@ mod element;
 mod plane;
 mod vectors;
 
-pub use api::{CSS_PROPERTIES, EVENTS, METHODS, PARTS, READ_ONLY};
+pub use api::{CSS_PROPERTIES, EVENTS, METHODS, PARTS, READ_ONLY, STATES};
 
 /// The element's module inside the package.
 const MODULE: &str = "www/metaballs-view.js";
@@ -241,6 +241,7 @@ fn view_api() -> ElementApi {
         methods: METHODS,
         events: EVENTS.to_vec(),
         parts: PARTS,
+        states: STATES,
         css_properties: CSS_PROPERTIES,
     }
 }

@@ -80,6 +80,10 @@ pub(super) fn api() -> ElementApi {
             ("panel", "The folding panel of controls."),
             ("stepper", "The step-through's panel."),
         ],
+        states: &[
+            ("stacked", "Narrower than 520 CSS px: the step-through is below the picture, not beside it."),
+            ("compact", "Narrower than 440 CSS px: the panel covers at most the picture's upper half."),
+        ],
         css_properties: &[],
     }
 }

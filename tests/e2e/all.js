@@ -22,6 +22,7 @@ const SHARED = [
   'element.test.js', // 45
   'table.test.js', // 45
   'course.test.js', // 35
+  'phone.test.js', // 60
   'semester.test.js', // 30
   'compare.test.js', // 28
   'package.test.js', // 25

@@ -44,6 +44,9 @@ async function assertLaidOut(page, handle, what) {
   return layout;
 }
 
+/** A waiting step's failure, named. */
+const failed = (what) => (error) => { throw new Error(`${what}: ${error.message}`); };
+
 /** Taps the centre of `locator` with a finger. */
 async function tap(page, locator) {
   const box = await locator.boundingBox();
@@ -149,8 +152,8 @@ test('the teaching gestures work with a finger: a cell picked, a sphere and a ci
   const cells = await figure('cells');
   const sphere = await cells.evaluate((e) => e.sphereOnScreen(0));
   await page.touchscreen.tap(...(await at(cells, sphere.x, sphere.y)));
-  await page.waitForFunction((e) => e.inspected !== null, cells);
-  await page.waitForFunction((e) => e.shadowRoot.getElementById('inspector').classList.contains('shown'), cells);
+  await page.waitForFunction((e) => e.inspected !== null, cells).catch(failed('a tap picks a cell'));
+  await page.waitForFunction((e) => e.shadowRoot.getElementById('inspector').classList.contains('shown'), cells).catch(failed('the inspector opens as the sheet'));
   await cells.evaluate((e) => e.scrollIntoView({ block: 'start' }));
   await assertLaidOut(page, cells, 'cells with the inspector');
   await page.screenshot({ path: path.join(outputDir, 'phone-cells-inspector.png') });
@@ -162,9 +165,9 @@ test('the teaching gestures work with a finger: a cell picked, a sphere and a ci
   const from = await at(byHand, grabbed.x, grabbed.y);
   // A tap first focuses the figure (and selects the sphere), so that a finger's drag is the figure's.
   await page.touchscreen.tap(...from);
-  await page.waitForFunction((e) => e.selectedSphere === 1, byHand);
+  await page.waitForFunction((e) => e.selectedSphere === 1, byHand).catch(failed('a tap selects the sphere'));
   await touchDrag(page, from, [from[0], from[1] + 50], { holdMs: 700, steps: 8 });
-  await page.waitForFunction(([e, y]) => e.sphereList[1].center[1] < y - 0.05, [byHand, listBefore[1].center[1]]);
+  await page.waitForFunction(([e, y]) => e.sphereList[1].center[1] < y - 0.05, [byHand, listBefore[1].center[1]]).catch(failed('a long press and a drag move the sphere'));
 
   // A circle of the 2D figure dragged.
   const squares = await figure('squares');
@@ -188,7 +191,7 @@ test('the teaching gestures work with a finger: a cell picked, a sphere and a ci
   const joinLevel = Number((await join.getAttribute('aria-label')).match(/f = ([\d.]+)/)[1]);
   await join.scrollIntoViewIfNeeded();
   await tap(page, join);
-  await page.waitForFunction(([e, f]) => Number(e.iso) < f && Number(e.iso) > f * 0.9, [tree, joinLevel]);
+  await page.waitForFunction(([e, f]) => Number(e.iso) < f && Number(e.iso) > f * 0.9, [tree, joinLevel]).catch(failed('a tap on a join sets the iso level just below it'));
 
   // The march stepped by a tap on its forward button.
   const march = await figure('march-3d');
@@ -197,7 +200,7 @@ test('the teaching gestures work with a finger: a cell picked, a sphere and a ci
   const forward = page.locator('#march-3d >> button[data-do="forward"]');
   await forward.scrollIntoViewIfNeeded();
   await tap(page, forward);
-  await page.waitForFunction(([e, k]) => e.shadowRoot.querySelector('#march .where').textContent.startsWith(`Step ${k + 1} `), [march, stepBefore]);
+  await page.waitForFunction(([e, k]) => e.shadowRoot.querySelector('#march .where').textContent.startsWith(`Step ${k + 1} `), [march, stepBefore]).catch(failed('a tap steps the march'));
   assert.deepEqual(errors, []);
   await close();
 });

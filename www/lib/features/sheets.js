@@ -4,12 +4,12 @@
 // left, and the one open is a sheet below the picture. The figure grows by the sheet, so the surface
 // stays whole in view and nothing is drawn past the figure's box. A figure whose page fixes its height
 // (the full page) shows the sheet over the picture's lower part instead. A box that opens (a cell
-// picked, the step-through started) becomes the sheet; closing the sheet's box, or its tab again,
-// gives the whole figure back to the picture.
+// picked, the step-through started) becomes the sheet, and the statistics when nothing else is open;
+// closing the sheet's box, or tapping its tab again, gives the whole figure back to the picture.
 //
 // The state is the element's own (ElementInternals custom states, `:state(compact)`, `:state(sheet)`
 // for a sheet below, `:state(over)` for a sheet over the picture), so the page's attributes and classes
-// are untouched; the styles are dom.js's.
+// are untouched; the styles are compact-style.js's.
 
 /** Figures narrower than this, in CSS pixels, open their boxes one at a time. */
 export const COMPACT_PX = 440;
@@ -76,7 +76,8 @@ export class FigureSheets {
     for (const { target, type, oldValue } of records) {
       if (type !== 'attributes') continue;
       const opened = !target.hidden && oldValue !== null;
-      if (opened && target.id !== 'panel' && target.id !== 'hud') this.#current = target.id;
+      // A teaching box that opens becomes the sheet; the statistics only when no other is open.
+      if (opened && target.id !== 'panel' && (target.id !== 'hud' || !this.#current)) this.#current = target.id;
       if (target.hidden && this.#current === target.id) this.#current = null;
     }
     this.#render();
