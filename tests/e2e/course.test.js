@@ -164,7 +164,9 @@ test('alt names the figure, the name follows the state without one, and control 
   assert.match(derived, /5 spheres, iso 1, 16³ cells, paused/);
   await page.$eval('#dark', (e) => { e.iso = 0.8; });
   assert.match(await page.$eval('#dark', (e) => e.shadowRoot.getElementById('view').getAttribute('aria-label')), /iso 0\.8/);
-  // A control: the iso slider of #parts, moved by keyboard.
+  // A control: the iso slider of #parts, moved by keyboard. The figure is small (420 px): its panel is
+  // opened by its tab, as the sheet.
+  await page.click('#parts >> #tabs button[data-box="panel"]');
   await page.$eval('#parts', (e) => { for (const d of e.shadowRoot.querySelectorAll('details')) d.open = true; });
   await page.locator('#parts >> #iso').focus();
   await page.keyboard.press('ArrowRight');
