@@ -15,7 +15,7 @@ import { PLANE_TABLE } from './lib/attributes.js';
 import { Rows } from './lib/core/rows.js';
 import { FigureState } from './lib/core/state.js';
 import { FigureContext } from './lib/core/context.js';
-import { defineSettingProperties, flasher, takeAttribute } from './lib/core/element.js';
+import { customStates, defineSettingProperties, flasher, takeAttribute } from './lib/core/element.js';
 import { parseF64, readValue } from './lib/core/read.js';
 import { PANEL_CONTROLS, PlanePanel } from './lib/plane/panel.js';
 import { parseCircles } from './lib/plane/circles.js';
@@ -27,7 +27,8 @@ import { PlaneStepper } from './lib/plane/square-stepper.js';
 const STYLE = `
 :host { display: block; position: relative; max-width: 100%; contain: content; font: 13px system-ui, sans-serif; }
 /* With the stepper, the figure and its panel side by side in halves: the panel scrolls within the
-   figure's height, so the element is as tall as half its width (metaballs-view.css reserves that). */
+   figure's height, so the element is as tall as half its width (metaballs-view.css reserves that), but
+   for a narrow figure, which stacks them. */
 :host([march]) { display: grid; grid-template-columns: minmax(0, 1fr) minmax(0, 1fr); }
 .figure { position: relative; aspect-ratio: 1; }
 .side { min-height: 0; contain: size; margin-left: 8px; }
@@ -130,16 +131,14 @@ export class Metaballs2d extends Base {
   }
 
   #observer = null;
-  #states = this.attachInternals?.().states ?? null;
+  #states = customStates(this);
 
   // A narrow figure (its own width, not the page's) stacks the step-through below the picture
   // (`:state(stacked)`), and a small one keeps its panel over the picture's upper part (`:state(compact)`).
   #fit(width) {
-    if (!this.#states || !(width > 0)) return;
-    for (const [state, on] of [['stacked', width < STACK_PX], ['compact', width < COMPACT_PX]]) {
-      if (on) this.#states.add(state);
-      else this.#states.delete(state);
-    }
+    if (!(width > 0)) return;
+    this.#states.set('stacked', width < STACK_PX);
+    this.#states.set('compact', width < COMPACT_PX);
   }
 
   disconnectedCallback() {

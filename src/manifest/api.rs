@@ -108,7 +108,6 @@ pub const EVENTS: &[(&str, &str, &str)] = &[
     ),
 ];
 
-/// `::part()` names: name, what it is.
 /// `<metaballs-view>`'s custom states (`:state(name)`), set by the figure from its own width.
 pub const STATES: &[(&str, &str)] = &[
     (
@@ -116,9 +115,10 @@ pub const STATES: &[(&str, &str)] = &[
         "Narrower than 440 CSS px: the boxes open one at a time, from a row of tabs over the picture.",
     ),
     ("sheet", "A box is open as a sheet below the picture; the figure is taller by it."),
-    ("over", "A box is open as a sheet over the picture's lower part (the page fixes the figure's height)."),
+    ("over", "A box is open as a sheet over the picture's lower part (the page fixes the figure's size)."),
 ];
 
+/// `::part()` names: name, what it is.
 pub const PARTS: &[(&str, &str)] = &[
     ("canvas", "The drawing."),
     ("poster", "The picture shown before the first frame, and in print."),

@@ -82,7 +82,7 @@ pub(super) fn api() -> ElementApi {
         ],
         states: &[
             ("stacked", "Narrower than 520 CSS px: the step-through is below the picture, not beside it."),
-            ("compact", "Narrower than 440 CSS px: the panel covers at most the picture's upper half."),
+            ("compact", "Narrower than 440 CSS px: the panel is at most 55 % of the picture's height."),
         ],
         css_properties: &[],
     }

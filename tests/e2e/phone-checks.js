@@ -68,8 +68,9 @@ export function figureLayout(host) {
 
 /**
  * Every text the shadow root of `host` shows, with its contrast against what is behind it: the
- * backgrounds of its ancestors laid over each other, and where they let the picture through, the worse
- * of black and white behind them (the picture can be either). Returns the texts below 4.5:1 (3:1 when large).
+ * backgrounds of its ancestors laid over each other (each with the opacity of it and its ancestors),
+ * and where they let the picture through, the worst of every grey behind them (the picture can be
+ * anything). SVG text is drawn in its fill. Returns the texts below 4.5:1 (3:1 when large).
  */
 export function figureContrast(host) {
   const parse = (text) => {
@@ -100,20 +101,27 @@ export function figureContrast(host) {
     if (style.display === 'none' || style.visibility === 'hidden' || element.closest('[hidden]')) continue;
     if (element.getClientRects().length === 0 || element.closest('.visually-hidden, [aria-hidden="true"]')) continue;
     texts += 1;
-    // The backgrounds from the text out to the host, each one's opacity included.
-    const layers = [];
+    // The backgrounds from the text out to the host, innermost first, and the opacity of them all.
     // (The host's own background is under the picture, so it is not one of them.)
+    const layers = [];
     for (let e = element; e && e !== host; e = e.parentElement ?? e.getRootNode().host) {
       const s = getComputedStyle(e);
-      const bg = parse(s.backgroundColor);
-      bg[3] *= Number(s.opacity);
-      if (bg[3] > 0) layers.push(bg);
+      layers.push({ background: parse(s.backgroundColor), opacity: Number(s.opacity) });
     }
-    let color = parse(style.color);
-    color[3] *= Number(style.opacity);
+    // A layer shows through its own opacity and every enclosing layer's; the text through them all.
+    let through = 1;
+    const visible = [];
+    for (let k = layers.length - 1; k >= 0; k -= 1) {
+      through *= layers[k].opacity;
+      const [r, g, b, a] = layers[k].background;
+      visible.unshift([r, g, b, a * through]);
+    }
+    const opacity = through;
+    const color = parse(element instanceof SVGElement ? style.fill : style.color);
+    color[3] *= opacity;
     let worst = Infinity;
-    for (const behind of [[0, 0, 0, 1], [255, 255, 255, 1]]) {
-      const ground = layers.reduceRight((under, top) => over(top, under), behind);
+    for (let grey = 0; grey <= 255; grey += 15) {
+      const ground = visible.filter((bg) => bg[3] > 0).reduceRight((under, top) => over(top, under), [grey, grey, grey, 1]);
       worst = Math.min(worst, ratio(over(color, ground), ground));
     }
     const size = parseFloat(style.fontSize);

@@ -92,6 +92,14 @@ test('on a phone, every box of every lecture figure opened in turn leaves the pi
         .catch((error) => { throw new Error(`${name}: the tab of ${box} did not open it (${error.message})`); });
       if (box === 'panel') {
         await handle.evaluate((e) => { for (const d of e.shadowRoot.querySelectorAll('#panel details')) d.open = true; });
+        // Usable, whatever other box is open (a wide figure's step-through and levels cover the panel).
+        const usable = await handle.evaluate((e) => {
+          const panel = e.shadowRoot.getElementById('panel');
+          const control = panel.querySelector('input, select, button');
+          control.focus();
+          return !panel.inert && e.shadowRoot.activeElement === control;
+        });
+        assert.ok(usable, `${name}: the Controls sheet takes focus`);
       }
       await handle.evaluate((e) => e.scrollIntoView({ block: 'start' }));
       await assertLaidOut(page, handle, `${name} with ${box}`);
@@ -100,6 +108,8 @@ test('on a phone, every box of every lecture figure opened in turn leaves the pi
       // Its tab again closes the sheet: the figure is the picture alone.
       await tap(page, tab);
       await page.waitForFunction(([e, b]) => !e.shadowRoot.getElementById(b).classList.contains('shown'), [handle, box]);
+      const [w, h] = await handle.evaluate((e) => [e.clientWidth, e.clientHeight]);
+      assert.ok(Math.abs(h - (w * 9) / 16) < 2 || (await handle.evaluate((e) => e.localName === 'metaballs-2d')), `${name}: back to 16:9 (${w}×${h})`);
     }
   }
   console.log(`boxes opened on a phone: ${seen.join(', ')}`);
@@ -108,6 +118,29 @@ test('on a phone, every box of every lecture figure opened in turn leaves the pi
   }
   assert.deepEqual(errors, []);
   await close();
+});
+
+test('where the page fixes the figure\'s size (the full page, the iframe page), a sheet covers the picture\'s lower part only', async () => {
+  for (const [url, device] of [['index.html?controls=all&hud=on', PHONE],
+    ['embed.html?controls=all&hud=on&levels&march=2,3,3', { ...PHONE, viewport: { width: 390, height: 219 } }]]) {
+    const { page, errors, close } = await openAs(device, url);
+    const handle = await page.$('metaballs-view');
+    await showFigure(page, handle);
+    const tabs = await handle.evaluate((e) => [...e.shadowRoot.querySelectorAll('#tabs button')].map((b) => b.dataset.box));
+    assert.ok(tabs.includes('panel') && tabs.includes('hud'), `${url}: tabs ${tabs}`);
+    for (const box of tabs) {
+      const tab = page.locator(`metaballs-view >> #tabs button[data-box="${box}"]`);
+      // (The row of tabs scrolls sideways when they do not fit.)
+      await tab.scrollIntoViewIfNeeded();
+      if (!(await handle.evaluate((e, b) => e.shadowRoot.getElementById(b).classList.contains('shown'), box))) await tap(page, tab);
+      await page.waitForFunction(([e, b]) => e.shadowRoot.getElementById(b).classList.contains('shown'), [handle, box]);
+      assert.ok(await handle.evaluate((e) => e.matches(':state(over)')), `${url} with ${box}: over the picture`);
+      await assertLaidOut(page, handle, `${url} with ${box}`);
+      await page.screenshot({ path: path.join(outputDir, `phone-${url.split(/[.?]/)[0]}-${box}.png`) });
+    }
+    assert.deepEqual(errors, []);
+    await close();
+  }
 });
 
 test('on a phone, the 2D page with its panel and its step-through open stays in the figure, its picture in view', async () => {
@@ -187,6 +220,9 @@ test('the teaching gestures work with a finger: a cell picked, a sphere and a ci
   const isoDragged = await tree.evaluate((e) => Number(e.iso));
   assert.ok(isoDragged < isoBefore, `iso after a drag to the left: ${isoDragged} (was ${isoBefore})`);
   // (The last join drawn is on top of its neighbours' targets.)
+  // The plot and the tree are drawn again for the new level: the join is tapped where it is drawn then.
+  await tree.evaluate((e) => e.nextFrame());
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
   const join = page.locator('#merge-tree >> svg.merge-tree g.join').last();
   const joinLevel = Number((await join.getAttribute('aria-label')).match(/f = ([\d.]+)/)[1]);
   await join.scrollIntoViewIfNeeded();

@@ -57,3 +57,28 @@ export function flasher(root) {
     timers[id] = setTimeout(() => { box.hidden = true; }, ms);
   };
 }
+
+/**
+ * The element's custom states (ElementInternals, styled as `:state(name)`): `set(name, on)`, `has(name)`
+ * and `supported`. Where the browser lacks them (or takes only `--` names, as before Chromium 125), they
+ * are not set and the figure keeps its layout for every size.
+ */
+export function customStates(element) {
+  let states = null;
+  try {
+    states = element.attachInternals?.().states ?? null;
+    states?.add('probe');
+    states?.delete('probe');
+  } catch {
+    states = null;
+  }
+  return {
+    supported: Boolean(states),
+    has: (name) => Boolean(states?.has(name)),
+    set(name, on) {
+      if (!states) return;
+      if (on) states.add(name);
+      else states.delete(name);
+    },
+  };
+}

@@ -7,6 +7,7 @@
 import { hub } from '../engine/hub.js';
 import { FigureDetail } from '../figure/detail.js';
 import { levelColor } from './legends.js';
+import { FigureSheets } from './sheets.js';
 
 // A count with thousands separators (12,345). Not `Intl.NumberFormat`: setting one up takes tens to
 // hundreds of milliseconds on the page's thread the first time, just when the first statistics show.
@@ -32,8 +33,9 @@ export class Hud {
 
   loaded() { this.root.getElementById('hud').hidden = this.#ctx.state.hud !== 'on'; }
 
-  /** Very small figures start with their statistics folded, like the panel. */
+  /** Very small figures start with their statistics folded, like the panel (but as a sheet, open). */
   firstStart() {
+    if (this.#ctx.get(FigureSheets)?.compact) return;
     const width = this.#ctx.element.clientWidth;
     this.root.querySelector('#hud details').open = !(width > 0 && width < 300);
   }

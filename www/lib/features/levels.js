@@ -181,7 +181,6 @@ export class IsoLevels {
     const box = this.#ctx.$('levels-box');
     if (!box) return;
     if (!this.#open) {
-      if (!box.hidden) this.#ctx.$('panel').inert = false;
       box.hidden = true;
       return;
     }
@@ -199,9 +198,8 @@ export class IsoLevels {
       this.#panel.textContent = 'Finding the critical points…';
       box.replaceChildren(close, title, this.#panel);
     }
+    // (The panel behind the box takes no focus while the box covers it: FigureSheets.)
     box.hidden = false;
-    // The panel behind the box takes no focus while the box covers it.
-    this.#ctx.$('panel').inert = true;
     this.#measures = null;
     const packed = this.#spheres();
     if (packed) {

@@ -110,7 +110,6 @@ export class Stepper {
     if (!cell) {
       this.#play.playing = false;
       this.#box.hidden = true;
-      this.#ctx.$('panel').inert = false;
       if (this.#selected) this.#ctx.get(Inspector).deselect();
       this.#selected = null;
     }
@@ -160,9 +159,8 @@ export class Stepper {
       speed: (perSecond) => { this.#play.speed = perSecond; },
       close: () => this.close(),
     }, caseTable());
+    // (The box covers the panel, whose controls leave the tab order while it shows: FigureSheets.)
     this.#box.hidden = false;
-    // The box covers the panel: its controls leave the tab order while it shows.
-    this.#ctx.$('panel').inert = true;
     this.#shown = report;
     const n = this.#ctx.state.resolution;
     const head = `Step ${this.index + 1} of ${n ** 3}: cell (${this.cell.join(', ')})`;
