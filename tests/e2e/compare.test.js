@@ -104,8 +104,8 @@ test('figures with one sync name share spheres and camera: turning one turns the
   // Dragging the camera in the second turns the first.
   const box = await page.$$eval(figures, (es) => {
     const r = es[1].shadowRoot.querySelector('canvas').getBoundingClientRect();
-    // Low on the left: the statistics sit top right.
-    return { x: r.x + r.width * 0.2, y: r.y + r.height * 0.85 };
+    // On the left, above the row of tabs of a small figure (its statistics are a sheet below).
+    return { x: r.x + r.width * 0.2, y: r.y + r.height * 0.4 };
   });
   const before = await page.$$eval(figures, (es) => es.map((e) => e.yaw));
   await page.mouse.move(box.x, box.y);

@@ -247,23 +247,25 @@ async function everyFigureLoaded(page) {
 }
 
 for (const [width, device] of [['phone', PHONE], ['desktop', DESKTOP]]) {
-  for (const theme of ['dark', 'light']) {
-    test(`axe-core's WCAG 2.2 AA rules and every text's contrast, on the lecture and the 2D page, ${width}, ${theme} theme`, async () => {
-      for (const url of [LECTURE, 'squares.html']) {
-        const { page, errors, close } = await openAs(device, url);
-        if (theme === 'light') await page.$$eval('metaballs-view, metaballs-2d', (all) => all.forEach((e) => e.setAttribute('theme', 'light')));
-        await everyFigureLoaded(page);
-        await page.$$eval('metaballs-view, metaballs-2d', (all) => all.forEach((e) => {
+  test(`axe-core's WCAG 2.2 AA rules and every text's contrast, on the lecture and the 2D page, ${width}, both themes`, async () => {
+    for (const url of [LECTURE, 'squares.html']) {
+      const { page, errors, close } = await openAs(device, url);
+      await everyFigureLoaded(page);
+      await page.addScriptTag({ path: path.join(root, 'tests/e2e/node_modules/axe-core/axe.min.js') });
+      for (const theme of ['dark', 'light']) {
+        const what = `${url}, ${width}, ${theme} theme`;
+        await page.$$eval('metaballs-view, metaballs-2d', (all, t) => Promise.all(all.map((e) => {
+          e.setAttribute('theme', t);
           for (const d of e.shadowRoot.querySelectorAll('details')) d.open = true;
-        }));
+          return e.nextFrame?.();
+        })), theme);
         let texts = 0;
         for (const handle of await page.$$('metaballs-view, metaballs-2d')) {
           const checked = await handle.evaluate(figureContrast);
           texts += checked.texts;
-          assert.deepEqual(checked.failing, [], `${url}: texts under their contrast`);
+          assert.deepEqual(checked.failing, [], `${what}: texts under their contrast`);
         }
-        assert.ok(texts >= 10, `${url}: ${texts} texts checked`);
-        await page.addScriptTag({ path: path.join(root, 'tests/e2e/node_modules/axe-core/axe.min.js') });
+        assert.ok(texts >= 10, `${what}: ${texts} texts checked`);
         const violations = await page.evaluate(async () => {
           const result = await window.axe.run(document, {
             runOnly: { type: 'tag', values: ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa', 'wcag22aa'] },
@@ -271,10 +273,10 @@ for (const [width, device] of [['phone', PHONE], ['desktop', DESKTOP]]) {
           });
           return result.violations.map((v) => `${v.id} (${v.impact}): ${v.nodes.slice(0, 3).map((n) => n.target.join(' ')).join(' | ')}`);
         });
-        assert.deepEqual(violations, [], `${url}, ${width}, ${theme}`);
-        assert.deepEqual(errors, []);
-        await close();
+        assert.deepEqual(violations, [], what);
       }
-    });
-  }
+      assert.deepEqual(errors, []);
+      await close();
+    }
+  });
 }

@@ -333,7 +333,7 @@ export const TEMPLATE = `
   <canvas id="view" tabindex="0" part="canvas" role="img" aria-describedby="how"></canvas>
   <span id="how" class="visually-hidden">Drag to orbit, click then wheel to zoom; P pauses.</span>
   <div id="announce" class="visually-hidden" role="status" aria-live="polite"></div>
-  <div id="tabs" role="group" aria-label="Boxes" hidden></div>
+  <div id="tabs" role="group" aria-label="The figure's panels" hidden></div>
   <aside id="panel" part="panel" aria-label="Controls" hidden></aside>
   <section id="hud" part="hud" aria-label="Statistics" aria-live="off" hidden>
     <details open><summary>Statistics</summary>
