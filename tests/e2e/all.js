@@ -18,11 +18,11 @@ const SHARED = [
   'notebook.test.js', // 150
   'soak.test.js', // 110
   'teaching.test.js', // 75
+  'phone.test.js', // 55
   'page.test.js', // 50
   'element.test.js', // 45
   'table.test.js', // 45
   'course.test.js', // 35
-  'phone.test.js', // 60
   'semester.test.js', // 30
   'compare.test.js', // 28
   'package.test.js', // 25

@@ -5,7 +5,7 @@
 // AA rules at phone and desktop widths in both themes; and the contrast of every text a figure shows
 // against what is behind it. Screenshots of each section go to tests/output/phone-*.png.
 
-import { test } from 'node:test';
+import { after, test } from 'node:test';
 import assert from 'node:assert/strict';
 import path from 'node:path';
 import { baseUrl, browser, outputDir, root, useServerAndBrowser } from './helpers.js';
@@ -26,6 +26,11 @@ async function openAs(device, url) {
   await page.goto(`${baseUrl}${url}`);
   return { page, errors, close: () => context.close() };
 }
+
+// The lecture on a phone, opened once for the tests that read it (each leaves it as a reader would).
+let shared = null;
+const lectureOnPhone = () => (shared ??= openAs(PHONE, LECTURE));
+after(async () => { await (await shared)?.close().catch(() => {}); });
 
 /** Scrolls figure `handle` to the top of the screen and waits for its first frame (3D) or picture (2D). */
 async function showFigure(page, handle) {
@@ -67,7 +72,7 @@ async function touchDrag(page, [x0, y0], [x1, y1], { steps = 6, holdMs = 0 } = {
 }
 
 test('on a phone, every box of every lecture figure opened in turn leaves the picture in view and stays in the figure', async () => {
-  const { page, errors, close } = await openAs(PHONE, LECTURE);
+  const { page, errors } = await lectureOnPhone();
   const figures = await page.$$('metaballs-view, metaballs-2d');
   const seen = [];
   for (const [index, handle] of figures.entries()) {
@@ -117,7 +122,6 @@ test('on a phone, every box of every lecture figure opened in turn leaves the pi
     assert.ok(seen.includes(box), `${box} was opened (${seen.join(', ')})`);
   }
   assert.deepEqual(errors, []);
-  await close();
 });
 
 test('where the page fixes the figure\'s size (the full page, the iframe page), a sheet covers the picture\'s lower part only', async () => {
@@ -169,11 +173,54 @@ test('on a phone, the 2D page with its panel and its step-through open stays in 
   await close();
 });
 
+/** Waits until every figure of the page has loaded and drawn, each scrolled to in turn. */
+async function everyFigureLoaded(page) {
+  for (const handle of await page.$$('metaballs-view, metaballs-2d')) await showFigure(page, handle);
+}
+
+for (const [width, device] of [['phone', PHONE], ['desktop', DESKTOP]]) {
+  test(`axe-core's WCAG 2.2 AA rules and every text's contrast, on the lecture and the 2D page, ${width}, both themes`, async () => {
+    for (const url of [LECTURE, 'squares.html']) {
+      const own = !(width === 'phone' && url === LECTURE);
+      const { page, errors, close } = own ? await openAs(device, url) : await lectureOnPhone();
+      await everyFigureLoaded(page);
+      await page.addScriptTag({ path: path.join(root, 'tests/e2e/node_modules/axe-core/axe.min.js') });
+      for (const theme of ['dark', 'light']) {
+        const what = `${url}, ${width}, ${theme} theme`;
+        await page.$$eval('metaballs-view, metaballs-2d', (all, t) => Promise.all(all.map((e) => {
+          e.setAttribute('theme', t);
+          for (const d of e.shadowRoot.querySelectorAll('details')) d.open = true;
+          return e.nextFrame?.();
+        })), theme);
+        let texts = 0;
+        for (const handle of await page.$$('metaballs-view, metaballs-2d')) {
+          const checked = await handle.evaluate(figureContrast);
+          texts += checked.texts;
+          assert.deepEqual(checked.failing, [], `${what}: texts under their contrast`);
+        }
+        assert.ok(texts >= 10, `${what}: ${texts} texts checked`);
+        const violations = await page.evaluate(async () => {
+          const result = await window.axe.run(document, {
+            runOnly: { type: 'tag', values: ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa', 'wcag22aa'] },
+            resultTypes: ['violations'],
+          });
+          return result.violations.map((v) => `${v.id} (${v.impact}): ${v.nodes.slice(0, 3).map((n) => n.target.join(' ')).join(' | ')}`);
+        });
+        assert.deepEqual(violations, [], what);
+      }
+      assert.deepEqual(errors, []);
+      if (own) await close();
+    }
+  });
+}
+
 test('the teaching gestures work with a finger: a cell picked, a sphere and a circle dragged, the iso cursor, a join, a step', async () => {
-  const { page, errors, close } = await openAs(PHONE, LECTURE);
+  const { page, errors } = await lectureOnPhone();
   const figure = async (id) => {
     const handle = await page.$(`#${id} metaballs-view, #${id} metaballs-2d`);
     await showFigure(page, handle);
+    // A figure off screen a while has let its renderer go: a frame drawn now has it back.
+    await handle.evaluate((e) => e.nextFrame?.());
     return handle;
   };
   const at = async (handle, x, y) => {
@@ -212,7 +259,17 @@ test('the teaching gestures work with a finger: a cell picked, a sphere and a ci
   assert.ok(Math.abs(moved.x - (circle.x - 0.3)) < 0.05 && Math.abs(moved.y - (circle.y - 0.2)) < 0.05, JSON.stringify(moved));
 
   // The iso cursor dragged along the plot, and a join of the merge tree chosen.
+  // (A box the earlier tests closed is opened by its tab, as a reader would.)
+  const openSheet = async (id, handle, box) => {
+    if (await handle.evaluate((e, b) => e.shadowRoot.getElementById(b).classList.contains('shown'), box)) return;
+    const tab = page.locator(`#${id} >> #tabs button[data-box="${box}"]`);
+    await tab.scrollIntoViewIfNeeded();
+    await tap(page, tab);
+    await page.waitForFunction(([e, b]) => e.shadowRoot.getElementById(b).classList.contains('shown'), [handle, box]);
+    await handle.evaluate((e) => e.scrollIntoView({ block: 'start' }));
+  };
   const tree = await figure('merge-tree');
+  await openSheet('merge-tree', tree, 'levels-box');
   await page.waitForSelector('#merge-tree >> div.levels svg.levels-plot', { timeout: 90_000 });
   const plot = await page.locator('#merge-tree >> div.levels svg.levels-plot').boundingBox();
   const isoBefore = await tree.evaluate((e) => Number(e.iso));
@@ -220,9 +277,14 @@ test('the teaching gestures work with a finger: a cell picked, a sphere and a ci
   const isoDragged = await tree.evaluate((e) => Number(e.iso));
   assert.ok(isoDragged < isoBefore, `iso after a drag to the left: ${isoDragged} (was ${isoBefore})`);
   // (The last join drawn is on top of its neighbours' targets.)
-  // The plot and the tree are drawn again for the new level: the join is tapped where it is drawn then.
-  await tree.evaluate((e) => e.nextFrame());
-  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  // The plot and the tree are drawn again for the new level (and again as its measures come in): the
+  // join is tapped once the tree drawn stays the same for 300 ms.
+  await page.waitForFunction((e) => {
+    const drawn = e.shadowRoot.querySelector('svg.merge-tree');
+    const same = drawn === window.treeSeen;
+    window.treeSeen = drawn;
+    return same;
+  }, tree, { polling: 300 });
   const join = page.locator('#merge-tree >> svg.merge-tree g.join').last();
   const joinLevel = Number((await join.getAttribute('aria-label')).match(/f = ([\d.]+)/)[1]);
   await join.scrollIntoViewIfNeeded();
@@ -231,6 +293,7 @@ test('the teaching gestures work with a finger: a cell picked, a sphere and a ci
 
   // The march stepped by a tap on its forward button.
   const march = await figure('march-3d');
+  await openSheet('march-3d', march, 'march');
   const where = () => march.evaluate((e) => e.shadowRoot.querySelector('#march .where').textContent);
   const stepBefore = Number((await where()).match(/Step (\d+)/)[1]);
   const forward = page.locator('#march-3d >> button[data-do="forward"]');
@@ -238,45 +301,4 @@ test('the teaching gestures work with a finger: a cell picked, a sphere and a ci
   await tap(page, forward);
   await page.waitForFunction(([e, k]) => e.shadowRoot.querySelector('#march .where').textContent.startsWith(`Step ${k + 1} `), [march, stepBefore]).catch(failed('a tap steps the march'));
   assert.deepEqual(errors, []);
-  await close();
 });
-
-/** Waits until every figure of the page has loaded and drawn, each scrolled to in turn. */
-async function everyFigureLoaded(page) {
-  for (const handle of await page.$$('metaballs-view, metaballs-2d')) await showFigure(page, handle);
-}
-
-for (const [width, device] of [['phone', PHONE], ['desktop', DESKTOP]]) {
-  test(`axe-core's WCAG 2.2 AA rules and every text's contrast, on the lecture and the 2D page, ${width}, both themes`, async () => {
-    for (const url of [LECTURE, 'squares.html']) {
-      const { page, errors, close } = await openAs(device, url);
-      await everyFigureLoaded(page);
-      await page.addScriptTag({ path: path.join(root, 'tests/e2e/node_modules/axe-core/axe.min.js') });
-      for (const theme of ['dark', 'light']) {
-        const what = `${url}, ${width}, ${theme} theme`;
-        await page.$$eval('metaballs-view, metaballs-2d', (all, t) => Promise.all(all.map((e) => {
-          e.setAttribute('theme', t);
-          for (const d of e.shadowRoot.querySelectorAll('details')) d.open = true;
-          return e.nextFrame?.();
-        })), theme);
-        let texts = 0;
-        for (const handle of await page.$$('metaballs-view, metaballs-2d')) {
-          const checked = await handle.evaluate(figureContrast);
-          texts += checked.texts;
-          assert.deepEqual(checked.failing, [], `${what}: texts under their contrast`);
-        }
-        assert.ok(texts >= 10, `${what}: ${texts} texts checked`);
-        const violations = await page.evaluate(async () => {
-          const result = await window.axe.run(document, {
-            runOnly: { type: 'tag', values: ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa', 'wcag22aa'] },
-            resultTypes: ['violations'],
-          });
-          return result.violations.map((v) => `${v.id} (${v.impact}): ${v.nodes.slice(0, 3).map((n) => n.target.join(' ')).join(' | ')}`);
-        });
-        assert.deepEqual(violations, [], what);
-      }
-      assert.deepEqual(errors, []);
-      await close();
-    }
-  });
-}
