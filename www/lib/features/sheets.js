@@ -116,6 +116,9 @@ export class FigureSheets {
     for (const { id } of BOXES) {
       const box = ctx.$(id);
       box.classList.toggle('shown', id === shown);
+      // The sheet scrolls: it takes focus, so that keys scroll it too.
+      if (id === shown) box.tabIndex = 0;
+      else box.removeAttribute('tabindex');
       box.style.bottom = '';
       if (id === shown) for (const details of box.querySelectorAll(':scope > details')) details.open = true;
     }

@@ -54,7 +54,8 @@ button { min-width: 24px; }
 /* One row of tabs there, scrolled sideways when they do not fit, to leave the sheet its height. */
 :host(:state(over)) #tabs:not([hidden]) { flex-wrap: nowrap; overflow-x: auto; scrollbar-width: none; }
 /* Below the picture: the figure grows by the sheet. */
-:host(:state(sheet)) { aspect-ratio: auto; height: auto; }
+/* (Not stretched to a taller neighbour's height in a grid or flex row: its own height is its sheet's.) */
+:host(:state(sheet)) { aspect-ratio: auto; height: auto; align-self: start; }
 :host(:state(sheet))::before { content: ""; display: block; aspect-ratio: 16 / 9; }
 :host(:state(sheet)) #tabs ~ :is(${BOXES}).shown {
   position: relative;
