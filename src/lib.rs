@@ -14,8 +14,9 @@
 //! - [`renderer`]: one [`Renderer`] orders a frame (update the scene → extract → draw) into any
 //!   texture view; renderers on one device share a [`GpuContext`].
 //! - `web` (wasm only): the handle the page drives. Beside `main.rs`, the native tools: [`export`]
-//!   (mesh files, also used by the page), [`offscreen`], [`bench`] and [`manifest`] (the element's
-//!   description for editors, written from the parameter table).
+//!   (mesh files, also used by the page), [`offscreen`], [`record`] (animated GIF and APNG clips),
+//!   [`bench`] and [`manifest`] (the element's description for editors, written from the parameter
+//!   table).
 
 /// The spheres and settings: the `metaballs-scene` crate (`scene/`).
 pub use metaballs_scene as scene;
@@ -42,6 +43,8 @@ pub mod export;
 pub mod manifest;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod offscreen;
+#[cfg(not(target_arch = "wasm32"))]
+pub mod record;
 #[cfg(target_arch = "wasm32")]
 mod web;
 

@@ -37,7 +37,8 @@ source www/need-deb.sh
 
 stage "tools (installed when missing)"
 
-need_deb mesa-vulkan-drivers chromium chromium-driver poppler-utils python3 g++
+# ffmpeg: ffprobe and ffmpeg read back the clips tests/e2e/clip.test.js records.
+need_deb mesa-vulkan-drivers chromium chromium-driver poppler-utils python3 g++ ffmpeg
 command -v node >/dev/null && command -v npm >/dev/null || need_deb nodejs npm
 rustup target list --installed | grep -qx wasm32-unknown-unknown || rustup target add wasm32-unknown-unknown
 rustup component list --installed | grep -q '^clippy' || rustup component add clippy

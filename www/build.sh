@@ -3,7 +3,8 @@
 # wasm-bindgen command line at exactly the version Cargo.lock pins, and Node.js (for
 # www/tools/short-imports.mjs, which gives the wasm's imports short names). Two builds: pkg/ draws with
 # WebGPU (what nearly every visitor loads), pkg-webgl/ with WebGL2, loaded only where WebGPU is missing
-# (wgpu's WebGL2 backend is large, so WebGPU visitors do not pay for it).
+# (wgpu's WebGL2 backend is large, so WebGPU visitors do not pay for it). Also bundles the libraries a
+# recorded clip is encoded with into www/vendor/clip-codecs.js (`need_clip_codecs`, www/need-deb.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source www/need-deb.sh
@@ -43,3 +44,5 @@ cargo build --profile wasm --lib --target wasm32-unknown-unknown -p metaballs-le
 wasm-bindgen --target web --no-typescript --remove-name-section --remove-producers-section --out-dir pkg-levels \
     target/wasm32-unknown-unknown/wasm/metaballs_levels.wasm
 echo "built pkg-levels/metaballs_levels_bg.wasm ($(wc -c < pkg-levels/metaballs_levels_bg.wasm) bytes, $(gzip -9c pkg-levels/metaballs_levels_bg.wasm | wc -c) gzipped)"
+# What www/lib/figure/clip.js loads when a clip is recorded: mediabunny and gifenc, pinned in www/tools/.
+need_clip_codecs

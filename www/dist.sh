@@ -16,11 +16,13 @@ source www/need-deb.sh
 
 # tests/run.sh builds the WebAssembly once for all of its outputs and says so.
 [ "${METABALLS_WASM_BUILT:-}" = 1 ] || bash www/build.sh
-need_esbuild
+# The clip encoders (www/vendor/, which www/build.sh writes), for a chunk of their own that only
+# recording a clip fetches.
+need_clip_codecs
 
 rm -rf dist
 mkdir -p dist/www dist/pkg dist/pkg-webgl dist/pkg-levels
-cp index.html embed.html squares.html dist/
+cp index.html embed.html embed-2d.html squares.html dist/
 "$esbuild" www/metaballs-view.js www/page.js www/lib/engine/mesh-worker.js www/lib/engine/levels-worker.js --bundle --splitting --format=esm --minify --sourcemap \
     --target=es2022 --outbase=www --outdir=dist/www --chunk-names='lib/engine/[name]-[hash]' \
     --external:'../../../pkg/*' --external:'../../../pkg-webgl/*' --external:'../../../pkg-levels/*' --log-level=warning

@@ -9,6 +9,22 @@ export interface Metaballs2dCircle {
   charge?: 1 | -1;
 }
 
+/** The figure as it is now, written to paste (`shareText()`). */
+export interface Metaballs2dShareText {
+  /** The module's script tag and the element with its attributes. */
+  html: string;
+  /** The iframe page's URL. */
+  url: string;
+  /** An iframe of that page at the size the figure was seen at. */
+  iframe: string;
+  /** The notebook widget's call. */
+  python: string;
+  /** MyST's {anywidget} directive. */
+  myst: string;
+  /** The full page's link. */
+  link: string;
+}
+
 export declare class Metaballs2d extends HTMLElement {
   /** Iso level: 0.05 to 20. Attribute `iso`; default 1. */
   iso: number;
@@ -40,7 +56,7 @@ export declare class Metaballs2d extends HTMLElement {
   march: string;
   /** The id of a <metaballs-view> with a slice: its slice plane is drawn instead of circles. Attribute `slice-of`; default "". */
   sliceOf: string;
-  /** Controls: all, none, or a comma list of iso, resolution, interpolation, saddle, iso-levels, show, paused, speed, spheres, seed, theme, step-through, circles, scene. Attribute `controls`; default "none". */
+  /** Controls: all, none, or a comma list of iso, resolution, interpolation, saddle, iso-levels, show, paused, speed, spheres, seed, theme, step-through, circles, scene, share. Attribute `controls`; default "none". */
   controls: string;
   /** The circles as placed; set to such a list to place them. */
   circleList: Metaballs2dCircle[];
@@ -74,6 +90,12 @@ export declare class Metaballs2d extends HTMLElement {
   loadScene(text: string): void;
   /** Downloads the scene document. */
   downloadScene(): void;
+  /** The figure as it is now, written to paste: its HTML, the iframe page's URL and an iframe, the Python widget's call, a MyST directive and the full page's link. */
+  shareText(): Metaballs2dShareText;
+  /** A PNG of the picture at the figure's size times `scale`. */
+  makePoster(scale?: number): Promise<Blob>;
+  /** Opens the share box. */
+  openShare(): void;
   /** Shows a short message inside the figure. */
   showNotice(text: string, ms?: number): void;
 }

@@ -23,6 +23,7 @@ import { PlaneCircles, PlaneInside, PlaneLabel } from './lib/plane/plane-circles
 import { PlaneFrames, PlanePrint } from './lib/plane/frames.js';
 import { PlaneScene } from './lib/plane/scene-file.js';
 import { PlaneStepper } from './lib/plane/square-stepper.js';
+import { PlaneShare } from './lib/features/plane-share.js';
 
 const STYLE = `
 :host { display: block; position: relative; max-width: 100%; contain: content; font: 13px system-ui, sans-serif; }
@@ -86,12 +87,15 @@ function readSetting(spelling, text) {
 }
 
 // The features of the figure, in the order they hear of changes.
-const FEATURES = [PlaneInside, PlaneCircles, PlaneStepper, PlaneScene, PlanePanel, PlaneLabel, PlanePrint];
+const FEATURES = [PlaneInside, PlaneCircles, PlaneStepper, PlaneScene, PlaneShare, PlanePanel, PlaneLabel, PlanePrint];
 
 // Where there is no DOM (a static-site build importing the module), a plain class stands in.
 const Base = globalThis.HTMLElement ?? class {};
 
 export class Metaballs2d extends Base {
+  /** Where this module was loaded from: the share box's script tags and pages are found from it. */
+  static moduleUrl = import.meta.url;
+
   static observedAttributes = PLANE_ROWS.spellings;
 
   /** The controls `controls` may list. */
@@ -157,6 +161,15 @@ export class Metaballs2d extends Base {
 
   /** Shows a short message inside the figure. */
   showNotice(text, ms = 8000) { this.#ctx.notice(text, ms); }
+
+  /** The figure as it is now, written to paste: { html, url, iframe, python, myst, link }. */
+  shareText() { return this.#ctx.get(PlaneShare).texts(); }
+
+  /** A PNG of the picture at the figure's size times `scale`. */
+  makePoster(scale = 1) { return this.#ctx.get(PlaneShare).poster(scale); }
+
+  /** Opens the share box. */
+  openShare() { this.#ctx.get(PlaneShare).open(); }
 
   /** The last frame's time to sample, march and paint, in ms. */
   get frameMs() { return this.#ctx.frames.frameMs; }

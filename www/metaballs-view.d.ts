@@ -60,6 +60,39 @@ export interface MetaballsCriticalPoints {
   counts: MetaballsLevelCounts | null;
 }
 
+/** The figure as it is now, written to paste (`shareText()`). */
+export interface MetaballsShareText {
+  /** The module's script tag and the element with its attributes. */
+  html: string;
+  /** The iframe page's URL. */
+  url: string;
+  /** An iframe of that page at the size the figure was seen at. */
+  iframe: string;
+  /** The notebook widget's call. */
+  python: string;
+  /** MyST's {anywidget} directive. */
+  myst: string;
+  /** The full page's link. */
+  link: string;
+}
+
+/** What `record()` makes (every field optional). */
+export interface MetaballsRecordOptions {
+  /** Seconds of animation (default 4). */
+  seconds?: number;
+  /** 24, 30 or 60 (default 30). */
+  fps?: 24 | 30 | 60;
+  /** Pixels (default the figure's size, even). */
+  width?: number;
+  height?: number;
+  /** 'webm-vp9', 'webm-vp8', 'mp4-h264' or 'gif' (default the first the browser writes). */
+  format?: string;
+  /** Called after each frame. */
+  onProgress?: (done: number, count: number) => void;
+  /** Aborting it stops the recording: the promise rejects with an AbortError. */
+  signal?: AbortSignal;
+}
+
 export declare class MetaballsView extends HTMLElement {
   /** Sphere count: 1 to 64. Attribute `spheres`; default 5. */
   spheres: number;
@@ -149,7 +182,7 @@ export declare class MetaballsView extends HTMLElement {
   get sphereList(): MetaballsSphere[];
   /** Sphere-list: x,y,z,radius[,vx,vy,vz] per sphere joined by ; (a negative radius subtracts). Attribute `sphere-list`; default "". */
   set sphereList(value: string | MetaballsSphere[]);
-  /** Controls: all, none, or a comma list of spheres, iso, resolution, lod, lod-pixels, lod-freeze, mesh-on, method, speed, seed, paused, pause-on, step, view, display, compare, grid, color-by, ambiguous, critical, color, theme, antialiasing, slice, interpolation, table, blend, saddle, levels, inspector, step-through, error-plot, light, spot-angle, spot-softness, ambient, diffuse, specular, shininess, projection, fov, edit, scene, export. Attribute `controls`; default "none". */
+  /** Controls: all, none, or a comma list of spheres, iso, resolution, lod, lod-pixels, lod-freeze, mesh-on, method, speed, seed, paused, pause-on, step, view, display, compare, grid, color-by, ambiguous, critical, color, theme, antialiasing, slice, interpolation, table, blend, saddle, levels, inspector, step-through, error-plot, light, spot-angle, spot-softness, ambient, diffuse, specular, shininess, projection, fov, edit, scene, export, share. Attribute `controls`; default "none". */
   controls: string;
   /** Hud: on, off. Attribute `hud`; default "off". */
   hud: 'on' | 'off';
@@ -213,6 +246,16 @@ export declare class MetaballsView extends HTMLElement {
   picture(scale?: number): Promise<Blob>;
   /** Saves a PNG of the view. */
   downloadPicture(scale?: number): Promise<void>;
+  /** The figure as it is now, written to paste: its HTML, the iframe page's URL and an iframe, the Python widget's call, a MyST directive and the full page's link. */
+  shareText(): MetaballsShareText;
+  /** A PNG of the view at the figure's size (CSS pixels) times `scale`, the picture `poster` expects. */
+  makePoster(scale?: number): Promise<Blob>;
+  /** Saves the poster PNG and names it in the share box's HTML. */
+  downloadPoster(scale?: number): Promise<void>;
+  /** A clip of the animation, its frames 1/fps of animation apart: WebM, MP4 or GIF. */
+  record(options?: MetaballsRecordOptions): Promise<Blob>;
+  /** Opens the share box. */
+  openShare(): void;
   /** Shows a short message inside the figure. */
   showNotice(text: string, ms?: number): void;
   /** Where sphere `index` is drawn: its centre and radius in CSS pixels from the figure's top left, or null. */

@@ -38,6 +38,7 @@ import { TableChange } from './lib/features/table-change.js';
 import { TopologyWatch } from './lib/features/topology.js';
 import { IsoLevels } from './lib/features/levels.js';
 import { FigureSheets } from './lib/features/sheets.js';
+import { Share } from './lib/features/share.js';
 
 // The setting that holds spheres placed by hand, as text.
 const SPHERE_LIST = nameOfKind('spheres');
@@ -50,9 +51,12 @@ const readSetting = (spelling, text) => {
 
 // The features every figure has, in the order they hear of changes and frames.
 const FEATURES = [FigureSize, FigureDetail, Look, Guard, Hud, Playback, Camera, Inspector, Stepper, SphereEditor,
-  SceneFiles, TopologyWatch, IsoLevels, TableChange, Sync, ErrorPlot, Panel, FigureSheets];
+  SceneFiles, TopologyWatch, IsoLevels, TableChange, Sync, ErrorPlot, Share, Panel, FigureSheets];
 
 export class MetaballsView extends FigureBase {
+  /** Where this module was loaded from: the share box's script tags and pages are found from it. */
+  static moduleUrl = import.meta.url;
+
   /** GPU memory held by every element's buffers and targets, in bytes. */
   static get gpuBytes() {
     let bytes = 0;
@@ -220,6 +224,22 @@ export class MetaballsView extends FigureBase {
   picture(scale = 1) { return this.#ctx.get(SceneFiles).picture(scale); }
 
   downloadPicture(scale = 1) { return this.#ctx.get(SceneFiles).downloadPicture(scale); }
+
+  // ---------------------------------------------------------------- sharing
+
+  /** The figure as it is now, written to paste: { html, url, iframe, python, myst, link }. */
+  shareText() { return this.#ctx.get(Share).texts(); }
+
+  /** A PNG of the view at the figure's size (CSS pixels) times `scale`, the picture `poster` expects. */
+  makePoster(scale = 1) { return this.#ctx.get(Share).poster(scale); }
+
+  downloadPoster(scale = 1) { return this.#ctx.get(Share).downloadPoster(scale); }
+
+  /** A clip of the animation: { seconds, fps, width, height, format, onProgress, signal } → a Blob. */
+  record(options) { return this.#ctx.get(Share).record(options); }
+
+  /** Opens the share box. */
+  openShare() { this.#ctx.get(Share).open(); }
 
   // ---------------------------------------------------------------- notices
 

@@ -5,6 +5,7 @@
 
 import { backendName, loadWasm, parseParameter } from './lib/engine/wasm.js';
 import { propertyName, spellingsOf, TABLE as table } from './lib/core/table.js';
+import { queryText, valueText } from './lib/core/share-text.js';
 import { runBenchmark } from './bench.js';
 
 // The key a link gives a parameter under: its short name, its name, or an old spelling.
@@ -44,13 +45,16 @@ function start() {
 
   const MAX_LINK_SPHERES = 16;
 
+  // The full page's "share or embed" opens the figure's share box.
+  document.getElementById('open-share')?.addEventListener('click', () => element.openShare());
+
   // Changes go back into the link (short names, defaults left out), so a link reproduces the view.
   const share = document.getElementById('share');
   let urlTimer = 0;
   function saveUrl() {
     clearTimeout(urlTimer);
     urlTimer = setTimeout(() => {
-      const next = new URLSearchParams();
+      const settings = [];
       for (const spec of table.filter(inLinks)) {
         // Spheres placed by hand are read as the text their attribute holds (`sphereList` is a list).
         const value = spec.kind === 'spheres'
@@ -59,15 +63,11 @@ function start() {
         if (value === parseParameter(spec.name, spec.default)) continue;
         // Hand-placed spheres ride in the link for small scenes; larger ones go in a scene file.
         if (spec.kind === 'spheres' && value.split(';').length > MAX_LINK_SPHERES) continue;
-        const text = typeof value === 'boolean' ? (value ? '1' : '0') : String(value);
-        next.set(spec.url, text);
+        settings.push({ row: spec, value, text: valueText(spec, value) });
       }
-      for (const [key, value] of query) {
-        if (key === 'bench' || key.startsWith('bench_')) next.set(key, value);
-      }
-      // Commas, semicolons and colons are fine in a query: keep the spheres and slices readable.
-      const search = next.toString().replace(/%2C/g, ',').replace(/%3B/g, ';').replace(/%3A/g, ':');
-      const url = `${location.pathname}${search ? `?${search}` : ''}`;
+      const bench = [...query].filter(([key]) => key === 'bench' || key.startsWith('bench_'));
+      const search = queryText([...settings, ...bench.map(([key, text]) => ({ row: { url: key }, text }))]);
+      const url = `${location.pathname}${search}`;
       history.replaceState(null, '', url);
       if (share) share.href = url;
     }, 150);

@@ -68,7 +68,7 @@ function tellWasmSources(model) {
 }
 
 // What Python may ask the figure (`Metaballs.save_scene()` and the rest), by the element's method names.
-const CALLS = new Set(['saveScene', 'loadScene', 'exportMesh', 'picture', 'nextFrame', 'criticalPoints']);
+const CALLS = new Set(['saveScene', 'loadScene', 'exportMesh', 'picture', 'nextFrame', 'criticalPoints', 'record']);
 
 // Runs a method Python asked for and sends the answer: a value, bytes as a binary buffer, or the error.
 async function answer(model, figure, { id, method, args = [] }) {

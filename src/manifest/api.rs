@@ -48,6 +48,27 @@ pub const METHODS: &[(&str, &str, &str)] = &[
     ),
     ("picture", "(scale?: number): Promise<Blob>", "A PNG of the view at the canvas size times `scale`."),
     ("downloadPicture", "(scale?: number): Promise<void>", "Saves a PNG of the view."),
+    (
+        "shareText",
+        "(): MetaballsShareText",
+        "The figure as it is now, written to paste: its HTML, the iframe page's URL and an iframe, the Python widget's call, a MyST directive and the full page's link.",
+    ),
+    (
+        "makePoster",
+        "(scale?: number): Promise<Blob>",
+        "A PNG of the view at the figure's size (CSS pixels) times `scale`, the picture `poster` expects.",
+    ),
+    (
+        "downloadPoster",
+        "(scale?: number): Promise<void>",
+        "Saves the poster PNG and names it in the share box's HTML.",
+    ),
+    (
+        "record",
+        "(options?: MetaballsRecordOptions): Promise<Blob>",
+        "A clip of the animation, its frames 1/fps of animation apart: WebM, MP4 or GIF.",
+    ),
+    ("openShare", "(): void", "Opens the share box."),
     ("showNotice", "(text: string, ms?: number): void", "Shows a short message inside the figure."),
     (
         "sphereOnScreen",

@@ -31,6 +31,17 @@ const METHODS: &[Entry] = &[
         "Loads a scene document; throws with what is wrong, changing nothing.",
     ),
     ("downloadScene", "(): void", "Downloads the scene document."),
+    (
+        "shareText",
+        "(): Metaballs2dShareText",
+        "The figure as it is now, written to paste: its HTML, the iframe page's URL and an iframe, the Python widget's call, a MyST directive and the full page's link.",
+    ),
+    (
+        "makePoster",
+        "(scale?: number): Promise<Blob>",
+        "A PNG of the picture at the figure's size times `scale`.",
+    ),
+    ("openShare", "(): void", "Opens the share box."),
     ("showNotice", "(text: string, ms?: number): void", "Shows a short message inside the figure."),
 ];
 
@@ -95,5 +106,6 @@ pub(super) fn declarations() -> String {
          // 2D figure's rows and src/manifest/plane.rs. Do not edit: change those and run the command.\n\n\
          export interface Metaballs2dCircle {\n  x: number;\n  y: number;\n  r: number;\n  \
          /** 1 adds the circle's term, -1 subtracts it. */\n  charge?: 1 | -1;\n}\n\n",
-    ) + &api().typescript()
+    ) + super::SHARE_TEXT.replace("MetaballsShareText", "Metaballs2dShareText").as_str()
+        + &api().typescript()
 }

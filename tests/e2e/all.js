@@ -25,6 +25,8 @@ const SHARED = [
   'course.test.js', // 35
   'semester.test.js', // 30
   'compare.test.js', // 28
+  'share.test.js', // 25
+  'record.test.js', // 12
   'package.test.js', // 25
   'editing.test.js', // 24
   'device-loss.test.js', // 17
@@ -32,6 +34,7 @@ const SHARED = [
   'widget.test.js', // 12
   'book.test.js', // 12
   'assets.test.js', // 10
+  'clip.test.js', // 8
   'interpolant.test.js', // 7
   'squares.test.js', // 4
   'plane.test.js', // 15

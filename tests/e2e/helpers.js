@@ -335,3 +335,25 @@ export function tableRows(file = path.join(root, 'www/lib/attributes.js'), list 
   return source.split(`export const ${list} = Object.freeze([\n`)[1].split('\n]);')[0]
     .split('\n').map((line) => JSON.parse(line.trim().replace(/,$/, '')));
 }
+
+/** A value of `row` other than its default, as text, that a software renderer draws quickly. */
+export function otherText(row) {
+  switch (row.kind) {
+    case 'integer':
+    case 'number': {
+      if (row.name === 'resolution') return '16';
+      if (row.name === 'spheres') return '2';
+      if (row.sliderMax === row.sliderMin) return String(row.value + 6);
+      return String(row.sliderMin !== row.value ? row.sliderMin : row.sliderMax);
+    }
+    case 'boolean': return String(!row.value);
+    case 'color': return '#123456';
+    case 'choice': return row.words.find((w) => w !== row.value);
+    case 'list': return row.words.find((w) => w !== row.value);
+    case 'slice': return 'z:0.25';
+    case 'cell': return '1,2,3';
+    case 'spheres': return '0,0,0,0.3';
+    case 'levels': return '0.5,1.5';
+    default: return { circles: '0.3,0.1,0.35', march: '1,2' }[row.name] ?? 'a figure';
+  }
+}

@@ -16,7 +16,7 @@ import { root } from './helpers.js';
 const www = path.join(root, 'www');
 const sources = (dir) => readdirSync(dir, { withFileTypes: true }).flatMap((entry) => {
   const file = path.join(dir, entry.name);
-  if (entry.isDirectory()) return ['package', 'examples', 'tools'].includes(entry.name) ? [] : sources(file);
+  if (entry.isDirectory()) return ['package', 'examples', 'tools', 'vendor'].includes(entry.name) ? [] : sources(file);
   return entry.name.endsWith('.js') ? [file] : [];
 });
 const FILES = sources(www).map((file) => ({ file: path.relative(root, file), text: readFileSync(file, 'utf8') }));

@@ -25,6 +25,8 @@ const CELLS = [
     "print('STL', len(stl), struct.unpack('<I', stl[80:84])[0], w.triangles)",
     'png = await w.picture()',
     "print('PNG', png[:4] == bytes([137, 80, 78, 71]), len(png))",
+    "gif = await w.record(seconds=0.5, fps=24, width=160, height=90, format='gif')",
+    "print('GIF', gif[:6] == b'GIF89a', len(gif))",
     'await w.load_scene(await w.save_scene())',
     'try:',
     '    found = await w.critical_points()',
@@ -175,6 +177,7 @@ test('in JupyterLab the widget draws, follows Python, reports back, exports, sha
   assert.equal(count, drawn, 'the STL does not hold the drawn triangles');
   assert.equal(reported, drawn);
   assert.match(printed, /PNG True \d{4,}/);
+  assert.match(printed, /GIF True \d{4,}/);
   assert.match(printed, /REFUSED .+/);
   // The critical points' module came through the kernel too: two spheres, their join, proven complete.
   const critical = printed.match(/CRITICAL (\d+) (\w+) (\d+)/);

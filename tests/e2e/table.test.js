@@ -10,7 +10,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
-import { useServerAndBrowser, openClosedAfterEach, root, tableRows, waitForTriangles } from './helpers.js';
+import { useServerAndBrowser, openClosedAfterEach, otherText, root, tableRows, waitForTriangles } from './helpers.js';
 
 useServerAndBrowser();
 const open = openClosedAfterEach();
@@ -26,28 +26,6 @@ const PAGE_ONLY_TEXT = (row) => row.kind === 'text' && row.name !== 'alt';
 
 // Settings the 3D panel gives a button of their own rather than a labelled control: the Play button.
 const BUTTONS = ['paused'];
-
-/** A value of `row` other than its default, as text, that a software renderer draws quickly. */
-function otherText(row) {
-  switch (row.kind) {
-    case 'integer':
-    case 'number': {
-      if (row.name === 'resolution') return '16';
-      if (row.name === 'spheres') return '2';
-      if (row.sliderMax === row.sliderMin) return String(row.value + 6);
-      return String(row.sliderMin !== row.value ? row.sliderMin : row.sliderMax);
-    }
-    case 'boolean': return String(!row.value);
-    case 'color': return '#123456';
-    case 'choice': return row.words.find((w) => w !== row.value);
-    case 'list': return row.words.find((w) => w !== row.value);
-    case 'slice': return 'z:0.25';
-    case 'cell': return '1,2,3';
-    case 'spheres': return '0,0,0,0.3';
-    case 'levels': return '0.5,1.5';
-    default: return { circles: '0.3,0.1,0.35', march: '1,2' }[row.name] ?? 'a figure';
-  }
-}
 
 /** The property's value `text` gives, as the element holds it. */
 function typed(row, text) {

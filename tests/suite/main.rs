@@ -31,6 +31,7 @@ mod march;
 mod mc33;
 mod mesh_properties;
 mod parameters;
+mod record;
 mod scene_file;
 mod scene_render;
 mod shared_device;

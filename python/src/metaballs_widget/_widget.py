@@ -21,6 +21,7 @@ _WASM = {
     "levels": "pkg-levels/metaballs_levels_bg.wasm",
 }
 MESH_FORMATS = ("stl", "obj", "ply")
+CLIP_RATES = (24, 30, 60)
 
 
 def _settings(rows: dict) -> dict:
@@ -145,6 +146,31 @@ class _Figure(_Asking):
     async def picture(self, scale: float = 1.0) -> bytes:
         """A PNG of the view at the figure's size times ``scale`` (show it with ``IPython.display.Image``)."""
         return await self._ask("picture", float(scale))
+
+    async def record(
+        self,
+        seconds: float = 4.0,
+        fps: int = 30,
+        width: int | None = None,
+        height: int | None = None,
+        format: str | None = None,
+    ) -> bytes:
+        """A clip of the figure's animation, made in the browser frame by frame (each 1/``fps`` of
+        animation after the last, however long it takes to draw), as file bytes: ``format`` ``"webm-vp9"``,
+        ``"webm-vp8"``, ``"mp4-h264"`` (where the browser encodes them) or ``"gif"``; by default the first
+        the browser writes. ``width`` and ``height`` default to the figure's size. The figure's spheres
+        are back where they were afterwards. (``metaballs record`` makes GIF and APNG clips without a
+        browser.)"""
+        if fps not in CLIP_RATES:
+            raise ValueError(f"fps must be one of {', '.join(map(str, CLIP_RATES))}, got {fps!r}")
+        if not 0.1 <= float(seconds) <= 60:
+            raise ValueError(f"seconds must be a number from 0.1 to 60, got {seconds!r}")
+        options = {"seconds": float(seconds), "fps": int(fps)}
+        for name, value in (("width", width), ("height", height), ("format", format)):
+            if value is not None:
+                options[name] = value
+        # Drawing and encoding take about a second of the browser's time per second of clip, or more.
+        return await self._ask("record", options, timeout=120.0 + 30.0 * float(seconds))
 
     _check = _checked(_ROWS)
 

@@ -27,6 +27,7 @@ pub const PLANE_CONTROLS: &[&str] = &[
     "step-through",
     "circles",
     "scene",
+    "share",
 ];
 
 /// The rows of the parameter table the 2D figure takes as the 3D figure does.

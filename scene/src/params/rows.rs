@@ -236,6 +236,7 @@ pub const ACTIONS: &[Action] = &[
     Action { name: "error-plot", aliases: &["error_plot"], label: "Error vs resolution", group: Teaching },
     Action { name: "scene", aliases: &[], label: "Scene file", group: Scene },
     Action { name: "export", aliases: &[], label: "Export", group: Scene },
+    Action { name: "share", aliases: &[], label: "Share", group: Scene },
 ];
 
 /// A parameter by its name, its short name in links or one of its aliases.

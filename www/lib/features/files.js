@@ -3,17 +3,9 @@
 // encoding happen in the wasm; this module moves bytes between it and the browser.
 
 import { wasmModule } from '../engine/wasm.js';
+import { download } from '../core/download.js';
 
-/** Offers `blob` as a download called `name`. */
-export function download(blob, name) {
-  const url = URL.createObjectURL(blob);
-  const link = Object.assign(document.createElement('a'), { href: url, download: name });
-  link.style.display = 'none';
-  document.body.append(link);
-  link.click();
-  link.remove();
-  setTimeout(() => URL.revokeObjectURL(url), 10_000);
-}
+export { download };
 
 const MESH_TYPES = { stl: 'model/stl', obj: 'model/obj', ply: 'application/ply' };
 

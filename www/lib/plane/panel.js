@@ -49,6 +49,7 @@ export function planePanel(host, names, rowOf, figure, controlId = (name) => nam
     }
     if (name === 'step-through') return '<span></span><button type="button" class="wide" data-action="step-through">Step through the march</button>';
     if (name === 'circles') return '<span></span><span class="wide">Double-click to add a circle or remove one; drag to move it.</span>';
+    if (name === 'share') return '<span></span><button type="button" class="wide" data-action="share">Share…</button>';
     if (name === 'scene') {
       return '<span class="label">Scene</span><span class="checks"><button type="button" data-action="save-scene">Save scene</button>'
         + '<button type="button" data-action="load-scene">Load scene…</button><input type="file" accept=".json,application/json" hidden></span>';

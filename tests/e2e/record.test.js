@@ -1,0 +1,101 @@
+// Recording a 3D figure (`record()` and the share box's Record): 2 s at 30 fps at 320 × 180 in every
+// format this Chromium writes is a file ffprobe (Debian's ffmpeg) reads with 60 frames of that size; its
+// first frame, decoded by ffmpeg, is the figure's picture at that step (within the codec's loss), its
+// frames move, and the figure's spheres are back where they were afterwards. From the share box, Cancel
+// leaves no file and the figure animating.
+
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { readFileSync, rmSync, writeFileSync } from 'node:fs';
+import path from 'node:path';
+import { differingFraction, open, outputDir, useServerAndBrowser, waitForTriangles } from './helpers.js';
+
+useServerAndBrowser();
+
+const VIEWPORT = { width: 640, height: 360 };
+const [WIDTH, HEIGHT] = [320, 180];
+
+const probe = (file) => JSON.parse(execFileSync('ffprobe', ['-v', 'error', '-count_frames', '-select_streams', 'v:0',
+  '-show_entries', 'stream=nb_read_frames,width,height,codec_name', '-of', 'json', file], { encoding: 'utf8' })).streams[0];
+
+// Frame `index` of a clip as a PNG, decoded by ffmpeg.
+function frameOf(file, index) {
+  const out = `${file}.frame${index}.png`;
+  execFileSync('ffmpeg', ['-v', 'error', '-y', '-i', file, '-vf', `select=eq(n\\,${index})`, '-frames:v', '1', out]);
+  const png = readFileSync(out);
+  rmSync(out);
+  return png;
+}
+
+test('a recording of 2 s at 30 fps is 60 frames of the asked size in every format, its first frame the figure\'s picture, the spheres back where they were', async () => {
+  const { page, errors, close } = await open('index.html?res=32&spheres=4&controls=none&hud=off', { viewport: VIEWPORT });
+  try {
+    await waitForTriangles(page).catch(() => {});
+    await page.$eval('metaballs-view', async (e) => { await e.ready(); e.pause(); await e.nextFrame(); });
+    const formats = await page.evaluate(async () => (await import('/www/lib/figure/clip.js')).clipFormats(320, 180, 30));
+    const ids = formats.map((f) => f.id);
+    console.log(`formats offered: ${ids.join(', ')}`);
+    assert.ok(ids.includes('gif') && (ids.includes('webm-vp9') || ids.includes('webm-vp8')), `offered: ${ids}`);
+    for (const format of ids) {
+      const result = await page.$eval('metaballs-view', async (e, [f, w, h]) => {
+        const before = JSON.stringify(e.sphereList);
+        const picture = await e.makePoster(w / e.clientWidth);
+        let calls = 0;
+        const started = performance.now();
+        const clip = await e.record({ seconds: 2, fps: 30, width: w, height: h, format: f, onProgress: () => { calls += 1; } });
+        const ms = performance.now() - started;
+        return {
+          clip: [...new Uint8Array(await clip.arrayBuffer())], picture: [...new Uint8Array(await picture.arrayBuffer())],
+          type: clip.type, calls, ms, restored: JSON.stringify(e.sphereList) === before,
+        };
+      }, [format, WIDTH, HEIGHT]);
+      const file = path.join(outputDir, `record-${format}.${format === 'gif' ? 'gif' : format.split('-')[0]}`);
+      writeFileSync(file, Buffer.from(result.clip));
+      console.log(`${format}: ${result.clip.length} bytes in ${result.ms.toFixed(0)} ms (${file})`);
+      const stream = probe(file);
+      assert.deepEqual([Number(stream.nb_read_frames), stream.width, stream.height], [60, WIDTH, HEIGHT], `${format}: ${JSON.stringify(stream)}`);
+      assert.equal(result.calls, 60);
+      assert.ok(result.restored, `${format}: the spheres were not put back`);
+      // The first frame is the picture of the figure now; later frames have moved on.
+      const picture = Buffer.from(result.picture);
+      const first = frameOf(file, 0);
+      const last = frameOf(file, 59);
+      const [firstOff, lastOff] = [await differingFraction(page, picture, first), await differingFraction(page, picture, last)];
+      console.log(`${format}: first frame differs from the picture in ${(firstOff * 100).toFixed(2)} % of pixels, the last in ${(lastOff * 100).toFixed(2)} %`);
+      assert.ok(firstOff < 0.03, `${format}: the first frame is not the figure's picture (${(firstOff * 100).toFixed(2)} % differ)`);
+      assert.ok(lastOff > firstOff + 0.01, `${format}: the clip does not move`);
+    }
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('Record in the share box shows its progress; Cancel leaves no file and the figure animating', async () => {
+  const { page, errors, close } = await open('index.html?res=24&spheres=3', { viewport: { width: 960, height: 640 } });
+  try {
+    await waitForTriangles(page);
+    const downloads = [];
+    page.on('download', (d) => downloads.push(d.suggestedFilename()));
+    await page.click('#open-share');
+    const dialog = page.locator('metaballs-view dialog.share');
+    await dialog.waitFor();
+    await dialog.locator('input.seconds').fill('20');
+    await dialog.locator('select.format').selectOption('gif');
+    await dialog.getByRole('button', { name: 'Record' }).click();
+    await page.waitForFunction(() => document.querySelector('metaballs-view').shadowRoot.querySelector('dialog.share progress').value > 0.02);
+    await dialog.getByRole('button', { name: 'Cancel' }).click();
+    const status = dialog.locator('.record-status');
+    await page.waitForFunction(() => /Cancelled/.test(document.querySelector('metaballs-view').shadowRoot.querySelector('.record-status').textContent));
+    assert.match(await status.textContent(), /nothing was saved/);
+    await dialog.getByRole('button', { name: 'Close' }).click();
+    const drawn = await page.$eval('metaballs-view', (e) => e.framesDrawn);
+    await page.waitForFunction((n) => document.querySelector('metaballs-view').framesDrawn > n + 5, drawn);
+    assert.equal(await page.$eval('metaballs-view', (e) => e.paused), false);
+    assert.deepEqual(downloads, []);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});

@@ -1,0 +1,82 @@
+// Sharing a 2D figure: its share box (the panel's `share` action, `openShare()`), the texts it writes
+// (`shareText()`: HTML, iframe, Python, MyST, link) and pictures of it at 1× and 2× of its box
+// (`poster(scale)`), drawn from its vector picture.
+
+import { VERSION } from '../attributes.js';
+import { shareTexts } from '../core/share-text.js';
+import { ShareBox } from './share-box.js';
+
+// The rows the full page sets itself.
+const PAGE_ROWS = new Set(['controls', 'slice-of']);
+
+export class PlaneShare {
+  #ctx;
+  #box = null;
+
+  constructor(ctx) {
+    this.#ctx = ctx;
+    ctx.actions.share = () => this.open();
+  }
+
+  refresh() { if (this.#box?.isOpen) this.#box.refresh(); }
+
+  get box() { return this.#box; }
+
+  open() {
+    this.#box ??= new ShareBox(this.#ctx.root, {
+      texts: () => this.texts(),
+      poster: (scale) => this.poster(scale),
+      posterName: (scale) => (scale === 1 ? 'metaballs-2d.png' : `metaballs-2d@${scale}x.png`),
+      posterSaved: () => false,
+      posterHint: 'A picture of the figure as it is, for slides and handouts.',
+      recorder: null,
+    });
+    this.#box.open();
+  }
+
+  #seen() {
+    const { element } = this.#ctx;
+    return { width: element.clientWidth || 480, height: element.clientHeight || 480 };
+  }
+
+  texts() {
+    const { element, state, settings } = this.#ctx;
+    const moduleUrl = new URL(element.constructor.moduleUrl ?? 'metaballs-2d.js', document.baseURI).href;
+    const at = (path) => new URL(path, moduleUrl).href;
+    // A paused figure's circles where they are now (the moment the author paused at).
+    const now = state.paused && !state.circles
+      ? { ...state, circles: element.circleList.map((c) => [c.x, c.y, Math.abs(c.r) * ((c.charge ?? Math.sign(c.r)) < 0 ? -1 : 1)].join(',')).join(';') }
+      : state;
+    return shareTexts({
+      rows: settings.rows,
+      state: now,
+      chosen: (row) => settings.given.has(row.name) || row.name === 'circles',
+      tag: 'metaballs-2d',
+      moduleUrl,
+      stylesheet: at('metaballs-view.css'),
+      pages: { full: at('../squares.html'), embed: at('../embed-2d.html') },
+      widget: { module: at('../widget-2d.js'), className: 'Metaballs2d', wasmUrl: null },
+      size: this.#seen(),
+      pageRows: PAGE_ROWS,
+      version: VERSION,
+    });
+  }
+
+  /** A PNG of the picture (square, the canvas's side in CSS pixels times `scale`), drawn from its SVG. */
+  async poster(scale = 1) {
+    if (!(scale > 0 && scale <= 4)) throw new Error(`poster scale must be a number from 0 to 4, got ${scale}`);
+    const canvas = this.#ctx.canvas;
+    const side = Math.max(1, Math.round((canvas.clientWidth || 480) * scale));
+    const url = URL.createObjectURL(new Blob([this.#ctx.frames.svg(side)], { type: 'image/svg+xml' }));
+    try {
+      const image = new Image(side, side);
+      image.src = url;
+      await image.decode();
+      const out = Object.assign(document.createElement('canvas'), { width: side, height: side });
+      out.getContext('2d').drawImage(image, 0, 0, side, side);
+      return await new Promise((resolve, reject) => out.toBlob((b) => (b ? resolve(b) : reject(new Error('the browser could not encode the PNG'))), 'image/png'));
+    } finally {
+      URL.revokeObjectURL(url);
+    }
+  }
+}

@@ -1,0 +1,266 @@
+// The share box of both figures: a dialog that writes the figure as it is now for the places an author
+// puts it (a page's HTML, an iframe for hosts that strip scripts, a notebook's Python, a MyST
+// directive, the full page's link), each with a Copy button; posters at 1× and 2× of the figure's box;
+// and, where the figure can make one, a recording of its animation with a progress bar and Cancel.
+// Copying uses the Clipboard API; where the browser refuses, the text is selected for the reader to copy.
+
+import { download } from '../core/download.js';
+
+const STYLE = `
+dialog.share { max-width: min(640px, calc(100vw - 24px)); width: 100%; max-height: calc(100dvh - 24px);
+  box-sizing: border-box; padding: 12px 14px; border: 1px solid var(--border, #3d4559); border-radius: 8px;
+  background: var(--panel-solid, #0e1118); color: var(--text, #e6e9ef); font: 13px/1.4 system-ui, sans-serif; }
+dialog.share::backdrop { background: rgba(0, 0, 0, 0.45); }
+.share header { display: flex; align-items: center; justify-content: space-between; gap: 8px; }
+.share h2 { font-size: 15px; margin: 0; }
+.share h3 { font-size: 13px; margin: 12px 0 4px; }
+.share button, .share select, .share input { font: inherit; min-height: 28px; min-width: 28px; color: inherit;
+  background: var(--button, #232838); border: 1px solid var(--border, #3d4559); border-radius: 4px; padding: 2px 8px; }
+.share button, .share select, .share input { width: auto; flex: none; margin: 0; }
+.share button:hover { background: var(--button-hover, #2c3245); }
+.share button:focus-visible, .share select:focus-visible, .share input:focus-visible, .share textarea:focus-visible,
+.share [role=tab]:focus-visible { outline: 2px solid var(--accent, #e77661); outline-offset: 1px; }
+.share [role=tablist] { display: flex; flex-wrap: wrap; gap: 4px; margin: 10px 0 6px; }
+.share [role=tab][aria-selected=true] { background: var(--accent, #e77661); color: var(--on-accent, #1a0d0a); border-color: transparent; }
+.share textarea { box-sizing: border-box; width: 100%; min-height: 7.5em; resize: vertical; font: 12px/1.35 ui-monospace, monospace;
+  color: inherit; background: var(--button, #232838); border: 1px solid var(--border, #3d4559); border-radius: 4px; padding: 6px; }
+.share .hint, .share .status { color: var(--muted, #a9b1c2); margin: 4px 0; }
+.share .row { display: flex; flex-wrap: wrap; align-items: center; gap: 6px 10px; }
+.share label { display: inline-flex; align-items: center; gap: 4px; }
+.share input[type=number] { width: 4.5em; }
+.share progress { flex: 1 1 120px; min-width: 120px; height: 12px; accent-color: var(--accent, #e77661); }
+`;
+
+// What each text is for, in the order of the tabs.
+const TABS = [
+  ['html', 'HTML', 'For a page that runs scripts (VitePress, Docusaurus, MkDocs, reveal.js, a plain page). Save the poster beside the page to show while it loads.'],
+  ['iframe', 'Iframe', 'For hosts that strip scripts (Moodle, Canvas, Blackboard, a wiki): the figure on a page of its own, at the size seen here.'],
+  ['url', 'Iframe URL', 'The iframe page\'s address, for a host that asks for a URL (MyST\'s {iframe}, an LMS\'s embed field).'],
+  ['python', 'Python', 'For a notebook (JupyterLab, VS Code, Colab, marimo) with the metaballs_widget package.'],
+  ['myst', 'MyST', 'For a MyST or Jupyter Book page: the notebook widget with these settings, drawn without a kernel.'],
+  ['link', 'Link', 'The full page with every control, showing this view.'],
+];
+
+const el = (tag, props = {}, ...children) => {
+  const node = Object.assign(document.createElement(tag), props);
+  node.append(...children);
+  return node;
+};
+
+export class ShareBox {
+  #root;
+  #options;
+  #dialog = null;
+  #texts = null;
+  #tab = 'html';
+  #recording = null;
+
+  /**
+   * `root`: the figure's shadow root. `options`:
+   * - `texts()`: the share texts now (lib/core/share-text.js);
+   * - `poster(scale)`: a PNG blob of the picture at the box's size times `scale`; `posterName(scale)`;
+   *   `posterSaved(name)`: true when the HTML names the poster from then on;
+   * - `posterHint`: what the poster is for in this figure;
+   * - `recorder` (or null): { size() → { width, height } seen, formats(width, height, fps) → the clip
+   *   formats, record(options) → a Blob, fileName(format) }.
+   */
+  constructor(root, options) {
+    this.#root = root;
+    this.#options = options;
+  }
+
+  get isOpen() { return Boolean(this.#dialog?.open); }
+
+  /** The text shown now and its tab (for tests and the element). */
+  get shown() { return { tab: this.#tab, text: this.#dialog?.querySelector('textarea').value ?? '' }; }
+
+  open() {
+    this.#dialog ??= this.#build();
+    this.refresh();
+    if (!this.#dialog.open) this.#dialog.showModal();
+    this.#dialog.querySelector(`[role=tab][aria-selected=true]`).focus();
+  }
+
+  close() { this.#dialog?.close(); }
+
+  /** Writes the texts again (the figure changed, a poster was saved). */
+  refresh() {
+    if (!this.#dialog) return;
+    this.#texts = this.#options.texts();
+    this.#show(this.#tab);
+  }
+
+  #show(tab) {
+    this.#tab = tab;
+    const dialog = this.#dialog;
+    for (const button of dialog.querySelectorAll('[role=tab]')) {
+      const selected = button.dataset.tab === tab;
+      button.setAttribute('aria-selected', String(selected));
+      button.tabIndex = selected ? 0 : -1;
+    }
+    const [, label, hint] = TABS.find(([id]) => id === tab);
+    const area = dialog.querySelector('textarea');
+    area.value = this.#texts[tab];
+    area.setAttribute('aria-label', label);
+    area.rows = Math.min(12, Math.max(3, area.value.split('\n').length + 1));
+    dialog.querySelector('.hint').textContent = hint;
+    dialog.querySelector('.copy-status').textContent = '';
+  }
+
+  async #copy() {
+    const dialog = this.#dialog;
+    const area = dialog.querySelector('textarea');
+    const status = dialog.querySelector('.copy-status');
+    try {
+      if (!navigator.clipboard?.writeText) throw new Error('no clipboard');
+      await navigator.clipboard.writeText(area.value);
+      status.textContent = 'Copied.';
+    } catch {
+      area.focus();
+      area.select();
+      status.textContent = 'This browser did not let the page copy: the text is selected, copy it with Ctrl+C (⌘C).';
+    }
+  }
+
+  #build() {
+    const dialog = el('dialog', { className: 'share' });
+    dialog.setAttribute('part', 'share');
+    dialog.setAttribute('aria-labelledby', 'share-title');
+    const close = el('button', { type: 'button', textContent: '×', title: 'Close' });
+    close.setAttribute('aria-label', 'Close');
+    close.addEventListener('click', () => dialog.close());
+
+    const tabs = el('div');
+    tabs.setAttribute('role', 'tablist');
+    tabs.setAttribute('aria-label', 'Where the figure goes');
+    for (const [id, label] of TABS) {
+      const tab = el('button', { type: 'button', textContent: label });
+      tab.dataset.tab = id;
+      tab.setAttribute('role', 'tab');
+      tab.addEventListener('click', () => this.#show(id));
+      tabs.append(tab);
+    }
+    // Arrow keys move between the tabs, as in any tab list.
+    tabs.addEventListener('keydown', (event) => {
+      const step = { ArrowRight: 1, ArrowLeft: -1 }[event.key];
+      if (!step) return;
+      const index = TABS.findIndex(([id]) => id === this.#tab);
+      const [next] = TABS[(index + step + TABS.length) % TABS.length];
+      this.#show(next);
+      tabs.querySelector(`[data-tab="${next}"]`).focus();
+      event.preventDefault();
+    });
+    const area = el('textarea', { readOnly: true, spellcheck: false });
+    area.setAttribute('wrap', 'soft');
+    const copy = el('button', { type: 'button', textContent: 'Copy', className: 'copy' });
+    copy.addEventListener('click', () => this.#copy());
+    const copyStatus = el('span', { className: 'status copy-status' });
+    copyStatus.setAttribute('role', 'status');
+
+    dialog.append(
+      el('style', { textContent: STYLE }),
+      el('header', {}, el('h2', { id: 'share-title', textContent: 'Share this figure' }), close),
+      tabs, el('p', { className: 'hint' }), area, el('div', { className: 'row' }, copy, copyStatus),
+      this.#posterSection(),
+    );
+    if (this.#options.recorder) dialog.append(this.#recordSection());
+    // A recording under way is cancelled when the box closes.
+    dialog.addEventListener('close', () => this.#recording?.abort());
+    this.#root.append(dialog);
+    return dialog;
+  }
+
+  #posterSection() {
+    const status = el('span', { className: 'status' });
+    status.setAttribute('role', 'status');
+    const button = (scale) => {
+      const b = el('button', { type: 'button', textContent: `PNG ${scale}×`, className: `poster-${scale}x` });
+      b.addEventListener('click', async () => {
+        const name = this.#options.posterName(scale);
+        try {
+          download(await this.#options.poster(scale), name);
+          const named = this.#options.posterSaved(name);
+          this.refresh();
+          status.textContent = named ? `Saved ${name}; the HTML names it as the poster.` : `Saved ${name}.`;
+        } catch (error) {
+          status.textContent = `The poster could not be made: ${error.message}`;
+        }
+      });
+      return b;
+    };
+    return el('section', {},
+      el('h3', { textContent: 'Poster' }),
+      el('p', { className: 'hint', textContent: this.#options.posterHint }),
+      el('div', { className: 'row' }, button(1), button(2), status));
+  }
+
+  #recordSection() {
+    const recorder = this.#options.recorder;
+    const seen = recorder.size();
+    const even = (n) => Math.max(2, Math.round(n / 2) * 2);
+    const sizes = [[even(seen.width), even(seen.height), 'as seen'], [640, 360], [1280, 720], [1920, 1080]];
+    const seconds = el('input', { type: 'number', min: '0.5', max: '60', step: '0.5', value: '4', className: 'seconds' });
+    const fps = el('select', { className: 'fps' }, ...[24, 30, 60].map((n) => el('option', { value: String(n), textContent: `${n} fps`, selected: n === 30 })));
+    const size = el('select', { className: 'size' },
+      ...sizes.map(([w, h, note]) => el('option', { value: `${w}x${h}`, textContent: `${w}×${h}${note ? ` (${note})` : ''}` })));
+    const format = el('select', { className: 'format' });
+    const start = el('button', { type: 'button', textContent: 'Record', className: 'record' });
+    const cancel = el('button', { type: 'button', textContent: 'Cancel', className: 'cancel', hidden: true });
+    const progress = el('progress', { max: 1, value: 0, hidden: true });
+    const status = el('span', { className: 'status record-status' });
+    status.setAttribute('role', 'status');
+    const label = (text, input) => el('label', {}, text, input);
+
+    const chosen = () => {
+      const [w, h] = size.value.split('x').map(Number);
+      return { width: w, height: h, fps: Number(fps.value), seconds: Number(seconds.value), format: format.value };
+    };
+    // The formats this browser writes at the size and rate chosen.
+    const listFormats = async () => {
+      const { width, height, fps: rate } = chosen();
+      const formats = await recorder.formats(width, height, rate);
+      const before = format.value;
+      format.replaceChildren(...formats.map((f) => el('option', { value: f.id, textContent: f.label })));
+      if (formats.some((f) => f.id === before)) format.value = before;
+    };
+    size.addEventListener('change', listFormats);
+    fps.addEventListener('change', listFormats);
+    listFormats().catch((error) => { status.textContent = `Recording is not available here: ${error.message}`; });
+
+    start.addEventListener('click', async () => {
+      const options = chosen();
+      const controller = new AbortController();
+      this.#recording = controller;
+      start.disabled = true;
+      cancel.hidden = false;
+      progress.hidden = false;
+      progress.value = 0;
+      status.textContent = 'Recording…';
+      const started = performance.now();
+      try {
+        const blob = await recorder.record({
+          ...options,
+          signal: controller.signal,
+          onProgress: (done, count) => { progress.value = done / count; },
+        });
+        const name = recorder.fileName(options.format);
+        download(blob, name);
+        status.textContent = `Saved ${name}: ${(blob.size / 1e6).toFixed(2)} MB in ${((performance.now() - started) / 1000).toFixed(1)} s.`;
+      } catch (error) {
+        status.textContent = error?.name === 'AbortError' ? 'Cancelled: nothing was saved.' : `The recording failed: ${error.message}`;
+      } finally {
+        this.#recording = null;
+        start.disabled = false;
+        cancel.hidden = true;
+        progress.hidden = true;
+      }
+    });
+    cancel.addEventListener('click', () => this.#recording?.abort());
+
+    return el('section', { className: 'recording' },
+      el('h3', { textContent: 'Recording' }),
+      el('p', { className: 'hint', textContent: 'A clip of the animation for slides and pages that take only videos or images. Frames are made one step apart, so the clip is smooth on any machine.' }),
+      el('div', { className: 'row' }, label('Length (s) ', seconds), fps, size, format),
+      el('div', { className: 'row' }, start, cancel, progress, status));
+  }
+}

@@ -1,0 +1,154 @@
+// Sharing a 3D figure: its share box (the panel's `share` action, `openShare()`), the texts it writes
+// (`shareText()`: HTML, iframe, Python, MyST, link), posters at the figure's size (`poster(scale)`), and
+// recordings of its animation (`record(options)`), whose frames are made one animation step of 1/fps
+// apart whatever the machine's speed, at the size asked for, and encoded in the browser.
+
+import { TABLE, VERSION } from '../attributes.js';
+import { nameOfKind, VIEW_ROWS } from '../core/table.js';
+import { shareTexts } from '../core/share-text.js';
+import { download } from '../core/download.js';
+import { wasmModule } from '../engine/wasm.js';
+import { pngOf } from '../figure/look.js';
+import { clipFormats, encodeClip } from '../figure/clip.js';
+import { ShareBox } from './share-box.js';
+
+// The rows the full page sets itself (it always has every control and the statistics).
+const PAGE_ROWS = new Set(['controls', 'hud']);
+const POSTER_TEXT = TABLE.find((row) => row.name === 'poster');
+const FPS = [24, 30, 60];
+// The setting that holds spheres placed by hand, as text.
+const SPHERE_LIST = nameOfKind('spheres');
+
+export class Share {
+  #ctx;
+  #box = null;
+  // The poster saved from the share box, named in its HTML from then on.
+  #posterName = null;
+
+  constructor(ctx) {
+    this.#ctx = ctx;
+    ctx.actions.share = () => this.open();
+  }
+
+  controls() {
+    return {
+      share: ({ makeButton }) => makeButton('share', 'Share…', 'Copy this figure for a page, an iframe, a notebook or MyST; save a poster or a clip', () => this.open()),
+    };
+  }
+
+  // The box, when open, follows the figure's changes.
+  refresh() { if (this.#box?.isOpen) this.#box.refresh(); }
+
+  get box() { return this.#box; }
+
+  open() {
+    this.#box ??= new ShareBox(this.#ctx.root, {
+      texts: () => this.texts(),
+      poster: (scale) => this.poster(scale),
+      posterName: (scale) => (scale === 1 ? 'metaballs-poster.png' : `metaballs-poster@${scale}x.png`),
+      posterSaved: (name) => {
+        this.#posterName = name;
+        return true;
+      },
+      posterHint: 'The picture shown until the figure draws, and in print: save it beside your page.',
+      recorder: {
+        size: () => this.#seen(),
+        formats: (width, height, fps) => clipFormats(width, height, fps),
+        record: (options) => this.record(options),
+        fileName: (format) => `metaballs.${format === 'gif' ? 'gif' : format.split('-')[0]}`,
+      },
+    });
+    this.#box.open();
+  }
+
+  #seen() {
+    const { element } = this.#ctx;
+    return { width: element.clientWidth || 640, height: element.clientHeight || 360 };
+  }
+
+  /** The share box's texts for the figure as it is now. */
+  texts() {
+    const { element, settings } = this.#ctx;
+    const moduleUrl = new URL(element.constructor.moduleUrl ?? 'metaballs-view.js', document.baseURI).href;
+    const at = (path) => new URL(path, moduleUrl).href;
+    const now = this.#stateNow();
+    return shareTexts({
+      rows: VIEW_ROWS,
+      state: now,
+      // What the author or the reader set, and spheres placed by hand; not what the figure chose for
+      // its device (a software adapter's antialiasing), which a copy chooses again for its own.
+      chosen: (row) => settings.given.has(row.name) || row.name === SPHERE_LIST || (row.name === 'spheres' && Boolean(now[SPHERE_LIST])),
+      tag: 'metaballs-view',
+      moduleUrl,
+      stylesheet: at('metaballs-view.css'),
+      pages: { full: at('../index.html'), embed: at('../embed.html') },
+      widget: { module: at('../widget.js'), className: 'Metaballs', wasmUrl: at('../') },
+      size: this.#seen(),
+      poster: POSTER_TEXT ? this.#posterName : null,
+      pageRows: PAGE_ROWS,
+      version: VERSION,
+    });
+  }
+
+  // The settings, and for a paused figure its spheres where they are now (the moment the author
+  // paused at), as a hand-placed list.
+  #stateNow() {
+    const { state, view } = this.#ctx;
+    if (!state.paused || state[SPHERE_LIST] || !view) return state;
+    const packed = view.spheres();
+    return { ...state, [SPHERE_LIST]: wasmModule().spheres_text(packed), spheres: packed.length / 7 };
+  }
+
+  /** A PNG of the view at the figure's box (CSS pixels) times `scale`. */
+  async poster(scale = 1) {
+    if (!(scale > 0 && scale <= 4)) throw new Error(`poster scale must be a number from 0 to 4, got ${scale}`);
+    await this.#ctx.frames.nextFrame();
+    const { width, height } = this.#seen();
+    const [w, h] = [Math.round(width * scale), Math.round(height * scale)];
+    return pngOf(await this.#ctx.view.render_pixels(w, h), w, h);
+  }
+
+  async downloadPoster(scale = 1) {
+    const name = scale === 1 ? 'metaballs-poster.png' : `metaballs-poster@${scale}x.png`;
+    download(await this.poster(scale), name);
+    this.#posterName = name;
+    this.#box?.refresh();
+  }
+
+  /**
+   * A clip of the animation: `seconds` × `fps` frames, frame i after i steps of speed/fps seconds from
+   * the scene now (a paused figure's spheres move too), at width × height, in `format` (the first this
+   * browser writes when not given). The figure's spheres are back where they were afterwards.
+   */
+  async record({ seconds = 4, fps = 30, width, height, format, onProgress, signal } = {}) {
+    if (!FPS.includes(fps)) throw new Error(`fps must be 24, 30 or 60, got ${fps}`);
+    if (!(seconds >= 0.1 && seconds <= 60)) throw new Error(`seconds must be a number from 0.1 to 60, got ${seconds}`);
+    const seen = this.#seen();
+    width ??= Math.max(2, Math.round(seen.width / 2) * 2);
+    height ??= Math.max(2, Math.round(seen.height / 2) * 2);
+    if (!format) [{ id: format }] = await clipFormats(width, height, fps);
+    const count = Math.max(1, Math.round(seconds * fps));
+    const ctx = this.#ctx;
+    const speed = ctx.state.speed;
+    const started = performance.now();
+    const blob = await ctx.frames.withView(async (view) => {
+      const spheres = view.spheres();
+      // The frame the scene is at (a 60 fps GIF asks for every second frame only).
+      let at = 0;
+      try {
+        return await encodeClip({
+          format, width, height, fps, count, onProgress, signal,
+          frame: async (i) => {
+            if (i > at) view.frame(((i - at) * speed) / fps);
+            at = i;
+            return view.render_pixels(width, height);
+          },
+        });
+      } finally {
+        view.set_spheres(spheres);
+      }
+    });
+    ctx.emit('metaballs-record', { format, width, height, fps, frames: count, bytes: blob.size, ms: performance.now() - started });
+    return blob;
+  }
+}
