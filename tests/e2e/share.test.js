@@ -14,6 +14,7 @@ import path from 'node:path';
 import {
   browser, baseUrl, differingFraction, open, otherText, outputDir, root, tableRows, useServerAndBrowser, waitForTriangles,
 } from './helpers.js';
+import { figureContrast } from './phone-checks.js';
 
 useServerAndBrowser();
 
@@ -265,6 +266,35 @@ test('Copy writes the text to the clipboard where allowed, and selects it for th
       }
     } finally {
       await context.close();
+    }
+  }
+});
+
+test("the share box of each figure, in both themes, meets axe-core's WCAG 2.2 AA rules and every text its contrast", async () => {
+  for (const [url, tag] of [['index.html', 'metaballs-view'], ['squares.html', 'metaballs-2d']]) {
+    const { page, errors, close } = await open(url, { viewport: { width: 960, height: 700 } });
+    try {
+      await page.waitForFunction((t) => document.querySelector(t)?.openShare, tag, { timeout: 60_000 });
+      await page.addScriptTag({ path: path.join(root, 'tests/e2e/node_modules/axe-core/axe.min.js') });
+      for (const theme of ['dark', 'light']) {
+        await page.$eval(tag, (e, t) => { e.setAttribute('theme', t); e.openShare(); }, theme);
+        const handle = await page.$(tag);
+        const checked = await handle.evaluate(figureContrast);
+        assert.deepEqual(checked.failing, [], `${url}, ${theme}: texts under their contrast`);
+        const violations = await page.evaluate(async () => {
+          const result = await window.axe.run(document, {
+            runOnly: { type: 'tag', values: ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa', 'wcag22aa'] },
+            resultTypes: ['violations'],
+          });
+          return result.violations.map((v) => `${v.id} (${v.impact}): ${v.nodes.slice(0, 3).map((n) => n.target.join(' ')).join(' | ')}`);
+        });
+        assert.deepEqual(violations, [], `${url}, ${theme}`);
+        await page.screenshot({ path: path.join(outputDir, `share-box-${tag}-${theme}.png`) });
+        await page.$eval(tag, (e) => e.shadowRoot.querySelector('dialog.share').close());
+      }
+      assert.deepEqual(errors, []);
+    } finally {
+      await close();
     }
   }
 });

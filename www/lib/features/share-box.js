@@ -209,6 +209,9 @@ export class ShareBox {
     const progress = el('progress', { max: 1, value: 0, hidden: true });
     const status = el('span', { className: 'status record-status' });
     status.setAttribute('role', 'status');
+    for (const [node, name] of [[fps, 'Frame rate'], [size, 'Size'], [format, 'Format'], [progress, 'Recording']]) {
+      node.setAttribute('aria-label', name);
+    }
     const label = (text, input) => el('label', {}, text, input);
 
     const chosen = () => {
