@@ -4,43 +4,28 @@
 
 import { VERSION } from '../attributes.js';
 import { shareTexts } from '../core/share-text.js';
-import { ShareBox } from './share-box.js';
+import { ShareFeature } from './share-box.js';
 
 // The rows the full page sets itself.
 const PAGE_ROWS = new Set(['controls', 'slice-of']);
 
-export class PlaneShare {
-  #ctx;
-  #box = null;
-
-  constructor(ctx) {
-    this.#ctx = ctx;
-    ctx.actions.share = () => this.open();
-  }
-
-  refresh() { if (this.#box?.isOpen) this.#box.refresh(); }
-
-  get box() { return this.#box; }
-
-  open() {
-    this.#box ??= new ShareBox(this.#ctx.root, {
-      texts: () => this.texts(),
-      poster: (scale) => this.poster(scale),
+export class PlaneShare extends ShareFeature {
+  boxOptions() {
+    return {
       posterName: (scale) => (scale === 1 ? 'metaballs-2d.png' : `metaballs-2d@${scale}x.png`),
       posterSaved: () => false,
       posterHint: 'A picture of the figure as it is, for slides and handouts.',
       recorder: null,
-    });
-    this.#box.open();
+    };
   }
 
   #seen() {
-    const { element } = this.#ctx;
+    const { element } = this.ctx;
     return { width: element.clientWidth || 480, height: element.clientHeight || 480 };
   }
 
   texts() {
-    const { element, state, settings } = this.#ctx;
+    const { element, state, settings } = this.ctx;
     const moduleUrl = new URL(element.constructor.moduleUrl ?? 'metaballs-2d.js', document.baseURI).href;
     const at = (path) => new URL(path, moduleUrl).href;
     // A paused figure's circles where they are now (the moment the author paused at).
@@ -65,9 +50,9 @@ export class PlaneShare {
   /** A PNG of the picture (square, the canvas's side in CSS pixels times `scale`), drawn from its SVG. */
   async poster(scale = 1) {
     if (!(scale > 0 && scale <= 4)) throw new Error(`poster scale must be a number from 0 to 4, got ${scale}`);
-    const canvas = this.#ctx.canvas;
+    const canvas = this.ctx.canvas;
     const side = Math.max(1, Math.round((canvas.clientWidth || 480) * scale));
-    const url = URL.createObjectURL(new Blob([this.#ctx.frames.svg(side)], { type: 'image/svg+xml' }));
+    const url = URL.createObjectURL(new Blob([this.ctx.frames.svg(side)], { type: 'image/svg+xml' }));
     try {
       const image = new Image(side, side);
       image.src = url;

@@ -267,3 +267,31 @@ export class ShareBox {
       el('div', { className: 'row' }, start, cancel, progress, status));
   }
 }
+
+/**
+ * What both figures' sharing features share: the panel's `share` action, the box made when first
+ * opened, and the box following the figure's changes while it is open. A subclass gives `texts()`,
+ * `poster(scale)` and `boxOptions()` (the rest of the box's options).
+ */
+export class ShareFeature {
+  #box = null;
+
+  constructor(ctx) {
+    this.ctx = ctx;
+    ctx.actions.share = () => this.open();
+  }
+
+  refresh() { if (this.#box?.isOpen) this.#box.refresh(); }
+
+  open() {
+    this.#box ??= new ShareBox(this.ctx.root, {
+      texts: () => this.texts(),
+      poster: (scale) => this.poster(scale),
+      ...this.boxOptions(),
+    });
+    this.#box.open();
+  }
+
+  /** Writes the open box's texts again. */
+  rewrite() { this.#box?.refresh(); }
+}

@@ -10,7 +10,7 @@ import { download } from '../core/download.js';
 import { wasmModule } from '../engine/wasm.js';
 import { pngOf } from '../figure/look.js';
 import { clipFormats, encodeClip } from '../figure/clip.js';
-import { ShareBox } from './share-box.js';
+import { ShareFeature } from './share-box.js';
 
 // The rows the full page sets itself (it always has every control and the statistics).
 const PAGE_ROWS = new Set(['controls', 'hud']);
@@ -18,17 +18,12 @@ const POSTER_TEXT = TABLE.find((row) => row.name === 'poster');
 const FPS = [24, 30, 60];
 // The setting that holds spheres placed by hand, as text.
 const SPHERE_LIST = nameOfKind('spheres');
+// The poster's file name at `scale` times the figure's size.
+const posterFile = (scale) => (scale === 1 ? 'metaballs-poster.png' : `metaballs-poster@${scale}x.png`);
 
-export class Share {
-  #ctx;
-  #box = null;
+export class Share extends ShareFeature {
   // The poster saved from the share box, named in its HTML from then on.
   #posterName = null;
-
-  constructor(ctx) {
-    this.#ctx = ctx;
-    ctx.actions.share = () => this.open();
-  }
 
   controls() {
     return {
@@ -36,16 +31,9 @@ export class Share {
     };
   }
 
-  // The box, when open, follows the figure's changes.
-  refresh() { if (this.#box?.isOpen) this.#box.refresh(); }
-
-  get box() { return this.#box; }
-
-  open() {
-    this.#box ??= new ShareBox(this.#ctx.root, {
-      texts: () => this.texts(),
-      poster: (scale) => this.poster(scale),
-      posterName: (scale) => (scale === 1 ? 'metaballs-poster.png' : `metaballs-poster@${scale}x.png`),
+  boxOptions() {
+    return {
+      posterName: posterFile,
       posterSaved: (name) => {
         this.#posterName = name;
         return true;
@@ -57,18 +45,17 @@ export class Share {
         record: (options) => this.record(options),
         fileName: (format) => `metaballs.${format === 'gif' ? 'gif' : format.split('-')[0]}`,
       },
-    });
-    this.#box.open();
+    };
   }
 
   #seen() {
-    const { element } = this.#ctx;
+    const { element } = this.ctx;
     return { width: element.clientWidth || 640, height: element.clientHeight || 360 };
   }
 
   /** The share box's texts for the figure as it is now. */
   texts() {
-    const { element, settings } = this.#ctx;
+    const { element, settings } = this.ctx;
     const moduleUrl = new URL(element.constructor.moduleUrl ?? 'metaballs-view.js', document.baseURI).href;
     const at = (path) => new URL(path, moduleUrl).href;
     const now = this.#stateNow();
@@ -93,7 +80,7 @@ export class Share {
   // The settings, and for a paused figure its spheres where they are now (the moment the author
   // paused at), as a hand-placed list.
   #stateNow() {
-    const { state, view } = this.#ctx;
+    const { state, view } = this.ctx;
     if (!state.paused || state[SPHERE_LIST] || !view) return state;
     const packed = view.spheres();
     return { ...state, [SPHERE_LIST]: wasmModule().spheres_text(packed), spheres: packed.length / 7 };
@@ -102,17 +89,17 @@ export class Share {
   /** A PNG of the view at the figure's box (CSS pixels) times `scale`. */
   async poster(scale = 1) {
     if (!(scale > 0 && scale <= 4)) throw new Error(`poster scale must be a number from 0 to 4, got ${scale}`);
-    await this.#ctx.frames.nextFrame();
+    await this.ctx.frames.nextFrame();
     const { width, height } = this.#seen();
     const [w, h] = [Math.round(width * scale), Math.round(height * scale)];
-    return pngOf(await this.#ctx.view.render_pixels(w, h), w, h);
+    return pngOf(await this.ctx.view.render_pixels(w, h), w, h);
   }
 
   async downloadPoster(scale = 1) {
-    const name = scale === 1 ? 'metaballs-poster.png' : `metaballs-poster@${scale}x.png`;
+    const name = posterFile(scale);
     download(await this.poster(scale), name);
     this.#posterName = name;
-    this.#box?.refresh();
+    this.rewrite();
   }
 
   /**
@@ -128,7 +115,7 @@ export class Share {
     height ??= Math.max(2, Math.round(seen.height / 2) * 2);
     if (!format) [{ id: format }] = await clipFormats(width, height, fps);
     const count = Math.max(1, Math.round(seconds * fps));
-    const ctx = this.#ctx;
+    const ctx = this.ctx;
     const speed = ctx.state.speed;
     const started = performance.now();
     const blob = await ctx.frames.withView(async (view) => {
