@@ -25,6 +25,23 @@ export interface Metaballs2dShareText {
   link: string;
 }
 
+/** What `record()` makes (every field optional). */
+export interface Metaballs2dRecordOptions {
+  /** Seconds of animation (default 4). */
+  seconds?: number;
+  /** 24, 30 or 60 (default 30). */
+  fps?: 24 | 30 | 60;
+  /** Pixels (default the figure's size, even). */
+  width?: number;
+  height?: number;
+  /** 'webm-vp9', 'webm-vp8', 'mp4-h264' or 'gif' (default the first the browser writes). */
+  format?: string;
+  /** Called after each frame. */
+  onProgress?: (done: number, count: number) => void;
+  /** Aborting it stops the recording: the promise rejects with an AbortError. */
+  signal?: AbortSignal;
+}
+
 export declare class Metaballs2d extends HTMLElement {
   /** Iso level: 0.05 to 20. Attribute `iso`; default 1. */
   iso: number;
@@ -94,6 +111,8 @@ export declare class Metaballs2d extends HTMLElement {
   shareText(): Metaballs2dShareText;
   /** A PNG of the picture at the figure's size times `scale`. */
   makePoster(scale?: number): Promise<Blob>;
+  /** A clip of the circles moving, its frames 1/fps of animation apart: WebM, MP4 or GIF. */
+  record(options?: Metaballs2dRecordOptions): Promise<Blob>;
   /** Opens the share box. */
   openShare(): void;
   /** Shows a short message inside the figure. */

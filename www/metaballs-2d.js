@@ -168,6 +168,9 @@ export class Metaballs2d extends Base {
   /** A PNG of the picture at the figure's size times `scale`. */
   makePoster(scale = 1) { return this.#ctx.get(PlaneShare).poster(scale); }
 
+  /** A clip of the circles moving: { seconds, fps, width, height, format, onProgress, signal } → a Blob. */
+  record(options) { return this.#ctx.get(PlaneShare).record(options); }
+
   /** Opens the share box. */
   openShare() { this.#ctx.get(PlaneShare).open(); }
 

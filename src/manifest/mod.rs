@@ -259,12 +259,21 @@ pub fn custom_elements_json() -> String {
     serde_json::to_string_pretty(&manifest).expect("the manifest is JSON") + "\n"
 }
 
-/// What `shareText()` returns, for both elements.
-pub(super) const SHARE_TEXT: &str = "/** The figure as it is now, written to paste (`shareText()`). */\n\
+/// What both elements' `shareText()` returns and `record()` takes (the 2D figure's names begin with
+/// `Metaballs2d`).
+pub(super) const SHARE_TEXT: &str = concat!(
+    "/** The figure as it is now, written to paste (`shareText()`). */\n\
      export interface MetaballsShareText {\n  /** The module's script tag and the element with its attributes. */\n  html: string;\n  \
      /** The iframe page's URL. */\n  url: string;\n  /** An iframe of that page at the size the figure was seen at. */\n  iframe: string;\n  \
      /** The notebook widget's call. */\n  python: string;\n  /** MyST's {anywidget} directive. */\n  myst: string;\n  \
-     /** The full page's link. */\n  link: string;\n}\n\n";
+     /** The full page's link. */\n  link: string;\n}\n\n",
+    "/** What `record()` makes (every field optional). */\n\
+     export interface MetaballsRecordOptions {\n  /** Seconds of animation (default 4). */\n  seconds?: number;\n  \
+     /** 24, 30 or 60 (default 30). */\n  fps?: 24 | 30 | 60;\n  /** Pixels (default the figure's size, even). */\n  \
+     width?: number;\n  height?: number;\n  /** 'webm-vp9', 'webm-vp8', 'mp4-h264' or 'gif' (default the first the browser writes). */\n  \
+     format?: string;\n  /** Called after each frame. */\n  onProgress?: (done: number, count: number) => void;\n  \
+     /** Aborting it stops the recording: the promise rejects with an AbortError. */\n  signal?: AbortSignal;\n}\n\n",
+);
 
 /// `www/metaballs-view.d.ts`: the element's TypeScript declarations.
 pub fn declarations() -> String {
@@ -288,13 +297,7 @@ pub fn declarations() -> String {
          tree: { value: number | null; children: number[]; point: number | null; spheres: number[] }[];\n  \
          bands: (MetaballsLevelCounts & { above: number | null; below: number })[];\n  complete: boolean;\n  \
          undecided: number;\n  wallLevel: number;\n  milliseconds: number;\n  iso: number;\n  counts: MetaballsLevelCounts | null;\n}\n\n",
-    ) + SHARE_TEXT
-        + "/** What `record()` makes (every field optional). */\n\
-           export interface MetaballsRecordOptions {\n  /** Seconds of animation (default 4). */\n  seconds?: number;\n  \
-           /** 24, 30 or 60 (default 30). */\n  fps?: 24 | 30 | 60;\n  /** Pixels (default the figure's size, even). */\n  \
-           width?: number;\n  height?: number;\n  /** 'webm-vp9', 'webm-vp8', 'mp4-h264' or 'gif' (default the first the browser writes). */\n  \
-           format?: string;\n  /** Called after each frame. */\n  onProgress?: (done: number, count: number) => void;\n  \
-           /** Aborting it stops the recording: the promise rejects with an AbortError. */\n  signal?: AbortSignal;\n}\n\n";
+    ) + SHARE_TEXT;
     out + &view_api().typescript()
 }
 

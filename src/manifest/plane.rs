@@ -41,6 +41,11 @@ const METHODS: &[Entry] = &[
         "(scale?: number): Promise<Blob>",
         "A PNG of the picture at the figure's size times `scale`.",
     ),
+    (
+        "record",
+        "(options?: Metaballs2dRecordOptions): Promise<Blob>",
+        "A clip of the circles moving, its frames 1/fps of animation apart: WebM, MP4 or GIF.",
+    ),
     ("openShare", "(): void", "Opens the share box."),
     ("showNotice", "(text: string, ms?: number): void", "Shows a short message inside the figure."),
 ];
@@ -106,6 +111,9 @@ pub(super) fn declarations() -> String {
          // 2D figure's rows and src/manifest/plane.rs. Do not edit: change those and run the command.\n\n\
          export interface Metaballs2dCircle {\n  x: number;\n  y: number;\n  r: number;\n  \
          /** 1 adds the circle's term, -1 subtracts it. */\n  charge?: 1 | -1;\n}\n\n",
-    ) + super::SHARE_TEXT.replace("MetaballsShareText", "Metaballs2dShareText").as_str()
+    ) + super::SHARE_TEXT
+        .replace("MetaballsShareText", "Metaballs2dShareText")
+        .replace("MetaballsRecordOptions", "Metaballs2dRecordOptions")
+        .as_str()
         + &api().typescript()
 }

@@ -2,7 +2,7 @@
 // format this Chromium writes is a file ffprobe (Debian's ffmpeg) reads with 60 frames of that size; its
 // first frame, decoded by ffmpeg, is the figure's picture at that step (within the codec's loss), its
 // frames move, and the figure's spheres are back where they were afterwards. From the share box, Cancel
-// leaves no file and the figure animating.
+// leaves no file and the figure animating. The 2D figure records its circles moving the same way.
 
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -66,6 +66,29 @@ test('a recording of 2 s at 30 fps is 60 frames of the asked size in every forma
       assert.ok(firstOff < 0.03, `${format}: the first frame is not the figure's picture (${(firstOff * 100).toFixed(2)} % differ)`);
       assert.ok(lastOff > firstOff + 0.01, `${format}: the clip does not move`);
     }
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('a recording of the 2D figure is 60 frames of the asked size, its circles moving, and back where they were after', async () => {
+  const { page, errors, close } = await open('squares.html?resolution=12', { viewport: { width: 700, height: 800 } });
+  try {
+    await page.waitForFunction(() => document.querySelector('metaballs-2d')?.record);
+    const result = await page.$eval('metaballs-2d', async (e) => {
+      e.pause();
+      const before = JSON.stringify(e.circleList);
+      const clip = await e.record({ seconds: 2, fps: 30, width: 320, height: 180, format: 'gif' });
+      return { clip: [...new Uint8Array(await clip.arrayBuffer())], restored: JSON.stringify(e.circleList) === before };
+    });
+    const file = path.join(outputDir, 'record-2d.gif');
+    writeFileSync(file, Buffer.from(result.clip));
+    const stream = probe(file);
+    assert.deepEqual([Number(stream.nb_read_frames), stream.width, stream.height], [60, WIDTH, HEIGHT], JSON.stringify(stream));
+    assert.ok(result.restored, 'the circles were not put back');
+    const moved = await differingFraction(page, frameOf(file, 0), frameOf(file, 59));
+    assert.ok(moved > 0.005, `the circles did not move (${(moved * 100).toFixed(2)} % of pixels differ)`);
     assert.deepEqual(errors, []);
   } finally {
     await close();

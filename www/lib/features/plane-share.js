@@ -1,10 +1,13 @@
 // Sharing a 2D figure: its share box (the panel's `share` action, `openShare()`), the texts it writes
-// (`shareText()`: HTML, iframe, Python, MyST, link) and pictures of it at 1× and 2× of its box
-// (`poster(scale)`), drawn from its vector picture.
+// (`shareText()`: HTML, iframe, Python, MyST, link), pictures of it at 1× and 2× of its box
+// (`makePoster(scale)`), drawn from its vector picture, and clips of its circles moving (`record()`).
 
 import { VERSION } from '../attributes.js';
 import { shareTexts } from '../core/share-text.js';
-import { ShareFeature } from './share-box.js';
+import { moveCircles } from '../plane/circles.js';
+import { paint } from '../plane/picture.js';
+import { clipFormats, encodeClip } from '../figure/clip.js';
+import { clipPlan, ShareFeature } from './share-box.js';
 
 // The rows the full page sets itself.
 const PAGE_ROWS = new Set(['controls', 'slice-of']);
@@ -15,7 +18,12 @@ export class PlaneShare extends ShareFeature {
       posterName: (scale) => (scale === 1 ? 'metaballs-2d.png' : `metaballs-2d@${scale}x.png`),
       posterSaved: () => false,
       posterHint: 'A picture of the figure as it is, for slides and handouts.',
-      recorder: null,
+      recorder: {
+        size: () => this.#seen(),
+        formats: (width, height, fps) => clipFormats(width, height, fps),
+        record: (options) => this.record(options),
+        fileName: (format) => `metaballs-2d.${format === 'gif' ? 'gif' : format.split('-')[0]}`,
+      },
     };
   }
 
@@ -62,6 +70,42 @@ export class PlaneShare extends ShareFeature {
       return await new Promise((resolve, reject) => out.toBlob((b) => (b ? resolve(b) : reject(new Error('the browser could not encode the PNG'))), 'image/png'));
     } finally {
       URL.revokeObjectURL(url);
+    }
+  }
+
+  /**
+   * A clip of the circles moving: frame i after i steps of speed/fps seconds from where they are now
+   * (a paused figure's circles move too), the square picture centred on its background at width ×
+   * height. The circles are back where they were afterwards.
+   */
+  async record(options = {}) {
+    const { format, width, height, fps, count, onProgress, signal } = await clipPlan(options, this.#seen());
+    const { frames, state } = this.ctx;
+    const list = frames.parts.circles.list;
+    const kept = list.map((c) => ({ ...c }));
+    const canvas = new OffscreenCanvas(width, height);
+    const context = canvas.getContext('2d', { willReadFrequently: true });
+    const side = Math.min(width, height);
+    let at = 0;
+    try {
+      return await encodeClip({
+        format, width, height, fps, count, onProgress, signal,
+        frame: async (i) => {
+          if (i > at) moveCircles(list, ((i - at) * state.speed) / fps);
+          at = i;
+          const { shapes } = frames.picture(side);
+          context.fillStyle = shapes[0].fill;
+          context.fillRect(0, 0, width, height);
+          context.save();
+          context.translate((width - side) / 2, (height - side) / 2);
+          paint(context, shapes);
+          context.restore();
+          return context.getImageData(0, 0, width, height).data;
+        },
+      });
+    } finally {
+      list.forEach((c, k) => Object.assign(c, kept[k]));
+      frames.draw();
     }
   }
 }

@@ -5,6 +5,7 @@
 // Copying uses the Clipboard API; where the browser refuses, the text is selected for the reader to copy.
 
 import { download } from '../core/download.js';
+import { clipFormats } from '../figure/clip.js';
 
 const STYLE = `
 dialog.share { max-width: min(640px, calc(100vw - 24px)); width: 100%; max-height: calc(100dvh - 24px);
@@ -294,4 +295,19 @@ export class ShareFeature {
 
   /** Writes the open box's texts again. */
   rewrite() { this.#box?.refresh(); }
+}
+
+/**
+ * A recording's options checked and completed: `seconds` (0.1 to 60, default 4), `fps` (24, 30 or 60,
+ * default 30), `width` and `height` (default the figure's size `seen`, made even, as video needs),
+ * `format` (default the first this browser writes), and `count`, the frames.
+ */
+export async function clipPlan({ seconds = 4, fps = 30, width, height, format, onProgress, signal } = {}, seen) {
+  if (![24, 30, 60].includes(fps)) throw new Error(`fps must be 24, 30 or 60, got ${fps}`);
+  if (!(seconds >= 0.1 && seconds <= 60)) throw new Error(`seconds must be a number from 0.1 to 60, got ${seconds}`);
+  const even = (n) => Math.max(2, Math.round(n / 2) * 2);
+  width ??= even(seen.width);
+  height ??= even(seen.height);
+  if (!format) [{ id: format }] = await clipFormats(width, height, fps);
+  return { seconds, fps, width, height, format, count: Math.max(1, Math.round(seconds * fps)), onProgress, signal };
 }

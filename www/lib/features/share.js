@@ -10,12 +10,11 @@ import { download } from '../core/download.js';
 import { wasmModule } from '../engine/wasm.js';
 import { pngOf } from '../figure/look.js';
 import { clipFormats, encodeClip } from '../figure/clip.js';
-import { ShareFeature } from './share-box.js';
+import { clipPlan, ShareFeature } from './share-box.js';
 
 // The rows the full page sets itself (it always has every control and the statistics).
 const PAGE_ROWS = new Set(['controls', 'hud']);
 const POSTER_TEXT = TABLE.find((row) => row.name === 'poster');
-const FPS = [24, 30, 60];
 // The setting that holds spheres placed by hand, as text.
 const SPHERE_LIST = nameOfKind('spheres');
 // The poster's file name at `scale` times the figure's size.
@@ -107,14 +106,8 @@ export class Share extends ShareFeature {
    * the scene now (a paused figure's spheres move too), at width × height, in `format` (the first this
    * browser writes when not given). The figure's spheres are back where they were afterwards.
    */
-  async record({ seconds = 4, fps = 30, width, height, format, onProgress, signal } = {}) {
-    if (!FPS.includes(fps)) throw new Error(`fps must be 24, 30 or 60, got ${fps}`);
-    if (!(seconds >= 0.1 && seconds <= 60)) throw new Error(`seconds must be a number from 0.1 to 60, got ${seconds}`);
-    const seen = this.#seen();
-    width ??= Math.max(2, Math.round(seen.width / 2) * 2);
-    height ??= Math.max(2, Math.round(seen.height / 2) * 2);
-    if (!format) [{ id: format }] = await clipFormats(width, height, fps);
-    const count = Math.max(1, Math.round(seconds * fps));
+  async record(options = {}) {
+    const { format, width, height, fps, count, onProgress, signal } = await clipPlan(options, this.#seen());
     const ctx = this.ctx;
     const speed = ctx.state.speed;
     const started = performance.now();
