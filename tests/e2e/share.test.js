@@ -298,3 +298,23 @@ test("the share box of each figure, in both themes, meets axe-core's WCAG 2.2 AA
     }
   }
 });
+
+test("Download poster saves a PNG at 2× the figure's box, and the share box's HTML names it as the poster", async () => {
+  const { page, errors, close } = await open('index.html?res=24', { viewport: SIZE });
+  try {
+    await waitForTriangles(page);
+    await page.click('#open-share');
+    const dialog = page.locator('metaballs-view dialog.share');
+    await dialog.waitFor();
+    const [download] = await Promise.all([page.waitForEvent('download'), dialog.getByRole('button', { name: 'PNG 2×' }).click()]);
+    assert.equal(download.suggestedFilename(), 'metaballs-poster@2x.png');
+    const png = readFileSync(await download.path());
+    assert.deepEqual([...png.subarray(1, 4)], [...Buffer.from('PNG')]);
+    assert.deepEqual([png.readUInt32BE(16), png.readUInt32BE(20)], [2 * SIZE.width, 2 * SIZE.height]);
+    await page.waitForFunction(() => /poster="metaballs-poster@2x\.png"/.test(document.querySelector('metaballs-view').shadowRoot.querySelector('dialog.share textarea').value));
+    assert.match(await page.$eval('metaballs-view', (e) => e.shareText().html), /poster="metaballs-poster@2x\.png"/);
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
