@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# Builds the page and lays out what an author puts on a static host in dist/: index.html, embed.html,
+# Builds the page and lays out what an author puts on a static host in dist/: index.html, embed.html, squares.html, embed-2d.html,
 # www/ (the element and the page's script, bundled; the stylesheets; the lecture example), pkg/ (the
 # WebAssembly), pkg-webgl/ (the WebGL2 build, fetched only by browsers without WebGPU), pkg-levels/ (the
-# critical points' module, fetched only by a figure that shows them) and widget.js (the
-# notebook widget's module, for anywidget hosts such as MyST's {anywidget} directive). Every path inside
+# critical points' module, fetched only by a figure that shows them), widget.js and widget-2d.js (the
+# notebook widgets' modules, for anywidget hosts such as MyST's {anywidget} directive). Every path inside
 # is relative, so the folder works under any sub-path of any host.
 #
 # The element's modules are bundled (esbuild, pinned in www/tools/) into two entry files (and the
@@ -51,4 +51,5 @@ while IFS= read -r file; do
 done < <(find dist/www -name '*.js')
 [ "$missing" = 0 ] || exit 1
 bundle_widget dist/widget.js
+bundle_plane_widget dist/widget-2d.js
 echo "dist/ is ready ($(du -sh dist | cut -f1)): copy it to a static host"
