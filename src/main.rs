@@ -371,7 +371,7 @@ mod cli {
             if frame > 0 {
                 offscreen.renderer.update(1.0 / fps as f32)?;
             }
-            let pixels = offscreen.render_rgba();
+            let pixels = if clip.keeps_next() { offscreen.render_rgba() } else { Vec::new() };
             render_ms += started.elapsed().as_secs_f64() * 1e3;
             let started = Instant::now();
             clip.push(&pixels)?;

@@ -151,19 +151,27 @@ impl<W: Write> ClipEncoder<W> {
         Ok(Self { width, height, frames, fps, fed: 0, kind })
     }
 
+    /// Whether the next frame is kept: browsers show a GIF frame shorter than 2/100 s for 1/10 s,
+    /// so a 60 fps GIF keeps every second frame, each shown 1/30 s, and lasts as long. A frame not
+    /// kept need not be drawn: `push` takes any bytes for it.
+    pub fn keeps_next(&self) -> bool {
+        !(matches!(self.kind, Kind::Gif { .. }) && self.fps == 60 && self.fed % 2 == 1)
+    }
+
     /// Adds the next frame.
     pub fn push(&mut self, rgba: &[u8]) -> Result<(), Box<dyn std::error::Error>> {
+        if self.fed == self.frames {
+            return Err(format!("the clip has {} frames already", self.frames).into());
+        }
+        if !self.keeps_next() {
+            self.fed += 1;
+            return Ok(());
+        }
         let expected = self.width as usize * self.height as usize * 4;
         if rgba.len() != expected {
             return Err(format!("a frame has {} bytes, expected {expected}", rgba.len()).into());
         }
-        if self.fed == self.frames {
-            return Err(format!("the clip has {} frames already", self.frames).into());
-        }
         match &mut self.kind {
-            // Browsers show a GIF frame shorter than 2/100 s for 1/10 s: a 60 fps GIF keeps every
-            // second frame, each shown 1/30 s, and lasts as long.
-            Kind::Gif { .. } if self.fps == 60 && self.fed % 2 == 1 => {}
             Kind::Gif { held, sample, stride, .. } => {
                 // Every `stride`-th pixel of the clip, counted across frames, so that all of them
                 // have a say in the palette.

@@ -27,9 +27,13 @@ cp index.html embed.html embed-2d.html squares.html dist/
     --target=es2022 --outbase=www --outdir=dist/www --chunk-names='lib/engine/[name]-[hash]' \
     --external:'../../../pkg/*' --external:'../../../pkg-webgl/*' --external:'../../../pkg-levels/*' --log-level=warning
 # The 2D figure is bundled on its own (it loads no wasm), so that a page of 3D figures fetches no chunk
-# it shares with it.
-"$esbuild" www/metaballs-2d.js www/plane-page.js --bundle --format=esm --minify --sourcemap --target=es2022 --outdir=dist/www \
-    --log-level=warning
+# it shares with it; the clip encoders stay a chunk of their own, fetched only when a clip is made.
+"$esbuild" www/metaballs-2d.js www/plane-page.js --bundle --splitting --format=esm --minify --sourcemap --target=es2022 \
+    --outdir=dist/www --chunk-names='lib/plane/[name]-[hash]' --log-level=warning
+if grep -l 'mediabunny' dist/www/metaballs-2d.js dist/www/metaballs-view.js; then
+    echo "dist.sh: the clip encoders were bundled into an element's module: they are to load only when a clip is made" >&2
+    exit 1
+fi
 if grep -l 'pkg/metaballs' dist/www/*.js; then
     echo "dist.sh: the code that loads the WebAssembly was bundled outside www/lib/engine/, where its paths hold" >&2
     exit 1

@@ -279,6 +279,8 @@ export interface MetaballsViewEventMap {
   'metaballs-scene': CustomEvent<{ spheres: MetaballsSphere[] }>;
   /** A mesh was exported. */
   'metaballs-export': CustomEvent<{ format: string; bytes: number; ms: number }>;
+  /** A clip was recorded. */
+  'metaballs-record': CustomEvent<{ format: string; width: number; height: number; fps: number; frames: number; bytes: number; ms: number }>;
   /** The figure could not draw, or refused an attribute's value (it shows why). */
   'metaballs-error': CustomEvent<{ message: string; attribute?: string }>;
 }

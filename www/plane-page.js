@@ -3,6 +3,8 @@
 // URL as the person changes them, so a link reproduces the figure. Bad values in a link get the
 // figure's notice and its defaults, as any bad attribute does.
 
+import { queryText } from './lib/core/share-text.js';
+
 const element = document.querySelector('metaballs-2d');
 const Figure = customElements.get('metaballs-2d') ?? await customElements.whenDefined('metaballs-2d');
 // The full page always has every control, so its links do not carry `controls`; the iframe page
@@ -22,14 +24,9 @@ let timer = 0;
 function saveUrl() {
   clearTimeout(timer);
   timer = setTimeout(() => {
-    const next = new URLSearchParams();
-    for (const name of names) {
-      const value = element.getAttribute(name);
-      if (value !== null && value !== given.get(name)) next.set(name, value);
-    }
-    // Commas and semicolons are fine in a query: keep the circles and levels readable.
-    const search = next.toString().replace(/%2C/g, ',').replace(/%3B/g, ';');
-    history.replaceState(null, '', `${location.pathname}${search ? `?${search}` : ''}`);
+    const settings = names.map((name) => ({ row: { url: name }, text: element.getAttribute(name) }))
+      .filter(({ row, text }) => text !== null && text !== given.get(row.url));
+    history.replaceState(null, '', `${location.pathname}${queryText(settings)}`);
   }, 150);
 }
 element.addEventListener('metaballs-change', saveUrl);

@@ -47,6 +47,8 @@ function tellWasmSources(model) {
   if (!View || globalThis.metaballsWidgetWasm) return;
   globalThis.metaballsWidgetWasm = true;
   const folder = model.get('wasm_url');
+  // A folder laid out as dist/ also holds the element's module: the share box names it there.
+  if (folder) View.moduleUrl = new URL('www/metaballs-view.js', new URL(folder, document.baseURI)).href;
   const beside = (build) => fetch(new URL(WASM_FILES[build], folder ? new URL(folder, document.baseURI) : import.meta.url));
   const source = (build) => () => {
     if (folder || typeof model.send !== 'function' || import.meta.url.startsWith('http')) return beside(build);

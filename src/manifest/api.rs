@@ -123,6 +123,11 @@ pub const EVENTS: &[(&str, &str, &str)] = &[
     ("metaballs-scene", "{ spheres: MetaballsSphere[] }", "A scene document was loaded."),
     ("metaballs-export", "{ format: string; bytes: number; ms: number }", "A mesh was exported."),
     (
+        "metaballs-record",
+        "{ format: string; width: number; height: number; fps: number; frames: number; bytes: number; ms: number }",
+        "A clip was recorded.",
+    ),
+    (
         "metaballs-error",
         "{ message: string; attribute?: string }",
         "The figure could not draw, or refused an attribute's value (it shows why).",

@@ -95,10 +95,39 @@ test('a recording of the 2D figure is 60 frames of the asked size, its circles m
   }
 });
 
-test('Record in the share box shows its progress; Cancel leaves no file and the figure animating', async () => {
+test('a figure taken off the page while it records stops the clip, and put back it goes on from where it was; a second recording at once is refused', async () => {
+  const { page, errors, close } = await open('index.html?res=24&spheres=3&controls=none&hud=off', { viewport: VIEWPORT });
+  try {
+    await waitForTriangles(page).catch(() => {});
+    const result = await page.$eval('metaballs-view', async (e) => {
+      e.pause();
+      await e.nextFrame();
+      const before = JSON.stringify(e.sphereList);
+      let moved = null;
+      const clip = e.record({ seconds: 10, fps: 30, width: 160, height: 90, format: 'webm-vp9',
+        onProgress: (done) => { if (done === 5 && !moved) moved = e.remove(); } });
+      const second = await e.record({ seconds: 1, format: 'gif' }).then(() => 'made', (error) => error.message);
+      const first = await clip.then(() => 'made', (error) => `${error.name}: ${error.message}`);
+      document.querySelector('main').append(e);
+      await e.nextFrame();
+      return { first, second, back: JSON.stringify(e.sphereList) === before };
+    });
+    console.log(`taken off the page: ${result.first}; a second at once: ${result.second}`);
+    assert.match(result.first, /AbortError/);
+    assert.match(result.second, /recording already/);
+    assert.ok(result.back, 'the spheres are not where they were');
+    assert.deepEqual(errors, []);
+  } finally {
+    await close();
+  }
+});
+
+test('Record in the share box shows its progress; Cancel leaves no file, the spheres where they were and the figure animating', async () => {
   const { page, errors, close } = await open('index.html?res=24&spheres=3', { viewport: { width: 960, height: 640 } });
   try {
     await waitForTriangles(page);
+    await page.$eval('metaballs-view', (e) => e.pause());
+    const before = await page.$eval('metaballs-view', async (e) => { await e.nextFrame(); return JSON.stringify(e.sphereList); });
     const downloads = [];
     page.on('download', (d) => downloads.push(d.suggestedFilename()));
     await page.click('#open-share');
@@ -112,7 +141,10 @@ test('Record in the share box shows its progress; Cancel leaves no file and the 
     const status = dialog.locator('.record-status');
     await page.waitForFunction(() => /Cancelled/.test(document.querySelector('metaballs-view').shadowRoot.querySelector('.record-status').textContent));
     assert.match(await status.textContent(), /nothing was saved/);
+    await page.waitForFunction(() => document.querySelector('metaballs-view').shadowRoot.querySelector('dialog.share .record').disabled === false);
+    assert.equal(await page.$eval('metaballs-view', (e) => JSON.stringify(e.sphereList)), before, 'the spheres are not back where they were');
     await dialog.getByRole('button', { name: 'Close' }).click();
+    await page.$eval('metaballs-view', (e) => e.play());
     const drawn = await page.$eval('metaballs-view', (e) => e.framesDrawn);
     await page.waitForFunction((n) => document.querySelector('metaballs-view').framesDrawn > n + 5, drawn);
     assert.equal(await page.$eval('metaballs-view', (e) => e.paused), false);

@@ -73,10 +73,13 @@ function jsonValue(row, value) {
  * - `widget`: { module, className, wasmUrl } of the notebook widget (`wasmUrl` may be null);
  * - `size`: { width, height } the figure was seen at, in CSS pixels;
  * - `poster`: the name of a poster picture to name, or null; `pageRows`: rows a full page's link
- *   leaves out (the page has its own);
+ *   leaves out (the page has its own); `iframeRows`: rows the iframe page's URL leaves out (they name
+ *   things of the author's page: a sync group, a poster file);
  * - `version`: the package's version, said beside the script tag.
  */
-export function shareTexts({ rows, state, chosen, tag, moduleUrl, stylesheet = null, pages, widget, size, poster = null, pageRows = new Set(), version }) {
+export function shareTexts({
+  rows, state, chosen, tag, moduleUrl, stylesheet = null, pages, widget, size, poster = null, pageRows = new Set(), iframeRows = new Set(), version,
+}) {
   const settings = changedSettings(rows, state, chosen);
   const withPoster = poster && !settings.some((s) => s.row.name === 'poster')
     ? [...settings, { row: rows.rowOf('poster') ?? { name: 'poster', url: 'poster', python: 'poster' }, value: poster, text: poster }]
@@ -90,14 +93,16 @@ export function shareTexts({ rows, state, chosen, tag, moduleUrl, stylesheet = n
     elementHtml(tag, attributes),
   ].join('\n');
 
-  // The iframe page takes every setting; a poster is a file beside the author's page, not the figure's.
-  const url = `${pages.embed}${queryText(settings)}`;
+  const url = `${pages.embed}${queryText(settings.filter((s) => !iframeRows.has(s.row.name)))}`;
   const width = Math.max(1, Math.round(size.width));
   const height = Math.max(1, Math.round(size.height));
   const title = state.alt || 'Interactive figure';
+  // As wide as seen where the page has room, narrower (at the same shape) where it has not; Copy in the
+  // figure's share box may write the clipboard from inside it.
   const iframe = elementHtml('iframe', [
     ['src', url], ['width', String(width)], ['height', String(height)], ['title', title],
-    ['style', 'border: 0; max-width: 100%'], ['loading', 'lazy'], ['allow', 'fullscreen'],
+    ['style', `border: 0; width: 100%; max-width: ${width}px; height: auto; aspect-ratio: ${width} / ${height}`],
+    ['loading', 'lazy'], ['allow', 'fullscreen; clipboard-write'],
   ]);
 
   const arguments_ = settings.map(({ row, value }) => `${row.python}=${pythonValue(row, value)}`);
@@ -110,7 +115,10 @@ export function shareTexts({ rows, state, chosen, tag, moduleUrl, stylesheet = n
 
   const model = Object.fromEntries(settings.map(({ row, value }) => [row.python, jsonValue(row, value)]));
   if (widget.wasmUrl) model.wasm_url = widget.wasmUrl;
-  const myst = ['```{anywidget} ' + widget.module, JSON.stringify(model, null, 2), '```'].join('\n');
+  const json = JSON.stringify(model, null, 2);
+  // A fence longer than any run of backticks in the settings (a description may hold some).
+  const fence = '`'.repeat(Math.max(3, ...[...json.matchAll(/`+/g)].map((m) => m[0].length + 1)));
+  const myst = [`${fence}{anywidget} ${widget.module}`, json, fence].join('\n');
 
   const link = `${pages.full}${queryText(settings.filter((s) => !pageRows.has(s.row.name)))}`;
   return { html, url, iframe, python, myst, link };

@@ -3,9 +3,6 @@
 // encoding happen in the wasm; this module moves bytes between it and the browser.
 
 import { wasmModule } from '../engine/wasm.js';
-import { download } from '../core/download.js';
-
-export { download };
 
 const MESH_TYPES = { stl: 'model/stl', obj: 'model/obj', ply: 'application/ply' };
 

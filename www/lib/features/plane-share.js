@@ -4,13 +4,15 @@
 
 import { VERSION } from '../attributes.js';
 import { shareTexts } from '../core/share-text.js';
-import { moveCircles } from '../plane/circles.js';
+import { circlesExactText, moveCircles } from '../plane/circles.js';
 import { paint } from '../plane/picture.js';
 import { clipFormats, encodeClip } from '../figure/clip.js';
 import { clipPlan, ShareFeature } from './share-box.js';
 
 // The rows the full page sets itself.
 const PAGE_ROWS = new Set(['controls', 'slice-of']);
+// The rows the iframe page does not take from its link: a followed 3D figure is on the author's page.
+const IFRAME_ROWS = new Set(['slice-of']);
 
 export class PlaneShare extends ShareFeature {
   boxOptions() {
@@ -19,7 +21,7 @@ export class PlaneShare extends ShareFeature {
       posterSaved: () => false,
       posterHint: 'A picture of the figure as it is, for slides and handouts.',
       recorder: {
-        size: () => this.#seen(),
+        size: () => this.seen(),
         formats: (width, height, fps) => clipFormats(width, height, fps),
         record: (options) => this.record(options),
         fileName: (format) => `metaballs-2d.${format === 'gif' ? 'gif' : format.split('-')[0]}`,
@@ -27,30 +29,24 @@ export class PlaneShare extends ShareFeature {
     };
   }
 
-  #seen() {
-    const { element } = this.ctx;
-    return { width: element.clientWidth || 480, height: element.clientHeight || 480 };
-  }
-
   texts() {
     const { element, state, settings } = this.ctx;
-    const moduleUrl = new URL(element.constructor.moduleUrl ?? 'metaballs-2d.js', document.baseURI).href;
-    const at = (path) => new URL(path, moduleUrl).href;
+    const at = this.besideModule('metaballs-2d.js');
+    const omitted = this.omitted();
     // A paused figure's circles where they are now (the moment the author paused at).
-    const now = state.paused && !state.circles
-      ? { ...state, circles: element.circleList.map((c) => [c.x, c.y, Math.abs(c.r) * ((c.charge ?? Math.sign(c.r)) < 0 ? -1 : 1)].join(',')).join(';') }
-      : state;
+    const now = state.paused ? { ...state, circles: circlesExactText(element.circleList) } : state;
     return shareTexts({
       rows: settings.rows,
       state: now,
-      chosen: (row) => settings.given.has(row.name) || row.name === 'circles',
+      chosen: (row) => !omitted.has(row.name) && (settings.given.has(row.name) || row.name === 'circles'),
       tag: 'metaballs-2d',
-      moduleUrl,
+      moduleUrl: at('metaballs-2d.js'),
       stylesheet: at('metaballs-view.css'),
       pages: { full: at('../squares.html'), embed: at('../embed-2d.html') },
       widget: { module: at('../widget-2d.js'), className: 'Metaballs2d', wasmUrl: null },
-      size: this.#seen(),
+      size: this.seen(),
       pageRows: PAGE_ROWS,
+      iframeRows: IFRAME_ROWS,
       version: VERSION,
     });
   }
@@ -76,10 +72,11 @@ export class PlaneShare extends ShareFeature {
   /**
    * A clip of the circles moving: frame i after i steps of speed/fps seconds from where they are now
    * (a paused figure's circles move too), the square picture centred on its background at width ×
-   * height. The circles are back where they were afterwards.
+   * height. The figure's own animation holds still meanwhile, and its circles are back where they
+   * were afterwards.
    */
   async record(options = {}) {
-    const { format, width, height, fps, count, onProgress, signal } = await clipPlan(options, this.#seen());
+    const { format, width, height, fps, count, onProgress, signal } = await clipPlan(options, this.seen());
     const { frames, state } = this.ctx;
     const list = frames.parts.circles.list;
     const kept = list.map((c) => ({ ...c }));
@@ -87,25 +84,31 @@ export class PlaneShare extends ShareFeature {
     const context = canvas.getContext('2d', { willReadFrequently: true });
     const side = Math.min(width, height);
     let at = 0;
-    try {
-      return await encodeClip({
-        format, width, height, fps, count, onProgress, signal,
-        frame: async (i) => {
-          if (i > at) moveCircles(list, ((i - at) * state.speed) / fps);
-          at = i;
-          const { shapes } = frames.picture(side);
-          context.fillStyle = shapes[0].fill;
-          context.fillRect(0, 0, width, height);
-          context.save();
-          context.translate((width - side) / 2, (height - side) / 2);
-          paint(context, shapes);
-          context.restore();
-          return context.getImageData(0, 0, width, height).data;
-        },
-      });
-    } finally {
-      list.forEach((c, k) => Object.assign(c, kept[k]));
-      frames.draw();
-    }
+    return this.recording(signal, async (stop) => {
+      frames.held = true;
+      try {
+        return await encodeClip({
+          format, width, height, fps, count, onProgress, signal: stop,
+          frame: async (i) => {
+            // A frame a task: the page paints the progress and takes a click on Cancel between them.
+            await new Promise((resolve) => setTimeout(resolve, 0));
+            if (i > at) moveCircles(list, ((i - at) * state.speed) / fps);
+            at = i;
+            const { shapes } = frames.picture(side);
+            context.fillStyle = shapes[0].fill;
+            context.fillRect(0, 0, width, height);
+            context.save();
+            context.translate((width - side) / 2, (height - side) / 2);
+            paint(context, shapes);
+            context.restore();
+            return context.getImageData(0, 0, width, height).data;
+          },
+        });
+      } finally {
+        list.forEach((c, k) => Object.assign(c, kept[k]));
+        frames.held = false;
+        frames.redraw();
+      }
+    });
   }
 }

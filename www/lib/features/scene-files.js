@@ -6,7 +6,8 @@ import { nameOfKind } from '../core/table.js';
 import { PICTURE_FRAMES } from '../core/redraw.js';
 import { wasmModule } from '../engine/wasm.js';
 import { pngOf } from '../figure/look.js';
-import { download, meshBlob, readSceneFile, wireDrop } from './files.js';
+import { download } from '../core/download.js';
+import { meshBlob, readSceneFile, wireDrop } from './files.js';
 import { listedControls } from './panel.js';
 
 // The setting that holds spheres placed by hand, as text.

@@ -42,6 +42,12 @@ const TABS = [
   ['link', 'Link', 'The full page with every control, showing this view.'],
 ];
 
+// A side made even, as video needs.
+const even = (n) => Math.max(2, Math.round(n / 2) * 2);
+
+// The most a GIF may hold while its palette is chosen (its frames at 2 bytes a pixel), in bytes.
+const GIF_HELD_BYTES = 1e9;
+
 const el = (tag, props = {}, ...children) => {
   const node = Object.assign(document.createElement(tag), props);
   node.append(...children);
@@ -72,9 +78,6 @@ export class ShareBox {
 
   get isOpen() { return Boolean(this.#dialog?.open); }
 
-  /** The text shown now and its tab (for tests and the element). */
-  get shown() { return { tab: this.#tab, text: this.#dialog?.querySelector('textarea').value ?? '' }; }
-
   open() {
     this.#dialog ??= this.#build();
     this.refresh();
@@ -100,6 +103,7 @@ export class ShareBox {
       button.tabIndex = selected ? 0 : -1;
     }
     const [, label, hint] = TABS.find(([id]) => id === tab);
+    dialog.querySelector('[role=tabpanel]').setAttribute('aria-labelledby', `share-tab-${tab}`);
     const area = dialog.querySelector('textarea');
     area.value = this.#texts[tab];
     area.setAttribute('aria-label', label);
@@ -135,18 +139,19 @@ export class ShareBox {
     tabs.setAttribute('role', 'tablist');
     tabs.setAttribute('aria-label', 'Where the figure goes');
     for (const [id, label] of TABS) {
-      const tab = el('button', { type: 'button', textContent: label });
+      const tab = el('button', { type: 'button', textContent: label, id: `share-tab-${id}` });
       tab.dataset.tab = id;
       tab.setAttribute('role', 'tab');
+      tab.setAttribute('aria-controls', 'share-panel');
       tab.addEventListener('click', () => this.#show(id));
       tabs.append(tab);
     }
-    // Arrow keys move between the tabs, as in any tab list.
+    // Arrow keys, Home and End move between the tabs, as in any tab list.
     tabs.addEventListener('keydown', (event) => {
-      const step = { ArrowRight: 1, ArrowLeft: -1 }[event.key];
-      if (!step) return;
       const index = TABS.findIndex(([id]) => id === this.#tab);
-      const [next] = TABS[(index + step + TABS.length) % TABS.length];
+      const to = { ArrowRight: index + 1, ArrowLeft: index - 1, Home: 0, End: TABS.length - 1 }[event.key];
+      if (to === undefined) return;
+      const [next] = TABS[(to + TABS.length) % TABS.length];
       this.#show(next);
       tabs.querySelector(`[data-tab="${next}"]`).focus();
       event.preventDefault();
@@ -158,11 +163,12 @@ export class ShareBox {
     const copyStatus = el('span', { className: 'status copy-status' });
     copyStatus.setAttribute('role', 'status');
 
+    const panel = el('div', { id: 'share-panel' }, el('p', { className: 'hint' }), area, el('div', { className: 'row' }, copy, copyStatus));
+    panel.setAttribute('role', 'tabpanel');
     dialog.append(
       el('style', { textContent: STYLE }),
       el('header', {}, el('h2', { id: 'share-title', textContent: 'Share this figure' }), close),
-      tabs, el('p', { className: 'hint' }), area, el('div', { className: 'row' }, copy, copyStatus),
-      this.#posterSection(),
+      tabs, panel, this.#posterSection(),
     );
     if (this.#options.recorder) dialog.append(this.#recordSection());
     // A recording under way is cancelled when the box closes.
@@ -198,7 +204,6 @@ export class ShareBox {
   #recordSection() {
     const recorder = this.#options.recorder;
     const seen = recorder.size();
-    const even = (n) => Math.max(2, Math.round(n / 2) * 2);
     const sizes = [[even(seen.width), even(seen.height), 'as seen'], [640, 360], [1280, 720], [1920, 1080]];
     const seconds = el('input', { type: 'number', min: '0.5', max: '60', step: '0.5', value: '4', className: 'seconds' });
     const fps = el('select', { className: 'fps' }, ...[24, 30, 60].map((n) => el('option', { value: String(n), textContent: `${n} fps`, selected: n === 30 })));
@@ -219,10 +224,13 @@ export class ShareBox {
       const [w, h] = size.value.split('x').map(Number);
       return { width: w, height: h, fps: Number(fps.value), seconds: Number(seconds.value), format: format.value };
     };
-    // The formats this browser writes at the size and rate chosen.
+    // The formats this browser writes at the size and rate chosen (the answer to the latest question).
+    let asked = 0;
     const listFormats = async () => {
       const { width, height, fps: rate } = chosen();
+      const question = ++asked;
       const formats = await recorder.formats(width, height, rate);
+      if (question !== asked) return;
       const before = format.value;
       format.replaceChildren(...formats.map((f) => el('option', { value: f.id, textContent: f.label })));
       if (formats.some((f) => f.id === before)) format.value = before;
@@ -238,6 +246,7 @@ export class ShareBox {
       start.disabled = true;
       cancel.hidden = false;
       progress.hidden = false;
+      cancel.focus();
       progress.value = 0;
       status.textContent = 'Recording…';
       const started = performance.now();
@@ -254,9 +263,11 @@ export class ShareBox {
         status.textContent = error?.name === 'AbortError' ? 'Cancelled: nothing was saved.' : `The recording failed: ${error.message}`;
       } finally {
         this.#recording = null;
+        const focused = this.#root.activeElement === cancel;
         start.disabled = false;
         cancel.hidden = true;
         progress.hidden = true;
+        if (focused) start.focus();
       }
     });
     cancel.addEventListener('click', () => this.#recording?.abort());
@@ -276,13 +287,58 @@ export class ShareBox {
  */
 export class ShareFeature {
   #box = null;
+  // The recording under way (its own abort), or null: one at a time per figure.
+  #recording = null;
 
   constructor(ctx) {
     this.ctx = ctx;
     ctx.actions.share = () => this.open();
   }
 
+  // A figure taken off the page stops recording and closes its box (a modal box would stay open).
+  disconnected() {
+    this.#recording?.abort();
+    this.#box?.close();
+  }
+
+  /**
+   * Runs `record(signal)`, the one recording of this figure, stopped by `signal` (the caller's) or by
+   * the figure leaving the page.
+   */
+  async recording(signal, record) {
+    if (this.#recording) throw new Error('this figure is recording already: wait for that clip, or cancel it');
+    if (!this.ctx.element.isConnected) throw new Error('the figure is not on the page: put it in the document to record it');
+    const own = new AbortController();
+    this.#recording = own;
+    try {
+      return await record(signal ? AbortSignal.any([signal, own.signal]) : own.signal);
+    } finally {
+      this.#recording = null;
+    }
+  }
+
   refresh() { if (this.#box?.isOpen) this.#box.refresh(); }
+
+  /** The figure's size as seen, in CSS pixels. */
+  seen() {
+    const { element } = this.ctx;
+    return { width: element.clientWidth || 640, height: element.clientHeight || 360 };
+  }
+
+  /**
+   * Paths beside the figure's module (`file`) as web addresses: from the URL it was loaded from, or,
+   * for a module from elsewhere (a notebook's `blob:`), where a copy of dist/ beside the page has it.
+   */
+  besideModule(file) {
+    const given = this.ctx.element.constructor.moduleUrl ?? '';
+    const url = /^https?:/.test(given) ? given : new URL(`www/${file}`, document.baseURI).href;
+    return (path) => new URL(path, url).href;
+  }
+
+  /** The settings the page gives the figure for itself (`data-share-omit="controls hud"`), not shared. */
+  omitted() {
+    return new Set((this.ctx.element.dataset.shareOmit ?? '').split(/\s+/).filter(Boolean));
+  }
 
   open() {
     this.#box ??= new ShareBox(this.ctx.root, {
@@ -305,9 +361,14 @@ export class ShareFeature {
 export async function clipPlan({ seconds = 4, fps = 30, width, height, format, onProgress, signal } = {}, seen) {
   if (![24, 30, 60].includes(fps)) throw new Error(`fps must be 24, 30 or 60, got ${fps}`);
   if (!(seconds >= 0.1 && seconds <= 60)) throw new Error(`seconds must be a number from 0.1 to 60, got ${seconds}`);
-  const even = (n) => Math.max(2, Math.round(n / 2) * 2);
   width ??= even(seen.width);
   height ??= even(seen.height);
   if (!format) [{ id: format }] = await clipFormats(width, height, fps);
-  return { seconds, fps, width, height, format, count: Math.max(1, Math.round(seconds * fps)), onProgress, signal };
+  const count = Math.max(1, Math.round(seconds * fps));
+  // A GIF holds its frames until its palette is chosen (every second one at 60 fps).
+  const held = width * height * 2 * (fps === 60 ? Math.ceil(count / 2) : count);
+  if (format === 'gif' && held > GIF_HELD_BYTES) {
+    throw new Error(`a GIF of ${width}×${height} for ${seconds} s at ${fps} fps is too large to make here: choose a smaller size, fewer seconds, or WebM or MP4`);
+  }
+  return { seconds, fps, width, height, format, count, onProgress, signal };
 }

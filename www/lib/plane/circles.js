@@ -45,6 +45,11 @@ export function circlesText(circles) {
   return circles.map((c) => [c.x, c.y, c.r * (c.charge < 0 ? -1 : 1)].map(n).join(',')).join(';');
 }
 
+/** Circles as `circles` reads them back exactly (full precision; a subtracting circle with a negative radius). */
+export function circlesExactText(circles) {
+  return circles.map((c) => [c.x, c.y, Math.abs(c.r) * ((c.charge ?? Math.sign(c.r)) < 0 ? -1 : 1)].join(',')).join(';');
+}
+
 /** One Euler step of `dt` seconds for every circle, the walls elastic. */
 export function moveCircles(circles, dt) {
   for (const c of circles) {

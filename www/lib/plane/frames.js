@@ -20,6 +20,8 @@ export class PlaneFrames {
   frameMs = 0;
   /** The last march drawn. */
   result = null;
+  /** True while a recording moves the circles itself: the figure's own animation holds still. */
+  held = false;
   #ctx;
   #frame = 0;
   #last = 0;
@@ -110,7 +112,7 @@ export class PlaneFrames {
     this.#last = now;
     const stepper = this.parts.stepper;
     // While the step-through is open the circles hold still, and a playing step-through advances.
-    const moving = !s.paused && !this.parts.dragged() && stepper.step === null && !s['slice-of'];
+    const moving = !s.paused && !this.held && !this.parts.dragged() && stepper.step === null && !s['slice-of'];
     if (moving) moveCircles(this.parts.circles.list, dt * s.speed);
     stepper.advance(dt);
     // A figure following a 3D figure's slice looks every frame (its spheres move), and draws when what

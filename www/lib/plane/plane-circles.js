@@ -3,7 +3,7 @@
 // when an edit ends, so that links, scene files and notebooks carry them.
 
 import { CircleGestures } from './circle-gestures.js';
-import { circlesText, parseCircles, seededCircles } from './circles.js';
+import { circlesExactText, circlesText, parseCircles, seededCircles } from './circles.js';
 
 export class PlaneCircles {
   static attributes = ['circles', 'spheres', 'seed'];
@@ -34,8 +34,7 @@ export class PlaneCircles {
 
   /** Places circles given as `{ x, y, r, charge }` (at full precision; refused like the attribute). */
   place(list) {
-    const text = list.map((c) => [c.x, c.y, Math.abs(c.r) * ((c.charge ?? Math.sign(c.r)) < 0 ? -1 : 1)].join(',')).join(';');
-    this.#ctx.get(PlaneInside).setText('circles', text);
+    this.#ctx.get(PlaneInside).setText('circles', circlesExactText(list));
   }
 
   changed() { this.#list = null; }
