@@ -25,8 +25,6 @@ const CELLS = [
     "print('STL', len(stl), struct.unpack('<I', stl[80:84])[0], w.triangles)",
     'png = await w.picture()',
     "print('PNG', png[:4] == bytes([137, 80, 78, 71]), len(png))",
-    "gif = await w.record(seconds=0.5, fps=24, width=160, height=90, format='gif')",
-    "print('GIF', gif[:6] == b'GIF89a', len(gif))",
     'await w.load_scene(await w.save_scene())',
     'try:',
     '    found = await w.critical_points()',
@@ -38,11 +36,13 @@ const CELLS = [
     'except ValueError as error:',
     "    print('REFUSED', error)",
   ].join('\n'),
+  "gif = await w.record(seconds=0.5, fps=24, width=160, height=90, format='gif')\nprint('GIF', gif[:6] == b'GIF89a', len(gif))",
   'w2 = Metaballs(spheres=3, resolution=24, paused=True)\nw2',
 ];
 
 let server;
 let directory;
+const consoleLines = [];
 let browser;
 let port;
 
@@ -96,7 +96,7 @@ async function state(page) {
     };
   }).catch((e) => ({ page: String(e) }));
   const log = readFileSync(path.join(directory, 'server.log'), 'utf8').split('\n').slice(-15).join('\n');
-  return `${JSON.stringify(seen)}\nthe server's log ends:\n${log}`;
+  return `${JSON.stringify(seen)}\nthe page's console ends:\n${consoleLines.join('\n')}\nthe server's log ends:\n${log}`;
 }
 const waitFor = (page, what, f, arg, timeout = 60_000) => page.waitForFunction(f, arg, { timeout })
   .catch(async () => assert.fail(`${what}: ${await state(page)}`));
@@ -108,6 +108,9 @@ const waitForOutput = (page, pattern, timeout = 60_000) => waitFor(page, `no out
 // Opens a notebook of the server's folder in a page of its own and waits for its kernel.
 async function openNotebook(name) {
   const page = await browser.newPage({ viewport: { width: 1280, height: 900 } });
+  // The page's last messages, for a failed wait's report.
+  page.on('console', (m) => { consoleLines.push(`${m.type()}: ${m.text().slice(0, 300)}`); consoleLines.splice(0, consoleLines.length - 20); });
+  page.on('pageerror', (e) => consoleLines.push(`pageerror: ${String(e).slice(0, 300)}`));
   const errors = [];
   page.on('pageerror', (e) => errors.push(String(e)));
   await page.goto(`http://127.0.0.1:${port}/lab/tree/${name}?reset&token=${TOKEN}`);
@@ -177,15 +180,19 @@ test('in JupyterLab the widget draws, follows Python, reports back, exports, sha
   assert.equal(count, drawn, 'the STL does not hold the drawn triangles');
   assert.equal(reported, drawn);
   assert.match(printed, /PNG True \d{4,}/);
-  assert.match(printed, /GIF True \d{4,}/);
   assert.match(printed, /REFUSED .+/);
   // The critical points' module came through the kernel too: two spheres, their join, proven complete.
   const critical = printed.match(/CRITICAL (\d+) (\w+) (\d+)/);
   assert.ok(critical, `the cell printed: ${printed}`);
   assert.ok(Number(critical[1]) >= 1 && critical[2] === 'True', printed);
 
-  // Cell 5: a second widget shares the page's one device (scrolled to, as a person reading on would).
+  // Cell 5: a clip of the figure's animation, made in the browser, as bytes in Python.
   await run(page, 4);
+  await waitForOutput(page, /GIF (True|False) \d+/, 120_000);
+  assert.match(await outputText(page), /GIF True \d{4,}/);
+
+  // Cell 6: a second widget shares the page's one device (scrolled to, as a person reading on would).
+  await run(page, 5);
   await waitFor(page, 'no second figure', () => document.querySelectorAll('metaballs-view').length === 2);
   await page.locator('metaballs-view').nth(1).scrollIntoViewIfNeeded();
   await waitFor(page, 'the second figure did not draw',
@@ -198,7 +205,7 @@ test('in JupyterLab the widget draws, follows Python, reports back, exports, sha
 
   // Running that cell again replaces its figure: the live renderers stay two.
   const first = await page.evaluateHandle(() => document.querySelectorAll('metaballs-view')[1]);
-  await run(page, 4);
+  await run(page, 5);
   await waitFor(page, 'the cell run again showed no new figure',
     (old) => { const all = document.querySelectorAll('metaballs-view'); return all.length === 2 && all[1] !== old; }, first);
   await page.locator('metaballs-view').nth(1).scrollIntoViewIfNeeded();

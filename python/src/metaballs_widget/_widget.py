@@ -56,6 +56,12 @@ def _refusal(widget, row: dict, proposal) -> traitlets.TraitError:
     raise AssertionError("only a refused value has a refusal")
 
 
+def _resolve(future, result) -> None:
+    """Gives a waiting call its answer, unless it stopped waiting (it timed out)."""
+    if not future.done():
+        future.set_result(result)
+
+
 class _Asking(anywidget.AnyWidget):
     """A widget whose figure answers what Python asks (``await w.save_scene()``), by message."""
 
@@ -90,8 +96,10 @@ class _Asking(anywidget.AnyWidget):
         """The figure answers what Python asked."""
         if isinstance(content, dict) and content.get("type") == "answer":
             answer = self._waiting.get(content.get("id"))
-            if answer is not None and not answer.done():
-                answer.set_result((content, list(buffers or [])))
+            if answer is not None:
+                # The kernel may take the message in on another thread than the one whose loop awaits
+                # the answer: it is resolved through that loop, which is woken for it.
+                answer.get_loop().call_soon_threadsafe(_resolve, answer, (content, list(buffers or [])))
 
 
 class _Figure(_Asking):
