@@ -15,11 +15,13 @@ const here = path.dirname(fileURLToPath(import.meta.url));
 
 // Longest first (wall times measured one at a time here, in seconds, roughly).
 const SHARED = [
+  // The notebook's figures start under JupyterLab and a kernel on a busy page: it runs beside lighter
+  // files than the soak's twelve figures.
   'notebook.test.js', // 150
-  'soak.test.js', // 110
-  'teaching.test.js', // 75
-  'phone.test.js', // 55
-  'page.test.js', // 50
+  'teaching.test.js', // 50
+  'phone.test.js', // 85
+  'soak.test.js', // 100
+  'page.test.js', // 55
   'element.test.js', // 45
   'table.test.js', // 45
   'course.test.js', // 35

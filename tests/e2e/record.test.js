@@ -16,6 +16,21 @@ useServerAndBrowser();
 const VIEWPORT = { width: 640, height: 360 };
 const [WIDTH, HEIGHT] = [320, 180];
 
+// Pauses the figure and waits until its spheres hold still: a figure meshing on a worker takes the
+// time it owed the animation in the next step it meshes, even just after a pause.
+async function pauseAndSettle(page) {
+  await page.$eval('metaballs-view', async (e) => {
+    e.pause();
+    let before = null;
+    for (let tries = 0; tries < 10; tries += 1) {
+      await e.nextFrame();
+      const now = JSON.stringify(e.sphereList);
+      if (now === before) return;
+      before = now;
+    }
+  });
+}
+
 const probe = (file) => JSON.parse(execFileSync('ffprobe', ['-v', 'error', '-count_frames', '-select_streams', 'v:0',
   '-show_entries', 'stream=nb_read_frames,width,height,codec_name', '-of', 'json', file], { encoding: 'utf8' })).streams[0];
 
@@ -32,7 +47,8 @@ test('a recording of 2 s at 30 fps is 60 frames of the asked size in every forma
   const { page, errors, close } = await open('index.html?res=32&spheres=4&controls=none&hud=off', { viewport: VIEWPORT });
   try {
     await waitForTriangles(page).catch(() => {});
-    await page.$eval('metaballs-view', async (e) => { await e.ready(); e.pause(); await e.nextFrame(); });
+    await page.$eval('metaballs-view', (e) => e.ready());
+    await pauseAndSettle(page);
     const formats = await page.evaluate(async () => (await import('/www/lib/figure/clip.js')).clipFormats(320, 180, 30));
     const ids = formats.map((f) => f.id);
     console.log(`formats offered: ${ids.join(', ')}`);
@@ -99,9 +115,8 @@ test('a figure taken off the page while it records stops the clip, and put back 
   const { page, errors, close } = await open('index.html?res=24&spheres=3&controls=none&hud=off', { viewport: VIEWPORT });
   try {
     await waitForTriangles(page).catch(() => {});
+    await pauseAndSettle(page);
     const result = await page.$eval('metaballs-view', async (e) => {
-      e.pause();
-      await e.nextFrame();
       const before = JSON.stringify(e.sphereList);
       let moved = null;
       const clip = e.record({ seconds: 10, fps: 30, width: 160, height: 90, format: 'webm-vp9',
@@ -126,8 +141,8 @@ test('Record in the share box shows its progress; Cancel leaves no file, the sph
   const { page, errors, close } = await open('index.html?res=24&spheres=3', { viewport: { width: 960, height: 640 } });
   try {
     await waitForTriangles(page);
-    await page.$eval('metaballs-view', (e) => e.pause());
-    const before = await page.$eval('metaballs-view', async (e) => { await e.nextFrame(); return JSON.stringify(e.sphereList); });
+    await pauseAndSettle(page);
+    const before = await page.$eval('metaballs-view', (e) => JSON.stringify(e.sphereList));
     const downloads = [];
     page.on('download', (d) => downloads.push(d.suggestedFilename()));
     await page.click('#open-share');
