@@ -10,10 +10,10 @@ use std::collections::BTreeMap;
 use std::path::Path;
 
 /// The folders of `src/`, lowest first; a folder may import its own and those before it. Modules at
-/// the top of `src/` (the native tools, `lib.rs`, `main.rs`), `web/` and `manifest/` (the elements'
+/// the top of `src/` (the native tools, `lib.rs`, `main.rs`), `cli/` (the command line's commands), `web/` and `manifest/` (the elements'
 /// descriptions, a native tool) may import any.
 const LAYERS: &[&str] = &["scene", "device", "extract", "critical", "teach", "view", "draw", "renderer"];
-const SHELLS: &[&str] = &["web", "manifest"];
+const SHELLS: &[&str] = &["web", "manifest", "cli"];
 /// The scene's modules, in the only order they may import each other.
 const SCENE_ORDER: &[&str] =
     &["math", "number", "decimal", "checks", "sphere", "params", "motion", "json", "file"];
