@@ -33,7 +33,7 @@ impl MeshFormat {
             _ => Err(crate::ParamError::Invalid {
                 name: "mesh format",
                 value: word.to_string(),
-                expected: format!("one of {}", Self::WORDS.join(", ")),
+                expected: format!("one of {}", Self::WORDS.join(", ")).into(),
             }),
         }
     }

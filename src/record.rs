@@ -39,7 +39,7 @@ impl ClipFormat {
             _ => Err(ParamError::Invalid {
                 name: "clip format",
                 value: word.to_string(),
-                expected: format!("one of {}", Self::WORDS.join(", ")),
+                expected: format!("one of {}", Self::WORDS.join(", ")).into(),
             }),
         }
     }
@@ -55,7 +55,7 @@ impl ClipFormat {
         Self::from_file_name(name).ok_or_else(|| ParamError::Invalid {
             name: "clip file name",
             value: name.to_string(),
-            expected: "a name ending in .gif, .png or .apng (or --format gif or apng)".to_string(),
+            expected: "a name ending in .gif, .png or .apng (or --format gif or apng)".to_string().into(),
         })
     }
 
@@ -74,7 +74,7 @@ pub fn check_fps(fps: u32) -> Result<u32, ParamError> {
     Err(ParamError::Invalid {
         name: "frame rate (fps)",
         value: fps.to_string(),
-        expected: format!("one of {}", rates.join(", ")),
+        expected: format!("one of {}", rates.join(", ")).into(),
     })
 }
 
@@ -220,7 +220,8 @@ pub fn check_gif(width: u32, height: u32, frames: u32) -> Result<(), ParamError>
             "at most {} GiB of frames (3 bytes a pixel), which are held until its palette is chosen; \
              make it shorter or smaller, or write an APNG",
             GIF_HELD_BYTES >> 30
-        ),
+        )
+        .into(),
     })
 }
 

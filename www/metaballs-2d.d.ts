@@ -42,6 +42,17 @@ export interface Metaballs2dRecordOptions {
   signal?: AbortSignal;
 }
 
+/** A message: a text with `{field}` placeholders, or plural forms chosen by its `count` field. */
+export type MetaballsMessage =
+  | string
+  | { zero?: string; one?: string; two?: string; few?: string; many?: string; other: string };
+
+/** Adds a language (a tag such as 'nl'), or overrides words of one, for every figure on the page. */
+export declare function registerTranslation(lang: string, messages: Record<string, MetaballsMessage>): void;
+
+/** Every English message by its key: what a translation gives. */
+export declare const englishWords: Readonly<Record<string, MetaballsMessage>>;
+
 export declare class Metaballs2d extends HTMLElement {
   /** Iso level: 0.05 to 20. Attribute `iso`; default 1. */
   iso: number;

@@ -15,8 +15,9 @@ import { PLANE_TABLE } from './lib/attributes.js';
 import { Rows } from './lib/core/rows.js';
 import { FigureState } from './lib/core/state.js';
 import { FigureContext } from './lib/core/context.js';
+import { watchLanguage } from './lib/core/language.js';
 import { customStates, defineSettingProperties, flasher, takeAttribute } from './lib/core/element.js';
-import { parseF64, readValue } from './lib/core/read.js';
+import { parseF64, readValue, refusal } from './lib/core/read.js';
 import { PANEL_CONTROLS, PlanePanel } from './lib/plane/panel.js';
 import { parseCircles } from './lib/plane/circles.js';
 import { PlaneCircles, PlaneInside, PlaneLabel } from './lib/plane/plane-circles.js';
@@ -32,9 +33,13 @@ const STYLE = `
    for a narrow figure, which stacks them. */
 :host([march]) { display: grid; grid-template-columns: minmax(0, 1fr) minmax(0, 1fr); }
 .figure { position: relative; aspect-ratio: 1; }
-.side { min-height: 0; contain: size; margin-left: 8px; }
+.side { min-height: 0; contain: size; margin-inline-start: 8px; }
 .side:empty { display: none; }
 canvas { display: block; width: 100%; height: 100%; touch-action: none; cursor: crosshair; border-radius: 6px; }
+/* A language written right to left: the panel, the step-through and the notice run its way (and the
+   step-through goes to the picture's left); the picture and its print do not mirror. */
+:host(:state(rtl)) { direction: rtl; }
+canvas, .print { direction: ltr; }
 #notice { position: absolute; left: 8px; right: 8px; bottom: 8px; padding: 6px 8px; border-radius: 6px;
   background: #3b2f12; border: 1px solid #8a6a1f; color: #ffe2a3; }
 #notice[hidden] { display: none; }
@@ -72,14 +77,14 @@ function readSetting(spelling, text) {
   if (row.name === 'circles' && value.trim()) {
     // Each number as the table's numbers are read (no hexadecimal, no `1_0`).
     const bad = value.split(/[;,]/).map((part) => part.trim()).find((part) => part && parseF64(part) === null);
-    if (bad !== undefined) throw new Error(`circles: "${bad}" is not a number`);
+    if (bad !== undefined) throw refusal(`circles: "${bad}" is not a number`, 'plane-circle-number', { part: bad });
     parseCircles(value);
   }
   if (row.name === 'march') {
     const march = value.trim();
     if (/^(off|none)$/i.test(march)) return '';
     if (!/^[0-9]+\s*(,\s*[0-9]+)?$/.test(march || '0')) {
-      throw new Error(`march: "${text}" is not a square i,j, a step number, off or none`);
+      throw refusal(`march: "${text}" is not a square i,j, a step number, off or none`, 'plane-march', { text });
     }
     return march || '0';
   }
@@ -102,13 +107,14 @@ export class Metaballs2d extends Base {
   static controls = PANEL_CONTROLS;
 
   #ctx;
+  #states = customStates(this);
 
   constructor() {
     super();
     const root = this.attachShadow({ mode: 'open' });
     root.innerHTML = `<style>${STYLE}</style><div class="figure"><div class="print"></div><canvas id="view" part="canvas" role="img"></canvas>`
       + '<div id="notice" part="notice" role="status" hidden></div><div class="controls"></div></div><div class="side"></div>';
-    const ctx = new FigureContext(this, root, new FigureState(this, PLANE_ROWS, readSetting));
+    const ctx = new FigureContext(this, root, new FigureState(this, PLANE_ROWS, readSetting), this.#states);
     this.#ctx = ctx;
     ctx.flash = flasher(root);
     for (const Feature of FEATURES) ctx.use(Feature);
@@ -129,13 +135,14 @@ export class Metaballs2d extends Base {
       if (this.isConnected) this.#ctx.frames.draw();
     });
     this.#observer.observe(this);
+    this.#unwatchLanguage = watchLanguage(this, (words) => this.#ctx.speak(words));
     this.#ctx.each('refresh', this.#ctx.state);
     this.#ctx.each('connected');
     this.#ctx.frames.start();
   }
 
   #observer = null;
-  #states = customStates(this);
+  #unwatchLanguage = null;
 
   // A narrow figure (its own width, not the page's) stacks the step-through below the picture
   // (`:state(stacked)`), and a small one keeps its panel over the picture's upper part (`:state(compact)`).
@@ -147,6 +154,7 @@ export class Metaballs2d extends Base {
 
   disconnectedCallback() {
     this.#observer?.disconnect();
+    this.#unwatchLanguage?.();
     this.#ctx.each('disconnected');
     this.#ctx.frames.stop();
   }
@@ -244,6 +252,13 @@ export class Metaballs2d extends Base {
     return { cells, values: Array.from(values) };
   }
 }
+
+/**
+ * Adds a language, or overrides some of a language's words, for every figure on the page:
+ * `registerTranslation('nl', { 'setting.iso': 'Isoniveau', … })`; `englishWords` is every English
+ * message by its key (docs/embedding.md, "Languages").
+ */
+export { registerTranslation, EN as englishWords } from './lib/i18n/words.js';
 
 if (globalThis.customElements && !customElements.get('metaballs-2d')) {
   customElements.define('metaballs-2d', Metaballs2d);

@@ -11,10 +11,12 @@
 
 import { canonical, nameOfKind, rowOf, TABLE, TEXT_NAMES, VIEW_ROWS } from './lib/core/table.js';
 import { FigureState } from './lib/core/state.js';
-import { defineSettingProperties, flasher, takeAttribute } from './lib/core/element.js';
+import { customStates, defineSettingProperties, flasher, takeAttribute } from './lib/core/element.js';
+import { watchLanguage } from './lib/core/language.js';
 import { readsInJavaScript, readValue } from './lib/core/read.js';
 import { FigureContext } from './lib/core/context.js';
 import { hub } from './lib/engine/hub.js';
+import { say, warningSaid } from './lib/engine/asset-errors.js';
 import { loadWarning, loadWasm, parseParameter, wasmLoaded } from './lib/engine/wasm.js';
 import { FigureBase } from './lib/engine/element-base.js';
 import { pageWatch, unwatch } from './lib/engine/page-watch.js';
@@ -66,6 +68,7 @@ export class MetaballsView extends FigureBase {
 
   #ctx;
   #frames;
+  #unwatchLanguage = null;
   #started = false;
   // Resolves once the wasm is in and the attributes given so far are read.
   #loaded = null;
@@ -75,7 +78,7 @@ export class MetaballsView extends FigureBase {
     const root = this.attachShadow({ mode: 'open', delegatesFocus: true });
     root.adoptedStyleSheets = [elementStyle()];
     root.innerHTML = TEMPLATE;
-    const ctx = new FigureContext(this, root, new FigureState(this, VIEW_ROWS, readSetting));
+    const ctx = new FigureContext(this, root, new FigureState(this, VIEW_ROWS, readSetting), customStates(this));
     this.#ctx = ctx;
     ctx.flash = flasher(root);
     for (const Feature of FEATURES) ctx.use(Feature);
@@ -97,22 +100,28 @@ export class MetaballsView extends FigureBase {
 
   connectedCallback() {
     const watch = pageWatch();
+    this.#unwatchLanguage = watchLanguage(this, (words) => {
+      this.#ctx.speak(words);
+      this.#frames.reword(words);
+    });
     this.#ctx.each('connected');
     this.#load().then(() => {
       if (!this.isConnected) return;
       if (!this.#started) {
         this.#started = true;
-        if (loadWarning()) this.#ctx.notice(loadWarning());
+        if (loadWarning()) this.#ctx.notice(say(this.#ctx.words, warningSaid(loadWarning())));
         this.#ctx.each('firstStart');
       }
       this.#ctx.each('loaded');
-    }, (error) => this.fail(error?.title ?? 'The figure could not load', `${error?.message ?? error}`));
+    }, (error) => this.fail(error?.said?.title ?? error?.title ?? { key: 'figure.could-not-load' },
+      error?.said?.text ?? `${error?.message ?? error}`));
     hub.register(this);
     watch.near.observe(this);
     watch.visible.observe(this);
   }
 
   disconnectedCallback() {
+    this.#unwatchLanguage?.();
     this.#ctx.each('disconnected');
     unwatch(this);
     hub.unregister(this);
@@ -153,7 +162,10 @@ export class MetaballsView extends FigureBase {
   /** A new device is ready (or a retry was asked for): start again with the current state. */
   resume() { this.#frames.resume(); }
 
-  /** Shows a message in this element's box and stops drawing it. */
+  /**
+   * Shows a message in this element's box and stops drawing it: `title` and `text` are text, or
+   * sayings worded in the reader's language (`{ key, fields }`, lib/engine/asset-errors.js).
+   */
   fail(title, text, options) { this.#frames.fail(title, text, options); }
 
   /**
@@ -296,6 +308,13 @@ export class MetaballsView extends FigureBase {
    */
   withView(f) { return this.#frames.withView(f); }
 }
+
+/**
+ * Adds a language, or overrides some of a language's words, for every figure on the page:
+ * `registerTranslation('nl', { 'setting.iso': 'Isoniveau', … })`; `englishWords` is every English
+ * message by its key (docs/embedding.md, "Languages").
+ */
+export { registerTranslation, EN as englishWords } from './lib/i18n/words.js';
 
 // Safe to import twice, even from two copies of the package: the first definition stays.
 if (globalThis.customElements && !customElements.get('metaballs-view')) {

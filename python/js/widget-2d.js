@@ -5,6 +5,7 @@
 
 import '../../www/metaballs-2d.js';
 import { quietly } from './quietly.js';
+import { followLanguage } from './language.js';
 import { PLANE_TABLE } from '../../www/lib/attributes.js';
 
 // What Python may ask the figure, by the element's method names.
@@ -22,6 +23,7 @@ function render({ model, el }) {
     else if (figure.getAttribute(name) !== value) figure.setAttribute(name, value);
   };
   for (const { name } of PLANE_TABLE) write(name);
+  const stopLanguage = followLanguage(model, figure);
   el.replaceChildren(figure);
 
   // Python → figure: a changed trait becomes the attribute.
@@ -53,6 +55,7 @@ function render({ model, el }) {
   };
   model.on('msg:custom', asked);
   return () => {
+    stopLanguage();
     for (const [event, listener] of listeners) quietly(() => model.off(event, listener));
     quietly(() => model.off('msg:custom', asked));
     figure.removeEventListener('metaballs-change', changed);

@@ -13,6 +13,7 @@
 
 import '../../www/metaballs-view.js';
 import { quietly } from './quietly.js';
+import { followLanguage } from './language.js';
 import { canonical, nameOfKind, propertyName, rowOf, TABLE } from '../../www/lib/core/table.js';
 import { spheresText } from '../../www/lib/features/scene-files.js';
 
@@ -130,6 +131,7 @@ function render({ model, el }) {
     if (name === SPHERE_LIST && Array.isArray(value)) continue;
     if (value !== undefined && value !== null && value !== '') write(figure, name, value);
   }
+  const stopLanguage = followLanguage(model, figure);
   el.replaceChildren(figure);
 
   // Python → figure: a changed trait becomes the attribute. A value the figure refuses (it says why in
@@ -193,6 +195,7 @@ function render({ model, el }) {
   return () => {
     calls.figures.splice(calls.figures.indexOf(figure), 1);
     clearInterval(timer);
+    stopLanguage();
     for (const [event, listener] of listeners) quietly(() => model.off(event, listener));
     figure.removeEventListener('metaballs-change', changed);
     figure.removeEventListener('metaballs-error', refused);

@@ -177,7 +177,7 @@ fn expected(p: &Parameter) -> Option<String> {
     match p.kind {
         Kind::Text | Kind::Slice | Kind::Cell | Kind::Spheres => None,
         _ => match p.parse("?") {
-            Err(ParamError::Invalid { expected, .. }) => Some(expected),
+            Err(ParamError::Invalid { expected, .. }) => Some(expected.to_string()),
             _ => None,
         },
     }
@@ -275,6 +275,17 @@ pub(super) const SHARE_TEXT: &str = concat!(
      /** Aborting it stops the recording: the promise rejects with an AbortError. */\n  signal?: AbortSignal;\n}\n\n",
 );
 
+/// The declarations of the words' exports, in both elements' modules (docs/embedding.md, "Languages").
+pub(crate) const TRANSLATION: &str = concat!(
+    "/** A message: a text with `{field}` placeholders, or plural forms chosen by its `count` field. */\n\
+     export type MetaballsMessage =\n  | string\n  \
+     | { zero?: string; one?: string; two?: string; few?: string; many?: string; other: string };\n\n\
+     /** Adds a language (a tag such as 'nl'), or overrides words of one, for every figure on the page. */\n\
+     export declare function registerTranslation(lang: string, messages: Record<string, MetaballsMessage>): void;\n\n\
+     /** Every English message by its key: what a translation gives. */\n\
+     export declare const englishWords: Readonly<Record<string, MetaballsMessage>>;\n\n",
+);
+
 /// `www/metaballs-view.d.ts`: the element's TypeScript declarations.
 pub fn declarations() -> String {
     let out = String::from(
@@ -297,7 +308,8 @@ pub fn declarations() -> String {
          tree: { value: number | null; children: number[]; point: number | null; spheres: number[] }[];\n  \
          bands: (MetaballsLevelCounts & { above: number | null; below: number })[];\n  complete: boolean;\n  \
          undecided: number;\n  wallLevel: number;\n  milliseconds: number;\n  iso: number;\n  counts: MetaballsLevelCounts | null;\n}\n\n",
-    ) + SHARE_TEXT;
+    ) + SHARE_TEXT
+        + TRANSLATION;
     out + &view_api().typescript()
 }
 

@@ -115,5 +115,6 @@ pub(super) fn declarations() -> String {
         .replace("MetaballsShareText", "Metaballs2dShareText")
         .replace("MetaballsRecordOptions", "Metaballs2dRecordOptions")
         .as_str()
+        + super::TRANSLATION
         + &api().typescript()
 }

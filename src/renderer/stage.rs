@@ -96,7 +96,7 @@ impl MeshStage {
                 ParamError::Invalid {
                     name: "extractor",
                     value: name.to_string(),
-                    expected: format!("one of {}", self.names().join(", ")),
+                    expected: format!("one of {}", self.names().join(", ")).into(),
                 }
             })?),
         };

@@ -28,6 +28,7 @@ const SHARED = [
   'semester.test.js', // 30
   'compare.test.js', // 28
   'share.test.js', // 25
+  'languages.test.js', // 30
   'record.test.js', // 12
   'package.test.js', // 25
   'editing.test.js', // 24
@@ -48,6 +49,7 @@ const SHARED = [
   'hooks.test.js', // 0.2
   'api.test.js', // 0.1
   'read.test.js', // 0.3
+  'words.test.js', // 0.5
 ];
 // A click on a figure drawing a heavy frame must be handled within a second, and the page's long tasks
 // are counted: these run alone.

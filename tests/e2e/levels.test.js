@@ -45,7 +45,7 @@ test('the plot\'s cursor sets the iso level, and a join of the merge tree brings
   await page.waitForSelector('div.levels svg.levels-plot path[stroke="#5ec962"]', { timeout: 60000 });
   assert.equal(await page.isVisible('#levels-box'), true);
   const status = await page.textContent('div.levels p[role=status]');
-  assert.match(status, /1 critical points \(all found, with proof/);
+  assert.match(status, /1 critical point \(all found, with proof/);
   assert.match(status, /2 blobs, 0 cavities, genus 0/);
   // A drag on the plot's left part sets a lower iso level.
   const box = await page.locator('div.levels svg.levels-plot').boundingBox();

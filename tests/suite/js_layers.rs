@@ -12,6 +12,8 @@ use std::path::{Component, Path, PathBuf};
 const LAYERS: &[(&str, &[&str])] = &[
     // The parameter table, written by `metaballs manifest`.
     ("table", &["www/lib/attributes.js"]),
+    // The words the figures show: the catalogues by language and what finds and formats them.
+    ("words", &["www/lib/i18n/"]),
     // Marching squares in the plane: computed without the DOM or the wasm.
     ("plane", &["www/lib/plane/"]),
     // The element's core: the table's columns, a figure's settings, its context, the frame counts.

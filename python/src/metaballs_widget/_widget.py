@@ -65,6 +65,12 @@ def _resolve(future, result) -> None:
 class _Asking(anywidget.AnyWidget):
     """A widget whose figure answers what Python asks (``await w.save_scene()``), by message."""
 
+    lang = traitlets.Unicode(
+        "",
+        help="The language the figure speaks, a tag such as 'de', 'ja' or 'pt-BR' (empty: the notebook "
+        "page's). Its words only: settings, scene files and exports read the same in every language.",
+    ).tag(sync=True)
+
     def __init__(self, **kwargs):
         super().__init__(**kwargs)
         self._calls = itertools.count(1)

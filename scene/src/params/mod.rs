@@ -7,7 +7,7 @@ use crate::math;
 use glam::Vec3;
 use std::sync::OnceLock;
 
-pub use super::checks::{ParamError, check_f32, check_u32};
+pub use super::checks::{Expected, ParamError, check_f32, check_u32};
 pub(crate) use super::checks::{check_range, check_vec3};
 pub use super::sphere::{MAX_SPHERES, check_sphere_count};
 
@@ -168,7 +168,7 @@ impl Settings {
             let field = p.field.ok_or_else(|| ParamError::Invalid {
                 name: "parameter name",
                 value: name.to_string(),
-                expected: "a setting of the renderer".into(),
+                expected: String::from("a setting of the renderer").into(),
             })?;
             field.set(&mut next, &value);
         }
@@ -226,14 +226,15 @@ pub fn check_resolution_for_lod(cells_per_axis: u32, lod: bool) -> Result<u32, P
             value: cells_per_axis.to_string(),
             expected: format!(
                 "at most {MAX_UNIFORM_RESOLUTION} for a uniform grid (lod=on goes up to {MAX_RESOLUTION})"
-            ),
+            )
+            .into(),
         });
     }
     if lod && !cells_per_axis.is_multiple_of(block) {
         return Err(ParamError::Invalid {
             name: "resolution",
             value: cells_per_axis.to_string(),
-            expected: format!("a multiple of {block} with lod=on"),
+            expected: Expected::LodMultiple(block),
         });
     }
     Ok(cells_per_axis)

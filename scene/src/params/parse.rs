@@ -4,7 +4,8 @@
 use super::rows::{control, control_names, parameter_named, unknown};
 use super::table::{Kind, Parameter, Value};
 use super::view::{March, Slice};
-use super::{ParamError, check_f32, check_range};
+use super::{Expected, ParamError, check_f32, check_range};
+
 use crate::decimal::num;
 use crate::number::{parse_f32, parse_f64};
 
@@ -42,12 +43,13 @@ impl Parameter {
         let trimmed = text.trim();
         let noun = if self.noun.is_empty() { given } else { self.noun };
         let invalid =
-            |expected: String| ParamError::Invalid { name: noun, value: text.to_string(), expected };
+            |expected: Expected| ParamError::Invalid { name: noun, value: text.to_string(), expected };
         match self.kind {
             // What is accepted is written out only when a value is refused: settings are checked
             // many times on a figure's start, and formatting numbers costs more than checking them.
             Kind::Integer => {
-                let range = || format!("a whole number from {} to {}", num(self.min), num(self.max));
+                let range =
+                    || Expected::Whole { min: num(self.min).to_string(), max: num(self.max).to_string() };
                 if trimmed.is_empty() || !trimmed.bytes().all(|b| b.is_ascii_digit()) {
                     return Err(invalid(range()));
                 }
@@ -67,14 +69,14 @@ impl Parameter {
             Kind::Boolean => match trimmed.to_ascii_lowercase().as_str() {
                 "" | "1" | "true" | "on" | "yes" => Ok(Value::Boolean(true)),
                 "0" | "false" | "off" | "no" => Ok(Value::Boolean(false)),
-                _ => Err(invalid("true or false (also 1/0, on/off)".into())),
+                _ => Err(invalid(Expected::Flag)),
             },
             Kind::Color => {
                 let hex = trimmed.strip_prefix('#').unwrap_or(trimmed);
                 if hex.len() == 6 && hex.bytes().all(|b| b.is_ascii_hexdigit()) {
                     Ok(Value::Text(format!("#{}", hex.to_ascii_lowercase())))
                 } else {
-                    Err(invalid("a colour written #rrggbb".into()))
+                    Err(invalid(Expected::Colour))
                 }
             }
             Kind::Choice(words) => {
@@ -82,7 +84,7 @@ impl Parameter {
                 if words.contains(&word.as_str()) {
                     Ok(Value::Text(word))
                 } else {
-                    Err(invalid(format!("one of {}", words.join(", "))))
+                    Err(invalid(Expected::OneOf(words.join(", "))))
                 }
             }
             Kind::List(words, older) => {
@@ -90,12 +92,10 @@ impl Parameter {
                     let item = older.iter().find(|(old, _)| *old == item).map_or(item, |(_, new)| *new);
                     words.iter().find(|w| **w == item).copied()
                 };
-                read_list(trimmed, word)
-                    .ok_or_else(|| invalid(format!("all, none, or a comma list of {}", words.join(", "))))
+                read_list(trimmed, word).ok_or_else(|| invalid(Expected::ListOf(words.join(", "))))
             }
-            Kind::Controls => read_list(trimmed, control).ok_or_else(|| {
-                invalid(format!("all, none, or a comma list of {}", control_names().join(", ")))
-            }),
+            Kind::Controls => read_list(trimmed, control)
+                .ok_or_else(|| invalid(Expected::ListOf(control_names().join(", ")))),
             Kind::Slice => Slice::parse(trimmed).map(|slice| Value::Text(Slice::text(slice))),
             Kind::Cell => March::parse(trimmed).map(|cell| Value::Text(March::text(cell))),
             Kind::Text => Ok(Value::Text(text.to_string())),
@@ -105,7 +105,7 @@ impl Parameter {
                 .map_err(|e| ParamError::Invalid {
                     name: noun,
                     value: text.to_string(),
-                    expected: format!("x,y,z,radius[,vx,vy,vz] per sphere joined by ; ({e})"),
+                    expected: Expected::Spheres(e.to_string()),
                 }),
         }
     }
@@ -118,7 +118,7 @@ impl Parameter {
         let value = parse_f32(trimmed).ok_or_else(|| ParamError::Invalid {
             name: noun,
             value: text.to_string(),
-            expected: format!("a number from {} to {}", num(min), num(max)),
+            expected: Expected::Number { min: num(min).to_string(), max: num(max).to_string() },
         })?;
         check_f32(noun, value, min, max)
     }

@@ -277,7 +277,7 @@ pub(super) fn unknown(name: &str) -> ParamError {
         Some(c) if !alike.is_empty() => format!("{all}; those starting with {c:?}: {})", alike.join(", ")),
         _ => format!("{all}: spheres, iso, resolution, …)"),
     };
-    ParamError::Invalid { name: "parameter name", value: name.to_string(), expected }
+    ParamError::Invalid { name: "parameter name", value: name.to_string(), expected: expected.into() }
 }
 
 impl Parameter {

@@ -1,7 +1,7 @@
 //! How the surface is shown and built, for teaching: display modes, grid overlays, a field slice,
 //! triangle colouring, lights, projection, and the two construction toggles (interpolation, blend).
 
-use super::{ParamError, Settings, check_f32};
+use super::{Expected, ParamError, Settings, check_f32};
 use crate::decimal::num;
 
 /// Declares a choice among words: the enum, its words in order, and the conversions.
@@ -194,11 +194,8 @@ impl Slice {
         if text.is_empty() || text == "off" || text == "none" {
             return Ok(None);
         }
-        let invalid = || ParamError::Invalid {
-            name: "slice",
-            value: text.clone(),
-            expected: "off, or an axis and a position such as z:0.25 (x, y or z; -1 to 1)".into(),
-        };
+        let invalid =
+            || ParamError::Invalid { name: "slice", value: text.clone(), expected: Expected::Slice };
         let (axis, position) = text.split_once(':').unwrap_or((&text, "0"));
         let axis = ["x", "y", "z"].iter().position(|a| *a == axis.trim()).ok_or_else(invalid)? as u32;
         let position = crate::number::parse_f32(position.trim()).ok_or_else(invalid)?;
@@ -243,11 +240,7 @@ impl March {
         let parts: Vec<Option<u32>> = text.split(',').map(|t| t.trim().parse::<u32>().ok()).collect();
         match parts[..] {
             [Some(x), Some(y), Some(z)] if x.max(y).max(z) < Self::MAX_COORDINATE => Ok(Some([x, y, z])),
-            _ => Err(ParamError::Invalid {
-                name: "march",
-                value: text.clone(),
-                expected: "off, or a cell of the grid as x,y,z (whole numbers from 0, such as 3,4,5)".into(),
-            }),
+            _ => Err(ParamError::Invalid { name: "march", value: text.clone(), expected: Expected::Cell }),
         }
     }
 

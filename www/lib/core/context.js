@@ -8,6 +8,7 @@
 // what it tells a feature, in hooks.js, and the context calls no other name.
 
 import { checkHook } from './hooks.js';
+import { relabel, Words } from '../i18n/words.js';
 
 export class FigureContext {
   /** The renderer's frames (a FigureFrames), set by the element. */
@@ -16,11 +17,14 @@ export class FigureContext {
   actions = {};
   /** Shows a message in one of the shadow root's boxes for a while: flash(id, text, ms). */
   flash = () => {};
+  /** The words the figure shows, in its reader's language (a Words of i18n/words.js). */
+  words = new Words('en', 'ltr');
   #features = [];
 
-  /** `settings`: the figure's FigureState. */
-  constructor(element, root, settings) {
+  /** `settings`: the figure's FigureState; `states`: the element's custom states (core/element.js). */
+  constructor(element, root, settings, states = null) {
     this.element = element;
+    this.states = states;
     this.root = root;
     this.canvas = root.getElementById('view');
     this.settings = settings;
@@ -63,6 +67,22 @@ export class FigureContext {
 
   /** Draws at least `frames` more frames, even while still. */
   redraw(frames) { this.frames?.redraw(frames); }
+
+  /** Message `key` in the reader's language, worded with `fields` (see i18n/words.js). */
+  t(key, fields) { return this.words.t(key, fields); }
+
+  /**
+   * Speaks `words` from now on: the marked words of the shadow root (`data-t`, `data-t-label`,
+   * `data-t-title`) are set again, the boxes run the language's way (the `rtl` state; the canvas does
+   * not mirror), and every feature rewords what it shows.
+   */
+  speak(words) {
+    this.words = words;
+    relabel(this.root, words);
+    this.states?.set('rtl', words.rtl);
+    this.each('language', words);
+    this.redraw(1);
+  }
 
   /** Shows a short message inside the figure. */
   notice(text, ms = 8000) { this.flash('notice', text, ms); }

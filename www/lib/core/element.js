@@ -35,10 +35,10 @@ export function takeAttribute(ctx, tag, spelling, text) {
     ctx.accept(name, settings.rows.rowOf(name).value);
     return;
   }
-  const { value, message } = settings.parse(name, text, spelling);
+  const { value, message, said } = settings.parse(name, text, spelling);
   if (message) {
     console.warn(`<${tag}> ${message}`);
-    ctx.notice(message);
+    ctx.notice(settings.constructor.refused(ctx.words, said));
     ctx.emit('metaballs-error', { message, attribute: spelling });
     return;
   }

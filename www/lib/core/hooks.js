@@ -38,6 +38,8 @@ export const HOOKS = Object.freeze({
   statsOf: '(view, frame) true once the statistics of frame `frame` are read',
   shape: '(shape) the mesh\'s shape was found (blobs, genus, closed, manifold)',
   announce: '(text) a sentence for screen readers',
+  // Words.
+  language: '(words) the figure\'s language, its direction or a catalogue changed: reword what it shows',
 });
 
 /** True for a hook's name. */

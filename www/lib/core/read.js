@@ -6,6 +6,8 @@
 // tests/e2e/read.test.js holds this module to every one of them (python/tests the notebook's reader).
 // Slices, cells and sphere lists have grammars of their own: `readsInJavaScript(row)` is false for them.
 
+import { nounKey, refusal } from '../i18n/words.js';
+
 /** True for the rows this module reads (the others go to the table's parser in the WebAssembly). */
 export const readsInJavaScript = (row) => !['slice', 'cell', 'spheres'].includes(row.kind);
 
@@ -17,12 +19,13 @@ export const readsInJavaScript = (row) => !['slice', 'cell', 'spheres'].includes
 export function readValue(row, text, given = row.name) {
   const noun = row.noun || given;
   const trimmed = trim(text);
-  const invalid = (expected, shown = text) => new Error(`${noun} must be ${expected}, got ${quoted(shown)}`);
+  const invalid = (expected, code, fields = {}) => refusal(`${noun} must be ${expected}, got ${quoted(text)}`,
+    'invalid', { ...nounOf(row, noun), value: quoted(text), expected: code, ...fields });
   switch (row.kind) {
     case 'integer': {
       const expected = `a whole number from ${f64Text(row.min)} to ${f64Text(row.max)}`;
-      if (!/^[0-9]+$/.test(trimmed)) throw invalid(expected);
-      return inRange(noun, Number(trimmed), row.min, row.max, f64Text);
+      if (!/^[0-9]+$/.test(trimmed)) throw invalid(expected, 'whole', { min: row.min, max: row.max });
+      return inRange(row, noun, Number(trimmed), row.min, row.max, f64Text);
     }
     case 'number':
       return readNumber(row, noun, trimmed, text);
@@ -30,17 +33,17 @@ export function readValue(row, text, given = row.name) {
       const word = asciiLower(trimmed);
       if (['', '1', 'true', 'on', 'yes'].includes(word)) return true;
       if (['0', 'false', 'off', 'no'].includes(word)) return false;
-      throw invalid('true or false (also 1/0, on/off)');
+      throw invalid('true or false (also 1/0, on/off)', 'flag');
     }
     case 'color': {
       const hex = trimmed.startsWith('#') ? trimmed.slice(1) : trimmed;
       if (/^[0-9a-fA-F]{6}$/.test(hex)) return `#${asciiLower(hex)}`;
-      throw invalid('a colour written #rrggbb');
+      throw invalid('a colour written #rrggbb', 'colour');
     }
     case 'choice': {
       const word = asciiLower(trimmed);
       if (row.words.includes(word)) return word;
-      throw invalid(`one of ${row.words.join(', ')}`);
+      throw invalid(`one of ${row.words.join(', ')}`, 'one-of', { words: row.words.join(', ') });
     }
     case 'list': {
       const list = asciiLower(trimmed);
@@ -48,7 +51,7 @@ export function readValue(row, text, given = row.name) {
       const older = row.wordAliases ?? {};
       const items = list.split(',').map(trim).filter(Boolean).map((item) => (Object.hasOwn(older, item) ? older[item] : item));
       if (items.length === 0 || !items.every((item) => row.words.includes(item))) {
-        throw invalid(`all, none, or a comma list of ${row.words.join(', ')}`);
+        throw invalid(`all, none, or a comma list of ${row.words.join(', ')}`, 'list-of', { words: row.words.join(', ') });
       }
       return items.join(',');
     }
@@ -65,22 +68,31 @@ export function readValue(row, text, given = row.name) {
 /** A number read as the renderer keeps it (an f32), held as that f32's shortest decimal. */
 function readNumber(row, noun, trimmed, text) {
   const value = parseF64(trimmed);
+  const named = nounOf(row, noun);
   if (value === null) {
-    throw new Error(`${noun} must be a number from ${f32Text(row.min)} to ${f32Text(row.max)}, got ${quoted(text)}`);
+    const [min, max] = [f32Text(row.min), f32Text(row.max)];
+    throw refusal(`${noun} must be a number from ${min} to ${max}, got ${quoted(text)}`,
+      'invalid', { ...named, value: quoted(text), expected: 'number', min: Number(min), max: Number(max) });
   }
   const single = Math.fround(value);
-  if (Number.isNaN(single)) throw new Error(`${noun} must be a number, got NaN`);
-  if (!Number.isFinite(single)) throw new Error(`${noun} must be finite, got infinity`);
-  inRange(noun, single, Math.fround(row.min), Math.fround(row.max), f32Text);
+  if (Number.isNaN(single)) throw refusal(`${noun} must be a number, got NaN`, 'not-a-number', named);
+  if (!Number.isFinite(single)) throw refusal(`${noun} must be finite, got infinity`, 'infinite', named);
+  inRange(row, noun, single, Math.fround(row.min), Math.fround(row.max), f32Text, text);
   return Number(shortestF32(single));
 }
 
-function inRange(noun, value, min, max, written) {
+function inRange(row, noun, value, min, max, written, typed = String(value)) {
   if (value < min || value > max) {
-    throw new Error(`${noun} must be between ${written(min)} and ${written(max)}, got ${shortNumber(written(value))}`);
+    throw refusal(`${noun} must be between ${written(min)} and ${written(max)}, got ${shortNumber(written(value))}`,
+      'out-of-range', { ...nounOf(row, noun), min: Number(written(min)), max: Number(written(max)), value: trim(typed) });
   }
   return value;
 }
+
+
+// The noun a refusal names its setting by: the row's, worded by key, or the spelling given (an
+// attribute's name, kept as written).
+const nounOf = (row, noun) => (row.noun ? { noun, nounKey: nounKey(row) } : { noun });
 
 /** Text as Rust's `str::parse::<f64>` reads it (no spaces, no hexadecimal, `inf` and `nan` in any case), or null. */
 export function parseF64(text) {

@@ -34,14 +34,21 @@ export class FigureState {
 
   /**
    * Reads an attribute's text given under `spelling` (a name or an alias): `{ value }`, or
-   * `{ message }` saying what is wrong and what is kept.
+   * `{ message, said }`: the English message saying what is wrong and what is kept, and what it is
+   * made of (for `FigureState.refused`).
    */
   parse(name, text, spelling = name) {
     try {
       return { value: this.read(spelling, text) };
     } catch (error) {
-      return { message: `${spelling}="${text}": ${error.message}; keeping ${this.format(name)}` };
+      const kept = this.format(name);
+      return { message: `${spelling}="${text}": ${error.message}; keeping ${kept}`, said: { spelling, text, error, kept } };
     }
+  }
+
+  /** The message of a refused attribute (`said`, from `parse`) in the reader's language (`words`). */
+  static refused(words, { spelling, text, error, kept }) {
+    return words.t('refused.keeping', { spelling, text, message: words.refusal(error), kept });
   }
 
   /** Reads `text` given under `spelling`: the value, or throws an Error saying what is accepted. */

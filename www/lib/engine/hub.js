@@ -2,15 +2,15 @@
 // (WebGL2 has a device per canvas), drives all of them from one requestAnimationFrame loop (which stops
 // when none needs a frame), and rebuilds every view on a new device when the device is lost.
 
+import { inEnglish } from './asset-errors.js';
 import { LossCount } from './losses.js';
 import { meshWorker } from './meshers.js';
 import { backendName, loadWasm, takeEarlyGpu, wasmModule, whenWebgpuLoaded } from './wasm.js';
 
-export const WEBGPU_HELP =
-  'This figure draws with WebGPU or, without it, WebGL2; this browser offers neither. ' +
-  'Use a current Chrome or Edge (113 or later), Safari 26, or Firefox 141 or later. ' +
-  'On Linux, Chrome needs WebGPU switched on at chrome://flags/#enable-unsafe-webgpu; ' +
-  'the page must also be served over https or from localhost.';
+/** What a browser needs for the figures (a saying, engine/asset-errors.js). */
+const HELP = { key: 'figure.webgpu-help' };
+/** What a browser needs for the figures, in English. */
+export const WEBGPU_HELP = inEnglish(HELP);
 
 /** WebGL2 figures drawing at once: browsers allow a page only a few WebGL contexts (16 in Chromium). */
 export const MAX_WEBGL_FIGURES = 8;
@@ -21,10 +21,11 @@ export const MAX_WEBGL_FIGURES = 8;
  */
 export const TASK_SHARE_MS = 12;
 
-/** What a WebGL2 figure waiting for a device says. */
-export const WEBGL_WAIT = 'This browser has no WebGPU, so the figures draw with WebGL2, which allows a page '
-  + `only a few drawing contexts: ${MAX_WEBGL_FIGURES} figures are drawing already. This one starts when `
-  + 'one of them is removed.';
+/** What a WebGL2 figure waiting for a device says (a saying, engine/asset-errors.js). */
+export const WEBGL_WAIT = { key: 'figure.webgl-wait', fields: { count: MAX_WEBGL_FIGURES } };
+
+// An Error whose message is `said` in English, and which keeps `said` for the figure's box.
+const failure = (said, title) => Object.assign(new Error(inEnglish(said)), { said: { title, text: said } });
 
 class Hub {
   constructor() {
@@ -35,6 +36,7 @@ class Hub {
     this.devicesCreated = 0;
     this.losses = new LossCount();
     this.recovering = false;
+    // Why the figures stopped trying (a saying, engine/asset-errors.js), or null.
     this.stopped = null;
     this.frameRequested = false;
     // The figure that draws first in the next animation frame (one left over from the last).
@@ -52,14 +54,14 @@ class Hub {
   /** The shared device, created on first use; rejects with a message when WebGPU is missing. */
   acquire() {
     if (this.gpu) return Promise.resolve(this.gpu);
-    if (this.stopped) return Promise.reject(new Error(this.stopped));
+    if (this.stopped) return Promise.reject(failure(this.stopped));
     this.starting ??= this.#start().finally(() => { this.starting = null; });
     return this.starting;
   }
 
   async #start() {
     await loadWasm();
-    if (backendName() !== 'webgpu') throw new Error(WEBGPU_HELP);
+    if (backendName() !== 'webgpu') throw failure(HELP);
     const { early, adapter } = takeEarlyGpu();
     this.adapter = describeAdapter(adapter);
     // A software adapter's figures mesh on the CPU: their worker starts while the device and the views
@@ -90,10 +92,10 @@ class Hub {
       return webgl ? await this.#acquireWebgl(element, canvas) : await this.acquire();
     } catch (error) {
       const none = backendName() === 'none';
-      const failure = new Error(none ? WEBGPU_HELP : `${error?.message ?? error}\n\n${WEBGPU_HELP}`);
-      failure.title = none ? 'Neither WebGPU nor WebGL2 is available'
-        : webgl ? 'WebGL2 could not start' : 'WebGPU could not start';
-      throw failure;
+      const title = { key: none ? 'figure.no-gpu' : webgl ? 'figure.webgl-failed' : 'figure.webgpu-failed' };
+      const detail = error?.said?.text ?? `${error?.message ?? error}`;
+      const said = none ? HELP : { key: 'figure.gpu-start-failed', fields: { detail, help: HELP } };
+      throw Object.assign(failure(said, title), { title: inEnglish(title) });
     }
   }
 
@@ -174,7 +176,7 @@ class Hub {
       const error = this.gpu.gpu_error();
       if (error && !this.reportedError) {
         this.reportedError = true;
-        for (const element of this.elements) element.fail('The GPU reported an error', error);
+        for (const element of this.elements) element.fail({ key: 'figure.gpu-error' }, error);
       }
     }
     // The figures draw in turn until the task has run its share of the page's thread; the rest draw
@@ -206,8 +208,8 @@ class Hub {
     const losses = this.losses.record();
     if (this.losses.exhausted) {
       this.recovering = false;
-      this.stopped = `The GPU was lost ${losses} times within a minute (${reason}), so the figures stopped trying.`;
-      for (const element of this.elements) element.fail('The GPU keeps failing', this.stopped, { retry: true });
+      this.stopped = { key: 'figure.gpu-failing-text', fields: { count: losses, reason: String(reason) } };
+      for (const element of this.elements) element.fail({ key: 'figure.gpu-failing' }, this.stopped, { retry: true });
       return;
     }
     for (let attempt = 0; attempt < 6; attempt++) {
@@ -221,8 +223,8 @@ class Hub {
     }
     this.recovering = false;
     if (!this.gpu) {
-      this.stopped = `The GPU was lost (${reason}) and no new device could be had.`;
-      for (const element of this.elements) element.fail('The GPU is gone', this.stopped, { retry: true });
+      this.stopped = { key: 'figure.gpu-gone-text', fields: { reason: String(reason) } };
+      for (const element of this.elements) element.fail({ key: 'figure.gpu-gone' }, this.stopped, { retry: true });
       return;
     }
     for (const element of this.elements) element.resume();

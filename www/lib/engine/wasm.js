@@ -4,6 +4,7 @@
 // call panicked.
 
 import { describeLoadError, fetchWasm } from './asset-errors.js';
+import { fromWasm } from '../i18n/words.js';
 
 let wasm = null;
 // Each started build's linear memory, by its module.
@@ -138,10 +139,12 @@ async function start(build) {
     const module = await build.glue();
     const wasmFile = await fetched;
     const compiled = await compiling;
-    memories.set(module, (await module.default({ module_or_path: compiled ?? wasmFile.source })).memory);
+    const { memory } = await module.default({ module_or_path: compiled ?? wasmFile.source });
     if (compiled) compiledModules.set(build.name, compiled);
     warning = wasmFile.warning;
-    return module;
+    const readable = readableErrors(module);
+    memories.set(readable, memory);
+    return readable;
   } catch (error) {
     throw describeLoadError(error, url);
   }
@@ -195,6 +198,39 @@ export function parseParameter(name, text) {
   return wasm.parse_parameter(name, text);
 }
 
+/**
+ * A build's exports, whose functions and classes' methods throw (or reject with) a refusal as
+ * core/read.js makes one (an English message, its code and fields: `fromWasm`) where the WebAssembly
+ * throws one as its code and fields.
+ */
+function readableErrors(module) {
+  const wrap = (f) => function readable(...args) {
+    let result;
+    try {
+      result = f.apply(this, args);
+    } catch (error) {
+      throw fromWasm(error);
+    }
+    return result instanceof Promise ? result.catch((error) => { throw fromWasm(error); }) : result;
+  };
+  const exports = {};
+  for (const [name, value] of Object.entries(module)) {
+    exports[name] = value;
+    if (typeof value !== 'function' || name === 'default' || name === 'initSync') continue;
+    if (!/^[A-Z]/.test(name)) {
+      exports[name] = wrap(value);
+      continue;
+    }
+    for (const owner of [value, value.prototype]) {
+      for (const key of Object.getOwnPropertyNames(owner)) {
+        const { value: method, writable } = Object.getOwnPropertyDescriptor(owner, key);
+        if (typeof method === 'function' && writable && key !== 'constructor') owner[key] = wrap(method);
+      }
+    }
+  }
+  return Object.freeze(exports);
+}
+
 // A Rust panic reaches the page here (see src/web/): the element whose call panicked shows it.
 let current = null;
 /** Runs `f` with `element` as the one a panic would be reported in. */
@@ -208,6 +244,6 @@ export function within(element, f) {
   }
 }
 globalThis.metaballsShowPanic = (message) => {
-  if (current) current.fail('The renderer stopped', message);
+  if (current) current.fail({ key: 'figure.renderer-stopped' }, message);
   else console.error(`metaballs: ${message}`);
 };

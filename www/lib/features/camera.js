@@ -27,7 +27,7 @@ export class Camera {
 
   controls() {
     return {
-      view: ({ makeButton }) => makeButton('reset-view', 'Reset view', 'Reset the camera (R or double-click)', this.#ctx.actions.resetView),
+      view: ({ makeButton }) => makeButton('reset-view', { key: 'action.view' }, { key: 'play.reset-title' }, this.#ctx.actions.resetView),
     };
   }
 
@@ -62,7 +62,7 @@ function wireFigureGestures(ctx, editor, inspector) {
     },
   }, {
     ...actions,
-    hint: (text) => ctx.flash('wheel-hint', text, 1500),
+    hint: (key) => ctx.flash('wheel-hint', ctx.t(key), 1500),
     pick: (x, y, e) => {
       if (editing()) return editor.click(x, y, e.shiftKey);
       const [sx, sy] = scale();

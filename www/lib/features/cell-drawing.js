@@ -16,6 +16,8 @@ export function cellDrawing(cube, inside, triangles, t, { size = 64, color = '#e
   svg.setAttribute('width', String(size));
   svg.setAttribute('height', String(size));
   svg.setAttribute('role', 'img');
+  // The drawing does not mirror where the words run right to left.
+  svg.setAttribute('direction', 'ltr');
   if (label) svg.setAttribute('aria-label', label);
   const add = (name, attributes) => {
     const node = document.createElementNS(SVG, name);
@@ -46,16 +48,21 @@ export function cellDrawing(cube, inside, triangles, t, { size = 64, color = '#e
   return svg;
 }
 
+/** The name of class `k` of the cases, in the reader's language. */
+export const className = (words, k) => words.t(`inspector.class.${k}`);
+
 /**
  * The gallery: one drawing per configuration of each class (MC33's 33: the 15 classes, those with
  * ambiguous faces or an ambiguous inside split by how they are joined), with its name and triangles.
  * `count` drawings are made now (all by default); `more()` makes the next one and says whether any is
- * left, so that a page can draw them a few at a time.
+ * left, so that a page can draw them a few at a time. Its words are `words`'; `language(words)`
+ * rewords the drawings made and those to come.
  */
-export function buildGallery({ classes, cube }, count = Infinity) {
+export function buildGallery({ classes, cube }, count = Infinity, words) {
   const list = document.createElement('div');
   list.className = 'gallery';
   const all = classes.flatMap((k) => k.subcases.map((s) => ({ k, s, only: k.subcases.length === 1 })));
+  const worded = [];
   let next = 0;
   list.more = () => {
     const { k, s, only } = all[next++] ?? {};
@@ -63,25 +70,37 @@ export function buildGallery({ classes, cube }, count = Infinity) {
     const figure = document.createElement('figure');
     figure.dataset.class = String(k.class);
     figure.dataset.subcase = s.name;
-    const triangles = `${s.triangles.length} △`;
-    // The faces it joins, and the tunnel where the interior decides between configurations.
-    const interior = k.subcases.some((o) => o.tunnel && o.joined === s.joined);
-    const inside = s.tunnel ? 'a tunnel inside' : interior ? 'no tunnel' : '';
-    const faces = s.ambiguous ? `${s.joined} of ${s.ambiguous} ambiguous faces joined` : '';
-    const how = [faces, inside].filter(Boolean).join(', ');
-    const short = [s.ambiguous ? `${s.joined}/${s.ambiguous} joined` : '', inside.replace('a tunnel inside', 'tunnel')]
-      .filter(Boolean).join(', ');
     const caption = document.createElement('figcaption');
-    caption.textContent = only ? `${k.class} · ${k.name} (${k.cases} cases, ${triangles})` : `${s.name} · ${short} (${triangles})`;
-    figure.title = `Class ${k.class}, ${k.name} (${k.cases} of the 256 cases)${only ? '' : `: configuration ${s.name}, ${how}`}`;
-    figure.append(
-      cellDrawing(cube, k.inside, s.triangles, () => 0.5, {
-        color: classColor(k.class), label: only ? `class ${k.class}: ${k.name}` : `configuration ${s.name}: ${k.name}, ${how}`,
-      }),
-      caption,
-    );
+    const drawing = cellDrawing(cube, k.inside, s.triangles, () => 0.5, { color: classColor(k.class) });
+    figure.append(drawing, caption);
+    const word = (w) => {
+      const fields = { class: k.class, name: className(w, k.class), count: k.cases, configuration: s.name, triangles: s.triangles.length };
+      if (only) {
+        caption.textContent = w.t('inspector.gallery-class', fields);
+        figure.title = w.t('inspector.gallery-class-title', fields);
+        drawing.setAttribute('aria-label', w.t('inspector.gallery-class-label', fields));
+        return;
+      }
+      // The faces it joins, and the tunnel where the interior decides between configurations.
+      const interior = k.subcases.some((o) => o.tunnel && o.joined === s.joined);
+      const inside = s.tunnel ? 'tunnel' : interior ? 'no-tunnel' : '';
+      const faces = { joined: s.joined, ambiguous: s.ambiguous, count: s.ambiguous };
+      const short = [s.ambiguous ? w.t('inspector.gallery-joined-short', faces) : '',
+        inside ? w.t(`inspector.gallery-${inside === 'tunnel' ? 'tunnel-short' : inside}`) : ''].filter(Boolean);
+      const how = w.list([s.ambiguous ? w.t('inspector.gallery-joined', faces) : '',
+        inside ? w.t(`inspector.gallery-${inside}`) : ''].filter(Boolean), 'unit');
+      caption.textContent = w.t('inspector.gallery-configuration', { ...fields, how: w.list(short, 'unit') });
+      figure.title = w.t('inspector.gallery-configuration-title', { ...fields, how });
+      drawing.setAttribute('aria-label', w.t('inspector.gallery-configuration-label', { ...fields, how }));
+    };
+    word(words);
+    worded.push(word);
     list.append(figure);
     return next < all.length;
+  };
+  list.language = (w) => {
+    words = w;
+    for (const word of worded) word(w);
   };
   while (next < count && list.more());
   return list;

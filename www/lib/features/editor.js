@@ -3,7 +3,8 @@
 // empty space adds one, Delete or Backspace removes the selected one, the wheel or the slider changes
 // its radius, F freezes it or lets it move again, N makes it subtract its term (a dent) or add it again. On touch, a long press on a sphere selects and drags
 // it, and on empty space adds one.
-// Everything is computed by the wasm view on the CPU from the sphere list: no mesh is read back.
+// Everything is computed by the wasm view on the CPU from the sphere list: no mesh is read back. The
+// selected sphere's box speaks the figure's language, and is made again when the language changes.
 
 import { LIMITS, rowOf } from '../core/table.js';
 import { ONE_FRAME } from '../core/redraw.js';
@@ -34,13 +35,13 @@ export class SphereEditor {
     this.#ctx = ctx;
     this.#root = ctx.root;
     // What the editor reaches: the wasm view, device pixels per CSS pixel, the figure after every
-    // change to the spheres (the scene's feature adopts them), a frame without a change, a notice.
+    // change to the spheres (the scene's feature adopts them), a frame without a change, a refusal's notice.
     this.#hooks = {
       view: () => ctx.view,
       scale: () => ctx.canvas.width / Math.max(1, ctx.canvas.clientWidth),
       edited: () => ctx.each('spheresEdited'),
       redraw: () => ctx.redraw(ONE_FRAME),
-      notice: (text) => ctx.notice(text),
+      notice: (error) => ctx.notice(ctx.words.refusal(error)),
     };
     this.#rings = ctx.$('edit-overlay');
     this.#box = ctx.$('sphere-box');
@@ -63,12 +64,15 @@ export class SphereEditor {
 
   spheresReplaced() { this.reset(); }
 
+  language() { this.#showBox(); }
+
   controls() {
     return {
-      edit: ({ element, builders }) => [builders.boolean('edit', rowOf('edit')), element('p', {
-        className: 'hint',
-        textContent: 'Drag a sphere to move it · Shift-click to add one · Delete removes · wheel: radius',
-      })],
+      edit: ({ element, builders }) => {
+        const hint = element('p', { className: 'hint', textContent: this.#ctx.t('editor.hint') });
+        hint.dataset.t = 'editor.hint';
+        return [builders.boolean('edit', rowOf('edit')), hint];
+      },
     };
   }
 
@@ -217,7 +221,7 @@ export class SphereEditor {
     try {
       return f();
     } catch (error) {
-      this.#hooks.notice(error.message);
+      this.#hooks.notice(error);
       return null;
     }
   }
@@ -246,6 +250,8 @@ export class SphereEditor {
     const sphere = this.#sphere(this.#selected);
     this.#box.hidden = !sphere;
     if (!sphere) return;
+    const { words } = this.#ctx;
+    const t = (key, fields) => words.t(key, fields);
     const count = (this.#hooks.view()?.spheres().length ?? 0) / 7;
     const moving = sphere.slice(4).some((v) => v !== 0);
     const subtracts = sphere[3] < 0;
@@ -255,30 +261,31 @@ export class SphereEditor {
     slider.max = String(RADIUS.max);
     slider.step = String(RADIUS.step);
     slider.value = String(radius);
-    const output = make('output', { htmlFor: 'sphere-radius', textContent: radius.toFixed(2) });
+    const output = make('output', { htmlFor: 'sphere-radius', textContent: words.fixed(radius, 2) });
     slider.addEventListener('input', () => {
-      output.textContent = Number(slider.value).toFixed(2);
+      output.textContent = words.fixed(Number(slider.value), 2);
       this.setRadius(Number(slider.value));
     });
-    const freeze = make('button', { type: 'button', id: 'sphere-freeze', textContent: moving ? 'Freeze' : 'Let it move' });
-    freeze.title = 'Stop it where it is, or let it move again (F)';
+    const freeze = make('button', { type: 'button', id: 'sphere-freeze', textContent: t(moving ? 'editor.freeze' : 'editor.let-move') });
+    freeze.title = t('editor.freeze-title');
     freeze.addEventListener('click', () => this.toggleFreeze());
-    const charge = make('button', { type: 'button', id: 'sphere-charge', textContent: subtracts ? 'Add' : 'Subtract' });
-    charge.title = subtracts ? 'Add its term to the field again (N)' : 'Subtract its term from the field: a dent (N)';
+    const charge = make('button', { type: 'button', id: 'sphere-charge', textContent: t(subtracts ? 'editor.add' : 'editor.subtract') });
+    charge.title = t(subtracts ? 'editor.add-title' : 'editor.subtract-title');
     charge.setAttribute('aria-pressed', String(subtracts));
     charge.addEventListener('click', () => this.toggleCharge());
-    const remove = make('button', { type: 'button', id: 'sphere-remove', textContent: 'Remove' });
-    remove.title = 'Remove this sphere (Delete)';
+    const remove = make('button', { type: 'button', id: 'sphere-remove', textContent: t('editor.remove') });
+    remove.title = t('editor.remove-title');
     remove.addEventListener('click', () => this.remove());
-    const close = make('button', { type: 'button', className: 'close', textContent: '×', title: 'Let go (Esc)' });
+    const close = make('button', { type: 'button', className: 'close', textContent: '×', title: t('editor.close-title') });
     close.addEventListener('click', () => this.deselect());
-    const where = sphere.slice(0, 3).map((c) => c.toFixed(2)).join(', ');
+    const [x, y, z] = sphere.slice(0, 3).map((c) => words.fixed(c === 0 ? 0 : c, 2));
+    const where = `editor.where.${moving ? 'moving' : 'still'}${subtracts ? '-subtracts' : ''}`;
     this.#box.replaceChildren(
-      make('header', {}, make('h3', { textContent: `Sphere ${this.#selected + 1} of ${count}` }), close),
-      make('p', { textContent: `centre (${where}) · ${moving ? 'moving' : 'still'}${subtracts ? ' · subtracts' : ''}` }),
-      make('div', { className: 'control' }, make('label', { htmlFor: 'sphere-radius', textContent: 'Radius' }), slider, output),
+      make('header', {}, make('h3', { textContent: t('editor.title', { index: this.#selected + 1, count }) }), close),
+      make('p', { textContent: t(where, { x, y, z }) }),
+      make('div', { className: 'control' }, make('label', { htmlFor: 'sphere-radius', textContent: t('editor.radius') }), slider, output),
       make('div', { className: 'buttons' }, freeze, charge, remove),
-      make('p', { className: 'hint', textContent: 'Drag to move · wheel: radius · Shift-click: add' }),
+      make('p', { className: 'hint', textContent: t('editor.box-hint') }),
     );
   }
 

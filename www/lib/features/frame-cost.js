@@ -6,6 +6,8 @@
 // sphere); the time per unit of work comes from frames measured here, or before the first measurement
 // from a cautious guess for the kind of adapter.
 
+import { Words } from '../i18n/words.js';
+
 /** Frames estimated longer than this need the person's confirmation. */
 export const CONFIRM_ABOVE_MS = 1000;
 
@@ -63,22 +65,27 @@ export class FrameCost {
   }
 }
 
-/** "about 5 s" / "about 1.4 s" for a time in milliseconds. */
-export function describeMs(ms) {
-  return ms >= 10_000 ? `about ${Math.round(ms / 1000)} s` : `about ${(ms / 1000).toFixed(1)} s`;
+/** "about 5 s" / "about 1.4 s" for a time in milliseconds, in `words` (English by default). */
+export function describeMs(ms, words = new Words('en', 'ltr')) {
+  return words.t('guard.about-seconds', { seconds: ms >= 10_000 ? words.number(Math.round(ms / 1000), 0) : words.fixed(ms / 1000, 1) });
 }
 
-const describeSettings = (s) => `${s.resolution}³${s.lod ? ' with LOD' : ''} × ${s.spheres} sphere${s.spheres === 1 ? '' : 's'}`;
+const describeSettings = (words, s) => words.t(s.lod ? 'guard.settings-lod' : 'guard.settings', {
+  resolution: words.number(s.resolution, 0), count: s.spheres });
 
 /**
  * A figure's guard against slow frames: holds its `FrameCost`, and the changes that wait for the
  * person's answer in the figure's confirmation box (`#confirm` in `root`). `apply(name, value)` makes a
- * confirmed change.
+ * confirmed change; `words()` gives the figure's words (English by default).
  */
 export class CostGuard {
-  constructor(root, apply) {
+  // The settings the question shown is about: `{ current, next }`, or null.
+  #asked = null;
+
+  constructor(root, apply, words = () => new Words('en', 'ltr')) {
     this.root = root;
     this.apply = apply;
+    this.words = words;
     this.cost = null;
     this.pending = null;
     this.confirmed = false;
@@ -161,17 +168,25 @@ export class CostGuard {
   /** Shows the confirmation for `changes` to `current`: their estimated frame time, and what is kept. */
   ask(current, changes) {
     this.pending = { ...(this.pending ?? {}), ...changes };
-    const next = { ...current, ...this.pending };
+    this.#asked = { current: { ...current }, next: { ...current, ...this.pending } };
+    this.reword(this.words());
+    this.root.getElementById('confirm').hidden = false;
+  }
+
+  /** Words the question shown (if any) with `words`. */
+  reword(words) {
+    if (!this.#asked) return;
+    const { current, next } = this.#asked;
     const $ = (id) => this.root.getElementById(id);
-    $('confirm-text').textContent = `${describeSettings(next)}: ${describeMs(this.cost.estimate(next))} per `
-      + 'frame on this adapter, during which the page would not respond.';
-    $('confirm-keep').textContent = `Keep ${describeSettings(current)}`;
-    $('confirm').hidden = false;
+    $('confirm-text').textContent = words.t('guard.question', {
+      settings: describeSettings(words, next), time: describeMs(this.cost.estimate(next), words) });
+    $('confirm-keep').textContent = words.t('guard.keep', { settings: describeSettings(words, current) });
   }
 
   #resolve(apply) {
     const pending = this.pending;
     this.pending = null;
+    this.#asked = null;
     this.root.getElementById('confirm').hidden = true;
     if (!apply || !pending) return;
     this.confirmed = true;

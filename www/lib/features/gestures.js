@@ -8,7 +8,7 @@
 
 /**
  * Wires gestures on `surface` (the canvas) and keys on `host`. `camera` has get() → {yaw, pitch,
- * distance} and set(partial), which keeps each within its range; `actions` has togglePause, reseed, resetView, step, hint(text),
+ * distance} and set(partial), which keeps each within its range; `actions` has togglePause, reseed, resetView, step, hint(key) (a message's key),
  * pick(x, y, event) (CSS pixels from the canvas's top left) and deselect, and for editing grab(x, y)
  * → a drag {move(x, y), end()} or null, hold(x, y) (a long touch on empty space) → true when it did
  * something, hover(x, y), leave(), wheel(deltaY) → true when it used the wheel, remove(), freeze() and charge().
@@ -115,7 +115,7 @@ export function wireCameraInput(host, surface, camera, actions) {
   surface.addEventListener('pointerleave', () => actions.leave?.());
   surface.addEventListener('wheel', (e) => {
     if (!focused() && !e.ctrlKey) {
-      actions.hint('Click the figure (or hold Ctrl) to zoom with the wheel');
+      actions.hint('figure.wheel-hint');
       return;
     }
     e.preventDefault();

@@ -13,7 +13,7 @@ export class Guard {
 
   constructor(ctx) {
     this.#ctx = ctx;
-    this.#guard = new CostGuard(ctx.root, (name, value) => ctx.set(name, value));
+    this.#guard = new CostGuard(ctx.root, (name, value) => ctx.set(name, value), () => ctx.words);
   }
 
   /** The change waiting for the person's confirmation, or null. */
@@ -34,6 +34,8 @@ export class Guard {
   }
 
   started() { this.#guard.rendererStarted(); }
+
+  language(words) { this.#guard.reword(words); }
 
   frameDrawn(now, { blockedMs }) { this.#guard.frameDrawn(this.#ctx.settings.applied, now, blockedMs); }
 

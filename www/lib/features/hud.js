@@ -9,13 +9,27 @@ import { FigureDetail } from '../figure/detail.js';
 import { levelColor } from './legends.js';
 import { FigureSheets } from './sheets.js';
 
-// A count with thousands separators (12,345). Not `Intl.NumberFormat`: setting one up takes tens to
-// hundreds of milliseconds on the page's thread the first time, just when the first statistics show.
+// A count with thousands separators (12,345). In English not `Intl.NumberFormat`: setting one up takes
+// tens to hundreds of milliseconds on the page's thread the first time, just when the first statistics
+// show; in another language the figure's words write it.
 const formatNumber = (n) => String(Math.round(n)).replace(/\B(?=(\d{3})+$)/g, ',');
+const english = (words) => words.chain[0].split('-')[0] === 'en';
+/** `n` rounded, with thousands separators, as the reader writes it. */
+const count = (words, n) => (english(words) ? formatNumber(n) : words.number(Math.round(n), 0));
+/** A whole number without separators (a size in pixels, a resolution), as the reader writes it. */
+const whole = (words, n) => (english(words) ? String(n) : words.number(n, 0));
+/** `x` with exactly `digits` decimals, as the reader writes it. */
+const fixed = (words, x, digits) => (english(words) ? x.toFixed(digits) : words.fixed(x, digits));
+/** `x` to two significant digits (0.034, 1.2e-7), as the reader writes it. */
+const precise = (words, x) => (english(words) ? x.toPrecision(2) : words.number(Number(x.toPrecision(2)), 12));
+/** `x` with at most two decimals. */
+const upTo2 = (words, x) => (english(words) ? String(Number(x.toFixed(2))) : words.number(x, 2));
 
 export class Hud {
   static attributes = ['hud'];
   #ctx;
+  // What each readout shows, by what it writes: each writes again in a new language.
+  #shown = new Map();
 
   /** Writes into the readouts of the figure's shadow root. */
   constructor(ctx) {
@@ -65,6 +79,16 @@ export class Hud {
 
   shape(shape) { this.showTopology(shape); }
 
+  language(words) {
+    for (const write of this.#shown.values()) write(words);
+  }
+
+  // Writes readout `name` with `write(words)` now, and again when the language changes.
+  #show(name, write) {
+    this.#shown.set(name, write);
+    write(this.#ctx.words);
+  }
+
   /** The adapter's name (`WebGPU · google swiftshader`, `WebGL2`); the mesher in use follows it. */
   setAdapter(label) {
     this.adapterLabel = label;
@@ -74,13 +98,20 @@ export class Hud {
   #showAdapter() {
     const mesher = this.stats.mesher ? ` · ${this.stats.mesher.toUpperCase()} meshing` : '';
     this.stats.adapter = `${this.adapterLabel}${mesher}`;
-    this.root.getElementById('adapter').textContent = this.stats.adapter;
+    const [adapter, shown] = [this.adapterLabel, this.stats.mesher.toUpperCase()];
+    this.#show('adapter', (words) => {
+      this.root.getElementById('adapter').textContent = shown
+        ? words.t('hud.adapter-meshing', { adapter, mesher: shown }) : adapter;
+    });
   }
 
   /** The render scale (a fraction of the pixel ratio) and the canvas's size in pixels. */
   setScale(scale, width, height) {
     this.stats.renderScale = scale;
-    this.root.getElementById('hud-scale').textContent = `${scale.toFixed(2)}× · ${width}×${height}`;
+    this.#show('scale', (words) => {
+      this.root.getElementById('hud-scale').textContent = words.t('hud.scale-value', {
+        scale: fixed(words, scale, 2), width: whole(words, width), height: whole(words, height) });
+    });
   }
 
   /** Counts a frame drawn. */
@@ -102,9 +133,12 @@ export class Hud {
     const $ = (id) => this.root.getElementById(id);
     this.stats.fps = (this.frames * 1000) / elapsed;
     this.stats.frameTime = this.frames ? elapsed / this.frames : 0;
-    $('fps').textContent = this.frames ? this.stats.fps.toFixed(1) : '–';
-    $('frame-time').textContent = this.frames ? `${this.stats.frameTime.toFixed(1)} ms` : 'idle';
-    const frameTime = this.frames ? this.stats.frameTime : null;
+    const [fps, frameTime] = this.frames ? [this.stats.fps, this.stats.frameTime] : [null, null];
+    this.#show('fps', (words) => {
+      $('fps').textContent = fps === null ? '–' : fixed(words, fps, 1);
+      $('frame-time').textContent = frameTime === null ? words.t('hud.idle')
+        : words.t('hud.frame-ms', { ms: fixed(words, frameTime, 1) });
+    });
     this.frames = 0;
     this.since = now;
     this.readStats(view);
@@ -127,8 +161,11 @@ export class Hud {
     const stats = view.stats();
     if (!stats) return 0;
     this.stats.triangles = stats.triangles;
-    $('triangles').textContent = formatNumber(stats.triangles);
-    $('triangles').title = `budget ${formatNumber(stats.max_triangles)} triangles`;
+    const { triangles, max_triangles: budget } = stats;
+    this.#show('triangles', (words) => {
+      $('triangles').textContent = count(words, triangles);
+      $('triangles').title = words.t('hud.budget', { count: budget, triangles: count(words, budget) });
+    });
     // The buffers grow a frame after an overflow; warn only when it lasts (they hit the device's limit).
     if (stats.frame !== this.frameRead) this.overflows = stats.overflowed ? this.overflows + 1 : 0;
     this.frameRead = stats.frame;
@@ -144,9 +181,10 @@ export class Hud {
     const $ = (id) => this.root.getElementById(id);
     this.stats.topology = shape;
     $('hud-topology').hidden = false;
-    const blobs = `${shape.components} blob${shape.components === 1 ? '' : 's'}`;
-    const form = shape.manifold ? 'closed manifold' : shape.closed ? 'closed, not manifold' : 'open';
-    $('hud-topology-text').textContent = `${blobs} · genus ${shape.genus} · ${form}`;
+    const form = shape.manifold ? 'manifold' : shape.closed ? 'closed' : 'open';
+    this.#show('topology', (words) => {
+      $('hud-topology-text').textContent = words.t(`hud.topology-${form}`, { count: shape.components, genus: shape.genus });
+    });
   }
 
   /**
@@ -164,19 +202,25 @@ export class Hud {
     const [, rms, max, vertices, ...bins] = m;
     this.stats.error = { rms, max, vertices };
     this.stats.quality = bins;
-    $('hud-error-text').textContent = `RMS ${rms.toPrecision(2)} · max ${max.toPrecision(2)} cells`;
-    $('hud-error-text').title = `distance of ${formatNumber(vertices)} vertices to the exact surface, in cell sizes`;
     const top = Math.max(1, ...bins);
     const bars = $('hud-quality-bars');
-    bars.replaceChildren(...bins.map((n, k) => {
+    bars.replaceChildren(...bins.map((n) => {
       const bar = document.createElement('i');
       bar.style.height = `${Math.max(1, Math.round((14 * n) / top))}px`;
-      bar.title = `shape ${(k / 10).toFixed(1)}–${((k + 1) / 10).toFixed(1)}: ${formatNumber(n)} triangles`;
       return bar;
     }));
     const total = bins.reduce((a, b) => a + b, 0) || 1;
     const slivers = bins.slice(0, 2).reduce((a, b) => a + b, 0);
-    bars.setAttribute('aria-label', `triangle shapes from sliver to equilateral; ${Math.round((100 * slivers) / total)} % below 0.2`);
+    this.#show('measures', (words) => {
+      $('hud-error-text').textContent = words.t('hud.error-value', { rms: precise(words, rms), max: precise(words, max) });
+      $('hud-error-text').title = words.t('hud.error-title', { count: vertices, vertices: count(words, vertices) });
+      [...bars.children].forEach((bar, k) => {
+        bar.title = words.t('hud.shape-bar', {
+          from: fixed(words, k / 10, 1), to: fixed(words, (k + 1) / 10, 1), count: bins[k], triangles: count(words, bins[k]) });
+      });
+      bars.setAttribute('aria-label', words.t('hud.shapes-label', {
+        percent: count(words, (100 * slivers) / total), limit: fixed(words, 0.2, 1) }));
+    });
   }
 
   /** Level of detail: `[resolution, blocks₀, triangles₀, …]` from the view, or empty without it. */
@@ -194,16 +238,18 @@ export class Hud {
     const cellPixels = this.#ctx.get(FigureDetail).lodPixels ?? state['lod-pixels'];
     this.stats.lod = { resolution: flat[0], levels, cellPixels };
     $('hud-lod').hidden = $('hud-lod-cell').hidden = false;
-    const px = (n) => String(Number(n.toFixed(2)));
     const [least, most] = [state['lod-pixels'], Math.max(state['lod-pixels'], state['max-lod-pixels'])];
-    $('hud-lod-cell-text').textContent = `≤ ${px(cellPixels)} px (${px(least)}–${px(most)})`;
-    $('hud-lod-summary').textContent = `${flat[0]}³ effective · ${used} level${used === 1 ? '' : 's'}`;
-    $('hud-lod-levels').replaceChildren(...levels.map(({ blocks, triangles }, k) => {
-      const item = document.createElement('li');
-      item.innerHTML = `<i style="background: ${levelColor(k)}"></i>`;
-      item.append(`${k}: ${formatNumber(blocks)} blocks · ${formatNumber(triangles)} △`);
-      item.hidden = blocks === 0;
-      return item;
-    }));
+    this.#show('lod', (words) => {
+      $('hud-lod-cell-text').textContent = words.t('hud.lod-cell-value', {
+        cell: upTo2(words, cellPixels), least: upTo2(words, least), most: upTo2(words, most) });
+      $('hud-lod-summary').textContent = words.t('hud.lod-summary', { resolution: whole(words, flat[0]), count: used });
+      $('hud-lod-levels').replaceChildren(...levels.map(({ blocks, triangles }, k) => {
+        const item = document.createElement('li');
+        item.innerHTML = `<i style="background: ${levelColor(k)}"></i>`;
+        item.append(words.t('hud.lod-level', { level: whole(words, k), blocks: count(words, blocks), triangles: count(words, triangles) }));
+        item.hidden = blocks === 0;
+        return item;
+      }));
+    });
   }
 }

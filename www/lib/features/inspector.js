@@ -3,14 +3,33 @@
 
 import { PICTURE_FRAMES } from '../core/redraw.js';
 import { caseGallery } from '../engine/wasm.js';
-import { buildGallery, cellDrawing } from './cell-drawing.js';
+import { buildGallery, cellDrawing, className } from './cell-drawing.js';
 import { interpolantDrawing } from './interpolant.js';
 import { classColor } from './legends.js';
 
 // How often the inspector's figures are refreshed while the spheres move, in ms.
 const REFRESH_MS = 200;
 
-const format = (v, digits = 3) => (Math.abs(v) >= 1000 ? v.toExponential(2) : v.toFixed(digits));
+/** `v` written for the reader with `digits` decimals, as 1.23e+4 from a thousand on. */
+function format(words, v, digits = 3) {
+  if (Math.abs(v) < 1000) return words.fixed(v, digits);
+  const [mantissa, exponent] = v.toExponential(2).split('e');
+  return `${words.fixed(Number(mantissa), 2)}e${exponent}`;
+}
+
+const ESCAPES = { '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;' };
+/** `text` safe inside HTML. */
+export const escape = (text) => String(text).replace(/[&<>"]/g, (c) => ESCAPES[c]);
+
+/**
+ * Message `key` as HTML: its words escaped, each text field put in as the markup given (this file's
+ * own, or escaped by the caller), number fields written for the language.
+ */
+export function markup(words, key, fields = {}) {
+  const marked = Object.keys(fields).filter((name) => typeof fields[name] !== 'number');
+  const tokens = Object.fromEntries(marked.map((name, i) => [name, `\u0001${i}\u0001`]));
+  return escape(words.t(key, { ...fields, ...tokens })).replace(/\u0001(\d+)\u0001/g, (_, i) => fields[marked[i]]);
+}
 
 /**
  * The cell inspector of one figure: selects cells in its wasm view and shows their reports in the box
@@ -49,15 +68,18 @@ export class Inspector {
   // The hint, and the gallery of the cases' configurations, drawn one at a time while the page is idle (all
   // that are left when it is opened), not before the figure's first frame.
   #control({ element, gallery }) {
-    const hint = element('p', { className: 'hint', textContent: 'Click the surface to inspect a cell (Esc to let go).' });
-    const cases = element('details', { className: 'cases' }, element('summary', { textContent: 'The 15 cases and their 33 configurations' }));
+    const hint = element('p', { className: 'hint', textContent: this.#ctx.t('inspector.hint') });
+    hint.dataset.t = 'inspector.hint';
+    const summary = element('summary', { textContent: this.#ctx.t('inspector.cases') });
+    summary.dataset.t = 'inspector.cases';
+    const cases = element('details', { className: 'cases' }, summary);
     const idle = (draw) => (globalThis.requestIdleCallback
       ? requestIdleCallback(draw, { timeout: 1000 }) : setTimeout(draw, 0));
     let drawing = null;
     const fill = (all) => {
       if (!cases.isConnected || (drawing && drawing !== this.#gallery)) return;
       if (!drawing) {
-        drawing = this.#gallery = buildGallery(gallery, 0);
+        drawing = this.#gallery = buildGallery(gallery, 0, this.#ctx.words);
         cases.append(drawing);
       }
       let more = drawing.more();
@@ -68,6 +90,12 @@ export class Inspector {
     cases.addEventListener('toggle', () => fill(true), { once: true });
     idle(() => fill(false));
     return [hint, cases];
+  }
+
+  // The box and the gallery in the reader's language.
+  language(words) {
+    this.#gallery?.language(words);
+    if (this.#report) this.show(this.#report, this.#ctx.state.iso);
   }
 
   // Marks the inspected cell's configuration in the gallery.
@@ -127,55 +155,62 @@ export class Inspector {
       this.#onSubcase(null);
       return;
     }
+    const words = this.#ctx.words;
+    const t = (key, fields) => markup(words, key, fields);
+    const number = (v, digits) => format(words, v, digits);
     const [x, y, z] = report.cell;
     const inside = [...report.corners.keys()].filter((c) => report.corners[c] > iso);
-    const t = new Map(report.edges.map((e) => [e.edge, e.t]));
+    const along = new Map(report.edges.map((e) => [e.edge, e.t]));
     const rows = report.corners.map((v, c) => {
-      const sign = v > iso ? '<b class="in">in</b>' : '<span class="out">out</span>';
-      return `<tr><td>${c}</td><td>${format(v)}</td><td>${sign}</td></tr>`;
+      const sign = v > iso ? `<b class="in">${t('inspector.in')}</b>` : `<span class="out">${t('inspector.out')}</span>`;
+      return `<tr><td>${c}</td><td>${number(v)}</td><td>${sign}</td></tr>`;
     }).join('');
     const edges = report.edges.map((e) => {
       const [a, b] = this.#cube().edges[e.edge];
-      const p = e.vertex.map((v) => v.toFixed(3)).join(', ');
-      return `<tr><td>${e.edge} (${a}–${b})</td><td>${e.t.toFixed(3)}</td><td>(${p})</td></tr>`;
+      const [px, py, pz] = e.vertex.map((v) => words.fixed(v, 3));
+      return `<tr><td>${e.edge} (${a}–${b})</td><td>${words.fixed(e.t, 3)}</td><td>${t('inspector.point', { x: px, y: py, z: pz })}</td></tr>`;
     }).join('');
-    const triangles = report.triangles.map((tri) => tri.join('–')).join(', ') || 'none';
+    const triangles = report.triangles.map((tri) => tri.join('–')).join(', ') || t('inspector.none');
     const faces = (report.faces ?? []).map((f) => {
       const plane = `${'xyz'[f.face >> 1]} = ${f.face & 1}`;
-      const saddle = f.saddle === null ? 'no saddle' : `saddle ${format(f.saddle)} ${f.deciderJoins ? '&gt;' : '≤'} ${format(iso, 2)}`;
-      const decider = f.deciderJoins ? 'the decider joins its inside corners' : 'the decider cuts them apart';
-      const drawn = f.joined ? 'joined' : 'cut apart';
+      const saddle = f.saddle === null ? t('inspector.face-no-saddle')
+        : t(`inspector.face-saddle-${f.deciderJoins ? 'joins' : 'cuts'}`, { value: number(f.saddle), iso: number(iso, 2) });
       const agree = f.joined === f.deciderJoins;
-      const mark = agree ? '' : ' (against the decider)';
-      return `<li${agree ? '' : ' class="disagrees"'} data-face="${f.face}">Face ${plane}: ${saddle}: ${decider}; drawn ${drawn}${mark}</li>`;
+      const key = `inspector.face-${f.deciderJoins ? 'joins' : 'cuts'}-${f.joined ? 'joined' : 'cut'}`;
+      return `<li${agree ? '' : ' class="disagrees"'} data-face="${f.face}">${t(key, { plane, saddle })}</li>`;
     }).join('');
-    const ambiguous = faces ? `<p>Ambiguous faces (inside corners on a diagonal):</p><ul class="faces">${faces}</ul>` : '';
+    const ambiguous = faces ? `<p>${t('inspector.ambiguous')}</p><ul class="faces">${faces}</ul>` : '';
     // The interior test (MC33): a tunnel joining two loops the faces leave apart.
-    const corners = (report.interior ?? []).join(' and ');
-    const through = corners
-      ? `<p class="interior">Inside the cell: the trilinear interpolant joins corners ${corners} through a saddle; ${report.tunnel
-        ? 'drawn as a tunnel (table=mc33)' : 'drawn apart (only table=mc33 draws the tunnel)'}</p>`
+    const corners = report.interior ?? [];
+    const through = corners.length
+      ? `<p class="interior">${t(report.tunnel ? 'inspector.interior-tunnel' : 'inspector.interior-apart', { corners: escape(words.field(corners)) })}</p>`
       : '';
+    const drawn = report.drawnSubcase === report.subcase ? ''
+      : ` <span class="drawn-subcase">${t('inspector.drawn-subcase', { configuration: escape(report.drawnSubcase) })}</span>`;
+    const account = t('inspector.case', {
+      case: `<b id="inspector-case">${report.case}</b>`,
+      bits: `<code>${report.bits}</code>`,
+      class: `<b id="inspector-class">${report.class}</b>`,
+      name: escape(className(words, report.class)),
+      configuration: `<b id="inspector-subcase">${escape(report.subcase)}</b>`,
+    });
     this.#box.innerHTML = `
-      <header><h3>Cell (${x}, ${y}, ${z})</h3>
-        <button type="button" class="close" aria-label="Deselect the cell (Esc)">×</button></header>
-      <p>Case <b id="inspector-case">${report.case}</b> = <code>${report.bits}</code> (bit c: corner c inside)
-        · class <b id="inspector-class">${report.class}</b>, ${report.className}
-        · configuration <b id="inspector-subcase">${report.subcase}</b>${report.drawnSubcase === report.subcase ? ''
-          : ` <span class="drawn-subcase">(the table in use draws ${report.drawnSubcase})</span>`}</p>
+      <header><h3>${t('inspector.cell', { x, y, z })}</h3>
+        <button type="button" class="close" aria-label="${t('inspector.close')}">×</button></header>
+      <p>${account}${drawn}</p>
       <div class="inspector-body">
-        <table class="corners"><thead><tr><th>corner</th><th>f</th><th>f &gt; ${format(iso, 2)}?</th></tr></thead>
+        <table class="corners"><thead><tr><th>${t('inspector.corner')}</th><th>f</th><th>${t('inspector.above', { iso: number(iso, 2) })}</th></tr></thead>
           <tbody>${rows}</tbody></table>
         <div class="drawing"></div>
       </div>
-      <p>Triangles (edges): ${triangles}</p>${ambiguous}${through}
-      <table class="crossings"><thead><tr><th>edge</th><th>t</th><th>vertex</th></tr></thead>
+      <p>${t('inspector.triangles', { triangles })}</p>${ambiguous}${through}
+      <table class="crossings"><thead><tr><th>${t('inspector.edge')}</th><th>t</th><th>${t('inspector.vertex')}</th></tr></thead>
         <tbody>${edges}</tbody></table>`;
     this.#box.querySelector('.drawing').append(
-      cellDrawing(this.#cube(), inside, report.triangles, (e) => t.get(e) ?? 0.5,
-        { size: 96, color: classColor(report.class), label: `case ${report.case}: its triangles` }),
+      cellDrawing(this.#cube(), inside, report.triangles, (e) => along.get(e) ?? 0.5,
+        { size: 96, color: classColor(report.class), label: words.t('inspector.drawing', { case: report.case }) }),
       interpolantDrawing(this.#cube(), report.corners, iso,
-        { size: 96, label: `case ${report.case}: the trilinear interpolant of its corner values, ray cast` }));
+        { size: 96, label: words.t('inspector.interpolant', { case: report.case }) }));
     this.#box.hidden = false;
     this.#onSubcase(report.subcase);
   }

@@ -1,5 +1,6 @@
 // Colour keys for the teaching views, drawn with the colours shaders/draw/views/ uses: the ramp (area,
-// shape, field slice), the 15 case classes and the levels of detail.
+// shape, field slice), the 15 case classes and the levels of detail, worded with the figure's words
+// (`words`, i18n/words.js). The ramps run left to right in every language, as the colours do.
 
 /** The ramp's stops (sRGB), dark violet to yellow. */
 const RAMP = ['#440154', '#3b528b', '#21918c', '#5ec962', '#fde725'];
@@ -18,21 +19,23 @@ export function levelColor(k) {
   return classColor((9 + 4 * k) % 15);
 }
 
-function levels() {
+function levels(words) {
   const list = document.createElement('div');
   list.className = 'legend classes';
   for (let k = 0; k < 9; k += 1) {
     const item = document.createElement('span');
-    item.title = k ? `level ${k}: cells ${2 ** k}× the finest` : 'level 0: the finest cells';
-    item.innerHTML = `<i style="background: ${levelColor(k)}"></i>${k}`;
+    item.title = k ? words.t('legend.level', { level: k, factor: 2 ** k }) : words.t('legend.level-0', { level: 0 });
+    item.innerHTML = `<i style="background: ${levelColor(k)}"></i>`;
+    item.append(words.number(k));
     list.append(item);
   }
   const note = document.createElement('span');
-  note.textContent = 'finest first · paler: transition cells';
+  note.textContent = words.t('legend.levels-note');
   list.append(note);
   return list;
 }
 
+// A ramp with its ends' words.
 function ramp(low, high) {
   const bar = document.createElement('div');
   bar.className = 'legend';
@@ -44,32 +47,34 @@ function ramp(low, high) {
   return bar;
 }
 
-function classes(names) {
+// The case classes (`names`: the gallery's, as the WebAssembly names them).
+function classes(names, words) {
   const list = document.createElement('div');
   list.className = 'legend classes';
   names.forEach((name, k) => {
     const item = document.createElement('span');
-    item.title = `class ${k}: ${name}`;
-    item.innerHTML = `<i style="background: ${classColor(k)}"></i>${k}`;
+    item.title = words.t('legend.class', { class: k, name });
+    item.innerHTML = `<i style="background: ${classColor(k)}"></i>`;
+    item.append(words.number(k));
     list.append(item);
   });
   return list;
 }
 
 /** The key for the view `state` shows, or null: triangle colouring first, then the cells' classes. */
-export function colorKey(state, classNames) {
+export function colorKey(state, classNames, words) {
   switch (state['color-by']) {
-    case 'area': return ramp('0', '½ cell face');
-    case 'quality': return ramp('sliver', 'equilateral');
-    case 'case': return classes(classNames);
-    case 'level': return levels();
+    case 'area': return ramp(words.number(0), words.t('legend.area-high'));
+    case 'quality': return ramp(words.t('legend.sliver'), words.t('legend.equilateral'));
+    case 'case': return classes(classNames, words);
+    case 'level': return levels(words);
     // The views colour the square root of the error's share of half a cell: the middle is ⅛ cell.
-    case 'error': return ramp('on the surface', '½ cell away (middle: ⅛)');
-    default: return state.grid === 'cells' ? classes(classNames) : null;
+    case 'error': return ramp(words.t('legend.error-low'), words.t('legend.error-high'));
+    default: return state.grid === 'cells' ? classes(classNames, words) : null;
   }
 }
 
 /** The key for the field slice: log-scaled, iso in the middle. */
-export function sliceKey() {
-  return ramp('f = iso ÷ 16', 'iso × 16');
+export function sliceKey(words) {
+  return ramp(words.t('legend.slice-low'), words.t('legend.slice-high'));
 }

@@ -18,16 +18,10 @@ export const ROLE_COLORS = {
   join: '#ff9f43', loop: '#f368e0', hole: '#4aa3ff', cavity: '#54a0ff', fill: '#10ac84', birth: '#feca57', unresolved: '#8395a7',
 };
 
-/** What each role does as the iso level falls past it, in words. */
-export const ROLE_WORDS = {
-  join: 'two blobs join',
-  loop: 'a blob meets itself: a tunnel opens',
-  hole: 'a tunnel closes',
-  cavity: 'a cavity closes off',
-  fill: 'a cavity fills',
-  birth: 'a blob appears',
-  unresolved: 'not known (its flow was lost)',
-};
+/** What critical point `p` does as the iso level falls past it, with its level: "f = 0.7812: two blobs join". */
+export const criticalLevel = (words, p) => words.t('critical.level', {
+  value: writeLevel(words, p.value), what: words.t(`critical.role.${p.role}`),
+});
 
 function node(tag, attributes = {}, text = '') {
   const element = document.createElementNS(SVG, tag);
@@ -45,14 +39,20 @@ export function plotRange(result, iso) {
   return [Math.max(min, low / 2), Math.min(max, Math.max(high * 2, low * 4))];
 }
 
+/** Sphere numbers as a list: "0, 1, 2". */
+export const spheres = (words, list) => words.list(list.map((k) => words.number(k)), 'unit');
+
 /** Round to four significant digits, as the iso level is written. */
 export const round4 = (v) => Number(v.toPrecision(4));
 
+/** `v` to four significant digits, written for the reader. */
+export const writeLevel = (words, v) => words.number(round4(v), 12);
+
 /**
  * The plot: `{ svg, xToIso }`. `measures` (optional) gives `[[area, volume], …]` at `levels`.
- * `onIso(value)` is called as the cursor is dragged or moved with the keys.
+ * `onIso(value)` is called as the cursor is dragged or moved with the keys. Its words are `words`'.
  */
-export function drawPlot(result, iso, { measures = null, levels = [], onIso, onDrag = () => {} }) {
+export function drawPlot(result, iso, { measures = null, levels = [], onIso, onDrag = () => {}, words }) {
   const [w, h, left, right, top, bottom] = [280, 150, 26, 8, 8, 24];
   const [low, high] = plotRange(result, iso);
   const x = (v) => left + ((Math.log10(v) - Math.log10(low)) / (Math.log10(high) - Math.log10(low))) * (w - left - right);
@@ -60,18 +60,19 @@ export function drawPlot(result, iso, { measures = null, levels = [], onIso, onD
   const bands = result.bands;
   const most = Math.max(1, ...bands.map((b) => Math.max(b.surfaces, b.genus)));
   const y = (count) => top + (1 - count / most) * (h - top - bottom);
-  const svg = node('svg', { viewBox: `0 0 ${w} ${h}`, class: 'levels-plot' });
+  // The plot does not mirror where the words run right to left.
+  const svg = node('svg', { viewBox: `0 0 ${w} ${h}`, class: 'levels-plot', direction: 'ltr' });
   if (result.wallLevel > low) {
     svg.append(node('rect', { x: left, y: top, width: Math.max(0, x(Math.min(result.wallLevel, high)) - left), height: h - top - bottom, class: 'walls' }));
   }
   for (let c = 0; c <= most; c += Math.max(1, Math.ceil(most / 4))) {
     svg.append(node('line', { x1: left, x2: w - right, y1: y(c), y2: y(c), class: 'grid' }));
-    svg.append(node('text', { x: left - 4, y: y(c) + 3, 'text-anchor': 'end' }, String(c)));
+    svg.append(node('text', { x: left - 4, y: y(c) + 3, 'text-anchor': 'end' }, words.number(c)));
   }
   for (let e = Math.ceil(Math.log10(low)); e <= Math.floor(Math.log10(high)); e += 1) {
-    svg.append(node('text', { x: x(10 ** e), y: h - bottom + 11, 'text-anchor': 'middle' }, String(10 ** e)));
+    svg.append(node('text', { x: x(10 ** e), y: h - bottom + 11, 'text-anchor': 'middle' }, words.number(10 ** e, 12)));
   }
-  svg.append(node('text', { x: (left + w) / 2, y: h - 2, 'text-anchor': 'middle' }, 'iso level (log)'));
+  svg.append(node('text', { x: (left + w) / 2, y: h - 2, 'text-anchor': 'middle', direction: words.dir }, words.t('levels.axis')));
   // Area and volume, each scaled to the plot's height.
   if (measures && levels.length) {
     for (const [k, color] of [[0, '#5ec962'], [1, '#21918c']]) {
@@ -94,12 +95,12 @@ export function drawPlot(result, iso, { measures = null, levels = [], onIso, onD
   for (const p of result.points) {
     if (p.value <= low || p.value >= high) continue;
     const tick = node('line', { x1: x(p.value), x2: x(p.value), y1: top, y2: h - bottom, stroke: ROLE_COLORS[p.role], 'stroke-width': 1, opacity: 0.8 });
-    tick.append(node('title', {}, `f = ${round4(p.value)}: ${ROLE_WORDS[p.role]}`));
+    tick.append(node('title', {}, criticalLevel(words, p)));
     svg.append(tick);
   }
   const cursor = node('g', {
-    class: 'cursor', tabindex: 0, role: 'slider', 'aria-label': 'Iso level', 'aria-valuenow': iso,
-    'aria-valuemin': round4(low), 'aria-valuemax': round4(high), 'aria-valuetext': `iso ${round4(iso)}`,
+    class: 'cursor', tabindex: 0, role: 'slider', 'aria-label': words.t('setting.iso'), 'aria-valuenow': iso,
+    'aria-valuemin': round4(low), 'aria-valuemax': round4(high), 'aria-valuetext': words.t('levels.cursor', { iso: writeLevel(words, iso) }),
   });
   // A finger's target: 26 units wide (at least 24 CSS px as the plot is drawn), the whole plot high.
   cursor.append(node('rect', { x: x(iso) - 13, y: top - 6, width: 26, height: h - bottom - top + 6, class: 'hit' }));
@@ -142,13 +143,16 @@ export function drawPlot(result, iso, { measures = null, levels = [], onIso, onD
   const moveCursor = (value) => {
     cursor.setAttribute('transform', `translate(${(x(value) - x(iso)).toFixed(1)} 0)`);
     cursor.setAttribute('aria-valuenow', value);
-    cursor.setAttribute('aria-valuetext', `iso ${round4(value)}`);
+    cursor.setAttribute('aria-valuetext', words.t('levels.cursor', { iso: writeLevel(words, value) }));
   };
   return { svg, xToIso, moveCursor };
 }
 
-/** The merge tree: leaves (the adding spheres) on top, each join at its saddle's level, a button. */
-export function drawTree(result, iso, onJoin) {
+/**
+ * The merge tree: leaves (the adding spheres) on top, each join at its saddle's level, a button. Its
+ * words are `words`'.
+ */
+export function drawTree(result, iso, onJoin, words) {
   const [w, h, top, bottom, left] = [280, 130, 14, 16, 26];
   const tree = result.tree;
   if (!tree.length) return node('svg', { viewBox: `0 0 ${w} 20` });
@@ -166,12 +170,14 @@ export function drawTree(result, iso, onJoin) {
     if (!xOf.has(k)) xOf.set(k, tree[k].children.reduce((s, c) => s + x(c), 0) / tree[k].children.length);
     return xOf.get(k);
   };
-  const svg = node('svg', { viewBox: `0 0 ${w} ${h}`, class: 'merge-tree', role: 'group', 'aria-label': 'Merge tree of the blobs' });
+  const svg = node('svg', {
+    viewBox: `0 0 ${w} ${h}`, class: 'merge-tree', role: 'group', 'aria-label': words.t('levels.merge-tree'), direction: 'ltr',
+  });
   svg.append(node('line', { x1: left, x2: w - 8, y1: y(iso), y2: y(iso), class: 'cursor-line' }));
-  svg.append(node('text', { x: 2, y: y(iso) + 3 }, 'iso'));
+  svg.append(node('text', { x: 2, y: y(iso) + 3 }, words.t('levels.tree-iso')));
   tree.forEach((n, k) => {
     if (!n.children.length) {
-      svg.append(node('text', { x: x(k), y: top - 4, 'text-anchor': 'middle' }, n.spheres.length ? String(n.spheres[0]) : '·'));
+      svg.append(node('text', { x: x(k), y: top - 4, 'text-anchor': 'middle' }, n.spheres.length ? words.number(n.spheres[0]) : '·'));
       return;
     }
     const [a, b] = n.children;
@@ -179,11 +185,12 @@ export function drawTree(result, iso, onJoin) {
     for (const c of [a, b]) svg.append(node('path', { d: `M${x(c)},${y(tree[c].value)}V${level}`, class: 'branch' }));
     svg.append(node('line', { x1: x(a), x2: x(b), y1: level, y2: level, class: 'branch' }));
     const [left, right] = [tree[a].spheres, tree[b].spheres];
-    const label = `Spheres ${left.join(', ')} and ${right.join(', ')} join at f = ${round4(n.value)}`;
+    const fields = { a: spheres(words, left), b: spheres(words, right), value: writeLevel(words, n.value) };
+    const label = words.t('critical.join', fields);
     const button = node('g', { class: 'join', tabindex: 0, role: 'button', 'aria-label': label, 'data-node': k });
     button.append(node('circle', { cx: x(k), cy: level, r: 13, class: 'hit' }));
     button.append(node('circle', { cx: x(k), cy: level, r: 4.5, fill: ROLE_COLORS.join }));
-    button.append(node('title', {}, `${label}: choose to set the iso level just below`));
+    button.append(node('title', {}, words.t('critical.join-title', fields)));
     const choose = (event) => { event.preventDefault(); onJoin(k); };
     button.addEventListener('click', choose);
     button.addEventListener('keydown', (event) => (event.key === 'Enter' || event.key === ' ') && choose(event));

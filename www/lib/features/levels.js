@@ -11,8 +11,9 @@
 //     misses it (a neck thinner than a cell, a tunnel the table does not draw).
 // `criticalPoints()` gives the same result to scripts.
 
+import { relabel } from '../i18n/words.js';
 import { countsAt, criticalPoints, measuresAlong, packSpheres } from '../engine/levels.js';
-import { drawPlot, drawTree, isoWithin, plotRange, ROLE_COLORS, ROLE_WORDS, round4 } from './levels-plot.js';
+import { criticalLevel, drawPlot, drawTree, isoWithin, plotRange, ROLE_COLORS, spheres, writeLevel } from './levels-plot.js';
 import { TopologyWatch } from './topology.js';
 
 const EVERY_MS = 300;
@@ -31,6 +32,8 @@ export class IsoLevels {
   // The plot drawn last, and whether its cursor is being dragged (it is then moved, not drawn again).
   #plot = null;
   #dragging = false;
+  // What the box says before a search's result is in: [key, fields].
+  #said = null;
 
   constructor(ctx) {
     this.#ctx = ctx;
@@ -98,8 +101,9 @@ export class IsoLevels {
     if (before && now && now.blobs < before.blobs && this.#ctx.state['pause-on'] === 'merge' && !this.#ctx.state.paused) {
       this.#ctx.set('paused', true);
       const join = result.points.filter((p) => p.role === 'join' && p.value > iso).sort((a, b) => a.value - b.value)[0];
-      const where = join ? ` where the field joins them (f = ${round4(join.value)} at the saddle)` : '';
-      this.#ctx.each('announce', `${before.blobs} blobs → ${now.blobs}, paused${where}`);
+      const words = this.#ctx.words;
+      const fields = { count: before.blobs, blobs: now.blobs, value: join ? writeLevel(words, join.value) : '' };
+      this.#ctx.each('announce', words.t(join ? 'critical.merge-paused-at' : 'critical.merge-paused', fields));
     }
     this.#showHud();
     if (this.#open) this.#drawPanel();
@@ -127,15 +131,26 @@ export class IsoLevels {
       return;
     }
     $('hud-field').hidden = false;
-    const walls = iso <= this.#result.wallLevel ? ' · reaches the walls' : '';
-    $('hud-field-text').textContent = `${counts.surfaces} surface${counts.surfaces === 1 ? '' : 's'} · genus ${counts.genus}${walls}`;
+    const words = this.#ctx.words;
+    const walls = iso <= this.#result.wallLevel;
+    $('hud-field-text').textContent = words.t(walls ? 'levels.field-walls' : 'levels.field', { count: counts.surfaces, genus: counts.genus });
     const mesh = this.#ctx.get(TopologyWatch)?.latest;
-    const text = mesh && !walls ? disagreement(this.#result, counts, mesh, iso, Number(this.#ctx.state.resolution)) : '';
+    const text = mesh && !walls ? disagreement(this.#result, counts, mesh, iso, Number(this.#ctx.state.resolution), words) : '';
     $('hud-field-warning').hidden = !text;
     $('hud-field-warning').textContent = text;
   }
 
   shape() { this.#showHud(); }
+
+  // The HUD's line and the box in the reader's language (the markers are written every frame).
+  language(words) {
+    this.#showHud();
+    if (this.#said && this.#panel) this.#panel.textContent = words.t(...this.#said);
+    if (this.#open && this.#result) {
+      this.#plot = null;
+      this.#drawPanel();
+    }
+  }
 
   // ------------------------------------------------------------------ markers over the figure
 
@@ -148,6 +163,8 @@ export class IsoLevels {
       this.#marks = document.createElement('div');
       this.#marks.id = 'critical-marks';
       this.#marks.setAttribute('aria-hidden', 'true');
+      // Over the canvas, which does not mirror where the words run right to left.
+      this.#marks.dir = 'ltr';
       this.#ctx.canvas.after(this.#marks);
     }
     this.#marks.hidden = false;
@@ -157,6 +174,7 @@ export class IsoLevels {
     while (this.#marks.children.length > points.length) this.#marks.lastChild.remove();
     // A value is written beside a mark only where it keeps clear of the values already written.
     const labelled = [];
+    const words = this.#ctx.words;
     points.forEach((p, k) => {
       let mark = this.#marks.children[k];
       if (!mark) {
@@ -169,8 +187,8 @@ export class IsoLevels {
       mark.style.color = ROLE_COLORS[p.role];
       const clear = labelled.every(([lx, ly]) => Math.abs(lx - x) > 48 || Math.abs(ly - y) > 13);
       if (clear) labelled.push([x, y]);
-      mark.textContent = clear ? `${MARK[p.index]} ${Number(p.value.toPrecision(3))}` : MARK[p.index];
-      mark.title = `f = ${round4(p.value)}: ${ROLE_WORDS[p.role]}`;
+      mark.textContent = clear ? `${MARK[p.index]} ${words.number(Number(p.value.toPrecision(3)), 12)}` : MARK[p.index];
+      mark.title = criticalLevel(words, p);
     });
   }
 
@@ -188,26 +206,33 @@ export class IsoLevels {
       const close = document.createElement('button');
       close.className = 'close';
       close.textContent = '×';
-      close.title = 'Close (levels=false)';
-      close.setAttribute('aria-label', 'Close along the iso level');
+      close.dataset.tTitle = 'levels.close-title';
+      close.dataset.tLabel = 'levels.close';
       close.addEventListener('click', () => this.#ctx.set('levels', false));
       const title = document.createElement('h3');
-      title.textContent = 'Along the iso level';
+      title.dataset.t = 'setting.levels';
       this.#panel = document.createElement('div');
       this.#panel.className = 'levels';
-      this.#panel.textContent = 'Finding the critical points…';
       box.replaceChildren(close, title, this.#panel);
+      relabel(box, this.#ctx.words);
+      this.#say('levels.finding');
     }
     // (The panel behind the box takes no focus while the box covers it: FigureSheets.)
     box.hidden = false;
     this.#measures = null;
     const packed = this.#spheres();
     if (packed) {
-      this.#search(packed).catch((error) => { this.#panel.textContent = `The search stopped: ${error?.message ?? error}`; });
+      this.#search(packed).catch((error) => this.#say('levels.stopped', { reason: error?.message ?? String(error) }));
     }
   }
 
   started() { if (this.#open) this.#showBox(); }
+
+  // Says message `key` in the box, in place of its plot.
+  #say(key, fields = {}) {
+    this.#said = [key, fields];
+    this.#panel.textContent = this.#ctx.t(key, fields);
+  }
 
   refresh() {
     if (this.#open && this.#result) this.#drawPanel();
@@ -227,8 +252,9 @@ export class IsoLevels {
     const floor = lower ? Math.sqrt(lower * join.value) : join.value * 0.5;
     const iso = isoWithin(Math.max(floor, Math.min(join.value - drop, join.value * 0.999)));
     this.#setIso(iso);
-    const [a, b] = result.tree[k].children.map((c) => result.tree[c].spheres.join(', '));
-    this.#ctx.each('announce', `spheres ${a} and ${b} meet: iso ${iso}, just below ${round4(join.value)}`);
+    const words = this.#ctx.words;
+    const [a, b] = result.tree[k].children.map((c) => spheres(words, result.tree[c].spheres));
+    this.#ctx.each('announce', words.t('critical.join-chosen', { a, b, iso: words.number(iso, 12), value: writeLevel(words, join.value) }));
   }
 
   #drawPanel() {
@@ -253,13 +279,21 @@ export class IsoLevels {
       }, () => {});
     }
     const counts = countsAt(result, iso);
+    const words = this.#ctx.words;
+    this.#said = null;
     const status = document.createElement('p');
     status.className = 'hint';
     status.setAttribute('role', 'status');
-    const proof = result.complete && result.undecided === 0 ? 'all found, with proof' : 'the search may have missed some';
-    status.textContent = `${result.points.length} critical points (${proof}, ${result.milliseconds.toFixed(0)} ms). `
-      + (counts ? `At iso ${round4(iso)}: ${counts.blobs} blob${counts.blobs === 1 ? '' : 's'}, ${counts.cavities} cavit${counts.cavities === 1 ? 'y' : 'ies'}, genus ${counts.genus}.` : '')
-      + (result.countsUnknown ? `The counts along the level are not known here: ${result.countsUnknown}.` : '');
+    const proved = result.complete && result.undecided === 0;
+    const found = { count: result.points.length, ms: words.fixed(result.milliseconds, 0) };
+    status.textContent = `${words.t(proved ? 'levels.points-proved' : 'levels.points-unproved', found)} `
+      + (counts ? words.t('levels.at-iso', {
+        iso: writeLevel(words, iso),
+        blobs: words.t('levels.blobs', { count: counts.blobs }),
+        cavities: words.t('levels.cavities', { count: counts.cavities }),
+        genus: counts.genus,
+      }) : '')
+      + (result.countsUnknown ? words.t('levels.counts-unknown', { reason: result.countsUnknown }) : '');
     this.#plot = drawPlot(result, iso, {
       measures: this.#measures?.values,
       levels: this.#measures?.levels ?? [],
@@ -268,21 +302,35 @@ export class IsoLevels {
         this.#dragging = on;
         if (!on) this.#drawPanel();
       },
+      words,
     });
     const { svg } = this.#plot;
     const key = document.createElement('p');
     key.className = 'hint';
     // The swatches are samples of the plot's lines (graphics, not text).
-    const swatch = (color, line) => `<span aria-hidden="true" class="swatch" style="color:${color}">${line}</span>`;
-    key.innerHTML = `${swatch('#e77661', '━')} surfaces · ${swatch('#4aa3ff', '╍')} genus · ${swatch('#5ec962', '━')} area · ${swatch('#21918c', '╍')} volume (scaled) · shaded: the surface reaches the walls`;
-    const tree = drawTree(result, iso, (k) => this.#chooseJoin(result, k));
+    const swatch = (color, line) => {
+      const span = document.createElement('span');
+      span.setAttribute('aria-hidden', 'true');
+      span.className = 'swatch';
+      span.style.color = color;
+      span.textContent = line;
+      return span;
+    };
+    const entries = [['#e77661', '━', 'surfaces'], ['#4aa3ff', '╍', 'genus'], ['#5ec962', '━', 'area'], ['#21918c', '╍', 'volume']];
+    entries.forEach(([color, line, name], i) => key.append(...(i ? [' · '] : []), swatch(color, line), ` ${words.t(`levels.key-${name}`)}`));
+    key.append(` · ${words.t('levels.key-walls')}`);
+    const tree = drawTree(result, iso, (k) => this.#chooseJoin(result, k), words);
     const list = document.createElement('ol');
     list.className = 'critical-levels';
     list.tabIndex = 0;
-    list.setAttribute('aria-label', 'Critical levels, highest first');
+    list.setAttribute('aria-label', words.t('levels.list'));
     for (const p of result.points.filter((q) => q.value > 0).slice(0, 24)) {
       const item = document.createElement('li');
-      item.innerHTML = `<i aria-hidden="true" style="color:${ROLE_COLORS[p.role]}">${MARK[p.index]}</i> f = ${round4(p.value)}: ${ROLE_WORDS[p.role]}`;
+      const mark = document.createElement('i');
+      mark.setAttribute('aria-hidden', 'true');
+      mark.style.color = ROLE_COLORS[p.role];
+      mark.textContent = MARK[p.index];
+      item.append(mark, ` ${criticalLevel(words, p)}`);
       list.append(item);
     }
     // Focus stays where it was across the redraw: the cursor, a join of the tree, or the list.
@@ -307,24 +355,22 @@ function same(a, b) {
 
 /**
  * Where the mesh's shape differs from the field's at `iso`: what the field does near there and why a
- * mesh at `n`³ misses it, or ''.
+ * mesh at `n`³ misses it, in `words`, or ''.
  */
-export function disagreement(result, counts, mesh, iso, n) {
+export function disagreement(result, counts, mesh, iso, n, words) {
   const cell = 2 / n;
   if (mesh.components > counts.surfaces) {
     const join = result.points.filter((p) => p.role === 'join' && p.value > iso).sort((a, b) => a.value - b.value)[0];
-    if (!join) return `The mesh has ${mesh.components} pieces where the field has ${counts.surfaces}.`;
-    const spheres = join.ends.map((e) => e?.sphere).filter((s) => s !== undefined);
+    if (!join) return words.t('levels.more-pieces', { count: mesh.components, surfaces: counts.surfaces });
+    const joined = join.ends.map((e) => e?.sphere).filter((s) => s !== undefined);
     const width = 2 * Math.sqrt((2 * (join.value - iso)) / Math.abs(join.eigenvalues[0]));
-    return `The field joins spheres ${spheres.join(' and ')} here, f = ${round4(join.value)} at the saddle; the neck is ${(width / cell).toFixed(1)} cells wide at ${n}³.`;
+    return words.t('levels.neck', { spheres: joined, value: writeLevel(words, join.value), width: words.fixed(width / cell, 1), n });
   }
   if (mesh.components < counts.surfaces) {
     const join = result.points.filter((p) => p.role === 'join' && p.value < iso).sort((a, b) => b.value - a.value)[0];
-    const gap = join ? `; they join only below f = ${round4(join.value)}` : '';
-    return `The mesh joins what the field keeps apart (${counts.surfaces} surfaces, the mesh ${mesh.components})${gap}: the grid is too coarse there.`;
+    const fields = { count: counts.surfaces, pieces: mesh.components, value: join ? writeLevel(words, join.value) : '' };
+    return words.t(join ? 'levels.fewer-pieces-below' : 'levels.fewer-pieces', fields);
   }
-  if (mesh.genus !== counts.genus) {
-    return `The mesh's genus is ${mesh.genus} where the field's is ${counts.genus}: a tunnel the grid or the table (classic) does not resolve.`;
-  }
+  if (mesh.genus !== counts.genus) return words.t('levels.genus', { mesh: mesh.genus, field: counts.genus });
   return '';
 }

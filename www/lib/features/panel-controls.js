@@ -1,19 +1,23 @@
 // The panel's controls for each kind of parameter (a slider for numbers, a colour input, a checkbox,
 // a select of words, a checkbox per word of a list, the slice's axis and position), and the small DOM
-// helpers the panel and the features' own controls use. Each control's id is `controlId(name)`.
+// helpers the panel and the features' own controls use. Each control's id is `controlId(name)`. Their
+// words are marked by key (`data-t`: the table's `setting.<name>` and `word.<name>.<word>`), worded
+// by the panel when it is built and again when the language changes; the numbers they show are
+// written as the reader writes them.
 
 import { controlId } from '../core/table.js';
 import { sliceKey } from './legends.js';
 
 const FORMATS = {
-  spheres: (v) => String(v),
-  resolution: (v) => `${v}³`,
-  speed: (v) => `${v.toFixed(2)}×`,
-  shininess: (v) => String(Math.round(v)),
-  'spot-angle': (v) => `${Math.round(v)}°`,
-  fov: (v) => `${Math.round(v)}°`,
+  spheres: (w, v) => w.number(v, 0),
+  resolution: (w, v) => `${w.number(v, 0)}³`,
+  speed: (w, v) => `${w.fixed(v, 2)}×`,
+  shininess: (w, v) => w.number(Math.round(v), 0),
+  'spot-angle': (w, v) => `${w.number(Math.round(v), 0)}°`,
+  fov: (w, v) => `${w.number(Math.round(v), 0)}°`,
 };
-const formatNumber = (name, v) => (FORMATS[name] ?? ((x) => x.toFixed(2)))(v);
+// (`+ 0`: a value of -0, as a camera turned back to 0 may have, shows as 0.)
+const formatNumber = (words, name, v) => (FORMATS[name] ?? ((w, x) => w.fixed(x, 2)))(words, v + 0);
 
 export function element(tag, properties = {}, ...children) {
   const node = Object.assign(document.createElement(tag), properties);
@@ -21,15 +25,24 @@ export function element(tag, properties = {}, ...children) {
   return node;
 }
 
+/**
+ * A button with `text` and `title`, each text as given or `{ key }`: a message's key, marked for the
+ * panel to word (`data-t`, `data-t-title`).
+ */
 export function makeButton(id, text, title, onClick) {
-  const button = element('button', { type: 'button', id, textContent: text, title });
+  const button = element('button', { type: 'button', id });
+  if (text?.key) button.dataset.t = text.key;
+  else button.textContent = text;
+  if (title?.key) button.dataset.tTitle = title.key;
+  else if (title !== undefined) button.title = title;
   button.addEventListener('click', onClick);
   return button;
 }
 
-// One labelled row: label, input, output.
-function row(id, labelText, input, output = element('output')) {
-  const label = element('label', { htmlFor: id, textContent: labelText });
+// One labelled row: label (worded from its key), input, output.
+function row(id, labelKey, input, output = element('output')) {
+  const label = element('label', { htmlFor: id });
+  label.dataset.t = labelKey;
   input.id = id;
   output.id = `${id}-value`;
   output.htmlFor = id;
@@ -39,9 +52,10 @@ function row(id, labelText, input, output = element('output')) {
 /**
  * The builders by kind: `builders[kind](name, row)` returns the control's node. `onChange(name, value)`
  * receives the person's edits; each control pushes its update (state → control) onto `updates`.
- * `maxResolution`: the largest uniform grid the device holds.
+ * `maxResolution`: the largest uniform grid the device holds; `words()`: the figure's words now.
  */
-export function controlBuilders(onChange, updates, { maxResolution }) {
+export function controlBuilders(onChange, updates, { maxResolution, words }) {
+const label = (name) => `setting.${name}`;
 const builders = {
   number(name, spec) {
     const input = element('input', {
@@ -50,10 +64,10 @@ const builders = {
       max: String(name === 'resolution' ? Math.min(spec.sliderMax, maxResolution) : spec.sliderMax),
       step: String(spec.step),
     });
-    const control = row(controlId(name), spec.label, input);
+    const control = row(controlId(name), label(name), input);
     const output = control.querySelector('output');
     input.addEventListener('input', () => {
-      output.textContent = formatNumber(name, Number(input.value));
+      output.textContent = formatNumber(words(), name, Number(input.value));
       onChange(name, Number(input.value));
     });
     updates.push((s) => {
@@ -65,13 +79,13 @@ const builders = {
         input.step = s.lod ? '8' : String(spec.step);
       }
       input.value = String(s[name]);
-      output.textContent = formatNumber(name, s[name]);
+      output.textContent = formatNumber(words(), name, s[name]);
     });
     return control;
   },
-  color(name, spec) {
+  color(name) {
     const input = element('input', { type: 'color' });
-    const control = row(controlId(name), spec.label, input);
+    const control = row(controlId(name), label(name), input);
     const output = control.querySelector('output');
     input.addEventListener('input', () => {
       output.textContent = input.value;
@@ -83,20 +97,25 @@ const builders = {
     });
     return control;
   },
-  boolean(name, spec) {
+  boolean(name) {
     const input = element('input', { type: 'checkbox' });
-    const control = row(controlId(name), spec.label, input);
+    const control = row(controlId(name), label(name), input);
     const output = control.querySelector('output');
     input.addEventListener('change', () => onChange(name, input.checked));
     updates.push((s) => {
       input.checked = s[name];
-      output.textContent = name === 'antialiasing' ? (s[name] ? '4×' : 'off') : (s[name] ? 'on' : 'off');
+      const on = name === 'antialiasing' ? 'panel.antialiasing-on' : 'panel.on';
+      output.textContent = words().t(s[name] ? on : 'panel.off');
     });
     return control;
   },
   choice(name, spec) {
-    const input = element('select', {}, ...spec.words.map((w) => element('option', { value: w, textContent: w })));
-    const control = row(controlId(name), spec.label, input);
+    const input = element('select', {}, ...spec.words.map((w) => {
+      const option = element('option', { value: w });
+      option.dataset.t = `word.${name}.${w}`;
+      return option;
+    }));
+    const control = row(controlId(name), label(name), input);
     input.addEventListener('change', () => onChange(name, input.value));
     updates.push((s) => { input.value = s[name]; });
     return control;
@@ -104,12 +123,18 @@ const builders = {
   list(name, spec) {
     // One checkbox per light kind, in a labelled group.
     const id = controlId(name);
-    const label = element('span', { id: `${id}-label`, className: 'label', textContent: spec.label });
+    const heading = element('span', { id: `${id}-label`, className: 'label' });
+    heading.dataset.t = label(name);
     const boxes = spec.words.map((word) => element('input', { type: 'checkbox', id: `${id}-${word}`, value: word }));
+    const named = (box) => {
+      const text = element('span');
+      text.dataset.t = `word.${name}.${box.value}`;
+      return text;
+    };
     const checks = element('div', { className: 'checks' },
-      ...boxes.map((box) => element('label', { htmlFor: box.id }, box, ` ${box.value}`)));
-    const group = element('div', { className: 'control list', role: 'group' }, label, checks);
-    group.setAttribute('aria-labelledby', label.id);
+      ...boxes.map((box) => element('label', { htmlFor: box.id }, box, ' ', named(box))));
+    const group = element('div', { className: 'control list', role: 'group' }, heading, checks);
+    group.setAttribute('aria-labelledby', heading.id);
     group.addEventListener('change', () => {
       const on = boxes.filter((b) => b.checked).map((b) => b.value);
       onChange(name, on.length ? on.join(',') : 'none');
@@ -122,11 +147,13 @@ const builders = {
   },
   slice(name, spec) {
     // An axis (or off) and a position along it; the value is `off` or `axis:position`.
-    const axis = element('select', { id: `${controlId(name)}-axis`, ariaLabel: 'Slice axis' },
+    const axis = element('select', { id: `${controlId(name)}-axis` },
       ...['off', 'x', 'y', 'z'].map((a) => element('option', { value: a, textContent: a })));
+    axis.dataset.tLabel = 'panel.slice-axis';
+    axis.firstChild.dataset.t = 'panel.slice-off';
     const position = element('input', { type: 'range', min: '-1', max: '1', step: '0.01' });
-    position.setAttribute('aria-label', 'Slice position');
-    const control = row(controlId(name), spec.label, position);
+    position.dataset.tLabel = 'panel.slice-position';
+    const control = row(controlId(name), label(name), position);
     const output = control.querySelector('output');
     control.insertBefore(axis, position);
     control.classList.add('slice');
@@ -141,8 +168,8 @@ const builders = {
       axis.value = a;
       position.value = p;
       position.disabled = a === 'off';
-      output.textContent = a === 'off' ? '' : Number(p).toFixed(2);
-      key.replaceChildren(...(a === 'off' ? [] : [sliceKey()]));
+      output.textContent = a === 'off' ? '' : words().fixed(Number(p) + 0, 2);
+      key.replaceChildren(...(a === 'off' ? [] : [sliceKey(words())]));
     });
     return element('div', {}, control, key);
   },

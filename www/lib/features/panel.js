@@ -3,15 +3,16 @@
 // Light, Camera, Scene) that fold. A parameter gets the control of its kind (panel-controls.js); the
 // actions and the inspector, editor and plot are built by the features that own them (their
 // `controls()`). Compact and collapsible: small figures start with it folded, and it never takes more
-// than a third of the figure's width.
+// than a third of the figure's width. Its words are marked by key (the table's `setting.<name>`,
+// `group.<group>`, `word.<name>.<word>`, `action.<name>`, and the panel's own) and worded as each
+// group is filled; the figure words them again when its language changes (the numbers shown too).
 
 import { CONTROL_NAMES, CONTROLS, rowOf } from '../core/table.js';
+import { groupKey, relabel } from '../i18n/words.js';
 import { hub } from '../engine/hub.js';
 import { colorKey } from './legends.js';
 import { caseGallery } from '../engine/wasm.js';
 import { controlBuilders, element, makeButton } from './panel-controls.js';
-
-const WITHOUT_COMPUTE = 'Needs WebGPU (compute shaders); this browser draws with WebGL2 and meshes on the CPU';
 
 /** The control names `list` (the `controls` value) asks for, in the table's order. */
 export function listedControls(list) {
@@ -54,6 +55,9 @@ export class Panel {
     for (const update of this.#updates) update(state);
   }
 
+  // The marked words are worded by the figure (`relabel`); the numbers and legends here.
+  language() { this.refresh(this.#ctx.state); }
+
   /**
    * Builds the panel (emptied first) for the listed controls. `stepwise`: the folded groups are filled
    * one per task after this one (or when opened), so that a full panel is not one long task.
@@ -72,14 +76,14 @@ export class Panel {
     if (!names.size) return;
     const width = ctx.element.clientWidth;
     const body = element('div', { className: 'controls' });
-    const details = element('details', { open: !(width > 0 && width < 560) },
-      element('summary', { textContent: 'Controls' }), body);
+    const details = element('details', { open: !(width > 0 && width < 560) }, marked('summary', 'panel.controls'), body);
     container.append(details);
 
     const maxResolution = hub.gpu?.max_resolution() ?? 512;
     const withoutCompute = Boolean(frames.gpu && !frames.gpu.has_compute());
     const builders = controlBuilders((name, value) => ctx.set(name, value), this.#updates, {
       maxResolution: frames.software ? Math.min(256, maxResolution) : maxResolution,
+      words: () => ctx.words,
     });
     const own = Object.assign({}, ...ctx.collect('controls'));
     const helpers = { element, makeButton, builders, updates: this.#updates, gallery: caseGallery() };
@@ -93,7 +97,7 @@ export class Panel {
     for (const [title, members] of groups) {
       const section = element('div', { className: 'group-body' });
       const group = element('details', { className: 'group', open: title === CONTROLS[0].group },
-        element('summary', { textContent: title || 'More' }), section);
+        marked('summary', title ? `group.${groupKey(title)}` : 'panel.more'), section);
       body.append(group);
       let filled = false;
       const fill = () => {
@@ -101,6 +105,7 @@ export class Panel {
         filled = true;
         const from = this.#updates.length;
         this.#fill(members, section, own, builders, helpers, withoutCompute);
+        relabel(section, ctx.words);
         for (const update of this.#updates.slice(from)) update(ctx.state);
       };
       if (stepwise && !group.open) {
@@ -111,10 +116,8 @@ export class Panel {
       }
     }
     body.append(element('slot', { name: 'panel-footer' }));
-    body.append(element('p', {
-      className: 'hint',
-      textContent: 'Drag to orbit · click, then wheel to zoom · arrows to turn · double-click to reset',
-    }));
+    body.append(marked('p', 'panel.hint', { className: 'hint' }));
+    relabel(details, ctx.words);
     const next = () => {
       if (build !== this.#builds || !folded.length) return;
       folded.shift()();
@@ -138,17 +141,24 @@ export class Panel {
       const control = builders[spec.kind](name, spec);
       if (withoutCompute && spec.compute) {
         for (const input of control.querySelectorAll('input, select')) input.disabled = true;
-        control.title = WITHOUT_COMPUTE;
+        control.dataset.tTitle = 'panel.needs-webgpu';
         control.classList.add('unavailable');
       }
       section.append(control);
       if (name === 'color-by') {
         const key = element('div', { className: 'key' });
         const classNames = helpers.gallery.classes.map((k) => k.name);
-        this.#updates.push((s) => key.replaceChildren(...[colorKey(s, classNames)].filter(Boolean)));
+        this.#updates.push((s) => key.replaceChildren(...[colorKey(s, classNames, this.#ctx.words)].filter(Boolean)));
         section.append(key);
       }
     }
     if (buttons.childElementCount) section.append(buttons);
   }
+}
+
+// An element whose text is message `key` (worded by `relabel`).
+function marked(tag, key, properties = {}) {
+  const node = element(tag, properties);
+  node.dataset.t = key;
+  return node;
 }

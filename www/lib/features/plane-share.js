@@ -19,7 +19,7 @@ export class PlaneShare extends ShareFeature {
     return {
       posterName: (scale) => (scale === 1 ? 'metaballs-2d.png' : `metaballs-2d@${scale}x.png`),
       posterSaved: () => false,
-      posterHint: 'A picture of the figure as it is, for slides and handouts.',
+      posterHint: 'share.poster-hint.plane',
       recorder: {
         size: () => this.seen(),
         formats: (width, height, fps) => clipFormats(width, height, fps),

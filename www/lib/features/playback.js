@@ -45,14 +45,16 @@ export class Playback {
     const { actions } = this.#ctx;
     return {
       paused: ({ makeButton, updates }) => {
-        const button = makeButton('pause', 'Pause', 'Pause or play (P)', actions.togglePause);
+        const button = makeButton('pause', { key: 'play.pause' }, { key: 'play.pause-title' }, actions.togglePause);
         updates.push((s) => {
           button.setAttribute('aria-pressed', String(s.paused));
-          button.textContent = s.paused ? 'Play' : 'Pause';
+          // Marked too, so that a new language words it as it stands.
+          button.dataset.t = s.paused ? 'play.play' : 'play.pause';
+          button.textContent = this.#ctx.t(button.dataset.t);
         });
         return button;
       },
-      step: ({ makeButton }) => makeButton('step', 'Step', 'One frame forward, paused (.)', actions.step),
+      step: ({ makeButton }) => makeButton('step', { key: 'action.step' }, { key: 'play.step-title' }, actions.step),
     };
   }
 }

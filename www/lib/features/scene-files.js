@@ -1,6 +1,8 @@
 // A figure's scene in and out: the spheres placed by hand (from their attribute, and after an edit by
 // hand into the count and the link form), scene documents saved and loaded (from text, a picked file
-// or a dropped one), the mesh as a file and pictures, and the panel's buttons for them.
+// or a dropped one), the mesh as a file and pictures, and the panel's buttons for them. File names,
+// file formats' names and what the files hold are the same in every language; what the figure says of
+// them is its reader's.
 
 import { nameOfKind } from '../core/table.js';
 import { PICTURE_FRAMES } from '../core/redraw.js';
@@ -17,6 +19,20 @@ const SPHERES = nameOfKind('spheres');
  * them: a subtracting sphere (charge −1) with a negative radius. */
 export function spheresText(list) {
   return list.map((s) => [...s.center, (s.charge ?? 1) < 0 ? -s.radius : s.radius, ...(s.velocity ?? [])].join(',')).join(';');
+}
+
+// `node`'s text and title as messages `key` and `titleKey` (either may be null), marked to be worded
+// again in a new language.
+function worded(ctx, node, key, titleKey = null) {
+  if (key) {
+    node.dataset.t = key;
+    node.textContent = ctx.t(key);
+  }
+  if (titleKey) {
+    node.dataset.tTitle = titleKey;
+    node.title = ctx.t(titleKey);
+  }
+  return node;
 }
 
 export class SceneFiles {
@@ -39,7 +55,7 @@ export class SceneFiles {
       notice: (text, ms) => ctx.notice(text, ms),
       emit: (type, detail) => ctx.emit(type, detail),
     };
-    const run = (f) => Promise.resolve().then(f).catch((error) => ctx.notice(error?.message ?? String(error)));
+    const run = (f) => Promise.resolve().then(f).catch((error) => ctx.notice(ctx.words.refusal(error)));
     Object.assign(ctx.actions, {
       reseed: () => ctx.set('seed', 1 + Math.floor(Math.random() * 1e6)),
       saveScene: () => run(() => this.downloadScene()),
@@ -69,21 +85,26 @@ export class SceneFiles {
   spheresEdited() { this.edited(); }
 
   controls() {
-    const { actions } = this.#ctx;
+    const ctx = this.#ctx;
+    const { actions } = ctx;
+    // A button worded by messages `key` (its text; null: a format's name, `text`) and `titleKey`.
+    const button = (makeButton, id, key, titleKey, onClick, text = '') => worded(ctx, makeButton(id, text, '', onClick), key, titleKey);
     return {
       seed: ({ element, makeButton, updates }) => {
-        const seed = element('p', { className: 'seed', innerHTML: 'Layout <span id="seed-value"></span>' });
-        updates.push((s) => { seed.querySelector('span').textContent = String(s.seed); });
-        return [makeButton('reseed', 'New layout', 'Draw a new random layout (N)', actions.reseed), seed];
+        // The seed is shown as written in the link (an identifier, not a quantity).
+        const value = element('span', { id: 'seed-value' });
+        const seed = element('p', { className: 'seed' }, worded(ctx, element('span'), 'setting.seed'), ' ', value);
+        updates.push((s) => { value.textContent = String(s.seed); });
+        return [button(makeButton, 'reseed', 'scene.reseed', 'scene.reseed-title', actions.reseed), seed];
       },
       scene: ({ element, makeButton }) => element('span', { className: 'buttons' },
-        makeButton('save-scene', 'Save scene', 'Download the scene as a JSON file', actions.saveScene),
-        makeButton('load-scene', 'Load scene…', 'Open a scene file (or drop one on the figure)', actions.loadScene)),
+        button(makeButton, 'save-scene', 'scene.save', 'scene.save-title', actions.saveScene),
+        button(makeButton, 'load-scene', 'scene.load', 'scene.load-title', actions.loadScene)),
       export: ({ element, makeButton }) => element('span', { className: 'buttons' },
-        ...['stl', 'obj', 'ply'].map((f) => makeButton(`export-${f}`, f.toUpperCase(),
-          `Download the surface as ${f.toUpperCase()}`, () => actions.exportMesh(f))),
-        makeButton('picture', 'PNG', 'Download a picture at the figure\'s size', () => actions.picture(1)),
-        makeButton('picture-2x', 'PNG 2×', 'Download a picture at twice the size', () => actions.picture(2))),
+        ...['stl', 'obj', 'ply'].map((f) => button(makeButton, `export-${f}`, null, `export.${f}-title`,
+          () => actions.exportMesh(f), f.toUpperCase())),
+        button(makeButton, 'picture', null, 'export.picture-title', () => actions.picture(1), 'PNG'),
+        button(makeButton, 'picture-2x', 'export.picture-2x', 'export.picture-2x-title', () => actions.picture(2))),
     };
   }
 
@@ -110,7 +131,7 @@ export class SceneFiles {
       this.#hooks.adopt('spheres', view.spheres().length / 7);
       this.#ctx.each('spheresReplaced');
     } catch (error) {
-      this.#hooks.notice(`${SPHERES}: ${error.message}`);
+      this.#hooks.notice(`${SPHERES}: ${this.#ctx.words.refusal(error)}`);
     }
   }
 
@@ -164,9 +185,11 @@ export class SceneFiles {
   async loadFile(file) {
     try {
       this.load(await readSceneFile(file));
-      this.#hooks.notice(`Loaded ${file.name}: ${this.#hooks.state().spheres} spheres`, 4000);
+      this.#hooks.notice(this.#ctx.t('scene.loaded', { name: file.name, count: this.#hooks.state().spheres }), 4000);
     } catch (error) {
-      this.#hooks.notice(`${file.name} was not loaded: ${error.message}. The scene is unchanged.`);
+      // What is wrong with the file: the WebAssembly's refusal in the reader's words where it has a
+      // code, else as the scene's reader says it (in English).
+      this.#hooks.notice(this.#ctx.t('scene.not-loaded', { name: file.name, reason: this.#ctx.words.refusal(error) }));
       this.#hooks.emit('metaballs-error', { message: error.message });
     }
   }
@@ -187,7 +210,8 @@ export class SceneFiles {
   async downloadMesh(format) {
     const bytes = await this.exportMesh(format);
     download(meshBlob(bytes, format), `metaballs.${format}`);
-    this.#hooks.notice(`Exported ${format.toUpperCase()}: ${(bytes.length / 1e6).toFixed(2)} MB`, 3000);
+    const size = this.#ctx.words.fixed(bytes.length / 1e6, 2);
+    this.#hooks.notice(this.#ctx.t('export.done', { format: format.toUpperCase(), size }), 3000);
   }
 
   async picture(scale) {

@@ -3,8 +3,10 @@
 // directive, the full page's link), each with a Copy button; posters at 1× and 2× of the figure's box;
 // and, where the figure can make one, a recording of its animation with a progress bar and Cancel.
 // Copying uses the Clipboard API; where the browser refuses, the text is selected for the reader to copy.
+// Its words are the reader's language (the texts it writes are not: they are code, the same in any).
 
 import { download } from '../core/download.js';
+import { relabel } from '../i18n/words.js';
 import { clipFormats } from '../figure/clip.js';
 
 const STYLE = `
@@ -32,15 +34,9 @@ dialog.share::backdrop { background: rgba(0, 0, 0, 0.45); }
 .share progress { flex: 1 1 120px; min-width: 120px; height: 12px; accent-color: var(--accent, #e77661); }
 `;
 
-// What each text is for, in the order of the tabs.
-const TABS = [
-  ['html', 'HTML', 'For a page that runs scripts (VitePress, Docusaurus, MkDocs, reveal.js, a plain page). Save the poster beside the page to show while it loads.'],
-  ['iframe', 'Iframe', 'For hosts that strip scripts (Moodle, Canvas, Blackboard, a wiki): the figure on a page of its own, at the size seen here.'],
-  ['url', 'Iframe URL', 'The iframe page\'s address, for a host that asks for a URL (MyST\'s {iframe}, an LMS\'s embed field).'],
-  ['python', 'Python', 'For a notebook (JupyterLab, VS Code, Colab, marimo) with the metaballs_widget package.'],
-  ['myst', 'MyST', 'For a MyST or Jupyter Book page: the notebook widget with these settings, drawn without a kernel.'],
-  ['link', 'Link', 'The full page with every control, showing this view.'],
-];
+// The texts, in the order of the tabs: each tab's name is message `share.tab.<id>`, and what the text
+// is for `share.hint.<id>`.
+const TABS = ['html', 'iframe', 'url', 'python', 'myst', 'link'];
 
 // A side made even, as video needs.
 const even = (n) => Math.max(2, Math.round(n / 2) * 2);
@@ -54,6 +50,14 @@ const el = (tag, props = {}, ...children) => {
   return node;
 };
 
+// `node` with its words marked by key (`text`, aria-`label`, `title`), set by `relabel` in any language.
+const worded = (node, { text, label, title } = {}) => {
+  if (text) node.dataset.t = text;
+  if (label) node.dataset.tLabel = label;
+  if (title) node.dataset.tTitle = title;
+  return node;
+};
+
 export class ShareBox {
   #root;
   #options;
@@ -61,13 +65,16 @@ export class ShareBox {
   #texts = null;
   #tab = 'html';
   #recording = null;
+  // The nodes whose text is a message with fields (statuses, options), worded again in a new language.
+  #said = new Map();
 
   /**
    * `root`: the figure's shadow root. `options`:
    * - `texts()`: the share texts now (lib/core/share-text.js);
    * - `poster(scale)`: a PNG blob of the picture at the box's size times `scale`; `posterName(scale)`;
    *   `posterSaved(name)`: true when the HTML names the poster from then on;
-   * - `posterHint`: what the poster is for in this figure;
+   * - `posterHint`: the key of the message saying what the poster is for in this figure;
+   * - `words()`: the figure's words (i18n/words.js);
    * - `recorder` (or null): { size() → { width, height } seen, formats(width, height, fps) → the clip
    *   formats, record(options) → a Blob, fileName(format) }.
    */
@@ -87,6 +94,25 @@ export class ShareBox {
 
   close() { this.#dialog?.close(); }
 
+  /** Words what the box shows in `words`' language (its marked nodes are worded by `relabel`). */
+  language(words) {
+    for (const [node, [key, fields]] of this.#said) {
+      if (node.isConnected) node.textContent = words.t(key, fields);
+      else this.#said.delete(node);
+    }
+  }
+
+  // Sets `node`'s text to message `key` with `fields` (none: no text), and keeps it worded.
+  #say(node, key, fields = {}) {
+    if (!key) {
+      this.#said.delete(node);
+      node.textContent = '';
+      return;
+    }
+    this.#said.set(node, [key, fields]);
+    node.textContent = this.#options.words().t(key, fields);
+  }
+
   /** Writes the texts again (the figure changed, a poster was saved). */
   refresh() {
     if (!this.#dialog) return;
@@ -102,14 +128,15 @@ export class ShareBox {
       button.setAttribute('aria-selected', String(selected));
       button.tabIndex = selected ? 0 : -1;
     }
-    const [, label, hint] = TABS.find(([id]) => id === tab);
     dialog.querySelector('[role=tabpanel]').setAttribute('aria-labelledby', `share-tab-${tab}`);
     const area = dialog.querySelector('textarea');
     area.value = this.#texts[tab];
-    area.setAttribute('aria-label', label);
     area.rows = Math.min(12, Math.max(3, area.value.split('\n').length + 1));
-    dialog.querySelector('.hint').textContent = hint;
-    dialog.querySelector('.copy-status').textContent = '';
+    const words = this.#options.words();
+    worded(area, { label: `share.tab.${tab}` }).setAttribute('aria-label', words.t(`share.tab.${tab}`));
+    const hint = dialog.querySelector('.hint');
+    worded(hint, { text: `share.hint.${tab}` }).textContent = words.t(`share.hint.${tab}`);
+    this.#say(dialog.querySelector('.copy-status'), null);
   }
 
   async #copy() {
@@ -119,11 +146,11 @@ export class ShareBox {
     try {
       if (!navigator.clipboard?.writeText) throw new Error('no clipboard');
       await navigator.clipboard.writeText(area.value);
-      status.textContent = 'Copied.';
+      this.#say(status, 'share.copied');
     } catch {
       area.focus();
       area.select();
-      status.textContent = 'This browser did not let the page copy: the text is selected, copy it with Ctrl+C (⌘C).';
+      this.#say(status, 'share.copy-refused');
     }
   }
 
@@ -131,15 +158,13 @@ export class ShareBox {
     const dialog = el('dialog', { className: 'share' });
     dialog.setAttribute('part', 'share');
     dialog.setAttribute('aria-labelledby', 'share-title');
-    const close = el('button', { type: 'button', textContent: '×', title: 'Close' });
-    close.setAttribute('aria-label', 'Close');
+    const close = worded(el('button', { type: 'button', textContent: '×' }), { title: 'share.close', label: 'share.close' });
     close.addEventListener('click', () => dialog.close());
 
-    const tabs = el('div');
+    const tabs = worded(el('div'), { label: 'share.tabs' });
     tabs.setAttribute('role', 'tablist');
-    tabs.setAttribute('aria-label', 'Where the figure goes');
-    for (const [id, label] of TABS) {
-      const tab = el('button', { type: 'button', textContent: label, id: `share-tab-${id}` });
+    for (const id of TABS) {
+      const tab = worded(el('button', { type: 'button', id: `share-tab-${id}` }), { text: `share.tab.${id}` });
       tab.dataset.tab = id;
       tab.setAttribute('role', 'tab');
       tab.setAttribute('aria-controls', 'share-panel');
@@ -148,17 +173,17 @@ export class ShareBox {
     }
     // Arrow keys, Home and End move between the tabs, as in any tab list.
     tabs.addEventListener('keydown', (event) => {
-      const index = TABS.findIndex(([id]) => id === this.#tab);
+      const index = TABS.indexOf(this.#tab);
       const to = { ArrowRight: index + 1, ArrowLeft: index - 1, Home: 0, End: TABS.length - 1 }[event.key];
       if (to === undefined) return;
-      const [next] = TABS[(to + TABS.length) % TABS.length];
+      const next = TABS[(to + TABS.length) % TABS.length];
       this.#show(next);
       tabs.querySelector(`[data-tab="${next}"]`).focus();
       event.preventDefault();
     });
     const area = el('textarea', { readOnly: true, spellcheck: false });
     area.setAttribute('wrap', 'soft');
-    const copy = el('button', { type: 'button', textContent: 'Copy', className: 'copy' });
+    const copy = worded(el('button', { type: 'button', className: 'copy' }), { text: 'share.copy' });
     copy.addEventListener('click', () => this.#copy());
     const copyStatus = el('span', { className: 'status copy-status' });
     copyStatus.setAttribute('role', 'status');
@@ -167,12 +192,13 @@ export class ShareBox {
     panel.setAttribute('role', 'tabpanel');
     dialog.append(
       el('style', { textContent: STYLE }),
-      el('header', {}, el('h2', { id: 'share-title', textContent: 'Share this figure' }), close),
+      el('header', {}, worded(el('h2', { id: 'share-title' }), { text: 'share.title' }), close),
       tabs, panel, this.#posterSection(),
     );
     if (this.#options.recorder) dialog.append(this.#recordSection());
     // A recording under way is cancelled when the box closes.
     dialog.addEventListener('close', () => this.#recording?.abort());
+    relabel(dialog, this.#options.words());
     this.#root.append(dialog);
     return dialog;
   }
@@ -181,44 +207,52 @@ export class ShareBox {
     const status = el('span', { className: 'status' });
     status.setAttribute('role', 'status');
     const button = (scale) => {
-      const b = el('button', { type: 'button', textContent: `PNG ${scale}×`, className: `poster-${scale}x` });
+      const b = el('button', { type: 'button', className: `poster-${scale}x` });
+      this.#say(b, 'share.poster-button', { scale });
       b.addEventListener('click', async () => {
         const name = this.#options.posterName(scale);
         try {
           download(await this.#options.poster(scale), name);
           const named = this.#options.posterSaved(name);
           this.refresh();
-          status.textContent = named ? `Saved ${name}; the HTML names it as the poster.` : `Saved ${name}.`;
+          this.#say(status, named ? 'share.poster-named' : 'share.poster-saved', { name });
         } catch (error) {
-          status.textContent = `The poster could not be made: ${error.message}`;
+          this.#say(status, 'share.poster-failed', { reason: this.#options.words().refusal(error) });
         }
       });
       return b;
     };
     return el('section', {},
-      el('h3', { textContent: 'Poster' }),
-      el('p', { className: 'hint', textContent: this.#options.posterHint }),
+      worded(el('h3'), { text: 'share.poster' }),
+      worded(el('p', { className: 'hint' }), { text: this.#options.posterHint }),
       el('div', { className: 'row' }, button(1), button(2), status));
   }
 
   #recordSection() {
     const recorder = this.#options.recorder;
     const seen = recorder.size();
-    const sizes = [[even(seen.width), even(seen.height), 'as seen'], [640, 360], [1280, 720], [1920, 1080]];
+    const sizes = [[even(seen.width), even(seen.height), 'share.record.size-seen'], [640, 360], [1280, 720], [1920, 1080]];
     const seconds = el('input', { type: 'number', min: '0.5', max: '60', step: '0.5', value: '4', className: 'seconds' });
-    const fps = el('select', { className: 'fps' }, ...[24, 30, 60].map((n) => el('option', { value: String(n), textContent: `${n} fps`, selected: n === 30 })));
+    // An option's value is what the recorder reads; its text is worded.
+    const option = (value, key, fields, selected = false) => {
+      const node = el('option', { value, selected });
+      this.#say(node, key, fields);
+      return node;
+    };
+    const fps = el('select', { className: 'fps' }, ...[24, 30, 60].map((n) => option(String(n), 'share.record.fps', { fps: n }, n === 30)));
     const size = el('select', { className: 'size' },
-      ...sizes.map(([w, h, note]) => el('option', { value: `${w}x${h}`, textContent: `${w}×${h}${note ? ` (${note})` : ''}` })));
+      ...sizes.map(([w, h, key]) => option(`${w}x${h}`, key ?? 'share.record.size', { width: w, height: h })));
     const format = el('select', { className: 'format' });
-    const start = el('button', { type: 'button', textContent: 'Record', className: 'record' });
-    const cancel = el('button', { type: 'button', textContent: 'Cancel', className: 'cancel', hidden: true });
+    const start = worded(el('button', { type: 'button', className: 'record' }), { text: 'share.record.start' });
+    const cancel = worded(el('button', { type: 'button', className: 'cancel', hidden: true }), { text: 'share.record.cancel' });
     const progress = el('progress', { max: 1, value: 0, hidden: true });
     const status = el('span', { className: 'status record-status' });
     status.setAttribute('role', 'status');
-    for (const [node, name] of [[fps, 'Frame rate'], [size, 'Size'], [format, 'Format'], [progress, 'Recording']]) {
-      node.setAttribute('aria-label', name);
+    for (const [node, key] of [[fps, 'share.record.frame-rate'], [size, 'share.record.size-label'], [format, 'share.record.format'],
+      [progress, 'share.record.progress']]) {
+      worded(node, { label: key });
     }
-    const label = (text, input) => el('label', {}, text, input);
+    const label = (key, input) => el('label', {}, worded(el('span'), { text: key }), input);
 
     const chosen = () => {
       const [w, h] = size.value.split('x').map(Number);
@@ -232,12 +266,16 @@ export class ShareBox {
       const formats = await recorder.formats(width, height, rate);
       if (question !== asked) return;
       const before = format.value;
-      format.replaceChildren(...formats.map((f) => el('option', { value: f.id, textContent: f.label })));
+      const words = this.#options.words();
+      for (const old of format.options) this.#said.delete(old);
+      // A format is named by its label (a name, as WebM or MP4), or by a message where it has one.
+      format.replaceChildren(...formats.map((f) => (words.has(`share.record.format.${f.id}`)
+        ? option(f.id, `share.record.format.${f.id}`) : el('option', { value: f.id, textContent: f.label }))));
       if (formats.some((f) => f.id === before)) format.value = before;
     };
     size.addEventListener('change', listFormats);
     fps.addEventListener('change', listFormats);
-    listFormats().catch((error) => { status.textContent = `Recording is not available here: ${error.message}`; });
+    listFormats().catch((error) => this.#say(status, 'share.record.unavailable', { reason: this.#options.words().refusal(error) }));
 
     start.addEventListener('click', async () => {
       const options = chosen();
@@ -248,7 +286,7 @@ export class ShareBox {
       progress.hidden = false;
       cancel.focus();
       progress.value = 0;
-      status.textContent = 'Recording…';
+      this.#say(status, 'share.record.busy');
       const started = performance.now();
       try {
         const blob = await recorder.record({
@@ -258,9 +296,13 @@ export class ShareBox {
         });
         const name = recorder.fileName(options.format);
         download(blob, name);
-        status.textContent = `Saved ${name}: ${(blob.size / 1e6).toFixed(2)} MB in ${((performance.now() - started) / 1000).toFixed(1)} s.`;
+        const words = this.#options.words();
+        this.#say(status, 'share.record.saved', {
+          name, size: words.fixed(blob.size / 1e6, 2), seconds: words.fixed((performance.now() - started) / 1000, 1),
+        });
       } catch (error) {
-        status.textContent = error?.name === 'AbortError' ? 'Cancelled: nothing was saved.' : `The recording failed: ${error.message}`;
+        if (error?.name === 'AbortError') this.#say(status, 'share.record.cancelled');
+        else this.#say(status, 'share.record.failed', { reason: this.#options.words().refusal(error) });
       } finally {
         this.#recording = null;
         const focused = this.#root.activeElement === cancel;
@@ -273,9 +315,9 @@ export class ShareBox {
     cancel.addEventListener('click', () => this.#recording?.abort());
 
     return el('section', { className: 'recording' },
-      el('h3', { textContent: 'Recording' }),
-      el('p', { className: 'hint', textContent: 'A clip of the animation for slides and pages that take only videos or images. Frames are made one step apart, so the clip is smooth on any machine.' }),
-      el('div', { className: 'row' }, label('Length (s) ', seconds), fps, size, format),
+      worded(el('h3'), { text: 'share.record.title' }),
+      worded(el('p', { className: 'hint' }), { text: 'share.record.hint' }),
+      el('div', { className: 'row' }, label('share.record.length', seconds), fps, size, format),
       el('div', { className: 'row' }, start, cancel, progress, status));
   }
 }
@@ -319,6 +361,9 @@ export class ShareFeature {
 
   refresh() { if (this.#box?.isOpen) this.#box.refresh(); }
 
+  // The box's words with fields follow the figure's language (its marked words: ctx.speak).
+  language(words) { this.#box?.language(words); }
+
   /** The figure's size as seen, in CSS pixels. */
   seen() {
     const { element } = this.ctx;
@@ -344,6 +389,7 @@ export class ShareFeature {
     this.#box ??= new ShareBox(this.ctx.root, {
       texts: () => this.texts(),
       poster: (scale) => this.poster(scale),
+      words: () => this.ctx.words,
       ...this.boxOptions(),
     });
     this.#box.open();

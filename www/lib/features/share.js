@@ -29,7 +29,12 @@ export class Share extends ShareFeature {
 
   controls() {
     return {
-      share: ({ makeButton }) => makeButton('share', 'Share…', 'Copy this figure for a page, an iframe, a notebook or MyST; save a poster or a clip', () => this.open()),
+      share: ({ makeButton }) => {
+        const { ctx } = this;
+        const button = makeButton('share', ctx.t('share.button'), ctx.t('share.button-title'), () => this.open());
+        Object.assign(button.dataset, { t: 'share.button', tTitle: 'share.button-title' });
+        return button;
+      },
     };
   }
 
@@ -41,7 +46,7 @@ export class Share extends ShareFeature {
         this.#posterName = name;
         return !this.ctx.state.poster;
       },
-      posterHint: 'The picture shown until the figure draws, and in print: save it beside your page.',
+      posterHint: 'share.poster-hint.view',
       recorder: {
         size: () => this.seen(),
         formats: (width, height, fps) => clipFormats(width, height, fps),

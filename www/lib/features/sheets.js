@@ -13,22 +13,23 @@
 // styles are compact-style.js's. This feature also owns the panel's `inert`: a wide figure's levels box
 // and step-through cover the panel, so its controls leave the tab order while either shows.
 
-import { customStates } from '../core/element.js';
-
 /** Figures narrower than this, in CSS pixels, open their boxes one at a time. */
 export const COMPACT_PX = 440;
 
 /** The statistics' warnings (a full triangle budget, a neck thinner than a cell), marked on their tab. */
 const WARNINGS = ['overflow', 'hud-field-warning'];
 
-/** The boxes, by id, with their tabs' names; the first open of those marked `opens` is shown first. */
+/**
+ * The boxes, by id, with their tabs' names (`sheet.<id>` in the catalogues); the first open of those
+ * marked `opens` is shown first.
+ */
 const BOXES = [
-  { id: 'inspector', tab: 'Cell', opens: true },
-  { id: 'march', tab: 'Steps', opens: true },
-  { id: 'levels-box', tab: 'Levels', opens: true },
-  { id: 'sphere-box', tab: 'Sphere', opens: true },
-  { id: 'hud', tab: 'Statistics', opens: true },
-  { id: 'panel', tab: 'Controls', opens: false },
+  { id: 'inspector', opens: true },
+  { id: 'march', opens: true },
+  { id: 'levels-box', opens: true },
+  { id: 'sphere-box', opens: true },
+  { id: 'hud', opens: true },
+  { id: 'panel', opens: false },
 ];
 
 export class FigureSheets {
@@ -44,7 +45,7 @@ export class FigureSheets {
 
   constructor(ctx) {
     this.#ctx = ctx;
-    this.#states = customStates(ctx.element);
+    this.#states = ctx.states;
     ctx.$('tabs').addEventListener('click', (event) => {
       const button = event.target.closest('button[data-box]');
       if (button) this.toggle(button.dataset.box);
@@ -146,21 +147,25 @@ export class FigureSheets {
         this.#tabs.delete(id);
       }
     }
-    for (const [index, { id, tab }] of present.entries()) {
+    const words = this.#ctx.words;
+    for (const [index, { id }] of present.entries()) {
       let button = this.#tabs.get(id);
       if (!button) {
         button = document.createElement('button');
         button.type = 'button';
         button.dataset.box = id;
-        button.textContent = tab;
         button.setAttribute('aria-controls', id);
         this.#tabs.set(id, button);
       }
       button.setAttribute('aria-expanded', String(id === shown));
+      // Marked by key, so that a new language words the tabs as they stand.
+      const warned = id === 'hud' && WARNINGS.some((warning) => !this.#ctx.$(warning).hidden);
+      button.dataset.t = warned ? 'sheet.hud-warned' : `sheet.${id}`;
+      button.textContent = words.t(button.dataset.t);
       if (id === 'hud') {
-        const warned = WARNINGS.some((warning) => !this.#ctx.$(warning).hidden);
-        button.textContent = warned ? `${tab} ⚠` : tab;
-        button.title = warned ? 'The statistics have a warning' : '';
+        if (warned) button.dataset.tTitle = 'sheet.warning';
+        else delete button.dataset.tTitle;
+        button.title = warned ? words.t('sheet.warning') : '';
       }
       // Moved only when out of place (a button moved loses its focus).
       if (tabs.children[index] !== button) tabs.insertBefore(button, tabs.children[index] ?? null);

@@ -6,9 +6,10 @@
 // GPU's passes and the CPU's mesher alike. The spheres hold still while it is open.
 
 import { caseGallery } from '../engine/wasm.js';
-import { caseSum, stepperPanel } from '../plane/stepper-panel.js';
-import { Playhead } from '../plane/stepper.js';
-import { Inspector } from './inspector.js';
+import { stepperPanel } from '../plane/stepper-panel.js';
+import { caseBits, Playhead } from '../plane/stepper.js';
+import { className } from './cell-drawing.js';
+import { escape, Inspector, markup } from './inspector.js';
 
 /** Reads `x,y,z` as a cell, or null (`off`). */
 export function parseCell(text) {
@@ -16,13 +17,13 @@ export function parseCell(text) {
   return text.split(',').map(Number);
 }
 
-/** The 256 cases grouped into the gallery's classes, as the stepper panel's table. */
-function caseTable() {
+/** The 256 cases grouped into the gallery's classes, as the stepper panel's table (its words HTML). */
+function caseTable(words) {
   return {
-    name: 'The 256 cases of marching cubes, grouped into their 15 classes',
-    head: ['case', 'bits 76543210'],
+    name: markup(words, 'march.table'),
+    head: [markup(words, 'march.table-case'), markup(words, 'march.table-bits')],
     groups: caseGallery().classes.map((k) => ({
-      title: `Class ${k.class} · ${k.name} (${k.cases} cases)`,
+      title: markup(words, 'march.table-class', { class: k.class, name: escape(className(words, k.class)), count: k.cases }),
       rows: Array.from(k.members, (c) => [c, c.toString(2).padStart(8, '0')]),
     })),
   };
@@ -47,9 +48,21 @@ export class Stepper {
 
   controls() {
     return {
-      'step-through': ({ makeButton }) => makeButton('step-through', 'Step through the march',
-        'Walk marching cubes one cell at a time (from the inspected cell, if any)', () => this.open()),
+      'step-through': ({ makeButton }) => {
+        const button = makeButton('step-through', this.#ctx.t('action.step-through'),
+          this.#ctx.t('march.step-through-title'), () => this.open());
+        button.dataset.t = 'action.step-through';
+        button.dataset.tTitle = 'march.step-through-title';
+        return button;
+      },
     };
+  }
+
+  // The panel and its account of the step in the reader's language.
+  language(words) {
+    if (!this.#panel) return;
+    this.#panel.language(words);
+    if (!this.#box.hidden) this.#show(this.#shown);
   }
 
   /** The cell the march stands at, or null when the stepper is off. */
@@ -97,7 +110,7 @@ export class Stepper {
   #wholeMesh() {
     const { lod, method } = this.#ctx.state;
     if (!lod && method !== 'surface_nets') return false;
-    this.#ctx.notice('march: the step-through walks marching cubes on the uniform grid (lod off, method marching_cubes); the whole mesh is drawn');
+    this.#ctx.notice(this.#ctx.t('march.whole-mesh'));
     return true;
   }
 
@@ -151,25 +164,42 @@ export class Stepper {
   }
 
   #show(report) {
-    this.#panel ??= stepperPanel(this.#box, {
-      back: () => { this.#play.playing = false; this.stepTo(this.index - 1); },
-      forward: () => { this.#play.playing = false; this.stepTo(this.index + 1); },
-      next: () => { this.#play.playing = false; this.nextCrossed(); },
-      play: () => { this.#play.toggle(); this.#show(this.#ctx.get(Inspector).report); },
-      speed: (perSecond) => { this.#play.speed = perSecond; },
-      close: () => this.close(),
-    }, caseTable());
+    const words = this.#ctx.words;
+    if (!this.#panel) {
+      // (The table is worded by the panel, in each language it speaks.)
+      this.#panel = stepperPanel(this.#box, {
+        back: () => { this.#play.playing = false; this.stepTo(this.index - 1); },
+        forward: () => { this.#play.playing = false; this.stepTo(this.index + 1); },
+        next: () => { this.#play.playing = false; this.nextCrossed(); },
+        play: () => { this.#play.toggle(); this.#show(this.#ctx.get(Inspector).report); },
+        speed: (perSecond) => { this.#play.speed = perSecond; },
+        close: () => this.close(),
+      }, caseTable, words);
+    }
     // (The box covers the panel, whose controls leave the tab order while it shows: FigureSheets.)
     this.#box.hidden = false;
     this.#shown = report;
     const n = this.#ctx.state.resolution;
-    const head = `Step ${this.index + 1} of ${n ** 3}: cell (${this.cell.join(', ')})`;
+    const [x, y, z] = this.cell;
+    const head = markup(words, 'march.step', { step: this.index + 1, steps: n ** 3, x, y, z });
     // The corners' values and signs are in the inspector's box beside it; here, their bits add up.
-    const triangles = report?.triangles.length;
     const account = report
-      ? `${head}<br>${caseSum(report.corners, this.#ctx.state.iso).sum}<br>class ${report.class}, ${report.className}: `
-        + `${triangles} triangle${triangles === 1 ? '' : 's'} (edges ${report.triangles.map((t) => t.join('–')).join(', ') || 'none'})`
+      ? `${head}<br>${caseSum(words, report.corners, this.#ctx.state.iso)}<br>${markup(words, 'march.class', {
+        class: report.class,
+        name: escape(className(words, report.class)),
+        count: report.triangles.length,
+        edges: report.triangles.map((t) => t.join('–')).join(', ') || markup(words, 'inspector.none'),
+      })}`
       : head;
     this.#panel({ playing: this.#play.playing, account, lit: report?.case ?? null });
   }
+}
+
+/** The case of corner values `corners` at `iso` as the sum of its bits, as HTML (the inside ones marked). */
+function caseSum(words, corners, iso) {
+  const { bits, case: sum } = caseBits(corners, iso);
+  return markup(words, 'march.case-sum', {
+    case: `<b class="case">${sum}</b>`,
+    sum: bits.map((b) => (b.inside ? `<span class="in">${b.bit}</span>` : b.bit)).join(' + '),
+  });
 }

@@ -5,6 +5,7 @@
 // page's mesher worker, whichever mesher draws; up to LISTED_CELLS cells per axis, and only off the
 // page's thread (else the notice gives the blob counts alone).
 
+import { Words } from '../i18n/words.js';
 import { decidedCells, meshShape } from '../engine/meshers.js';
 
 // Cells named in the notice; the rest are counted.
@@ -12,16 +13,10 @@ const NAMED = 4;
 // The finest grid whose changed cells are listed (a CPU mesh of it on the worker).
 const LISTED_CELLS = 256;
 
-const plural = (n, word) => `${n} ${word}${n === 1 ? '' : 's'}`;
-
 // What each table changes from the classic one, as the kinds of `decidedCells`: faces the decider
-// joins (bit 0), tunnels (bit 1).
+// joins (bit 0), tunnels (bit 1). The notices' words name the kinds: `face`, `tunnel`, `both`.
 const KINDS = { classic: 0, decider: 1, mc33: 3 };
-const CHANGES = {
-  1: 'each with a face the decider joins and the classic table cuts',
-  2: 'each with a tunnel through its inside that MC33 draws',
-  3: 'each with a face the decider joins and the classic table cuts, or a tunnel MC33 draws',
-};
+const KIND_WORDS = { 1: 'face', 2: 'tunnel', 3: 'both' };
 
 // The number of blobs of the view's mesh now (null where it cannot be read).
 const blobsOf = (view) => view.mesh_triangles().then(([vertices, triangles]) => meshShape(vertices, triangles))
@@ -42,7 +37,7 @@ export class TableChange {
     if (!view) return;
     if (lod || method === 'surface_nets') {
       this.#pending = null;
-      this.#ctx.notice(`table=${value}: ${lod ? 'level of detail' : 'surface nets'} keeps the classic table; the mesh is unchanged`);
+      this.#ctx.notice(this.#ctx.t(lod ? 'notice.table-kept-lod' : 'notice.table-kept-nets', { table: value }));
       return;
     }
     // The blobs under the table left (the mesh on screen), and which kinds of cell change.
@@ -61,24 +56,23 @@ export class TableChange {
     Promise.all([cells, pending.before, blobsOf(view)]).then(([all, before, after]) => {
       if (this.#ctx.state.table !== pending.value) return;
       const changed = all && all.filter((c) => c[3] & pending.kinds).map((c) => c.slice(0, 3));
-      this.#ctx.notice(tableNotice(pending.value, changed, before, after, pending.kinds), 12000);
+      this.#ctx.notice(tableNotice(pending.value, changed, before, after, pending.kinds, this.#ctx.words), 12000);
     });
   }
 }
 
 /**
  * The notice for a change to `table` where `cells` differ (null where they were not listed), with the
- * blob counts before and after (null where unknown); `kinds` (bits of `KINDS`) say what differs.
+ * blob counts before and after (null where unknown); `kinds` (bits of `KINDS`) say what differs;
+ * worded with `words` (English by default).
  */
-export function tableNotice(table, cells, before, after, kinds = 1) {
-  const blobs = before !== null && after !== null ? `blobs ${before} → ${after}` : '';
-  if (cells === null) return `table=${table}${blobs ? `: ${blobs}` : ''}`;
-  if (cells.length === 0) {
-    const what = { 2: 'a tunnel MC33 draws', 3: 'a face the asymptotic decider joins or a tunnel MC33 draws' }[kinds]
-      ?? 'a face the asymptotic decider joins';
-    return `table=${table}: no cell here has ${what}; both tables give this mesh`;
-  }
+export function tableNotice(table, cells, before, after, kinds = 1, words = new Words('en', 'ltr')) {
+  const blobs = before !== null && after !== null;
+  if (cells === null) return blobs ? words.t('notice.table-blobs', { table, before, after }) : words.t('notice.table', { table });
+  if (cells.length === 0) return words.t(`notice.table-none-${KIND_WORDS[kinds] ?? 'face'}`, { table });
+  // The cells as the grid numbers them (x, y, z), the first few named.
   const named = cells.slice(0, NAMED).map((c) => `(${c.join(', ')})`).join(', ');
-  const more = cells.length > NAMED ? ` and ${cells.length - NAMED} more` : '';
-  return `table=${table}: ${plural(cells.length, 'cell')} changed, ${CHANGES[kinds] ?? CHANGES[3]}: ${named}${more}${blobs ? `; ${blobs}` : ''}`;
+  const listed = cells.length > NAMED ? words.t('notice.cells-more', { cells: named, count: cells.length - NAMED }) : named;
+  const changed = words.t(`notice.table-changed-${KIND_WORDS[kinds] ?? 'both'}`, { table, count: cells.length, cells: listed });
+  return blobs ? words.t('notice.with-blobs', { notice: changed, before, after }) : changed;
 }

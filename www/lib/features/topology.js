@@ -88,8 +88,7 @@ export class TopologyWatch {
     this.#last = shape;
     this.#ctx.each('shape', shape);
     if (before && before.components !== components && this.#ctx.state['pause-on'] !== 'merge') {
-      const blobs = (n) => `${n} blob${n === 1 ? '' : 's'}`;
-      this.#ctx.each('announce', `${blobs(before.components)} → ${components} in the mesh`);
+      this.#ctx.each('announce', this.#ctx.t('topology.merge', { count: before.components, blobs: components }));
     }
     return shape;
   }

@@ -1,7 +1,8 @@
 // The styles of a small figure (features/sheets.js): its boxes as one sheet at a time, opened from a row
 // of tabs, below the picture (`:state(sheet)`) or over its lower part (`:state(over)`). And controls a
 // finger can hit (WCAG 2.2, 2.5.8): buttons, lists, summaries and sliders at least 24 CSS px high at
-// every size; on a small figure, checkboxes and colour wells too, and every control 24 px wide.
+// every size; on a small figure, checkboxes and colour wells too, and every control 24 px wide. The
+// tabs start where the reader's lines start (the left, or the right in RTL).
 
 // The boxes that become the sheet.
 const BOXES = '#panel, #hud, #levels-box, #inspector, #march, #sphere-box';
@@ -17,7 +18,7 @@ button, select, summary, input[type="range"] { min-height: 24px; }
 button { min-width: 24px; }
 #tabs {
   position: absolute;
-  left: 8px;
+  inset-inline-start: 8px;
   bottom: 8px;
   display: none;
   flex-wrap: wrap;
@@ -36,8 +37,7 @@ button { min-width: 24px; }
 :host(:state(compact)) #tabs ~ :is(${BOXES}):not(.shown) { display: none; }
 :host(:state(compact)) #tabs ~ :is(${BOXES}) > details > summary { display: none; }
 :host(:state(compact)) #tabs ~ :is(${BOXES}).shown {
-  left: 0;
-  right: 0;
+  inset-inline: 0;
   top: auto;
   bottom: 0;
   width: auto;
@@ -50,7 +50,7 @@ button { min-width: 24px; }
   z-index: 3;
 }
 /* Over the picture: from 40 % of its height down to the tabs (the sheet's bottom is set above them). */
-:host(:state(over)) #tabs ~ :is(${BOXES}).shown { top: 40%; left: 8px; right: 8px; max-height: none; border-radius: 10px; }
+:host(:state(over)) #tabs ~ :is(${BOXES}).shown { top: 40%; inset-inline: 8px; max-height: none; border-radius: 10px; }
 /* One row of tabs there, scrolled sideways when they do not fit, to leave the sheet its height. */
 :host(:state(over)) #tabs:not([hidden]) { flex-wrap: nowrap; overflow-x: auto; scrollbar-width: none; }
 /* Below the picture: the figure grows by the sheet. */

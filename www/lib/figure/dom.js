@@ -3,6 +3,7 @@
 // import the module). Shadow DOM keeps the host page's rules out and these in; pages restyle the figure
 // through the custom properties and ::part() names below (README, custom-elements.json).
 
+import { inEnglish, say } from '../engine/asset-errors.js';
 import { COMPACT_STYLE } from './compact-style.js';
 import { DARK, LIGHT } from './palette.js';
 
@@ -27,6 +28,10 @@ const STYLE = `
   :host([theme="auto"]) { ${LIGHT} }
 }
 :host([hidden]) { display: none; }
+/* Right to left (the reader's language, or the page's dir): the boxes mirror; the picture, what is
+   drawn over it in its coordinates, and the drawings and plots do not. */
+:host(:state(rtl)) { direction: rtl; }
+canvas, #poster, #print-frame, #edit-overlay, #critical-marks, svg, .legend .ends { direction: ltr; }
 
 /* Before the first frame: the poster (or the poster colour). In print: the latest frame as a picture,
    else the poster; the controls are left out. */
@@ -82,7 +87,7 @@ canvas:focus-visible { outline: 2px solid var(--accent); outline-offset: -2px; }
 }
 #panel {
   top: 8px;
-  left: 8px;
+  inset-inline-start: 8px;
   width: min(280px, 33%);
 }
 #panel[hidden] { display: none; }
@@ -96,8 +101,8 @@ summary:focus-visible { outline: 2px solid var(--accent); outline-offset: -2px; 
   gap: 6px;
   margin: 4px 0;
 }
-.control label { color: var(--muted); overflow-wrap: anywhere; }
-.control output { text-align: right; font-variant-numeric: tabular-nums; }
+.control label { min-width: 0; color: var(--muted); overflow-wrap: anywhere; }
+.control output { min-width: 0; text-align: end; font-variant-numeric: tabular-nums; overflow-wrap: anywhere; }
 input { margin: 0; font: inherit; }
 input[type="range"] { width: 100%; accent-color: var(--accent); }
 input[type="color"] { width: 100%; height: 22px; border: none; background: none; padding: 0; }
@@ -115,6 +120,8 @@ button {
   border-radius: 6px;
   cursor: pointer;
 }
+/* A button in a row is never narrower than its longest word (a longer language's words wrap between them). */
+.buttons > button { min-width: min-content; overflow-wrap: break-word; }
 button:hover { background: var(--button-hover); }
 button[aria-pressed="true"] { background: var(--accent); color: var(--on-accent); border-color: var(--accent); }
 button:focus-visible, input:focus-visible { outline: 2px solid var(--accent); outline-offset: 2px; }
@@ -124,7 +131,7 @@ button:focus-visible, input:focus-visible { outline: 2px solid var(--accent); ou
 #hud {
   position: absolute;
   top: 8px;
-  right: 8px;
+  inset-inline-end: 8px;
   max-width: 50%;
   padding: 4px 10px 6px;
   background: var(--panel);
@@ -137,7 +144,7 @@ button:focus-visible, input:focus-visible { outline: 2px solid var(--accent); ou
 #hud details:not([open]) summary { padding: 0; }
 #hud div { overflow-wrap: anywhere; }
 #hud #hud-lod ol { list-style: none; margin: 0; padding: 0; }
-#hud #hud-lod li i { display: inline-block; width: 8px; height: 8px; margin-right: 4px; border-radius: 2px; }
+#hud #hud-lod li i { display: inline-block; width: 8px; height: 8px; margin-inline-end: 4px; border-radius: 2px; }
 figure.error-plot { margin: 6px 0 0; font-size: 11px; }
 figure.error-plot svg { display: block; width: 100%; height: auto; }
 figure.error-plot text { fill: currentColor; font-size: 9px; }
@@ -152,7 +159,7 @@ div.levels .hit { fill: transparent; }
 div.levels .branch { stroke: currentColor; fill: none; opacity: 0.7; }
 div.levels .join { cursor: pointer; }
 div.levels .join:focus-visible circle:not(.hit), div.levels .cursor:focus-visible rect:not(.hit) { stroke: var(--accent); stroke-width: 2; }
-div.levels ol.critical-levels { margin: 4px 0 0; padding-left: 18px; font-size: 11px; max-height: 8em; overflow: auto; }
+div.levels ol.critical-levels { margin: 4px 0 0; padding-inline-start: 18px; font-size: 11px; max-height: 8em; overflow: auto; }
 #hud #hud-field-warning { color: var(--warn); max-width: 28em; white-space: normal; overflow: visible; text-overflow: clip; }
 #critical-marks { position: absolute; inset: 0; pointer-events: none; overflow: hidden; }
 /* Each mark on a dark chip, so that it reads over any part of the picture. */
@@ -160,14 +167,14 @@ div.levels ol.critical-levels { margin: 4px 0 0; padding-left: 18px; font-size: 
   padding: 1px 3px; border-radius: 3px; background: rgba(11, 13, 18, 0.85); font: 11px/1 system-ui, sans-serif; white-space: nowrap; }
 #hud #hud-quality-bars { display: inline-flex; align-items: flex-end; gap: 1px; height: 14px; vertical-align: middle; }
 #hud #hud-quality-bars i { display: inline-block; width: 6px; background: currentColor; opacity: 0.8; }
-#hud .key { display: inline-block; width: 56px; color: var(--muted); }
+#hud .key { display: inline-block; min-width: 56px; color: var(--muted); }
 #overflow { color: var(--warn); white-space: normal !important; }
 /* Small figures keep the statistics to frames per second and triangles. */
 @container (max-width: 480px) { #hud .wide { display: none; } }
 
 #play {
   position: absolute;
-  right: 8px;
+  inset-inline-end: 8px;
   bottom: 8px;
   flex: none;
   padding: 6px 12px;
@@ -224,7 +231,7 @@ details.group > summary { padding: 5px 0; font-weight: 600; color: var(--text); 
 .legend .ramp { display: block; height: 8px; border-radius: 2px; }
 .legend .ends { display: flex; justify-content: space-between; }
 .legend.classes { display: flex; flex-wrap: wrap; gap: 2px 8px; }
-.legend.classes i { display: inline-block; width: 9px; height: 9px; margin-right: 3px; border-radius: 2px; }
+.legend.classes i { display: inline-block; width: 9px; height: 9px; margin-inline-end: 3px; border-radius: 2px; }
 .gallery { display: grid; grid-template-columns: repeat(auto-fill, minmax(76px, 1fr)); gap: 6px; }
 .gallery figure { margin: 0; padding: 3px; border: 1px solid transparent; border-radius: 6px; text-align: center; }
 .gallery figure.current { border-color: var(--accent); background: #2c2220; }
@@ -235,7 +242,7 @@ svg .inside { fill: #ff8c1a; stroke: #11141b; }
 svg .outside { fill: #11141b; stroke: #4d8dff; stroke-width: 1.2; }
 svg .corner-number { fill: var(--muted); font-size: 9px; }
 #inspector {
-  right: 8px;
+  inset-inline-end: 8px;
   bottom: 8px;
   width: min(330px, 45%);
   padding: 6px 10px 8px;
@@ -244,14 +251,14 @@ svg .corner-number { fill: var(--muted); font-size: 9px; }
   z-index: 1;
 }
 #inspector[hidden] { display: none; }
-/* The step-through of the march: the left column, over the panel. */
-#march { position: absolute; left: 8px; top: 8px; bottom: 8px; width: min(300px, 40%); z-index: 1; }
-/* Along the iso level: the left column, opaque over the panel (which is inert behind it). */
-#levels-box { position: absolute; left: 8px; top: 8px; bottom: 8px; width: min(300px, 45%); overflow-y: auto;
+/* The step-through of the march: the column at the start (the left, or the right in RTL), over the panel. */
+#march { position: absolute; inset-inline-start: 8px; top: 8px; bottom: 8px; width: min(300px, 40%); z-index: 1; }
+/* Along the iso level: the column at the start, opaque over the panel (which is inert behind it). */
+#levels-box { position: absolute; inset-inline-start: 8px; top: 8px; bottom: 8px; width: min(300px, 45%); overflow-y: auto;
   padding: 4px 10px 8px; background: var(--panel-solid); border-radius: 8px; font-size: 12px; z-index: 1; }
 #levels-box[hidden] { display: none; }
 #levels-box h3 { margin: 2px 0; font-size: 12px; font-weight: 600; }
-#levels-box button.close { float: right; }
+#levels-box button.close { float: inline-end; }
 #play:not([hidden]) ~ #levels-box { bottom: 48px; }
 #march[hidden] { display: none; }
 #play:not([hidden]) ~ #march { bottom: 48px; }
@@ -262,14 +269,14 @@ svg .corner-number { fill: var(--muted); font-size: 9px; }
 #inspector .close { flex: none; padding: 0 8px; }
 #inspector p { margin: 4px 0; }
 #inspector table { border-collapse: collapse; font-size: 11.5px; }
-#inspector td, #inspector th { padding: 0 6px 0 0; text-align: left; font-weight: normal; color: var(--text); }
+#inspector td, #inspector th { padding: 0; padding-inline-end: 6px; text-align: start; font-weight: normal; color: var(--text); }
 #inspector th { color: var(--muted); }
 #inspector .inspector-body { display: flex; gap: 8px; align-items: flex-start; }
 #inspector .drawing { display: flex; flex-wrap: wrap; gap: 4px; }
 #inspector canvas.interpolant { position: static; width: 96px; height: 96px; cursor: default; }
 #inspector .in { color: var(--in); }
 #inspector .out { color: var(--out); }
-#inspector .faces { margin: 2px 0; padding-left: 16px; }
+#inspector .faces { margin: 2px 0; padding-inline-start: 16px; }
 #inspector .faces .disagrees { color: var(--bad); }
 
 /* Edit mode: rings around the hovered and the selected sphere, and the selected sphere's box. */
@@ -281,7 +288,7 @@ canvas.editing { cursor: crosshair; }
 #selected-ring { stroke: var(--accent); }
 #sphere-box {
   position: absolute;
-  right: 8px;
+  inset-inline-end: 8px;
   bottom: 8px;
   width: min(280px, 45%);
   padding: 6px 10px 8px;
@@ -326,62 +333,76 @@ export function elementStyle() {
   return sheet;
 }
 
-/** The markup of every figure's shadow root. */
+/**
+ * The markup of every figure's shadow root. Its words are marked by key (`data-t`, `data-t-label`,
+ * `data-t-title`) and worded in the reader's language when the figure connects (core/context.js).
+ */
 export const TEMPLATE = `
   <img id="poster" part="poster" alt="" hidden>
   <img id="print-frame" alt="">
   <canvas id="view" tabindex="0" part="canvas" role="img" aria-describedby="how"></canvas>
-  <span id="how" class="visually-hidden">Drag to orbit, click then wheel to zoom; P pauses.</span>
+  <span id="how" class="visually-hidden" data-t="figure.how"></span>
   <div id="announce" class="visually-hidden" role="status" aria-live="polite"></div>
-  <div id="tabs" role="group" aria-label="The figure's panels" hidden></div>
-  <aside id="panel" part="panel" aria-label="Controls" hidden></aside>
-  <section id="hud" part="hud" aria-label="Statistics" aria-live="off" hidden>
-    <details open><summary>Statistics</summary>
-    <div><span class="key">FPS</span> <span id="fps">–</span></div>
-    <div class="wide"><span class="key">Frame</span> <span id="frame-time">–</span></div>
-    <div><span class="key">Triangles</span> <span id="triangles">–</span></div>
-    <div class="wide"><span class="key">Adapter</span> <span id="adapter">–</span></div>
-    <div class="wide" title="The fraction of the pixel ratio drawn: lower while frames are slow"><span class="key">Scale</span> <span id="hud-scale">–</span></div>
-    <div id="hud-error" hidden><span class="key">Error</span> <span id="hud-error-text"></span></div>
-    <div id="hud-topology" hidden><span class="key">Topology</span> <span id="hud-topology-text"></span></div>
-    <div id="hud-field" hidden title="The surface's shape from the field's critical points, exact at any resolution"><span class="key">Field</span> <span id="hud-field-text"></span></div>
+  <div id="tabs" role="group" data-t-label="sheet.tabs" hidden></div>
+  <aside id="panel" part="panel" data-t-label="panel.controls" hidden></aside>
+  <section id="hud" part="hud" data-t-label="hud.statistics" aria-live="off" hidden>
+    <details open><summary data-t="hud.statistics"></summary>
+    <div><span class="key" data-t="hud.fps"></span> <span id="fps">–</span></div>
+    <div class="wide"><span class="key" data-t="hud.frame"></span> <span id="frame-time">–</span></div>
+    <div><span class="key" data-t="hud.triangles"></span> <span id="triangles">–</span></div>
+    <div class="wide"><span class="key" data-t="hud.adapter"></span> <span id="adapter">–</span></div>
+    <div class="wide" data-t-title="hud.scale-title"><span class="key" data-t="hud.scale"></span> <span id="hud-scale">–</span></div>
+    <div id="hud-error" hidden><span class="key" data-t="hud.error"></span> <span id="hud-error-text"></span></div>
+    <div id="hud-topology" hidden><span class="key" data-t="hud.topology"></span> <span id="hud-topology-text"></span></div>
+    <div id="hud-field" hidden data-t-title="hud.field-title"><span class="key" data-t="hud.field"></span> <span id="hud-field-text"></span></div>
     <div id="hud-field-warning" class="warning" role="status" hidden></div>
-    <div id="hud-quality" hidden><span class="key">Quality</span> <span id="hud-quality-bars" role="img"></span></div>
-    <div id="hud-lod-cell" hidden title="The largest a cell looks on screen: larger while frames are slow, from lod-pixels up to max-lod-pixels"><span class="key">LOD cell</span> <span id="hud-lod-cell-text"></span></div>
-    <div id="hud-lod" hidden><span class="key">LOD</span> <span id="hud-lod-summary"></span><ol id="hud-lod-levels"></ol></div>
-    <div id="overflow" role="alert" hidden>Triangle budget full: part of the surface is not drawn. Lower the resolution or raise the iso level.</div>
+    <div id="hud-quality" hidden><span class="key" data-t="hud.quality"></span> <span id="hud-quality-bars" role="img"></span></div>
+    <div id="hud-lod-cell" hidden data-t-title="hud.lod-cell-title"><span class="key" data-t="hud.lod-cell"></span> <span id="hud-lod-cell-text"></span></div>
+    <div id="hud-lod" hidden><span class="key" data-t="hud.lod"></span> <span id="hud-lod-summary"></span><ol id="hud-lod-levels"></ol></div>
+    <div id="overflow" role="alert" hidden data-t="hud.overflow"></div>
     </details>
   </section>
-  <button id="play" type="button" hidden>▶ Play</button>
-  <section id="levels-box" aria-label="Along the iso level" hidden></section>
-  <section id="inspector" aria-label="Cell inspector" hidden></section>
-  <section id="march" aria-label="Step through the march" hidden></section>
+  <button id="play" type="button" hidden data-t="play.button"></button>
+  <section id="levels-box" data-t-label="setting.levels" hidden></section>
+  <section id="inspector" data-t-label="action.inspector" hidden></section>
+  <section id="march" data-t-label="action.step-through" hidden></section>
   <svg id="edit-overlay" aria-hidden="true"><circle id="hover-ring" hidden></circle><circle id="selected-ring" hidden></circle></svg>
-  <section id="sphere-box" aria-label="Selected sphere" hidden></section>
+  <section id="sphere-box" data-t-label="figure.sphere-box" hidden></section>
   <input type="file" id="scene-file" accept=".json,application/json" hidden>
   <div id="wheel-hint" hidden></div>
   <div id="notice" part="notice" role="status" hidden></div>
   <div id="confirm" role="alertdialog" aria-labelledby="confirm-text" hidden>
     <p id="confirm-text"></p>
-    <div class="buttons"><button type="button" id="confirm-apply">Apply anyway</button><button type="button" id="confirm-keep">Keep</button></div>
+    <div class="buttons"><button type="button" id="confirm-apply" data-t="guard.apply"></button><button type="button" id="confirm-keep"></button></div>
   </div>
   <div id="message" role="alert" hidden>
     <h2 id="message-title"></h2>
     <p id="message-text"></p>
-    <button id="retry" type="button" hidden>Try again</button>
+    <button id="retry" type="button" hidden data-t="figure.retry"></button>
   </div>`;
 
-/** The figure's message box (`#message` in `root`): a title, a text and perhaps "Try again". */
-export function messageBox(root) {
+/**
+ * The figure's message box (`#message` in `root`): a title, a text and perhaps "Try again". Each is a
+ * saying (engine/asset-errors.js) worded with `words()`, the figure's words now, and again on `reword`.
+ */
+export function messageBox(root, words) {
   const $ = (id) => root.getElementById(id);
+  let shown = { title: '', text: '' };
+  const write = (w) => {
+    $('message-title').textContent = say(w, shown.title);
+    $('message-text').textContent = say(w, shown.text);
+  };
   return {
     show(title, text, retry = false) {
-      $('message-title').textContent = title;
-      $('message-text').textContent = text;
+      shown = { title, text };
+      write(words());
       $('retry').hidden = !retry;
       $('message').hidden = false;
     },
     hide() { $('message').hidden = true; },
-    get text() { return $('message-text').textContent; },
+    /** Words the message again (the figure's language changed). */
+    reword(w) { write(w); },
+    /** The text shown, in English (what a promise the figure could not keep rejects with). */
+    get text() { return inEnglish(shown.text); },
   };
 }

@@ -11,6 +11,7 @@ import { wasmModule, within } from '../engine/wasm.js';
 import { releaseDelay } from '../engine/page-watch.js';
 import { applySetting } from './renderer-settings.js';
 import { ContextWatch } from './context-watch.js';
+import { inEnglish } from '../engine/asset-errors.js';
 import { messageBox } from './dom.js';
 import { MeshElsewhere } from './mesh-elsewhere.js';
 import { makeView } from './start.js';
@@ -59,13 +60,13 @@ export class FigureFrames {
     this.#ctx = ctx;
     this.#loaded = loaded;
     this.#size = size;
-    this.#message = messageBox(ctx.root);
+    this.#message = messageBox(ctx.root, () => ctx.words);
     this.#elsewhere = new MeshElsewhere(ctx.element, () => hub.requestFrame());
     this.#context = new ContextWatch(ctx.canvas, {
-      lost: (reason) => this.suspend(reason, 'The drawing context was lost; starting again…'),
+      lost: (reason) => this.suspend(reason, { key: 'figure.context-lost' }),
       restored: () => this.resume(),
-      stop: (count) => this.fail('The drawing context keeps failing',
-        `The WebGL2 context was lost ${count} times within a minute, so the figure stopped trying.`, { retry: true }),
+      stop: (count) => this.fail({ key: 'figure.context-failing' },
+        { key: 'figure.context-failing-text', fields: { count } }, { retry: true }),
     });
   }
 
@@ -172,12 +173,12 @@ export class FigureFrames {
       gpu = await hub.deviceFor(ctx.element, ctx.canvas);
       if (gpu) await hub.startTurn();
     } catch (error) {
-      this.fail(error.title, error.message, { retry: Boolean(hub.stopped) });
+      this.fail(error.said?.title ?? error.title, error.said?.text ?? error.message, { retry: Boolean(hub.stopped) });
       return false;
     }
     if (gpu === null) {
       this.#failed = true;
-      this.#message.show('Paused', WEBGL_WAIT);
+      this.#message.show({ key: 'figure.paused' }, WEBGL_WAIT);
       return false;
     }
     if (!ctx.element.isConnected || this.#view) {
@@ -189,7 +190,7 @@ export class FigureFrames {
     try {
       this.#view = makeView(ctx, gpu, this.#software);
     } catch (error) {
-      this.fail('The figure could not start', error.message);
+      this.fail({ key: 'figure.could-not-start' }, error.message);
       return false;
     }
     ctx.each('started', this.#view);
@@ -228,15 +229,15 @@ export class FigureFrames {
     this.#gpu = null;
   }
 
-  /** The device is lost: keep the scene on the CPU and let go of the GPU (`text`: what the figure says). */
-  suspend(reason, text = `The GPU was lost (${reason}); starting again…`) {
+  /** The device is lost: keep the scene on the CPU and let go of the GPU (`said`: what the figure says). */
+  suspend(reason, said = { key: 'figure.gpu-lost', fields: { reason } }) {
     if (this.#view) {
       try {
         this.#savedSpheres = this.#view.spheres();
       } catch { /* keep what was saved before */ }
     }
     this.release();
-    if (this.#near) this.#ctx.notice(text, 4000);
+    if (this.#near) this.#ctx.notice(this.#ctx.t(said.key, said.fields), 4000);
   }
 
   /** A new device is ready (or a retry was asked for): start again with the current state. */
@@ -249,13 +250,19 @@ export class FigureFrames {
     if (this.#onScreen) this.start();
   }
 
-  /** Shows a message in the figure's box and stops drawing it. */
+  /**
+   * Shows a message in the figure's box and stops drawing it: `title` and `text` are sayings
+   * (engine/asset-errors.js) or text as given. The page's code is told in English.
+   */
   fail(title, text, { retry = false } = {}) {
     this.#failed = true;
     this.release();
     this.#message.show(title, text, retry);
-    this.#ctx.emit('metaballs-error', { message: `${title}: ${text}` });
+    this.#ctx.emit('metaballs-error', { message: `${inEnglish(title)}: ${inEnglish(text)}` });
   }
+
+  /** Words the figure's message again, in `words` (its language changed). */
+  reword(words) { this.#message.reword(words); }
 
   // Pushes the changed values into the renderer. A value it refuses (a resolution beyond the device)
   // goes back to the last one that worked, with a notice.
@@ -276,7 +283,7 @@ export class FigureFrames {
         within(ctx.element, () => applySetting(view, name, s));
         settings.applied[name] = s[name];
       } catch (error) {
-        ctx.notice(`${name} ${s[name]}: ${error.message}`);
+        ctx.notice(ctx.t('notice.setting-refused', { name, value: String(s[name]), message: ctx.words.refusal(error) }));
         ctx.revert(name);
       }
     }
@@ -351,14 +358,14 @@ export class FigureFrames {
         ctx.each('idle', now, view);
       }
     } catch (error) {
-      this.fail('The renderer stopped', error?.message ?? String(error));
+      this.fail({ key: 'figure.renderer-stopped' }, error?.message ?? String(error));
       return false;
     }
     // Statistics, timings, the inspector and the editor's rings follow the frame.
     ctx.each('afterTick', now, view, { animating });
     const error = view.gpu_error();
     if (error) {
-      this.fail('The GPU reported an error', error);
+      this.fail({ key: 'figure.gpu-error' }, error);
       return false;
     }
     return true;
@@ -374,7 +381,7 @@ export class FigureFrames {
     try {
       this.#view.resize(...size);
     } catch (error) {
-      this.#ctx.notice(error.message);
+      this.#ctx.notice(this.#ctx.words.refusal(error));
     }
     this.redraw(PICTURE_FRAMES);
   }

@@ -78,8 +78,11 @@ export class FigureLook {
   #background = '|';
   #printable = null;
   #resolvePrintable = () => {};
+  #words;
 
-  constructor(element, root, canvas) {
+  /** `words()`: the figure's words now (i18n/words.js). */
+  constructor(element, root, canvas, words) {
+    this.#words = words;
     this.#element = element;
     this.#root = root;
     this.#canvas = canvas;
@@ -104,22 +107,36 @@ export class FigureLook {
 
   /** The accessible name: the author's `alt`, else what the figure shows. */
   name(state) {
-    const cells = `${state.resolution}³ cells`;
+    const words = this.#words();
     const spheres = state[SPHERE_LIST] ? state[SPHERE_LIST].split(';').length : state.spheres;
-    const derived = `${spheres} sphere${spheres === 1 ? '' : 's'}, iso ${Number(state.iso.toFixed(2))}, `
-      + `${cells}${state.display !== 'shaded' ? `, ${state.display}` : ''}`
-      + `${state.paused ? ', paused' : ''}`;
-    this.#canvas.setAttribute('aria-label', state.alt || `Merging spheres: ${derived}`);
+    const parts = [
+      words.t('figure.name-spheres', { count: spheres }),
+      words.t('figure.name-iso', { iso: words.number(state.iso, 2) }),
+      words.t('figure.name-cells', { resolution: state.resolution }),
+    ];
+    if (state.display !== 'shaded') parts.push(words.t(`word.display.${state.display}`));
+    if (state.paused) parts.push(words.t('figure.name-paused'));
+    this.#canvas.setAttribute('aria-label', state.alt || words.t('figure.name', { what: words.list(parts, 'unit') }));
   }
 
   /** Announces a change made from inside the figure: "iso level 0.8", "paused". */
   announceChange(name, value) {
+    const words = this.#words();
     if (name === 'paused') {
-      this.announce(value ? 'paused' : 'playing');
+      this.announce(words.t(value ? 'figure.announce-paused' : 'figure.announce-playing'));
       return;
     }
-    const label = (rowOf(name)?.label ?? name).toLowerCase();
-    this.announce(typeof value === 'boolean' ? `${label} ${value ? 'on' : 'off'}` : `${label} ${value}`);
+    // Spoken: the label, in English in lower case as in a sentence (other languages keep their own
+    // capitals: German nouns keep theirs).
+    const label = rowOf(name) ? words.t(`setting.${name}`) : name;
+    const setting = words.chain[0].startsWith('en') ? label.toLowerCase() : label;
+    if (typeof value === 'boolean') {
+      this.announce(words.t(value ? 'figure.announce-on' : 'figure.announce-off', { setting }));
+      return;
+    }
+    const word = `word.${name}.${value}`;
+    const shown = typeof value === 'number' ? value : words.has(word) ? words.t(word) : String(value);
+    this.announce(words.t('figure.announce-value', { setting, value: shown }));
   }
 
   /** Says `text` to screen readers, politely (what a control just did). */
@@ -229,7 +246,7 @@ export class Look extends FigureLook {
   #ctx;
 
   constructor(ctx) {
-    super(ctx.element, ctx.root, ctx.canvas);
+    super(ctx.element, ctx.root, ctx.canvas, () => ctx.words);
     this.#ctx = ctx;
     this.name(ctx.state);
   }
@@ -239,6 +256,8 @@ export class Look extends FigureLook {
   }
 
   refresh(state) { this.name(state); }
+
+  language() { this.name(this.#ctx.state); }
 
   madeInside(name, value) { this.announceChange(name, value); }
 

@@ -92,7 +92,7 @@ export class FigureSize {
   #exactChanged() {
     if (drawsExact(this.#ctx.state) && this.software && !this.#exactNoticed) {
       this.#exactNoticed = true;
-      this.#ctx.notice(`The exact surface is drawn at ${SOFTWARE_EXACT_RATIO}× pixel ratio on this software renderer.`, 4000);
+      this.#ctx.notice(this.#ctx.t('notice.exact-software', { ratio: SOFTWARE_EXACT_RATIO }), 4000);
     }
   }
 }

@@ -31,7 +31,7 @@ export function makeView(ctx, gpu, software) {
   } catch (error) {
     // Most likely a resolution beyond this device: start at the default and say why.
     const fallback = defaultOf('resolution');
-    ctx.notice(`resolution ${s.resolution}: ${error.message}`);
+    ctx.notice(ctx.t('notice.resolution-refused', { resolution: String(s.resolution), message: ctx.words.refusal(error) }));
     s.resolution = fallback;
     view = create(fallback);
   }

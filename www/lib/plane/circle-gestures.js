@@ -12,7 +12,7 @@ export class CircleGestures {
 
   /**
    * `figure`: `{ circles(), size() (the picture's side in pixels), locked() (no edits: a followed
-   * slice), moved(), edited(), refused(text) }`.
+   * slice), moved(), edited(), refused() (the last circle stays) }`.
    */
   constructor(canvas, figure) {
     this.#canvas = canvas;
@@ -58,6 +58,6 @@ export class CircleGestures {
     if (this.#figure.locked()) return;
     const [x, y] = this.#toBox(event);
     if (addOrRemove(this.#figure.circles(), x, y, this.#near())) this.#figure.edited();
-    else this.#figure.refused('circles: the last circle stays (the figure needs one)');
+    else this.#figure.refused();
   }
 }

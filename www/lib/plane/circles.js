@@ -1,6 +1,8 @@
 // The 2D figure's circles: the ones a seed gives, read from and written as text (`x,y,r;…`), moved by
 // one Euler step between elastic walls, and found under a point.
 
+import { refusal } from '../i18n/words.js';
+
 // A small seeded generator (xorshift), so a seed gives the same circles.
 function random(seed) {
   let s = (seed >>> 0) || 1;
@@ -24,18 +26,23 @@ export function seededCircles(seed, count) {
   });
 }
 
-/** Circles from text `x,y,r;…` (a negative r subtracts); throws an Error saying what is accepted. */
+/**
+ * Circles from text `x,y,r;…` (a negative r subtracts); throws an Error saying what is accepted (a
+ * refusal, i18n/words.js, that a figure words in its reader's language).
+ */
 export function parseCircles(text) {
   const circles = String(text).split(';').map((s) => s.trim()).filter(Boolean).map((part) => {
     const numbers = part.split(',').map((s) => Number(s.trim()));
     if (numbers.length !== 3 || numbers.some((v) => !Number.isFinite(v)) || numbers[2] === 0) {
-      throw new Error(`circles: "${part}" is not x,y,r (three numbers, r not 0)`);
+      throw refusal(`circles: "${part}" is not x,y,r (three numbers, r not 0)`, 'plane-circle', { part });
     }
     const [x, y, r] = numbers;
-    if (Math.abs(x) > 1 || Math.abs(y) > 1) throw new Error(`circles: (${x}, ${y}) is outside the box [-1, 1]²`);
+    if (Math.abs(x) > 1 || Math.abs(y) > 1) {
+      throw refusal(`circles: (${x}, ${y}) is outside the box [-1, 1]²`, 'plane-circle-outside', { x: String(x), y: String(y) });
+    }
     return { x, y, r: Math.abs(r), charge: Math.sign(r), vx: 0, vy: 0 };
   });
-  if (circles.length === 0) throw new Error('circles: give at least one circle as x,y,r');
+  if (circles.length === 0) throw refusal('circles: give at least one circle as x,y,r', 'plane-no-circles', {});
   return circles;
 }
 

@@ -61,13 +61,13 @@ export class PlaneFrames {
     };
   }
 
-  /** The picture at `size` CSS pixels: `{ shapes, result }`. */
+  /** The picture at `size` CSS pixels, its labels in the figure's language: `{ shapes, result }`. */
   picture(size) {
     const s = this.#ctx.state;
     const { values, cells, iso, options, circles } = this.source();
     return picture({
       values, cells, iso, levels: levelList(s['iso-levels']), circles, shown: shownList(s.show), options, size,
-      theme: s.theme, step: this.parts.stepper.step,
+      theme: s.theme, step: this.parts.stepper.step, words: this.#ctx.words,
     });
   }
 

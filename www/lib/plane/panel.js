@@ -2,10 +2,12 @@
 // figure's corner with a control per setting, each built from the setting's row of the 2D figure's
 // table (slider, words, flag): the shared settings, further levels, what to show, the step-through,
 // and a hint on adding or removing circles. Each control sets the figure's attribute, so its checks,
-// notice and link apply as to a value given in the page.
+// notice and link apply as to a value given in the page. Its words are the reader's language (the
+// table's labels and words by their keys); the values it sets are the table's words, in any.
 
 import { PLANE_TABLE } from '../attributes.js';
-import { SHOWN } from './picture.js';
+import { EN, relabel } from '../i18n/words.js';
+import { numeral, SHOWN } from './picture.js';
 import { shownList } from './frames.js';
 import { PlaneInside } from './plane-circles.js';
 import { PlaneScene } from './scene-file.js';
@@ -14,7 +16,7 @@ import { PlaneScene } from './scene-file.js';
 export const PANEL_CONTROLS = PLANE_TABLE.find((row) => row.name === 'controls').words;
 
 const STYLE = `
-.panel { position: absolute; top: 8px; left: 8px; max-width: min(260px, calc(100% - 16px));
+.panel { position: absolute; top: 8px; inset-inline-start: 8px; max-width: min(260px, calc(100% - 16px));
   max-height: calc(100% - 16px); overflow: auto; z-index: 1; border-radius: 6px;
   font: 12.5px/1.4 system-ui, sans-serif; color: var(--metaballs-text, #d7dbe4);
   background: var(--metaballs-panel-background, rgba(20, 23, 31, 0.92)); }
@@ -27,14 +29,18 @@ const STYLE = `
 .panel .checks { grid-column: 2 / 4; display: flex; flex-wrap: wrap; gap: 0 8px; }
 .panel .wide { grid-column: 2 / 4; }
 .panel button, .panel select, .panel input { font: inherit; }
-.panel output { font-variant-numeric: tabular-nums; min-width: 3em; text-align: right; }`;
+.panel output { font-variant-numeric: tabular-nums; min-width: 3em; text-align: end; }`;
 
-const html = (text) => String(text).replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/"/g, '&quot;');
+// A setting's label, and a word of its row, by key: the 2D figure's own where its row says otherwise
+// than the 3D figure's (i18n/words.js, `tableMessages`).
+const labelKey = (name) => (EN[`plane.setting.${name}`] === undefined ? `setting.${name}` : `plane.setting.${name}`);
+const wordKey = (name, word) => (EN[`plane.word.${name}.${word}`] === undefined ? `word.${name}.${word}` : `plane.word.${name}.${word}`);
 
 /**
  * Builds the panel into `host` with the controls named in `names`; `rowOf(name)` gives a setting's
  * row of the 2D figure's table; `figure` is `{ get(name) (the value in effect, as text), set(name, text),
- * action(name) }`. Returns `update()`, which shows the values in effect.
+ * action(name), words() (the figure's words, i18n/words.js) }`. Returns `update()`, which shows the
+ * values in effect in the figure's language (its marked words are `relabel`'s).
  */
 export function planePanel(host, names, rowOf, figure, controlId = (name) => name) {
   const rows = names.map((name) => {
@@ -42,36 +48,38 @@ export function planePanel(host, names, rowOf, figure, controlId = (name) => nam
     const id = `control-${controlId(name)}`;
     const row = rowOf(name);
     if (name === 'show') {
-      return `<span class="label">Show</span><span class="checks" role="group" aria-label="Show">${SHOWN.map((w) => `<label><input type="checkbox" data-show="${w}"> ${w}</label>`).join('')}</span>`;
+      return `<span class="label" data-t="${labelKey(name)}"></span><span class="checks" role="group" data-t-label="${labelKey(name)}">${SHOWN.map((w) => `<label><input type="checkbox" data-show="${w}"> <span data-t="${wordKey(name, w)}"></span></label>`).join('')}</span>`;
     }
-    if (row?.kind === 'levels') {
-      return `<label for="${id}">${html(row.label)}</label><input id="${id}" class="wide" data-name="${name}" placeholder="e.g. 0.6,1.6">`;
-    }
-    if (name === 'step-through') return '<span></span><button type="button" class="wide" data-action="step-through">Step through the march</button>';
-    if (name === 'circles') return '<span></span><span class="wide">Double-click to add a circle or remove one; drag to move it.</span>';
-    if (name === 'share') return '<span></span><button type="button" class="wide" data-action="share">Share…</button>';
+    const label = `<label for="${id}" data-t="${labelKey(name)}"></label>`;
+    if (row?.kind === 'levels') return `${label}<input id="${id}" class="wide" data-name="${name}" data-example>`;
+    if (name === 'step-through') return '<span></span><button type="button" class="wide" data-action="step-through" data-t="action.step-through"></button>';
+    if (name === 'circles') return '<span></span><span class="wide" data-t="plane.circles-hint"></span>';
+    if (name === 'share') return '<span></span><button type="button" class="wide" data-action="share" data-t="share.button"></button>';
     if (name === 'scene') {
-      return '<span class="label">Scene</span><span class="checks"><button type="button" data-action="save-scene">Save scene</button>'
-        + '<button type="button" data-action="load-scene">Load scene…</button><input type="file" accept=".json,application/json" hidden></span>';
+      return '<span class="label" data-t="plane.scene"></span><span class="checks"><button type="button" data-action="save-scene" data-t="scene.save"></button>'
+        + '<button type="button" data-action="load-scene" data-t="scene.load"></button><input type="file" accept=".json,application/json" hidden></span>';
     }
-    if (row.kind === 'boolean') return `<label for="${id}">${html(row.label)}</label><input type="checkbox" id="${id}" data-name="${name}"><span></span>`;
+    if (row.kind === 'boolean') return `${label}<input type="checkbox" id="${id}" data-name="${name}"><span></span>`;
     if (row.kind === 'choice') {
-      return `<label for="${id}">${html(row.label)}</label><select id="${id}" data-name="${name}" class="wide">${row.words.map((w) => `<option>${w}</option>`).join('')}</select>`;
+      return `${label}<select id="${id}" data-name="${name}" class="wide">${row.words.map((w) => `<option value="${w}" data-t="${wordKey(name, w)}"></option>`).join('')}</select>`;
     }
     // A number without a slider's range (the seed) is typed in.
     if (row.sliderMax <= row.sliderMin) {
-      return `<label for="${id}">${html(row.label)}</label><input type="number" id="${id}" class="wide" data-name="${name}" min="${row.min}" max="${row.max}" step="1">`;
+      return `${label}<input type="number" id="${id}" class="wide" data-name="${name}" min="${row.min}" max="${row.max}" step="1">`;
     }
-    return `<label for="${id}">${html(row.label)}</label><input type="range" id="${id}" data-name="${name}" min="${row.sliderMin}" max="${row.sliderMax}" step="${row.step || 1}"><output for="${id}"></output>`;
+    return `${label}<input type="range" id="${id}" data-name="${name}" min="${row.sliderMin}" max="${row.sliderMax}" step="${row.step || 1}"><output for="${id}"></output>`;
   });
-  host.innerHTML = `<style>${STYLE}</style><details class="panel" part="panel"><summary>Controls</summary><div class="rows">${rows.join('')}</div></details>`;
+  host.innerHTML = `<style>${STYLE}</style><details class="panel" part="panel"><summary data-t="setting.controls"></summary><div class="rows">${rows.join('')}</div></details>`;
+  relabel(host, figure.words());
   const panel = host.querySelector('.panel');
   const inputs = [...panel.querySelectorAll('[data-name]')];
   const shows = [...panel.querySelectorAll('[data-show]')];
   // On the panel itself, made anew with each `controls`, so a rebuilt panel hears each event once.
+  // A slider's value as the language writes numbers.
+  const show = (output, text) => { output.textContent = numeral(figure.words(), text); };
   panel.addEventListener('input', (e) => {
     const input = e.target;
-    if (input.type === 'range') input.nextElementSibling.textContent = input.value;
+    if (input.type === 'range') show(input.nextElementSibling, input.value);
   });
   panel.addEventListener('change', (e) => {
     const input = e.target;
@@ -86,12 +94,14 @@ export function planePanel(host, names, rowOf, figure, controlId = (name) => nam
     if (action) figure.action(action);
   });
   return () => {
+    // An example of levels, written as the setting reads them.
+    for (const input of panel.querySelectorAll('[data-example]')) input.placeholder = figure.words().t('plane.levels-example');
     for (const input of inputs) {
       if (input === host.getRootNode().activeElement) continue;
       const value = figure.get(input.dataset.name);
       if (input.type === 'checkbox') input.checked = value === 'true';
       else input.value = value;
-      if (input.type === 'range') input.nextElementSibling.textContent = value;
+      if (input.type === 'range') show(input.nextElementSibling, value);
     }
     const shown = shownList(figure.get('show'));
     for (const s of shows) s.checked = shown.includes(s.dataset.show);
@@ -121,6 +131,7 @@ export class PlanePanel {
       get: (name) => String(ctx.state[name]),
       set: (name, value) => ctx.get(PlaneInside).setText(name, value),
       action: (name) => (name === 'load-scene' ? host.querySelector('input[type=file]').click() : ctx.actions[name]()),
+      words: () => ctx.words,
     }, (name) => ctx.settings.rows.controlId(name));
     const file = host.querySelector('input[type=file]');
     file?.addEventListener('change', () => ctx.get(PlaneScene).loadFile(file));
@@ -128,4 +139,7 @@ export class PlanePanel {
   }
 
   refresh() { this.#update?.(); }
+
+  // Its marked words are worded by ctx.speak; the values shown, here.
+  language() { this.#update?.(); }
 }

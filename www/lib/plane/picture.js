@@ -1,9 +1,11 @@
 // The 2D figure's picture as a list of shapes — filled bands, the grid, the contour, each square's case,
 // the samples' values and signs, the crossings, the saddle squares with the value that decided them —
 // painted on a canvas or written as SVG from the same list, so the vector export is the picture.
-// No DOM: a canvas context is handed in.
+// No DOM: a canvas context is handed in. Its numbers and words are the reader's language; the picture
+// itself runs left to right in any.
 
 import { PLANE_TABLE } from '../attributes.js';
+import { Words } from '../i18n/words.js';
 import { bands, march } from './squares.js';
 import { segmentsBefore, squareAt } from './stepper.js';
 
@@ -34,16 +36,46 @@ export const THEMES = {
 
 const format = (v) => (Math.abs(v) >= 100 ? v.toFixed(0) : Math.abs(v) >= 10 ? v.toFixed(1) : v.toFixed(2));
 
+/** English words, for what is drawn or written without a figure's (tests, tools). */
+export const ENGLISH = new Words('en', 'ltr');
+
+// The glyphs a language writes numbers with (decimal sign, minus, digits), by language tag.
+const GLYPHS = new Map();
+
+function glyphsOf(lang) {
+  if (!GLYPHS.has(lang)) {
+    const decimal = new Intl.NumberFormat(lang, { useGrouping: false, minimumFractionDigits: 1 }).formatToParts(-1.5);
+    const part = (type, english) => decimal.find((p) => p.type === type)?.value ?? english;
+    const digit = new Intl.NumberFormat(lang, { useGrouping: false });
+    const glyphs = { '.': part('decimal', '.'), '-': part('minusSign', '-') };
+    for (let d = 0; d <= 9; d += 1) glyphs[d] = digit.format(d);
+    GLYPHS.set(lang, Object.entries(glyphs).every(([c, g]) => c === g) ? null : glyphs);
+  }
+  return GLYPHS.get(lang);
+}
+
+/**
+ * A number as JavaScript writes it (`toFixed`, `String`), in `words`' language: its digits, decimal
+ * sign and minus as the language writes them, rounded and as long as written (English as written).
+ */
+export function numeral(words, text) {
+  const glyphs = glyphsOf(words.chain[0]);
+  return glyphs ? String(text).replace(/[0-9.-]/g, (c) => glyphs[c]) : String(text);
+}
+
 /**
  * The shapes of one frame: `values` sampled on `cells` squares per axis, contoured at `iso` (and at
  * each of `levels`, as lines, and as filled bands between them where `bands` is shown), in a square
  * picture of `size` pixels. `options` are march's (`placement`, `saddle`). With `step` (a step of the
  * stepper, `stepper.js`), the contour is drawn only as far as the march has gone, and the square at
- * that step is lit with its segments and crossings. Returns `{ shapes, result }`, `result` being march's
- * at `iso`.
+ * that step is lit with its segments and crossings. Its labels are in `words`' language. Returns
+ * `{ shapes, result }`, `result` being march's at `iso`.
  */
-export function picture({ values, cells, iso, levels = [], circles = [], shown, options, size, theme = 'dark', step = null }) {
+export function picture({
+  values, cells, iso, levels = [], circles = [], shown, options, size, theme = 'dark', step = null, words = ENGLISH,
+}) {
   const colors = THEMES[theme] ?? THEMES.dark;
+  const written = (v) => numeral(words, format(v));
   const show = new Set(shown);
   // The box [-1, 1]² inside a margin, so the labels of its edge's samples show.
   const margin = Math.round(size * 0.03);
@@ -102,7 +134,8 @@ export function picture({ values, cells, iso, levels = [], circles = [], shown, 
       const [i, j] = s.square;
       const color = s.joined ? colors.joined : colors.apart;
       shapes.push({ kind: 'rect', x: gx(i) + 1.5, y: gy(j + 1) + 1.5, w: px - 3, h: px - 3, stroke: color, width: 1.5, role: 'saddle' });
-      const label = s.value === null ? (s.joined ? 'joined' : 'apart') : `${format(s.value)} ${s.joined ? '>' : '≤'} ${format(iso)}`;
+      const label = s.value === null ? words.t(s.joined ? 'plane.picture.joined' : 'plane.picture.apart')
+        : `${written(s.value)} ${s.joined ? '>' : '≤'} ${written(iso)}`;
       if (px >= MIN_PIXELS.values) {
         shapes.push({ kind: 'text', x: gx(i + 0.5), y: gy(j + 0.5) + Math.min(14, px / 3), text: label, fill: color, size: Math.min(12, px / 5), anchor: 'middle' });
       }
@@ -121,7 +154,7 @@ export function picture({ values, cells, iso, levels = [], circles = [], shown, 
     for (let j = 0; j <= cells; j += 1) {
       for (let i = 0; i <= cells; i += 1) {
         const v = at(i, j);
-        shapes.push({ kind: 'text', x: gx(i) + 4, y: gy(j) - 6, text: format(v), fill: v > iso ? colors.inside : colors.text, size: Math.min(12, px / 4.5), anchor: 'start' });
+        shapes.push({ kind: 'text', x: gx(i) + 4, y: gy(j) - 6, text: written(v), fill: v > iso ? colors.inside : colors.text, size: Math.min(12, px / 4.5), anchor: 'start' });
       }
     }
   }
@@ -143,6 +176,8 @@ export function picture({ values, cells, iso, levels = [], circles = [], shown, 
 export function paint(context, shapes, scale = 1) {
   context.save();
   context.scale(scale, scale);
+  // Numbers and the picture run left to right, whatever the page's direction.
+  context.direction = 'ltr';
   for (const s of shapes) {
     context.setLineDash(s.dash ? [4, 3] : []);
     if (s.kind === 'rect') {

@@ -1,8 +1,10 @@
 // The 2D figure's circles as a feature: the ones given (`circles`) or seeded (`spheres`, `seed`), kept
 // as they move, dragged, added and removed by hand (circle-gestures.js), and written back to `circles`
-// when an edit ends, so that links, scene files and notebooks carry them.
+// when an edit ends, so that links, scene files and notebooks carry them. Also the figure's accessible
+// name, in its reader's language.
 
 import { CircleGestures } from './circle-gestures.js';
+import { numeral } from './picture.js';
 import { circlesExactText, circlesText, parseCircles, seededCircles } from './circles.js';
 
 export class PlaneCircles {
@@ -21,7 +23,7 @@ export class PlaneCircles {
         ctx.emit('metaballs-2d-drag', { circles: this.list });
       },
       edited: () => ctx.get(PlaneInside).setText('circles', circlesText(this.list)),
-      refused: (text) => ctx.notice(text),
+      refused: () => ctx.notice(ctx.t('plane.last-circle')),
     });
   }
 
@@ -51,9 +53,9 @@ export class PlaneInside {
 
   setText(name, text) {
     const ctx = this.#ctx;
-    const { value, message } = ctx.settings.parse(name, text);
+    const { value, message, said } = ctx.settings.parse(name, text);
     if (message) {
-      ctx.notice(message);
+      ctx.notice(ctx.settings.constructor.refused(ctx.words, said));
       ctx.each('refresh', ctx.state);
       return false;
     }
@@ -69,8 +71,11 @@ export class PlaneLabel {
   constructor(ctx) { this.#ctx = ctx; }
 
   refresh(s) {
+    const { words } = this.#ctx;
     const count = this.#ctx.get(PlaneCircles).list.length;
     this.#ctx.canvas.setAttribute('aria-label', s.alt
-      || `Marching squares: ${count} circles on ${s.resolution} × ${s.resolution} squares, contour at iso ${s.iso}`);
+      || words.t('plane.label', { count, cells: s.resolution, iso: numeral(words, String(s.iso)) }));
   }
+
+  language() { this.refresh(this.#ctx.state); }
 }

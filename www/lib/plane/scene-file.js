@@ -5,7 +5,11 @@
 //   { "format": "metaballs-2d-scene", "version": 1,
 //     "circles": [ { "center": [0.3, 0.1], "radius": 0.35 } ],
 //     "settings": { "iso": 1.2, "resolution": 12, "saddle": "decider" } }
+//
+// What is wrong is said in English to the page's code (the Error's message), and in the reader's
+// language in the figure's notice (the Error is a refusal, i18n/words.js, with its code and fields).
 
+import { refusal } from '../i18n/words.js';
 import { PlaneCircles, PlaneInside } from './plane-circles.js';
 
 export const FORMAT = 'metaballs-2d-scene';
@@ -25,37 +29,63 @@ export function writeScene(circles, settings) {
 }
 
 /**
+ * What refusal `error` says in `words`' language: a refusal given as a field (what a setting's reader
+ * said of its value) is worded in turn; an Error that is no refusal says its message.
+ */
+export function refusalIn(words, error) {
+  if (!error?.code) return error?.message ?? String(error);
+  const fields = {};
+  for (const [name, value] of Object.entries(error.fields ?? {})) fields[name] = value instanceof Error ? refusalIn(words, value) : value;
+  return words.refusal({ code: error.code, fields });
+}
+
+/**
  * Reads a document: `{ circles: 'x,y,r;…' text, settings: [[name, text]] }`, each setting (by any of
  * its spellings: `canonical(spelling)` gives its name) checked by `check(name, text)` (which throws with
  * what is accepted) among the names `names` a scene holds. Throws an Error saying what is wrong.
  */
 export function readScene(text, names, check, canonical = (name) => name) {
-  if (String(text).length > MAX_CHARACTERS) throw new Error('the file is too long for a scene document');
+  if (String(text).length > MAX_CHARACTERS) throw refusal('the file is too long for a scene document', 'plane-scene-long', {});
   let doc;
   try {
     doc = JSON.parse(text);
   } catch (error) {
-    throw new Error(`the file is not JSON (${error.message})`);
+    throw refusal(`the file is not JSON (${error.message})`, 'plane-scene-json', { detail: error.message });
   }
-  if (doc?.format !== FORMAT) throw new Error(`format must be "${FORMAT}", got ${JSON.stringify(doc?.format ?? null)}`);
-  if (doc.version !== VERSION) throw new Error(`version ${JSON.stringify(doc.version)} is not one this figure reads (${VERSION})`);
-  if (!Array.isArray(doc.circles) || doc.circles.length === 0) throw new Error('circles must be a list of at least one circle');
+  if (doc?.format !== FORMAT) {
+    const got = JSON.stringify(doc?.format ?? null);
+    throw refusal(`format must be "${FORMAT}", got ${got}`, 'plane-scene-format', { format: FORMAT, got });
+  }
+  if (doc.version !== VERSION) {
+    const version = JSON.stringify(doc.version);
+    throw refusal(`version ${version} is not one this figure reads (${VERSION})`, 'plane-scene-version', { version, reads: String(VERSION) });
+  }
+  if (!Array.isArray(doc.circles) || doc.circles.length === 0) {
+    throw refusal('circles must be a list of at least one circle', 'plane-scene-circles', {});
+  }
   const circles = doc.circles.map((c, i) => {
     const field = `circles[${i}]`;
     const [x, y] = Array.isArray(c?.center) && c.center.length === 2 ? c.center : [NaN, NaN];
-    if (![x, y, c?.radius].every(Number.isFinite)) throw new Error(`${field} must have a center [x, y] and a radius, as numbers`);
-    if (Math.abs(x) > 1 || Math.abs(y) > 1) throw new Error(`${field}.center (${x}, ${y}) is outside the box [-1, 1]²`);
-    if (!(c.radius > 0)) throw new Error(`${field}.radius must be above 0, got ${c.radius}`);
+    if (![x, y, c?.radius].every(Number.isFinite)) {
+      throw refusal(`${field} must have a center [x, y] and a radius, as numbers`, 'plane-scene-circle', { field });
+    }
+    if (Math.abs(x) > 1 || Math.abs(y) > 1) {
+      throw refusal(`${field}.center (${x}, ${y}) is outside the box [-1, 1]²`, 'plane-scene-outside', { field, x: String(x), y: String(y) });
+    }
+    if (!(c.radius > 0)) throw refusal(`${field}.radius must be above 0, got ${c.radius}`, 'plane-scene-radius', { field, radius: String(c.radius) });
     return `${x},${y},${c.charge === -1 ? -c.radius : c.radius}`;
   }).join(';');
   const settings = Object.entries(doc.settings ?? {}).map(([spelling, value]) => {
     const name = canonical(spelling);
-    if (!names.includes(name)) throw new Error(`settings.${spelling}: not a setting a scene holds (${names.join(', ')})`);
+    if (!names.includes(name)) {
+      throw refusal(`settings.${spelling}: not a setting a scene holds (${names.join(', ')})`, 'plane-scene-setting',
+        { spelling, names: names.join(', ') });
+    }
     const written = Array.isArray(value) ? value.join(',') : String(value);
     try {
       check(name, written);
     } catch (error) {
-      throw new Error(`settings.${error.message}`);
+      throw refusal(`settings.${error.message}`, 'plane-scene-settings', { reason: error });
     }
     return [name, written];
   });
@@ -104,7 +134,7 @@ export class PlaneScene {
       try {
         settings.read(name, written);
       } catch (error) {
-        throw new Error(`${name}: ${error.message}`);
+        throw refusal(`${name}: ${error.message}`, 'plane-scene-value', { name, reason: error });
       }
     };
     const read = readScene(text, this.names, check, (spelling) => settings.rows.canonical(spelling));
@@ -119,7 +149,7 @@ export class PlaneScene {
     try {
       if (file) this.load(await file.text());
     } catch (error) {
-      this.#ctx.notice(`${file.name}: ${error.message}; the scene is unchanged`);
+      this.#ctx.notice(this.#ctx.t('plane.scene-refused', { name: file.name, reason: refusalIn(this.#ctx.words, error) }));
     }
   }
 }

@@ -1,8 +1,9 @@
 // The 2D figure's step-through of the march: the step shown, its play, and its panel beside the figure
 // (stepper-panel.js). The figure hands in how many squares per axis it draws, its last march, how to
-// draw again, and where the step goes (its `march` attribute, so that links and widgets carry it).
+// draw again, and where the step goes (its `march` attribute, so that links and widgets carry it). The
+// panel speaks the figure's language.
 
-import { SQUARE_TABLE, squareAccount, stepperPanel } from './stepper-panel.js';
+import { squareAccount, squareTable, stepperPanel } from './stepper-panel.js';
 import { nextCrossed, Playhead, readStep } from './stepper.js';
 
 export class SquareStepper {
@@ -13,7 +14,10 @@ export class SquareStepper {
   #host;
   #figure;
 
-  /** `host`: the element beside the figure; `figure`: `{ cells(), result(), redraw(), moved(k) }`. */
+  /**
+   * `host`: the element beside the figure; `figure`: `{ cells(), result(), redraw(), moved(k), words() }`
+   * (`words()`: the figure's words, i18n/words.js).
+   */
   constructor(host, figure) {
     this.#host = host;
     this.#figure = figure;
@@ -31,8 +35,14 @@ export class SquareStepper {
       next: () => { this.play.playing = false; this.nextCrossed(); },
       play: () => { this.play.toggle(); this.#figure.redraw(); },
       speed: (perSecond) => { this.play.speed = perSecond; },
-    }, SQUARE_TABLE);
+    }, squareTable, this.#figure.words());
     this.#figure.redraw();
+  }
+
+  /** Words the open panel in `words`' language (its account follows on the next drawing). */
+  language(words) {
+    this.#update?.language(words);
+    if (this.#update) this.#figure.redraw();
   }
 
   // A step the person asked for: taken, and told to the figure.
@@ -68,7 +78,8 @@ export class SquareStepper {
     const cells = this.#figure.cells();
     const k = this.step;
     const square = k < cells * cells ? result.square(k % cells, Math.floor(k / cells)) : null;
-    this.#update({ playing: this.playing, lit: square?.case ?? null, account: squareAccount(k, cells * cells, square, iso) });
+    const account = squareAccount(k, cells * cells, square, iso, this.#figure.words());
+    this.#update({ playing: this.playing, lit: square?.case ?? null, account });
   }
 }
 
@@ -89,6 +100,7 @@ export class PlaneStepper {
       result: () => frames().result ?? frames().draw(),
       redraw: () => frames().redraw(),
       moved: (k) => this.reflect(k),
+      words: () => ctx.words,
     });
     ctx.actions['step-through'] = () => this.toggle();
   }
@@ -102,10 +114,12 @@ export class PlaneStepper {
       if (!text) this.stepper.close();
       else this.stepper.to(readStep(text, ctx.frames.cells));
     } catch (error) {
-      ctx.notice(error.message);
+      ctx.notice(ctx.words.refusal(error));
       ctx.emit('metaballs-error', { message: error.message, attribute: 'march' });
     }
   }
+
+  language(words) { this.stepper.language(words); }
 
   /** Opens it at step `k` (clamped to the march), or moves it there, and writes the step to `march`. */
   to(k) {

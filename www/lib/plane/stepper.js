@@ -2,6 +2,8 @@
 // left), the square at each step with how its case is built bit by bit, and the segments drawn so far.
 // No DOM: the 2D figure draws from it.
 
+import { refusal } from '../i18n/words.js';
+
 /** Square k of `cells` per axis, in the march's order. */
 export const squareAt = (k, cells) => [k % cells, Math.floor(k / cells)];
 
@@ -35,14 +37,16 @@ export function segmentsBefore(result, cells, k) {
 
 /**
  * The step `march` names on a grid of `cells` per axis: a square `i,j`, a step number, or the first
- * square for empty text. Throws an Error saying what is accepted.
+ * square for empty text. Throws an Error saying what is accepted (a refusal, i18n/words.js: its `code`
+ * and `fields` word it in a figure's language).
  */
 export function readStep(text, cells) {
   const parts = text.split(',').map((t) => t.trim()).filter(Boolean).map(Number);
   const k = parts.length === 0 ? 0 : parts.length === 1 ? parts[0] : parts[1] * cells + parts[0];
   const inGrid = parts.length < 2 || parts.every((v) => v >= 0 && v < cells);
   if (!parts.every(Number.isInteger) || parts.length > 2 || !inGrid || k < 0 || k > cells * cells) {
-    throw new Error(`march: "${text}" is not a square i,j of the ${cells} × ${cells} grid, nor a step from 0 to ${cells * cells}`);
+    throw refusal(`march: "${text}" is not a square i,j of the ${cells} × ${cells} grid, nor a step from 0 to ${cells * cells}`,
+      'plane-march-square', { text, cells, steps: cells * cells });
   }
   return k;
 }
