@@ -11,7 +11,7 @@ import subprocess
 import pytest
 import traitlets
 
-from metaballs_widget import Metaballs
+from metaballs_widget import Metaballs, Metaballs2d
 from metaballs_widget._parameters import PLANE_TABLE, STATIC, TABLE, Refused, attribute_text, check, read, trait_name
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
@@ -74,6 +74,16 @@ def test_every_parameter_is_a_synced_trait_with_the_tables_default():
         assert getattr(widget, name) == row["value"], f"{name}: {getattr(widget, name)!r} is not the table's default"
         assert trait.help == row["description"]
     widget.close()
+
+
+def test_both_widgets_take_the_language_they_speak_which_is_no_setting():
+    for Widget in (Metaballs, Metaballs2d):
+        widget = Widget(lang="ja")
+        trait = widget.traits()["lang"]
+        assert trait.metadata.get("sync") and widget.lang == "ja"
+        assert Widget().lang == "", "without it the figure follows the notebook's page"
+        assert "lang" not in {row["name"] for row in TABLE + PLANE_TABLE}
+        widget.close()
 
 
 def test_good_values_are_taken_as_the_figure_takes_them():

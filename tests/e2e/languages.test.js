@@ -8,13 +8,15 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import path from 'node:path';
-import { openClosedAfterEach, openPanelGroups, root, screenshot, useServerAndBrowser, waitForTriangles } from './helpers.js';
+import { openClosedAfterEach, openPanelGroups, outputDir, root, useServerAndBrowser } from './helpers.js';
 import { EN, SHIPPED } from '../../www/lib/i18n/words.js';
 import { pseudoLanguages } from './pseudo.js';
 
 useServerAndBrowser();
 const open = openClosedAfterEach();
 const PAGE = 'tests/e2e/fixtures/languages.html';
+// The whole page as seen, both figures (tests/output/e2e-NAME.png).
+const screenshot = (page, name) => page.screenshot({ path: path.join(outputDir, `e2e-${name}.png`) });
 const catalogue = async (lang) => (lang === 'en' ? EN : { ...EN, ...(await SHIPPED[lang]()).default });
 
 // The text of the 3D figure's label for `name` and of the 2D figure's.
@@ -31,8 +33,9 @@ async function switchTo(page, lang, expected) {
     .some((l) => l.htmlFor.endsWith('iso') && l.textContent.trim() === expected), expected, { timeout: 10_000 });
 }
 
+// The 3D figure has drawn (its triangle count is written in the page's language, so it is not read).
 async function ready(page) {
-  await waitForTriangles(page);
+  await page.waitForFunction(() => document.getElementById('three')?.framesDrawn > 0, null, { timeout: 60_000 });
   await openPanelGroups(page, '#three');
 }
 

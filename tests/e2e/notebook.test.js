@@ -37,7 +37,7 @@ const CELLS = [
     "    print('REFUSED', error)",
   ].join('\n'),
   "gif = await w.record(seconds=0.5, fps=24, width=160, height=90, format='gif')\nprint('GIF', gif[:6] == b'GIF89a', len(gif))",
-  'w2 = Metaballs(spheres=3, resolution=24, paused=True)\nw2',
+  "w2 = Metaballs(spheres=3, resolution=24, paused=True, lang='ja', controls='iso')\nw2",
 ];
 
 let server;
@@ -202,6 +202,13 @@ test('in JupyterLab the widget draws, follows Python, reports back, exports, sha
     return { devices: View.devices, created: View.devicesCreated, renderers: View.liveRenderers };
   });
   assert.deepEqual(shared, { devices: 1, created: 1, renderers: 2 });
+  // Its `lang` trait makes it speak Japanese, while the first figure keeps the page's English.
+  const japanese = (await import('../../www/lib/i18n/ja.js')).default['setting.iso'];
+  await waitFor(page, 'the lang="ja" figure did not speak Japanese', (label) => {
+    const said = (figure) => [...figure.shadowRoot.querySelectorAll('label')].map((l) => l.textContent.trim());
+    const [one, two] = document.querySelectorAll('metaballs-view');
+    return two.lang === 'ja' && said(two).includes(label) && !said(one).includes(label);
+  }, japanese);
 
   // Running that cell again replaces its figure: the live renderers stay two.
   const first = await page.evaluateHandle(() => document.querySelectorAll('metaballs-view')[1]);

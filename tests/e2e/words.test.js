@@ -56,7 +56,8 @@ for (const [lang, load] of Object.entries(SHIPPED)) {
     for (const [term, own] of Object.entries(glossary)) {
       const said = new RegExp(term.replace(/ /g, '\\s+'), 'i');
       for (const [key, english] of Object.entries(EN)) {
-        if (!forms(english).some((form) => said.test(form))) continue;
+        // Placeholders are not words (`{saddle}` is a field, said by its value).
+        if (!forms(english).some((form) => said.test(form.replace(/\{[^}]*\}/g, '')))) continue;
         for (const form of forms(catalogue[key] ?? '')) {
           if (!form.toLowerCase().includes(own.toLowerCase())) unlike.push(`${key}: "${own}" (${term}) not in "${form}"`);
         }

@@ -23,7 +23,9 @@ const STYLE = `
 .panel summary { padding: 4px 8px; cursor: pointer; }
 .panel .rows { display: grid; grid-template-columns: auto minmax(0, 1fr) auto; gap: 4px 6px; align-items: center;
   padding: 2px 8px 8px; }
-.panel label, .panel .label { white-space: nowrap; }
+/* Labels wrap only where a language's words run long: the controls keep their room. */
+.panel label, .panel .label { max-width: 9em; overflow-wrap: anywhere; }
+.panel button { overflow-wrap: anywhere; }
 .panel input[type=range] { width: 100%; }
 .panel input[type=checkbox] { justify-self: start; }
 .panel .checks { grid-column: 2 / 4; display: flex; flex-wrap: wrap; gap: 0 8px; }
