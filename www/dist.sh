@@ -23,12 +23,12 @@ need_clip_codecs
 rm -rf dist
 mkdir -p dist/www dist/pkg dist/pkg-webgl dist/pkg-levels
 cp index.html embed.html embed-2d.html squares.html dist/
-"$esbuild" www/metaballs-view.js www/page.js www/lib/engine/mesh-worker.js www/lib/engine/levels-worker.js --bundle --splitting --format=esm --minify --sourcemap \
+"$esbuild" www/metaballs-view.js www/page.js www/lib/engine/mesh-worker.js www/lib/engine/levels-worker.js --bundle --splitting --format=esm --minify --charset=utf8 --sourcemap \
     --target=es2022 --outbase=www --outdir=dist/www --chunk-names='lib/engine/[name]-[hash]' \
     --external:'../../../pkg/*' --external:'../../../pkg-webgl/*' --external:'../../../pkg-levels/*' --log-level=warning
 # The 2D figure is bundled on its own (it loads no wasm), so that a page of 3D figures fetches no chunk
 # it shares with it; the clip encoders stay a chunk of their own, fetched only when a clip is made.
-"$esbuild" www/metaballs-2d.js www/plane-page.js --bundle --splitting --format=esm --minify --sourcemap --target=es2022 \
+"$esbuild" www/metaballs-2d.js www/plane-page.js --bundle --splitting --format=esm --minify --charset=utf8 --sourcemap --target=es2022 \
     --outdir=dist/www --chunk-names='lib/plane/[name]-[hash]' --log-level=warning
 if grep -l 'mediabunny' dist/www/metaballs-2d.js dist/www/metaballs-view.js; then
     echo "dist.sh: the clip encoders were bundled into an element's module: they are to load only when a clip is made" >&2

@@ -39,6 +39,8 @@ const STYLE = `
 canvas { display: block; width: 100%; height: 100%; touch-action: none; cursor: crosshair; border-radius: 6px; }
 /* A language written right to left: the panel, the step-through and the notice run its way (and the
    step-through goes to the picture's left); the picture and its print do not mirror. */
+/* The figure runs its own language's way, whatever way the page around it runs. */
+:host { direction: ltr; }
 :host(:state(rtl)) { direction: rtl; }
 canvas, .print { direction: ltr; }
 #notice { position: absolute; left: 8px; right: 8px; bottom: 8px; padding: 6px 8px; border-radius: 6px;

@@ -22,7 +22,7 @@ pub enum ParamError {
 
 /// In English, except in the browser's build: there a refusal is written as its code and fields
 /// ([`ParamError::coded`]), which the page words in its reader's language and in English for its
-/// console (www/lib/core/words.js), so that the WebAssembly holds no sentences of its own.
+/// console (www/lib/i18n/words.js), so that the WebAssembly holds no sentences of its own.
 impl fmt::Display for ParamError {
     #[cfg(target_arch = "wasm32")]
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
@@ -73,6 +73,8 @@ pub enum Expected {
     Spheres(String),
     /// A multiple of the LOD block's cells (its cells a side).
     LodMultiple(u32),
+    /// At most `max` cells a side for a uniform grid (`lod_max` with level of detail).
+    UniformAtMost { max: u32, lod_max: u32 },
     /// Anything else, said in English (the command line's and the library's own checks).
     Text(String),
 }
@@ -109,6 +111,9 @@ impl fmt::Display for Expected {
             }
             Self::Spheres(detail) => write!(f, "x,y,z,radius[,vx,vy,vz] per sphere joined by ; ({detail})"),
             Self::LodMultiple(block) => write!(f, "a multiple of {block} with lod=on"),
+            Self::UniformAtMost { max, lod_max } => {
+                write!(f, "at most {max} for a uniform grid (lod=on goes up to {lod_max})")
+            }
             Self::Text(text) => f.write_str(text),
         }
     }
@@ -128,7 +133,7 @@ impl From<&str> for Expected {
 
 impl ParamError {
     /// The refusal as a code and its fields joined by U+001F, for a page to word in its reader's
-    /// language (www/lib/core/words.js): `code, noun, value, a, b`, where an invalid text's `a` is what
+    /// language (www/lib/i18n/words.js): `code, noun, value, a, b`, where an invalid text's `a` is what
     /// was expected as a code and `b`, `c` its fields.
     pub fn coded(&self) -> String {
         let mut out = String::new();
@@ -163,6 +168,9 @@ impl ParamError {
                         put(&["spheres", &detail, ""])
                     }
                     Expected::LodMultiple(cells) => put(&["lod-multiple", &cells.to_string(), ""]),
+                    Expected::UniformAtMost { max, lod_max } => {
+                        put(&["uniform-at-most", &max.to_string(), &lod_max.to_string()])
+                    }
                     Expected::Text(text) => put(&["text", text, ""]),
                 };
             }

@@ -168,7 +168,7 @@ impl Settings {
             let field = p.field.ok_or_else(|| ParamError::Invalid {
                 name: "parameter name",
                 value: name.to_string(),
-                expected: String::from("a setting of the renderer").into(),
+                expected: "a setting of the renderer".into(),
             })?;
             field.set(&mut next, &value);
         }
@@ -224,10 +224,7 @@ pub fn check_resolution_for_lod(cells_per_axis: u32, lod: bool) -> Result<u32, P
         return Err(ParamError::Invalid {
             name: "resolution",
             value: cells_per_axis.to_string(),
-            expected: format!(
-                "at most {MAX_UNIFORM_RESOLUTION} for a uniform grid (lod=on goes up to {MAX_RESOLUTION})"
-            )
-            .into(),
+            expected: Expected::UniformAtMost { max: MAX_UNIFORM_RESOLUTION, lod_max: MAX_RESOLUTION },
         });
     }
     if lod && !cells_per_axis.is_multiple_of(block) {

@@ -9,6 +9,7 @@
 
 import { checkHook } from './hooks.js';
 import { relabel, Words } from '../i18n/words.js';
+import { languageOf } from './language.js';
 
 export class FigureContext {
   /** The renderer's frames (a FigureFrames), set by the element. */
@@ -17,8 +18,7 @@ export class FigureContext {
   actions = {};
   /** Shows a message in one of the shadow root's boxes for a while: flash(id, text, ms). */
   flash = () => {};
-  /** The words the figure shows, in its reader's language (a Words of i18n/words.js). */
-  words = new Words('en', 'ltr');
+  #words = null;
   #features = [];
 
   /** `settings`: the figure's FigureState; `states`: the element's custom states (core/element.js). */
@@ -68,6 +68,19 @@ export class FigureContext {
   /** Draws at least `frames` more frames, even while still. */
   redraw(frames) { this.frames?.redraw(frames); }
 
+  /**
+   * The words the figure shows, in its reader's language (a Words of i18n/words.js): until the page's
+   * watch gives them (on connect), those of the language the page gives it now (an attribute refused
+   * while the element upgrades is worded in it).
+   */
+  get words() {
+    if (!this.#words) {
+      const { lang, dir } = languageOf(this.element);
+      this.#words = new Words(lang, dir);
+    }
+    return this.#words;
+  }
+
   /** Message `key` in the reader's language, worded with `fields` (see i18n/words.js). */
   t(key, fields) { return this.words.t(key, fields); }
 
@@ -77,7 +90,7 @@ export class FigureContext {
    * not mirror), and every feature rewords what it shows.
    */
   speak(words) {
-    this.words = words;
+    this.#words = words;
     relabel(this.root, words);
     this.states?.set('rtl', words.rtl);
     this.each('language', words);

@@ -6,7 +6,7 @@
 // tests/e2e/read.test.js holds this module to every one of them (python/tests the notebook's reader).
 // Slices, cells and sphere lists have grammars of their own: `readsInJavaScript(row)` is false for them.
 
-import { nounKey, refusal } from '../i18n/words.js';
+import { exact, nounKey, refusal } from '../i18n/words.js';
 
 /** True for the rows this module reads (the others go to the table's parser in the WebAssembly). */
 export const readsInJavaScript = (row) => !['slice', 'cell', 'spheres'].includes(row.kind);
@@ -24,7 +24,7 @@ export function readValue(row, text, given = row.name) {
   switch (row.kind) {
     case 'integer': {
       const expected = `a whole number from ${f64Text(row.min)} to ${f64Text(row.max)}`;
-      if (!/^[0-9]+$/.test(trimmed)) throw invalid(expected, 'whole', { min: row.min, max: row.max });
+      if (!/^[0-9]+$/.test(trimmed)) throw invalid(expected, 'whole', { min: exact(row.min), max: exact(row.max) });
       return inRange(row, noun, Number(trimmed), row.min, row.max, f64Text);
     }
     case 'number':
@@ -72,19 +72,19 @@ function readNumber(row, noun, trimmed, text) {
   if (value === null) {
     const [min, max] = [f32Text(row.min), f32Text(row.max)];
     throw refusal(`${noun} must be a number from ${min} to ${max}, got ${quoted(text)}`,
-      'invalid', { ...named, value: quoted(text), expected: 'number', min: Number(min), max: Number(max) });
+      'invalid', { ...named, value: quoted(text), expected: 'number', min: exact(min), max: exact(max) });
   }
   const single = Math.fround(value);
   if (Number.isNaN(single)) throw refusal(`${noun} must be a number, got NaN`, 'not-a-number', named);
   if (!Number.isFinite(single)) throw refusal(`${noun} must be finite, got infinity`, 'infinite', named);
-  inRange(row, noun, single, Math.fround(row.min), Math.fround(row.max), f32Text, text);
+  inRange(row, noun, single, Math.fround(row.min), Math.fround(row.max), f32Text);
   return Number(shortestF32(single));
 }
 
-function inRange(row, noun, value, min, max, written, typed = String(value)) {
+function inRange(row, noun, value, min, max, written) {
   if (value < min || value > max) {
     throw refusal(`${noun} must be between ${written(min)} and ${written(max)}, got ${shortNumber(written(value))}`,
-      'out-of-range', { ...nounOf(row, noun), min: Number(written(min)), max: Number(written(max)), value: trim(typed) });
+      'out-of-range', { ...nounOf(row, noun), min: exact(written(min)), max: exact(written(max)), value: shortNumber(written(value)) });
   }
   return value;
 }

@@ -8,23 +8,23 @@
 // "saying": `{ key, fields }`, a message of the catalogues (i18n/words.js), whose fields may be
 // sayings too.
 
-import { Words } from '../i18n/words.js';
+import { ENGLISH } from '../i18n/words.js';
 
 /** The Content-Security-Policy a page needs for the element: its modules, and WebAssembly compiled. */
 export const CSP_NEEDED = "script-src 'self' 'wasm-unsafe-eval'";
 
-/** `said` (a saying, or text as given) worded with `words`; '' for none. */
+/** `said` (a saying, an Error, or text as given) worded with `words`; '' for none. */
 export function say(words, said) {
   if (said === null || said === undefined) return '';
+  if (said instanceof Error) return words.refusal(said);
   if (typeof said !== 'object' || !said.key) return String(said);
   const fields = {};
   for (const [name, value] of Object.entries(said.fields ?? {})) fields[name] = value?.key ? say(words, value) : value;
   return words.t(said.key, fields);
 }
 
-let english = null;
 /** `said` in English: what the page's code and the console are told. */
-export const inEnglish = (said) => say(english ??= new Words('en', 'ltr'), said);
+export const inEnglish = (said) => say(ENGLISH, said);
 
 /**
  * A failure to load, with the title the figure shows over its message (in English); `said` holds both

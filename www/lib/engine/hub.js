@@ -9,8 +9,6 @@ import { backendName, loadWasm, takeEarlyGpu, wasmModule, whenWebgpuLoaded } fro
 
 /** What a browser needs for the figures (a saying, engine/asset-errors.js). */
 const HELP = { key: 'figure.webgpu-help' };
-/** What a browser needs for the figures, in English. */
-export const WEBGPU_HELP = inEnglish(HELP);
 
 /** WebGL2 figures drawing at once: browsers allow a page only a few WebGL contexts (16 in Chromium). */
 export const MAX_WEBGL_FIGURES = 8;

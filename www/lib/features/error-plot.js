@@ -110,7 +110,7 @@ export class ErrorPlot {
 
   // What the status says when the sweep stopped.
   #stopped(error) {
-    const reason = error?.code === 'not-drawing' ? this.#ctx.t('error-plot.not-drawing') : error?.message ?? String(error);
+    const reason = error?.code === 'not-drawing' ? this.#ctx.t('error-plot.not-drawing') : this.#ctx.words.refusal(error);
     return this.#ctx.t('error-plot.stopped', { reason });
   }
 

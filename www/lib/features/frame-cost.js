@@ -6,7 +6,7 @@
 // sphere); the time per unit of work comes from frames measured here, or before the first measurement
 // from a cautious guess for the kind of adapter.
 
-import { Words } from '../i18n/words.js';
+import { ENGLISH } from '../i18n/words.js';
 
 /** Frames estimated longer than this need the person's confirmation. */
 export const CONFIRM_ABOVE_MS = 1000;
@@ -66,7 +66,7 @@ export class FrameCost {
 }
 
 /** "about 5 s" / "about 1.4 s" for a time in milliseconds, in `words` (English by default). */
-export function describeMs(ms, words = new Words('en', 'ltr')) {
+export function describeMs(ms, words = ENGLISH) {
   return words.t('guard.about-seconds', { seconds: ms >= 10_000 ? words.number(Math.round(ms / 1000), 0) : words.fixed(ms / 1000, 1) });
 }
 
@@ -82,7 +82,7 @@ export class CostGuard {
   // The settings the question shown is about: `{ current, next }`, or null.
   #asked = null;
 
-  constructor(root, apply, words = () => new Words('en', 'ltr')) {
+  constructor(root, apply, words = () => ENGLISH) {
     this.root = root;
     this.apply = apply;
     this.words = words;

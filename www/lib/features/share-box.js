@@ -25,7 +25,7 @@ dialog.share::backdrop { background: rgba(0, 0, 0, 0.45); }
 .share [role=tab]:focus-visible { outline: 2px solid var(--accent, #e77661); outline-offset: 1px; }
 .share [role=tablist] { display: flex; flex-wrap: wrap; gap: 4px; margin: 10px 0 6px; }
 .share [role=tab][aria-selected=true] { background: var(--accent, #e77661); color: var(--on-accent, #1a0d0a); border-color: transparent; }
-.share textarea { box-sizing: border-box; width: 100%; min-height: 7.5em; resize: vertical; font: 12px/1.35 ui-monospace, monospace;
+.share textarea { direction: ltr; text-align: left; box-sizing: border-box; width: 100%; min-height: 7.5em; resize: vertical; font: 12px/1.35 ui-monospace, monospace;
   color: inherit; background: var(--button, #232838); border: 1px solid var(--border, #3d4559); border-radius: 4px; padding: 6px; }
 .share .hint, .share .status { color: var(--muted, #a9b1c2); margin: 4px 0; }
 .share .row { display: flex; flex-wrap: wrap; align-items: center; gap: 6px 10px; }
@@ -174,7 +174,9 @@ export class ShareBox {
     // Arrow keys, Home and End move between the tabs, as in any tab list.
     tabs.addEventListener('keydown', (event) => {
       const index = TABS.indexOf(this.#tab);
-      const to = { ArrowRight: index + 1, ArrowLeft: index - 1, Home: 0, End: TABS.length - 1 }[event.key];
+      // Right to left, the next tab is the one on the left.
+      const step = this.#options.words().rtl ? -1 : 1;
+      const to = { ArrowRight: index + step, ArrowLeft: index - step, Home: 0, End: TABS.length - 1 }[event.key];
       if (to === undefined) return;
       const next = TABS[(to + TABS.length) % TABS.length];
       this.#show(next);

@@ -5,7 +5,7 @@
 // page's mesher worker, whichever mesher draws; up to LISTED_CELLS cells per axis, and only off the
 // page's thread (else the notice gives the blob counts alone).
 
-import { Words } from '../i18n/words.js';
+import { ENGLISH } from '../i18n/words.js';
 import { decidedCells, meshShape } from '../engine/meshers.js';
 
 // Cells named in the notice; the rest are counted.
@@ -66,7 +66,7 @@ export class TableChange {
  * blob counts before and after (null where unknown); `kinds` (bits of `KINDS`) say what differs;
  * worded with `words` (English by default).
  */
-export function tableNotice(table, cells, before, after, kinds = 1, words = new Words('en', 'ltr')) {
+export function tableNotice(table, cells, before, after, kinds = 1, words = ENGLISH) {
   const blobs = before !== null && after !== null;
   if (cells === null) return blobs ? words.t('notice.table-blobs', { table, before, after }) : words.t('notice.table', { table });
   if (cells.length === 0) return words.t(`notice.table-none-${KIND_WORDS[kinds] ?? 'face'}`, { table });

@@ -30,8 +30,10 @@ const STYLE = `
 :host([hidden]) { display: none; }
 /* Right to left (the reader's language, or the page's dir): the boxes mirror; the picture, what is
    drawn over it in its coordinates, and the drawings and plots do not. */
+/* The figure runs its own language's way, whatever way the page around it runs. */
+:host { direction: ltr; }
 :host(:state(rtl)) { direction: rtl; }
-canvas, #poster, #print-frame, #edit-overlay, #critical-marks, svg, .legend .ends { direction: ltr; }
+canvas, #poster, #print-frame, #edit-overlay, #critical-marks, #hud-quality-bars, svg, .legend .ends { direction: ltr; }
 
 /* Before the first frame: the poster (or the poster colour). In print: the latest frame as a picture,
    else the poster; the controls are left out. */

@@ -190,7 +190,7 @@ export class FigureFrames {
     try {
       this.#view = makeView(ctx, gpu, this.#software);
     } catch (error) {
-      this.fail({ key: 'figure.could-not-start' }, error.message);
+      this.fail({ key: 'figure.could-not-start' }, error);
       return false;
     }
     ctx.each('started', this.#view);
@@ -358,7 +358,7 @@ export class FigureFrames {
         ctx.each('idle', now, view);
       }
     } catch (error) {
-      this.fail({ key: 'figure.renderer-stopped' }, error?.message ?? String(error));
+      this.fail({ key: 'figure.renderer-stopped' }, error instanceof Error ? error : String(error));
       return false;
     }
     // Statistics, timings, the inspector and the editor's rings follow the frame.

@@ -13,7 +13,7 @@
 // (attributes, links, scene files, exports) is never worded here.
 
 import { CONTROLS, PLANE_TABLE, TABLE } from '../attributes.js';
-import ENGLISH from './en/index.js';
+import CODE_MESSAGES from './en/index.js';
 
 /** The languages shipped with the figures (besides English), each loaded when a reader needs it. */
 export const SHIPPED = Object.freeze({
@@ -31,6 +31,15 @@ const RIGHT_TO_LEFT = new Set(['ar', 'arc', 'ckb', 'dv', 'fa', 'he', 'ku', 'ps',
 // Unicode's isolates: a number or a typed value keeps its own direction inside a sentence.
 const LTR_ISOLATE = (text) => `\u2066${text}\u2069`;
 const FIRST_STRONG_ISOLATE = (text) => `\u2068${text}\u2069`;
+
+/**
+ * A number a sentence writes whole, as the language writes numbers but without rounding or grouping:
+ * the ends of a range a value was refused for (`exact(0.8766)`, `exact(4294967295)`).
+ */
+export class Exact {
+  constructor(x) { this.x = Number(x); }
+}
+export const exact = (x) => new Exact(x);
 
 /** The English message of every key the parameter tables give (labels, nouns, groups, words). */
 export function tableMessages() {
@@ -78,7 +87,17 @@ export function refusal(message, code, fields) {
 export const nounKey = (row) => (EN[`noun.${row.name}`] === (row.noun || row.name) ? `noun.${row.name}` : `plane.noun.${row.name}`);
 
 // Nouns of the Rust checks that name no row of the tables.
-const OTHER_NOUNS = { 'slice position': 'noun.slice-position', 'sphere radius': 'noun.sphere-radius' };
+const OTHER_NOUNS = {
+  'slice position': 'noun.slice-position',
+  'sphere radius': 'noun.sphere-radius',
+  resolution: 'noun.grid-resolution',
+  'centre coordinate (inside the box for this radius)': 'noun.sphere-centre-inside',
+  'sphere centre coordinate': 'noun.sphere-centre',
+  velocity: 'noun.velocity',
+  'sphere velocity': 'noun.sphere-velocity',
+  'LOD coarsening': 'noun.lod-coarsening',
+  'triangle budget': 'noun.triangle-budget',
+};
 
 /**
  * An Error of the WebAssembly whose message holds a refusal as its code and fields (`ParamError::coded`
@@ -90,7 +109,7 @@ export function fromWasm(error) {
   const text = error?.message;
   if (typeof text !== 'string' || !text.includes('\u001f')) return error;
   const decoded = decode(text);
-  return Object.assign(new Error(new Words('en', 'ltr').refusal(decoded)), decoded);
+  return Object.assign(new Error(ENGLISH.refusal(decoded)), decoded);
 }
 
 function decode(text) {
@@ -102,18 +121,19 @@ function decode(text) {
   const fields = { noun, value };
   const key = row ? nounKey(row) : OTHER_NOUNS[noun];
   if (key) fields.nounKey = key;
-  if (code === 'out-of-range') Object.assign(fields, { min: Number(a), max: Number(b) });
+  if (code === 'out-of-range') Object.assign(fields, { min: exact(a), max: exact(b) });
   if (code === 'device-limit') fields.detail = a;
   if (code === 'invalid') {
     fields.expected = a;
     Object.assign(fields, {
-      whole: { min: Number(b), max: Number(c) },
-      number: { min: Number(b), max: Number(c) },
+      whole: { min: exact(b), max: exact(c) },
+      number: { min: exact(b), max: exact(c) },
       'one-of': { words: b },
       'list-of': { words: b },
       // A refusal inside the detail (a sphere's radius) keeps its fields apart with U+001E.
       spheres: { detail: b?.includes('\u001e') ? decode(b.replaceAll('\u001e', '\u001f')) : b },
       'lod-multiple': { block: Number(b) },
+      'uniform-at-most': { max: exact(b), lodMax: exact(c) },
       text: { text: b },
     }[a]);
   }
@@ -124,7 +144,7 @@ function decode(text) {
 export const groupKey = (group) => group.toLowerCase();
 
 /** Every English message: the tables' and the code's, by key. */
-export const EN = Object.freeze({ ...tableMessages(), ...ENGLISH });
+export const EN = Object.freeze({ ...tableMessages(), ...CODE_MESSAGES });
 
 // Catalogues by language tag in lower case: `shipped` as loaded, `registered` by pages.
 const shipped = new Map([['en', EN]]);
@@ -248,8 +268,9 @@ export class Words {
    */
   refusal(error) {
     const message = error?.message;
-    if (!error?.code && typeof message === 'string' && message.includes('\u001f')) return this.refusal(decode(message));
-    if (!error?.code) return message ?? String(error);
+    const coded = typeof error?.code === 'string' && this.has(`refused.${error.code}`);
+    if (!coded && typeof message === 'string' && message.includes('\u001f')) return this.refusal(decode(message));
+    if (!coded) return message ?? String(error);
     const fields = { ...error.fields };
     if (fields.nounKey) fields.noun = this.t(fields.nounKey);
     if (typeof fields.detail === 'object') fields.detail = this.refusal(fields.detail);
@@ -259,6 +280,8 @@ export class Words {
 
   /** A field as a sentence shows it: numbers and lists formatted, text as given. */
   field(value) {
+    if (value instanceof Exact) return this.field(this.#format('exact', () => new Intl.NumberFormat(this.chain[0], {
+      maximumFractionDigits: 20, useGrouping: false })).format(value.x));
     if (typeof value === 'number') return this.rtl ? LTR_ISOLATE(this.number(value)) : this.number(value);
     if (Array.isArray(value)) return this.list(value.map((v) => this.field(v)));
     const text = String(value);
@@ -296,6 +319,9 @@ export class Words {
     return this.#formats.get(key);
   }
 }
+
+/** The English words, for what the console, the events and the page's code are told. */
+export const ENGLISH = new Words('en', 'ltr');
 
 /** `ltr` or `rtl`: the direction `lang` is written in. */
 export function directionOfLanguage(lang) {

@@ -5,7 +5,7 @@
 // itself runs left to right in any.
 
 import { PLANE_TABLE } from '../attributes.js';
-import { Words } from '../i18n/words.js';
+import { ENGLISH } from '../i18n/words.js';
 import { bands, march } from './squares.js';
 import { segmentsBefore, squareAt } from './stepper.js';
 
@@ -37,7 +37,7 @@ export const THEMES = {
 const format = (v) => (Math.abs(v) >= 100 ? v.toFixed(0) : Math.abs(v) >= 10 ? v.toFixed(1) : v.toFixed(2));
 
 /** English words, for what is drawn or written without a figure's (tests, tools). */
-export const ENGLISH = new Words('en', 'ltr');
+export { ENGLISH };
 
 // The glyphs a language writes numbers with (decimal sign, minus, digits), by language tag.
 const GLYPHS = new Map();
