@@ -276,15 +276,13 @@ pub(super) const SHARE_TEXT: &str = concat!(
 );
 
 /// The declarations of the words' exports, in both elements' modules (docs/embedding.md, "Languages").
-pub(crate) const TRANSLATION: &str = concat!(
-    "/** A message: a text with `{field}` placeholders, or plural forms chosen by its `count` field. */\n\
+pub(crate) const TRANSLATION: &str = "/** A message: a text with `{field}` placeholders, or plural forms chosen by its `count` field. */\n\
      export type MetaballsMessage =\n  | string\n  \
      | { zero?: string; one?: string; two?: string; few?: string; many?: string; other: string };\n\n\
      /** Adds a language (a tag such as 'nl'), or overrides words of one, for every figure on the page. */\n\
      export declare function registerTranslation(lang: string, messages: Record<string, MetaballsMessage>): void;\n\n\
      /** Every English message by its key: what a translation gives. */\n\
-     export declare const englishWords: Readonly<Record<string, MetaballsMessage>>;\n\n",
-);
+     export declare const englishWords: Readonly<Record<string, MetaballsMessage>>;\n\n";
 
 /// `www/metaballs-view.d.ts`: the element's TypeScript declarations.
 pub fn declarations() -> String {
