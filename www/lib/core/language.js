@@ -23,12 +23,15 @@ export function languageOf(element) {
     if (!dir && (d === 'ltr' || d === 'rtl')) dir = d;
     const lang = node.getAttribute?.('lang');
     if (lang) return { lang, dir: dir ?? directionOfLanguage(lang) };
+    // `lang=""` says the language is unknown: the browser's is taken.
+    if (lang === '') break;
   }
   const lang = globalThis.navigator?.language || 'en';
   return { lang, dir: dir ?? directionOfLanguage(lang) };
 }
 
 const watchers = new Set();
+const WATCHED = { attributes: true, attributeFilter: ['lang', 'dir'], subtree: true };
 let observer = null;
 
 function tellAll() {
@@ -51,9 +54,14 @@ export function watchLanguage(element, onChange) {
   watchers.add(check);
   if (!observer && globalThis.MutationObserver && globalThis.document) {
     observer = new MutationObserver(tellAll);
-    observer.observe(document, { attributes: true, attributeFilter: ['lang', 'dir'], subtree: true });
+    observer.observe(document, WATCHED);
     globalThis.addEventListener?.('languagechange', tellAll);
     onCatalogues(tellAll);
+  }
+  // The shadow roots the element sits in are watched too (a `lang` set inside a component's own tree).
+  for (const node of upward(element)) {
+    const root = node.getRootNode?.();
+    if (root && root !== document && root !== node && root.host) observer?.observe(root, WATCHED);
   }
   check();
   return () => watchers.delete(check);
