@@ -203,7 +203,7 @@ test('in JupyterLab the widget draws, follows Python, reports back, exports, sha
   });
   assert.deepEqual(shared, { devices: 1, created: 1, renderers: 2 });
   // Its `lang` trait makes it speak Japanese, while the first figure keeps the page's English.
-  const japanese = (await import('../../www/lib/i18n/ja.js')).default['setting.iso'];
+  const japanese = (await import('../../www/lib/i18n/ja/index.js')).default['setting.iso'];
   await waitFor(page, 'the lang="ja" figure did not speak Japanese', (label) => {
     const said = (figure) => [...figure.shadowRoot.querySelectorAll('label')].map((l) => l.textContent.trim());
     const [one, two] = document.querySelectorAll('metaballs-view');

@@ -8,7 +8,7 @@ import assert from 'node:assert/strict';
 import { readdirSync, readFileSync, statSync } from 'node:fs';
 import path from 'node:path';
 import { root } from './helpers.js';
-import { chainOf, EN, fromWasm, SHIPPED, Words } from '../../www/lib/i18n/words.js';
+import { chainOf, EN, fromWasm, SHIPPED, tableMessages, Words } from '../../www/lib/i18n/words.js';
 import { readValue } from '../../www/lib/core/read.js';
 import { TABLE } from '../../www/lib/attributes.js';
 
@@ -42,6 +42,18 @@ for (const [lang, load] of Object.entries(SHIPPED)) {
         for (const name of own) assert.ok(wanted.has(name), `${lang} ${key}.${category}: {${name}} is not a field of the message`);
       }
     }
+  });
+}
+
+// Each language is kept in English's parts, so a key is found in the same file in every language.
+const PARTS = ['core', 'figure', 'teaching', 'scene', 'plane'];
+for (const lang of Object.keys(SHIPPED)) {
+  test(`the ${lang} catalogue's parts hold the keys of English's parts, and table.js those of the tables`, async () => {
+    const keys = async (file) => Object.keys((await import(file)).default).sort();
+    for (const part of PARTS) {
+      assert.deepEqual(await keys(`../../www/lib/i18n/${lang}/${part}.js`), await keys(`../../www/lib/i18n/en/${part}.js`), `${lang}/${part}.js`);
+    }
+    assert.deepEqual(await keys(`../../www/lib/i18n/${lang}/table.js`), Object.keys(tableMessages()).sort(), `${lang}/table.js`);
   });
 }
 

@@ -17,13 +17,13 @@ import CODE_MESSAGES from './en/index.js';
 
 /** The languages shipped with the figures (besides English), each loaded when a reader needs it. */
 export const SHIPPED = Object.freeze({
-  de: () => import('./de.js'),
-  es: () => import('./es.js'),
-  fr: () => import('./fr.js'),
-  'pt-BR': () => import('./pt-BR.js'),
-  'zh-CN': () => import('./zh-CN.js'),
-  ja: () => import('./ja.js'),
-  ar: () => import('./ar.js'),
+  de: () => import('./de/index.js'),
+  es: () => import('./es/index.js'),
+  fr: () => import('./fr/index.js'),
+  'pt-BR': () => import('./pt-BR/index.js'),
+  'zh-CN': () => import('./zh-CN/index.js'),
+  ja: () => import('./ja/index.js'),
+  ar: () => import('./ar/index.js'),
 });
 
 // Languages written right to left, where `Intl.Locale`'s text info is missing.
