@@ -98,13 +98,15 @@ summary:focus-visible { outline: 2px solid var(--accent); outline-offset: -2px; 
 .controls { padding: 0 10px 10px; }
 .control {
   display: grid;
-  grid-template-columns: minmax(48px, 92px) minmax(40px, 1fr) minmax(32px, 52px);
+  grid-template-columns: minmax(48px, 106px) minmax(40px, 1fr) minmax(32px, 52px);
   align-items: center;
   gap: 6px;
   margin: 4px 0;
 }
-.control label { min-width: 0; color: var(--muted); overflow-wrap: anywhere; }
+.control label { min-width: 0; color: var(--muted); overflow-wrap: anywhere; hyphens: auto; }
 .control output { min-width: 0; text-align: end; font-variant-numeric: tabular-nums; overflow-wrap: anywhere; }
+/* A colour's hex code is one word: smaller rather than broken. */
+input[type="color"] + output { overflow-wrap: normal; font-size: 11px; }
 input { margin: 0; font: inherit; }
 input[type="range"] { width: 100%; accent-color: var(--accent); }
 input[type="color"] { width: 100%; height: 22px; border: none; background: none; padding: 0; }
@@ -224,8 +226,8 @@ select {
 select:focus-visible { outline: 2px solid var(--accent); outline-offset: 1px; }
 details.group { border-top: 1px solid #2a3042; }
 details.group > summary { padding: 5px 0; font-weight: 600; color: var(--text); }
-.control.slice { grid-template-columns: minmax(48px, 92px) 58px minmax(40px, 1fr) 32px; }
-.control.list { grid-template-columns: minmax(48px, 92px) 1fr; align-items: start; }
+.control.slice { grid-template-columns: minmax(48px, 106px) 58px minmax(40px, 1fr) 32px; }
+.control.list { grid-template-columns: minmax(48px, 106px) 1fr; align-items: start; }
 .control .label { color: var(--muted); }
 .checks { display: flex; flex-wrap: wrap; gap: 2px 10px; }
 .checks label { white-space: nowrap; color: var(--text); }
