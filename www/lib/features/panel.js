@@ -8,7 +8,7 @@
 // group is filled; the figure words them again when its language changes (the numbers shown too).
 
 import { CONTROL_NAMES, CONTROLS, rowOf } from '../core/table.js';
-import { groupKey, relabel } from '../i18n/words.js';
+import { groupKey, mark, relabel } from '../i18n/words.js';
 import { hub } from '../engine/hub.js';
 import { colorKey } from './legends.js';
 import { caseGallery } from '../engine/wasm.js';
@@ -76,7 +76,7 @@ export class Panel {
     if (!names.size) return;
     const width = ctx.element.clientWidth;
     const body = element('div', { className: 'controls' });
-    const details = element('details', { open: !(width > 0 && width < 560) }, marked('summary', 'panel.controls'), body);
+    const details = element('details', { open: !(width > 0 && width < 560) }, mark(element('summary'), { text: 'panel.controls' }), body);
     container.append(details);
 
     const maxResolution = hub.gpu?.max_resolution() ?? 512;
@@ -97,7 +97,7 @@ export class Panel {
     for (const [title, members] of groups) {
       const section = element('div', { className: 'group-body' });
       const group = element('details', { className: 'group', open: title === CONTROLS[0].group },
-        marked('summary', title ? `group.${groupKey(title)}` : 'panel.more'), section);
+        mark(element('summary'), { text: title ? `group.${groupKey(title)}` : 'panel.more' }), section);
       body.append(group);
       let filled = false;
       const fill = () => {
@@ -116,7 +116,7 @@ export class Panel {
       }
     }
     body.append(element('slot', { name: 'panel-footer' }));
-    body.append(marked('p', 'panel.hint', { className: 'hint' }));
+    body.append(mark(element('p', { className: 'hint' }), { text: 'panel.hint' }));
     relabel(details, ctx.words);
     const next = () => {
       if (build !== this.#builds || !folded.length) return;
@@ -156,9 +156,3 @@ export class Panel {
   }
 }
 
-// An element whose text is message `key` (worded by `relabel`).
-function marked(tag, key, properties = {}) {
-  const node = element(tag, properties);
-  node.dataset.t = key;
-  return node;
-}

@@ -11,6 +11,7 @@ import { pngOf } from '../figure/look.js';
 import { download } from '../core/download.js';
 import { meshBlob, readSceneFile, wireDrop } from './files.js';
 import { listedControls } from './panel.js';
+import { mark } from '../i18n/words.js';
 
 // The setting that holds spheres placed by hand, as text.
 const SPHERES = nameOfKind('spheres');
@@ -19,20 +20,6 @@ const SPHERES = nameOfKind('spheres');
  * them: a subtracting sphere (charge −1) with a negative radius. */
 export function spheresText(list) {
   return list.map((s) => [...s.center, (s.charge ?? 1) < 0 ? -s.radius : s.radius, ...(s.velocity ?? [])].join(',')).join(';');
-}
-
-// `node`'s text and title as messages `key` and `titleKey` (either may be null), marked to be worded
-// again in a new language.
-function worded(ctx, node, key, titleKey = null) {
-  if (key) {
-    node.dataset.t = key;
-    node.textContent = ctx.t(key);
-  }
-  if (titleKey) {
-    node.dataset.tTitle = titleKey;
-    node.title = ctx.t(titleKey);
-  }
-  return node;
 }
 
 export class SceneFiles {
@@ -88,12 +75,12 @@ export class SceneFiles {
     const ctx = this.#ctx;
     const { actions } = ctx;
     // A button worded by messages `key` (its text; null: a format's name, `text`) and `titleKey`.
-    const button = (makeButton, id, key, titleKey, onClick, text = '') => worded(ctx, makeButton(id, text, '', onClick), key, titleKey);
+    const button = (makeButton, id, key, titleKey, onClick, text = '') => mark(makeButton(id, text, '', onClick), { text: key, title: titleKey }, ctx.words);
     return {
       seed: ({ element, makeButton, updates }) => {
         // The seed is shown as written in the link (an identifier, not a quantity).
         const value = element('span', { id: 'seed-value' });
-        const seed = element('p', { className: 'seed' }, worded(ctx, element('span'), 'setting.seed'), ' ', value);
+        const seed = element('p', { className: 'seed' }, mark(element('span'), { text: 'setting.seed' }, ctx.words), ' ', value);
         updates.push((s) => { value.textContent = String(s.seed); });
         return [button(makeButton, 'reseed', 'scene.reseed', 'scene.reseed-title', actions.reseed), seed];
       },

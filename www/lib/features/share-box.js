@@ -6,7 +6,7 @@
 // Its words are the reader's language (the texts it writes are not: they are code, the same in any).
 
 import { download } from '../core/download.js';
-import { relabel } from '../i18n/words.js';
+import { mark, relabel } from '../i18n/words.js';
 import { clipFormats } from '../figure/clip.js';
 
 const STYLE = `
@@ -47,14 +47,6 @@ const GIF_HELD_BYTES = 1e9;
 const el = (tag, props = {}, ...children) => {
   const node = Object.assign(document.createElement(tag), props);
   node.append(...children);
-  return node;
-};
-
-// `node` with its words marked by key (`text`, aria-`label`, `title`), set by `relabel` in any language.
-const worded = (node, { text, label, title } = {}) => {
-  if (text) node.dataset.t = text;
-  if (label) node.dataset.tLabel = label;
-  if (title) node.dataset.tTitle = title;
   return node;
 };
 
@@ -133,9 +125,9 @@ export class ShareBox {
     area.value = this.#texts[tab];
     area.rows = Math.min(12, Math.max(3, area.value.split('\n').length + 1));
     const words = this.#options.words();
-    worded(area, { label: `share.tab.${tab}` }).setAttribute('aria-label', words.t(`share.tab.${tab}`));
+    mark(area, { label: `share.tab.${tab}` }, words);
     const hint = dialog.querySelector('.hint');
-    worded(hint, { text: `share.hint.${tab}` }).textContent = words.t(`share.hint.${tab}`);
+    mark(hint, { text: `share.hint.${tab}` }, words);
     this.#say(dialog.querySelector('.copy-status'), null);
   }
 
@@ -158,13 +150,13 @@ export class ShareBox {
     const dialog = el('dialog', { className: 'share' });
     dialog.setAttribute('part', 'share');
     dialog.setAttribute('aria-labelledby', 'share-title');
-    const close = worded(el('button', { type: 'button', textContent: '×' }), { title: 'share.close', label: 'share.close' });
+    const close = mark(el('button', { type: 'button', textContent: '×' }), { title: 'share.close', label: 'share.close' });
     close.addEventListener('click', () => dialog.close());
 
-    const tabs = worded(el('div'), { label: 'share.tabs' });
+    const tabs = mark(el('div'), { label: 'share.tabs' });
     tabs.setAttribute('role', 'tablist');
     for (const id of TABS) {
-      const tab = worded(el('button', { type: 'button', id: `share-tab-${id}` }), { text: `share.tab.${id}` });
+      const tab = mark(el('button', { type: 'button', id: `share-tab-${id}` }), { text: `share.tab.${id}` });
       tab.dataset.tab = id;
       tab.setAttribute('role', 'tab');
       tab.setAttribute('aria-controls', 'share-panel');
@@ -185,7 +177,7 @@ export class ShareBox {
     });
     const area = el('textarea', { readOnly: true, spellcheck: false });
     area.setAttribute('wrap', 'soft');
-    const copy = worded(el('button', { type: 'button', className: 'copy' }), { text: 'share.copy' });
+    const copy = mark(el('button', { type: 'button', className: 'copy' }), { text: 'share.copy' });
     copy.addEventListener('click', () => this.#copy());
     const copyStatus = el('span', { className: 'status copy-status' });
     copyStatus.setAttribute('role', 'status');
@@ -194,7 +186,7 @@ export class ShareBox {
     panel.setAttribute('role', 'tabpanel');
     dialog.append(
       el('style', { textContent: STYLE }),
-      el('header', {}, worded(el('h2', { id: 'share-title' }), { text: 'share.title' }), close),
+      el('header', {}, mark(el('h2', { id: 'share-title' }), { text: 'share.title' }), close),
       tabs, panel, this.#posterSection(),
     );
     if (this.#options.recorder) dialog.append(this.#recordSection());
@@ -225,8 +217,8 @@ export class ShareBox {
       return b;
     };
     return el('section', {},
-      worded(el('h3'), { text: 'share.poster' }),
-      worded(el('p', { className: 'hint' }), { text: this.#options.posterHint }),
+      mark(el('h3'), { text: 'share.poster' }),
+      mark(el('p', { className: 'hint' }), { text: this.#options.posterHint }),
       el('div', { className: 'row' }, button(1), button(2), status));
   }
 
@@ -245,16 +237,16 @@ export class ShareBox {
     const size = el('select', { className: 'size' },
       ...sizes.map(([w, h, key]) => option(`${w}x${h}`, key ?? 'share.record.size', { width: w, height: h })));
     const format = el('select', { className: 'format' });
-    const start = worded(el('button', { type: 'button', className: 'record' }), { text: 'share.record.start' });
-    const cancel = worded(el('button', { type: 'button', className: 'cancel', hidden: true }), { text: 'share.record.cancel' });
+    const start = mark(el('button', { type: 'button', className: 'record' }), { text: 'share.record.start' });
+    const cancel = mark(el('button', { type: 'button', className: 'cancel', hidden: true }), { text: 'share.record.cancel' });
     const progress = el('progress', { max: 1, value: 0, hidden: true });
     const status = el('span', { className: 'status record-status' });
     status.setAttribute('role', 'status');
     for (const [node, key] of [[fps, 'share.record.frame-rate'], [size, 'share.record.size-label'], [format, 'share.record.format'],
       [progress, 'share.record.progress']]) {
-      worded(node, { label: key });
+      mark(node, { label: key });
     }
-    const label = (key, input) => el('label', {}, worded(el('span'), { text: key }), input);
+    const label = (key, input) => el('label', {}, mark(el('span'), { text: key }), input);
 
     const chosen = () => {
       const [w, h] = size.value.split('x').map(Number);
@@ -317,8 +309,8 @@ export class ShareBox {
     cancel.addEventListener('click', () => this.#recording?.abort());
 
     return el('section', { className: 'recording' },
-      worded(el('h3'), { text: 'share.record.title' }),
-      worded(el('p', { className: 'hint' }), { text: 'share.record.hint' }),
+      mark(el('h3'), { text: 'share.record.title' }),
+      mark(el('p', { className: 'hint' }), { text: 'share.record.hint' }),
       el('div', { className: 'row' }, label('share.record.length', seconds), fps, size, format),
       el('div', { className: 'row' }, start, cancel, progress, status));
   }

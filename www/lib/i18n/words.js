@@ -337,7 +337,25 @@ export function directionOfLanguage(lang) {
 
 /** Sets the words of every `[data-t]` (text), `[data-t-label]` (aria-label) and `[data-t-title]` under `root`. */
 export function relabel(root, words) {
-  for (const node of root.querySelectorAll('[data-t]')) node.textContent = words.t(node.dataset.t);
-  for (const node of root.querySelectorAll('[data-t-label]')) node.setAttribute('aria-label', words.t(node.dataset.tLabel));
-  for (const node of root.querySelectorAll('[data-t-title]')) node.title = words.t(node.dataset.tTitle);
+  for (const node of root.querySelectorAll('[data-t], [data-t-label], [data-t-title]')) word(node, words);
+}
+
+// Sets `node`'s own marked words.
+function word(node, words) {
+  const { t, tLabel, tTitle } = node.dataset;
+  if (t) node.textContent = words.t(t);
+  if (tLabel) node.setAttribute('aria-label', words.t(tLabel));
+  if (tTitle) node.title = words.t(tTitle);
+}
+
+/**
+ * Marks `node`'s words by key (`text`, `label`: its aria-label, `title`) for `relabel` to set in each
+ * language, and sets them now in `words` where given; returns `node`.
+ */
+export function mark(node, { text, label, title } = {}, words = null) {
+  if (text) node.dataset.t = text;
+  if (label) node.dataset.tLabel = label;
+  if (title) node.dataset.tTitle = title;
+  if (words) word(node, words);
+  return node;
 }
