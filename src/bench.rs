@@ -23,8 +23,10 @@ pub struct Record {
     pub spheres: u32,
     /// Median wall time of a whole frame, submission to GPU idle, in milliseconds.
     pub frame_ms: f64,
+    /// Median CPU time of a frame: level selection, encoding and submission, in milliseconds.
+    pub cpu_ms: f64,
     /// Median GPU time per stage (`STAGES` order), when the adapter has timestamp queries.
-    pub stage_ms: Option<[f64; 4]>,
+    pub stage_ms: Option<[f64; 5]>,
     /// Median time of mesh generation: GPU time of every stage but shading where the adapter has
     /// timestamp queries, else wall time of the mesh alone (for the CPU mesher, meshing and upload)
     /// up to GPU idle.
@@ -139,14 +141,16 @@ fn measure(offscreen: &mut Offscreen, plan: &Plan, timed: bool) -> Result<Record
         pollster::block_on(offscreen.renderer.flush_stats());
     }
     let mut frame_ms = Vec::new();
+    let mut cpu_ms = Vec::new();
     let mut stages: Vec<StageTimes> = Vec::new();
     for _ in 0..plan.frames.max(1) {
         offscreen.renderer.update(1.0 / 60.0)?;
         let started = Instant::now();
+        offscreen.render_for_timing();
+        cpu_ms.push(started.elapsed().as_secs_f64() * 1e3);
         if timed {
-            stages.extend(pollster::block_on(offscreen.render_timed()));
+            stages.extend(pollster::block_on(offscreen.renderer.read_timing()));
         } else {
-            offscreen.render();
             let _ = offscreen.device.poll(wgpu::PollType::wait_indefinitely());
         }
         frame_ms.push(started.elapsed().as_secs_f64() * 1e3);
@@ -158,7 +162,8 @@ fn measure(offscreen: &mut Offscreen, plan: &Plan, timed: bool) -> Result<Record
         std::array::from_fn(|i| {
             // An extractor on the CPU runs no compute pass: only the shading stage is timed.
             let computed = i + 1 < STAGES.len();
-            if !on_device && computed {
+            // Only level of detail selects blocks in a stage of its own.
+            if (!on_device && computed) || (i == 0 && !settings.view.lod) {
                 0.0
             } else {
                 median(&mut stages.iter().map(|s| s.stages_ms[i]).collect::<Vec<_>>())
@@ -201,6 +206,7 @@ fn measure(offscreen: &mut Offscreen, plan: &Plan, timed: bool) -> Result<Record
         resolution: settings.resolution,
         spheres: settings.sphere_count,
         frame_ms: median(&mut frame_ms),
+        cpu_ms: median(&mut cpu_ms),
         stage_ms,
         mesh_ms,
         triangles: stats.triangles,
@@ -222,12 +228,13 @@ pub fn header(timed: bool) -> String {
         String::new()
     };
     format!(
-        "{:<36} {:>7} {:>5} {:>7} {:>9} {} {:>9} {:>10} {:>9} {:>11} {:>8} {:>9} {:>10}  {}",
+        "{:<36} {:>7} {:>5} {:>7} {:>9} {:>7} {} {:>9} {:>10} {:>9} {:>11} {:>8} {:>9} {:>10}  {}",
         "view",
         "mesher",
         "cells",
         "spheres",
         "frame ms",
+        "CPU ms",
         stages,
         "mesh ms",
         "triangles",
@@ -248,12 +255,13 @@ fn truncate(s: &str) -> &str {
 pub fn row(r: &Record) -> String {
     let stages = r.stage_ms.map(|s| s.iter().map(|v| format!("{v:>9.2}")).collect::<Vec<_>>().join(" "));
     format!(
-        "{:<36} {:>7} {:>5} {:>7} {:>9.2} {} {:>9.2} {:>10} {:>9} {:>11} {:>8.2} {:>9.1} {:>10}  {}",
+        "{:<36} {:>7} {:>5} {:>7} {:>9.2} {:>7.3} {} {:>9.2} {:>10} {:>9} {:>11} {:>8.2} {:>9.1} {:>10}  {}",
         if r.view.is_empty() { "shaded" } else { &r.view },
         r.mesher,
         r.resolution,
         r.spheres,
         r.frame_ms,
+        r.cpu_ms,
         stages.unwrap_or_default(),
         r.mesh_ms,
         r.triangles,

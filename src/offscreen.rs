@@ -78,6 +78,12 @@ impl Offscreen {
         self.renderer.render(&self.view);
     }
 
+    /// Draws a frame, with timestamp queries where timing is on, without waiting
+    /// (`Renderer::render_for_timing`).
+    pub fn render_for_timing(&mut self) {
+        self.renderer.render_for_timing(&self.view);
+    }
+
     /// Draws a frame and waits for its GPU time per stage (`Renderer::render_timed`).
     pub async fn render_timed(&mut self) -> Option<crate::device::timing::StageTimes> {
         self.renderer.render_timed(&self.view).await

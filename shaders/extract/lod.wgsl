@@ -1,7 +1,7 @@
-// Level of detail on the device (src/extract/lod/gpu.rs): the frame's selection of blocks comes from
-// the CPU (src/extract/lod/select.rs); the passes mesh it as src/extract/lod/mesher.rs does.
+// Level of detail on the device (src/extract/lod/gpu.rs): the frame's blocks come from the selection
+// passes (shaders/extract/lod_select.wgsl), which keep those the surface may cross; these passes mesh
+// them as src/extract/lod/mesher.rs does.
 //
-// `classify`: bound the field over each selected block and keep those the surface may cross.
 // `find_cells`: one workgroup per kept block samples the block at its level (and each transition face
 // at the level below) into workgroup memory, lists the crossed cells and transition cells, and makes
 // the vertex on each crossed edge once, through a hash table keyed by the edge (its lower end in
@@ -10,7 +10,7 @@
 // triangles. `finalize_draw`: the indexed indirect draw. Nothing is read back.
 
 struct Lod {
-    block_count: u32,
+    _unused: u32,
     // Slots in each of the hash table's PARTITIONS partitions (a power of two).
     partition_slots: u32,
     // Where the kept blocks start in `lod_data`, in words.
@@ -18,17 +18,6 @@ struct Lod {
     _pad: u32,
 }
 
-// The counters, then from word 64 (byte 256, LEVEL_COUNTS_OFFSET) the triangles of each level.
-struct LodCounters {
-    active_blocks: atomic<u32>,
-    vertices: atomic<u32>,
-    indices: atomic<u32>,
-    active_cells: atomic<u32>,
-    _pad: array<u32, 60>,
-    level_triangles: array<atomic<u32>, 12>,
-}
-
-@group(0) @binding(2) var<storage, read_write> counters: LodCounters;
 // Kept blocks, as indices into the selection.
 @group(0) @binding(24) var<storage, read_write> kept_blocks: array<u32>;
 // The tables, in one buffer (WebGPU lets a stage bind only 8 storage buffers): from CASES, per case
@@ -94,45 +83,16 @@ fn sample(id: vec3<u32>) -> f32 {
     return field_at(grid_point(id));
 }
 
-@compute @workgroup_size(64)
-fn classify(@builtin(global_invocation_id) id: vec3<u32>) {
-    let index = id.x;
-    if (index >= lod.block_count) {
-        return;
-    }
-    let b = block_at(index);
-    let far = b.origin + vec3<u32>(block_width(b));
-    let walls = any(b.origin == vec3<u32>(0u)) || any(far >= vec3<u32>(grid.cells_per_axis));
-    if (straddles(grid_point(b.origin), grid_point(far), walls)) {
-        let s = atomicAdd(&counters.active_blocks, 1u);
-        if (s < grid.max_blocks) {
-            kept_blocks[s] = index;
-            let b = selection[index];
-            let at = lod.blocks_offset + 4u * s;
-            lod_data[at] = b.x;
-            lod_data[at + 1u] = b.y;
-            lod_data[at + 2u] = b.z;
-            lod_data[at + 3u] = b.w;
-        }
-    }
-}
-
-struct DispatchIndirect {
-    x: u32,
-    y: u32,
-    z: u32,
-}
-
 // [0]: one workgroup per kept block; [1]: one invocation per listed cell.
 @group(0) @binding(26) var<storage, read_write> lod_dispatch: array<DispatchIndirect, 2>;
 
-fn rows(count: u32) -> DispatchIndirect {
-    return DispatchIndirect(min(count, DISPATCH_ROW), (count + DISPATCH_ROW - 1u) / DISPATCH_ROW, 1u);
-}
-
 @compute @workgroup_size(1)
 fn plan_blocks() {
-    lod_dispatch[0] = rows(min(atomicLoad(&counters.active_blocks), grid.max_blocks));
+    var blocks = min(atomicLoad(&counters.active_blocks), grid.max_blocks);
+    if (counters.lod_overflowed != 0u) {
+        blocks = 0u;
+    }
+    lod_dispatch[0] = rows(blocks);
 }
 
 @compute @workgroup_size(1)
@@ -439,5 +399,9 @@ fn make_triangles(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_in
 
 @compute @workgroup_size(1)
 fn finalize_draw() {
+    // A frame whose selection ran out of room draws the mesh it had.
+    if (counters.lod_overflowed != 0u) {
+        return;
+    }
     draw_args = indexed_draw(atomicLoad(&counters.indices));
 }

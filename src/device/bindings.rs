@@ -45,19 +45,28 @@ bindings! {
     /// With level of detail: each triangle's level, then the kept blocks as the views draw them.
     LOD_DATA = 14,
 
+    /// Level selection's uniforms: the rule and the camera (`shaders/extract/lod_select.wgsl`).
+    WALK = 15,
+    /// Its two queues of candidate blocks.
+    QUEUES = 16,
+    /// Its state between dispatches and frames.
+    WALK_STATE = 18,
+    /// Its indirect dispatch of each level.
+    WALK_DISPATCH = 19,
+
     /// The marching-cubes triangles of every case and choice on its ambiguous faces
     /// (`shaders/extract/marching_cubes.wgsl`).
     TRIANGLE_TABLE = 17,
 
     /// Level of detail's uniforms (`shaders/extract/lod.wgsl`).
     LOD = 20,
-    /// The selected blocks, from the CPU.
+    /// The selected blocks, from the selection passes.
     SELECTION = 21,
     /// The listed cells of the kept blocks.
     CELLS = 22,
     /// The hash table of the vertices made on edges.
     HASH = 23,
-    /// The selected blocks the surface may cross.
+    /// The selected blocks, as indices into the selection.
     KEPT_BLOCKS = 24,
     /// The regular and transition cells' tables, in one buffer.
     LOD_TABLES = 25,

@@ -3,19 +3,20 @@
 use crate::device::read_buffer;
 
 /// The stages timed, in frame order.
-pub const STAGES: [&str; 4] = ["blocks", "field", "marching cubes", "shading"];
+/// The first is level of detail's selection of blocks (nothing for a uniform grid).
+pub const STAGES: [&str; 5] = ["selection", "blocks", "field", "marching cubes", "shading"];
 
 /// GPU milliseconds spent in each stage of one frame.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct StageTimes {
     /// In `STAGES` order.
-    pub stages_ms: [f64; 4],
+    pub stages_ms: [f64; 5],
 }
 
 impl StageTimes {
     /// Mesh generation: every stage but shading.
     pub fn extraction_ms(&self) -> f64 {
-        self.stages_ms[..3].iter().sum()
+        self.stages_ms[..4].iter().sum()
     }
 
     /// From the first stage's start to the last one's end.

@@ -67,16 +67,47 @@ pub struct Measures {
     pub _pad: [u32; 2],
 }
 
-/// The whole counters buffer: the counters, then (with level of detail) triangles per level, then the
-/// mesh's measures.
+/// The whole counters buffer: the counters, then (with level of detail) what the selection passes
+/// report, triangles and blocks per level, then the mesh's measures (`LodCounters` in
+/// `shaders/extract/lod_common.wgsl`).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Pod, Zeroable, PartialEq, Eq)]
 pub struct CounterBlock {
     pub counters: Counters,
-    pub _pad: [u32; 60],
+    /// Nonzero when level selection ran out of room: the frame kept the mesh it had.
+    pub lod_overflowed: u32,
+    /// Levels at or below it were held back from splitting, after a frame ran out of room.
+    pub lod_floor: u32,
+    pub _pad: [u32; 58],
     pub level_triangles: [u32; LEVEL_SLOTS],
-    pub _pad_measures: [u32; 52],
+    pub level_blocks: [u32; LEVEL_SLOTS],
+    pub _pad_measures: [u32; 40],
     pub measures: Measures,
+}
+
+/// What a level-of-detail frame counted per level, and how its selection fared.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct LevelCounts {
+    /// Triangles per level, finest first.
+    pub triangles: [u32; LEVEL_SLOTS],
+    /// Blocks selected per level, where the device selected them (zero where the CPU did).
+    pub blocks: [u32; LEVEL_SLOTS],
+    /// Levels at or below it were held back from splitting.
+    pub floor: u32,
+    /// The selection ran out of room and the frame kept the mesh it had.
+    pub overflowed: bool,
+}
+
+impl CounterBlock {
+    /// Its level-of-detail counts.
+    pub fn levels(&self) -> LevelCounts {
+        LevelCounts {
+            triangles: self.level_triangles,
+            blocks: self.level_blocks,
+            floor: self.lod_floor,
+            overflowed: self.lod_overflowed != 0,
+        }
+    }
 }
 const _: () = assert!(std::mem::offset_of!(CounterBlock, level_triangles) == LEVEL_COUNTS_OFFSET as usize);
 const _: () = assert!(std::mem::offset_of!(CounterBlock, measures) == MEASURES_OFFSET as usize);

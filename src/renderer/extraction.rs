@@ -8,7 +8,7 @@ use crate::draw::views;
 use crate::extract::cpu::elsewhere;
 use crate::extract::lod::select::Eye;
 use crate::extract::reference::Construction;
-use crate::extract::uniforms::LEVEL_SLOTS;
+use crate::extract::uniforms::LevelCounts;
 use crate::extract::{
     Capabilities, Extractor, GivenMesh, Job, LodJob, LodSummary, MeshCount, Output, Viewpoint,
 };
@@ -29,6 +29,7 @@ impl Renderer {
         let previous = self.stage.active;
         self.stage.active = self.next_extractor();
         let job = self.job_of(self.scene.spheres());
+        self.lod_culled = job.lod.is_some_and(|l| l.eye.cull);
         let active = self.stage.active;
         if active != previous {
             // The buffers hold another extractor's mesh.
@@ -67,9 +68,9 @@ impl Renderer {
                     && made_by.method == Method::MarchingCubes
                     && self.settings.view.march.is_none();
                 stage.counted.drawn = Some(drawn);
-                let mut levels = [0; LEVEL_SLOTS];
+                let mut levels = LevelCounts::default();
                 if let Some(triangles) = self.lod_summary().and_then(|s| s.triangles) {
-                    for (slot, n) in levels.iter_mut().zip(triangles) {
+                    for (slot, n) in levels.triangles.iter_mut().zip(triangles) {
                         *slot = n;
                     }
                 }
@@ -217,7 +218,20 @@ impl Renderer {
             pixels_per_unit: view.pixels_per_unit(),
             orthographic: view.projection == Projection::Orthographic,
             lod_pixels: self.settings.view.lod_pixels * self.lod_coarsening,
+            cull: self.cull_lod,
         }
+    }
+
+    /// True when the latest mesh left out the blocks outside the view (level of detail, while drawing):
+    /// what reads its shape should mesh the whole surface first (`mesh_readback`).
+    pub fn mesh_culled(&self) -> bool {
+        self.lod_culled
+    }
+
+    /// With level of detail, the cell size in pixels the selection uses: `lod-pixels` times the
+    /// coarsening, clamped where a larger one would let touching blocks differ by more than one level.
+    pub fn lod_cell_pixels(&self) -> Option<f32> {
+        self.settings.view.lod.then(|| self.lod_eye().cell_pixels())
     }
 
     /// Lets level of detail's cells look up to `factor` times `lod_pixels` on screen (1: as set),
@@ -235,7 +249,14 @@ impl Renderer {
 
     /// The latest frame's level-of-detail selection and counts, when a LOD extractor made it.
     pub fn lod_summary(&self) -> Option<LodSummary> {
-        self.stage.active().lod_summary()
+        let mut summary = self.stage.active().lod_summary()?;
+        // Selected on the device: the blocks per level come back with the statistics.
+        if summary.blocks.is_empty() {
+            let levels = crate::extract::lod::select::coarsest_level(summary.resolution) as usize + 1;
+            let counted = self.stats().map(|s| s.level_blocks).unwrap_or_default();
+            summary.blocks = counted[..levels].to_vec();
+        }
+        Some(summary)
     }
 
     /// What the extractor the next frame will use can do.

@@ -54,6 +54,11 @@ pub struct Renderer {
     /// How many times `lod_pixels` level of detail's cells may look on screen (see
     /// `set_lod_coarsening`).
     lod_coarsening: f32,
+    /// Level of detail leaves out the blocks outside the view: true while a frame is drawn, false
+    /// while the mesh is made for a readback (exports, tests), which wants the whole surface.
+    cull_lod: bool,
+    /// The latest mesh was made with blocks outside the view left out.
+    lod_culled: bool,
 }
 
 impl Renderer {
@@ -102,6 +107,8 @@ impl Renderer {
             stats: Statistics::new(&device),
             teaching: Teaching::default(),
             lod_coarsening: 1.0,
+            cull_lod: true,
+            lod_culled: false,
             scene_buffers: SceneBuffers::new(&device),
             _alive: context.renderer_token(),
             context: context.clone(),
@@ -298,7 +305,7 @@ impl Renderer {
             light_slots: self.settings.view.lights.slots(),
             front_only: self.back_faces_hidden(),
         };
-        self.shade.encode(&mut encoder, view, mesh, frame_views, timing.map(|t| t.render_writes(3)));
+        self.shade.encode(&mut encoder, view, mesh, frame_views, timing.map(|t| t.render_writes(4)));
         if let Some(timing) = timing {
             timing.resolve(&mut encoder);
         }
@@ -322,6 +329,19 @@ impl Renderer {
     pub async fn render_timed(&mut self, view: &wgpu::TextureView) -> Option<StageTimes> {
         self.stats.timing.as_ref()?;
         self.render_frame(view, true);
+        self.read_timing().await
+    }
+
+    /// Draws a frame with timestamp queries, where the device has them (`enable_timing`), without
+    /// waiting: `read_timing` then waits for its GPU time per stage. Benchmarks time the CPU's part of
+    /// a frame (selection, encoding, submission) between the two.
+    pub fn render_for_timing(&mut self, view: &wgpu::TextureView) {
+        let timed = self.stats.timing.is_some();
+        self.render_frame(view, timed);
+    }
+
+    /// The GPU time per stage of the frame `render_for_timing` drew; `None` without timestamp queries.
+    pub async fn read_timing(&self) -> Option<StageTimes> {
         let timing = self.stats.timing.as_ref()?;
         Some(timing.read(&self.device, &self.queue).await)
     }
@@ -335,7 +355,9 @@ impl Renderer {
         let mut encoder = self
             .device
             .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("extract: encoder") });
+        self.cull_lod = false;
         self.make_mesh(&mut encoder, false);
+        self.cull_lod = true;
         self.queue.submit([encoder.finish()]);
     }
 }

@@ -6,7 +6,7 @@ use super::limits::largest_capacity;
 use crate::device::timing::Timing;
 use crate::extract::buffers::{BLOCK_CELLS, Capacity};
 use crate::extract::reference::Grid;
-use crate::extract::uniforms::{CounterBlock, Counters, LEVEL_SLOTS, Measures};
+use crate::extract::uniforms::{CounterBlock, Counters, LEVEL_SLOTS, LevelCounts, Measures};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU8, Ordering};
 
@@ -38,6 +38,11 @@ pub struct FrameStats {
     pub mesh_bytes: u64,
     /// With level of detail, triangles per level (finest first).
     pub level_triangles: [u32; LEVEL_SLOTS],
+    /// With level of detail selected on the device, blocks per level (finest first).
+    pub level_blocks: [u32; LEVEL_SLOTS],
+    /// With level of detail selected on the device, the finest level that was held back from splitting
+    /// after a frame ran out of room (0: none).
+    pub lod_floor: u32,
 }
 
 impl FrameStats {
@@ -50,7 +55,7 @@ impl FrameStats {
         needed: Counters,
         overflowed: bool,
         mesh_bytes: u64,
-        level_triangles: [u32; LEVEL_SLOTS],
+        levels: LevelCounts,
     ) -> Self {
         Self {
             frame,
@@ -62,9 +67,11 @@ impl FrameStats {
             total_blocks: grid.cells_per_axis.div_ceil(BLOCK_CELLS).pow(3),
             active_cells: needed.active_cells,
             total_cells: (grid.cells_per_axis as u64).pow(3),
-            overflowed,
+            overflowed: overflowed || levels.overflowed,
             mesh_bytes,
-            level_triangles,
+            level_triangles: levels.triangles,
+            level_blocks: levels.blocks,
+            lod_floor: levels.floor,
         }
     }
 
@@ -94,7 +101,7 @@ pub(super) struct Reading {
     pub frame: u64,
     pub capacity: Capacity,
     pub counters: Counters,
-    pub level_triangles: [u32; LEVEL_SLOTS],
+    pub levels: LevelCounts,
     /// False when the mesh was uploaded, so the counters say nothing of it.
     pub counted: bool,
     /// The measures pass's sums, when it ran.
@@ -171,7 +178,7 @@ impl StatsRing {
                 frame: slot.frame,
                 capacity: slot.capacity,
                 counters: block.counters,
-                level_triangles: block.level_triangles,
+                levels: block.levels(),
                 counted: slot.counted,
                 measures: slot.measured.then_some(block.measures),
             });
@@ -231,7 +238,7 @@ impl Renderer {
         #[cfg(not(target_arch = "wasm32"))]
         let _ = self.device.poll(wgpu::PollType::Poll);
         let grid = self.grid();
-        for Reading { frame, capacity, counters, level_triangles, counted, measures } in
+        for Reading { frame, capacity, counters, levels, counted, measures } in
             self.stats.ring.take_ready()
         {
             if let Some(sums) = measures {
@@ -243,7 +250,7 @@ impl Renderer {
             let overflowed = !capacity.holds(&counters);
             let bytes = self.stage.buffers.bytes();
             let stats =
-                FrameStats::from_counts(frame, grid, capacity, counters, overflowed, bytes, level_triangles);
+                FrameStats::from_counts(frame, grid, capacity, counters, overflowed, bytes, levels);
             self.stats.offer(stats);
             // Grow once per size: figures from frames drawn with smaller buffers than now are stale.
             self.stage.plan_growth(capacity, &counters, largest_capacity(self.context.limits(), grid));

@@ -144,7 +144,12 @@ impl View {
     /// On the CPU path the mesh is at hand; on the GPU path it is one readback, queued now and asked for
     /// only on demand, never every frame.
     pub fn mesh_triangles(&mut self) -> js_sys::Promise {
-        let readback = self.renderer.drawn_mesh_readback();
+        // A level-of-detail frame leaves out what is outside the view: its shape is the whole mesh's.
+        let readback = if self.renderer.mesh_culled() {
+            self.renderer.mesh_readback()
+        } else {
+            self.renderer.drawn_mesh_readback()
+        };
         let device = self.device.clone();
         wasm_bindgen_futures::future_to_promise(async move {
             let _polling = Polling::start(&device);

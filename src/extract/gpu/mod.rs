@@ -97,9 +97,9 @@ impl Extractor for GpuExtractor {
             passes.marching.bind(device, scene, buffers);
             passes
         });
-        passes.blocks.encode(encoder, buffers, timing.map(|t| t.compute_writes(0)));
-        passes.field.encode(encoder, buffers, timing.map(|t| t.compute_writes(1)));
-        passes.marching.encode(encoder, buffers, timing.map(|t| t.compute_writes(2)));
+        passes.blocks.encode(encoder, buffers, timing.map(|t| t.compute_writes(1)));
+        passes.field.encode(encoder, buffers, timing.map(|t| t.compute_writes(2)));
+        passes.marching.encode(encoder, buffers, timing.map(|t| t.compute_writes(3)));
         MeshCount::OnDevice
     }
 }

@@ -2,8 +2,8 @@
 //! shared buffers, as the uniform CPU mesher's mesh is. Software adapters and WebGL2 get LOD this way.
 
 use super::mesher::LodMesher;
-use super::select::Selection;
-use super::{LodSummary, next_selection};
+use super::select::{Eye, Selection};
+use super::{LodSummary, eye_of, select_for_surface};
 use crate::extract::extractor::{Capabilities, Extractor, Job, MeshCount, Output};
 use crate::extract::facing::front_faces;
 use crate::extract::mesh::IndexedMesh;
@@ -15,6 +15,8 @@ use crate::scene::params::view::Method;
 pub struct LodCpuExtractor {
     mesher: LodMesher,
     selection: Selection,
+    /// The eye while the selection is frozen.
+    frozen: Option<Eye>,
     /// Indices of the mesh the latest `write` uploaded (or would have, before leaving out back faces).
     written: u32,
     /// The indices of the triangles facing the viewer, when only those are drawn.
@@ -48,8 +50,9 @@ impl Extractor for LodCpuExtractor {
     }
 
     fn prepare(&mut self, job: &Job) -> Option<Counters> {
-        if let Some(next) = next_selection(&self.selection, job) {
-            self.selection = next;
+        if let Some(eye) = eye_of(&mut self.frozen, job) {
+            let blend = job.construction.blend;
+            self.selection = select_for_surface(job.spheres, job.iso, blend, job.grid.cells_per_axis, &eye);
         }
         self.mesher.mesh(job.spheres, job.iso, job.construction, &self.selection);
         let stats = self.mesher.stats();

@@ -1,11 +1,13 @@
-//! Level of detail in compute shaders (`shaders/extract/lod.wgsl`): the selection is made on the CPU
-//! (one function for every path) and uploaded when it changes; the passes bound, sample and mesh it
-//! on the device, with indirect dispatches and draw and no readback.
+//! Level of detail in compute shaders: the selection passes ([`walk`](super::walk)) choose the blocks
+//! by the rule every path follows, and the meshing passes (`shaders/extract/lod.wgsl`) sample and mesh
+//! them where they are, with indirect dispatches and draw and no readback. The CPU's part of a frame
+//! is one small uniform and a fixed number of dispatches, however many blocks there are.
 
-use super::select::{Block, Selection};
+use super::select::{Eye, Rule};
 use super::transition;
-use super::{LodSummary, next_selection};
-use crate::device::{bind_buffers, bindings, compute_module, compute_pipeline, has_compute, wgsl};
+use super::walk::{LOD_COMMON_WGSL, Walk, WalkPipelines};
+use super::{LodSummary, eye_of};
+use crate::device::{COMMON_WGSL, bind_buffers, bindings, compute_pipeline, has_compute, shader_module, wgsl};
 use crate::extract::buffers::MeshBuffers;
 use crate::extract::extractor::{Capabilities, Extractor, Job, MeshCount, Output};
 use crate::extract::gpu::scene_buffers::SceneBuffers;
@@ -35,15 +37,9 @@ pub fn packed_transition_table() -> Vec<u32> {
     table
 }
 
-/// A selected block as the shader reads it.
-fn packed(block: &Block) -> [u32; 4] {
-    let o = block.origin;
-    [o.x, o.y, o.z, block.level | (block.transitions as u32) << 8]
-}
-
 /// The pipelines and tables, compiled once per device.
 struct Pipelines {
-    classify: wgpu::ComputePipeline,
+    walk: WalkPipelines,
     plan_blocks: wgpu::ComputePipeline,
     find_cells: wgpu::ComputePipeline,
     plan_cells: wgpu::ComputePipeline,
@@ -55,14 +51,14 @@ struct Pipelines {
 
 impl Pipelines {
     fn new(device: &wgpu::Device) -> Self {
-        let module =
-            compute_module(device, "lod: shader", wgsl!(include_str!("../../../shaders/extract/lod.wgsl")));
+        let source = wgsl!(include_str!("../../../shaders/extract/lod.wgsl"));
+        let module = shader_module(device, "lod: shader", &[COMMON_WGSL, LOD_COMMON_WGSL, source]);
         let pipeline = |name: &str| compute_pipeline(device, &format!("lod: {name} pipeline"), &module, name);
         let mut tables: Vec<u32> = packed_case_table().to_vec();
         tables.extend(flat_triangle_table().iter().map(|&e| e as u32));
         tables.extend(packed_transition_table());
         Self {
-            classify: pipeline("classify"),
+            walk: WalkPipelines::new(device),
             plan_blocks: pipeline("plan_blocks"),
             find_cells: pipeline("find_cells"),
             plan_cells: pipeline("plan_cells"),
@@ -77,15 +73,13 @@ impl Pipelines {
     }
 }
 
-/// This renderer's buffers and bind groups, for one capacity and selection size.
+/// This renderer's buffers and bind groups, for one capacity of the mesh buffers.
 struct Bound {
-    uniform: wgpu::Buffer,
-    selection: wgpu::Buffer,
-    selection_capacity: usize,
+    walk: Walk,
     /// Per slot of the vertex hash table, its edge key and vertex.
     hash: wgpu::Buffer,
     dispatch: wgpu::Buffer,
-    groups: [wgpu::BindGroup; 6],
+    groups: [wgpu::BindGroup; 5],
 }
 
 impl Bound {
@@ -94,7 +88,6 @@ impl Bound {
         p: &Pipelines,
         scene: &SceneBuffers,
         mesh: &MeshBuffers,
-        blocks: usize,
     ) -> Self {
         use wgpu::BufferUsages as U;
         let buffer = |label: &str, size: u64, usage: U| {
@@ -109,13 +102,12 @@ impl Bound {
         // Room for four slots per vertex, in partitions of a power of two.
         let partition_slots = (4 * capacity.vertices as u64).div_ceil(PARTITIONS).next_power_of_two().max(4);
         let table_slots = partition_slots * PARTITIONS;
-        let selection_capacity = blocks.next_power_of_two().max(64);
         let uniform = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("lod: uniforms"),
             contents: bytemuck::cast_slice(&[0u32, partition_slots as u32, mesh.lod_blocks_offset(), 0]),
             usage: U::UNIFORM | U::COPY_DST,
         });
-        let selection = buffer("lod: selection", selection_capacity as u64 * 16, U::COPY_DST);
+        let selection = buffer("lod: selection", capacity.blocks as u64 * 16, U::empty());
         let active = buffer("lod: kept blocks", capacity.blocks as u64 * 4, U::empty());
         let cells = buffer("lod: listed cells", capacity.cells as u64 * 8, U::empty());
         let hash = buffer("lod: vertex hash table", table_slots * 8, U::COPY_DST);
@@ -124,19 +116,6 @@ impl Bound {
             bind_buffers(device, label, pipeline, entries)
         };
         let groups = [
-            group(
-                "lod: classify",
-                &p.classify,
-                &[
-                    (bindings::GRID, &scene.grid),
-                    (bindings::SPHERES, &scene.spheres),
-                    (bindings::COUNTERS, &mesh.counters),
-                    (bindings::KEPT_BLOCKS, &active),
-                    (bindings::LOD, &uniform),
-                    (bindings::SELECTION, &selection),
-                    (bindings::LOD_DATA, &mesh.lod_data),
-                ],
-            ),
             group(
                 "lod: plan blocks",
                 &p.plan_blocks,
@@ -197,7 +176,8 @@ impl Bound {
                 ],
             ),
         ];
-        Self { uniform, selection, selection_capacity, hash, dispatch, groups }
+        let walk = Walk::new(device, &p.walk, scene, mesh, &selection, &active);
+        Self { walk, hash, dispatch, groups }
     }
 }
 
@@ -205,9 +185,10 @@ impl Bound {
 pub struct LodGpuExtractor {
     compiled: Arc<OnceLock<Pipelines>>,
     bound: Option<Bound>,
-    selection: Selection,
-    /// The selection changed since it was last uploaded.
-    stale: bool,
+    /// The frame's rule and eye, from `prepare`.
+    rule: Option<(Rule, Eye)>,
+    /// The eye while the selection is frozen.
+    frozen: Option<Eye>,
 }
 
 impl LodGpuExtractor {
@@ -219,7 +200,7 @@ impl LodGpuExtractor {
         // On wasm32 wgpu's objects are not Send: a page runs them on one thread.
         #[allow(clippy::arc_with_non_send_sync)]
         let compiled = Arc::new(OnceLock::new());
-        Some(Box::new(Self { compiled, bound: None, selection: Selection::default(), stale: true }))
+        Some(Box::new(Self { compiled, bound: None, rule: None, frozen: None }))
     }
 }
 
@@ -239,12 +220,7 @@ impl Extractor for LodGpuExtractor {
     }
 
     fn fresh(&self) -> Box<dyn Extractor> {
-        Box::new(Self {
-            compiled: self.compiled.clone(),
-            bound: None,
-            selection: Selection::default(),
-            stale: true,
-        })
+        Box::new(Self { compiled: self.compiled.clone(), bound: None, rule: None, frozen: None })
     }
 
     fn buffers_changed(&mut self) {
@@ -255,50 +231,37 @@ impl Extractor for LodGpuExtractor {
         usize::from(self.compiled.get().is_some())
     }
 
-    /// Selects the blocks; the device alone knows what they hold.
+    /// Makes the frame's rule: a few numbers, whatever the blocks; the device walks the octree.
     fn prepare(&mut self, job: &Job) -> Option<Counters> {
-        if let Some(next) = next_selection(&self.selection, job)
-            && next != self.selection
-        {
-            self.selection = next;
-            self.stale = true;
-        }
+        self.rule = eye_of(&mut self.frozen, job).map(|eye| (Rule::new(job.grid.cells_per_axis, &eye, 0), eye));
         None
     }
 
     fn write(&mut self, output: Output) -> MeshCount {
         let Output { device, queue, scene, encoder, buffers, timing, .. } = output;
+        let Some((rule, eye)) = self.rule else { return MeshCount::OnDevice };
         let p = self.compiled.get_or_init(|| Pipelines::new(device));
-        let blocks = self.selection.blocks.len();
-        if self.bound.as_ref().is_none_or(|b| b.selection_capacity < blocks) {
-            self.bound = Some(Bound::new(device, p, scene, buffers, blocks));
-            self.stale = true;
-        }
-        let bound = self.bound.as_ref().expect("bound above");
-        if self.stale {
-            let data: Vec<[u32; 4]> = self.selection.blocks.iter().map(packed).collect();
-            queue.write_buffer(&bound.selection, 0, bytemuck::cast_slice(&data));
-            queue.write_buffer(&bound.uniform, 0, bytemuck::bytes_of(&(blocks as u32)));
-            self.stale = false;
-        }
+        let bound = self.bound.get_or_insert_with(|| Bound::new(device, p, scene, buffers));
+        bound.walk.prepare(queue, &rule, &eye);
         encoder.clear_buffer(&buffers.counters, 0, None);
         encoder.clear_buffer(&bound.hash, 0, None);
-        let [classify, plan_blocks, find_cells, plan_cells, triangles, finalize] = &bound.groups;
+        let [plan_blocks, find_cells, plan_cells, triangles, finalize] = &bound.groups;
         let describe = |label: &'static str, stage: u32| wgpu::ComputePassDescriptor {
             label: Some(label),
             timestamp_writes: timing.map(|t| t.compute_writes(stage)),
         };
         {
-            let mut pass = encoder.begin_compute_pass(&describe("lod: blocks", 0));
-            pass.set_pipeline(&p.classify);
-            pass.set_bind_group(0, classify, &[]);
-            pass.dispatch_workgroups((blocks as u32).div_ceil(64), 1, 1);
+            let mut pass = encoder.begin_compute_pass(&describe("lod: selection", 0));
+            bound.walk.encode(&mut pass, &p.walk, &rule);
+        }
+        {
+            let mut pass = encoder.begin_compute_pass(&describe("lod: blocks", 1));
             pass.set_pipeline(&p.plan_blocks);
             pass.set_bind_group(0, plan_blocks, &[]);
             pass.dispatch_workgroups(1, 1, 1);
         }
         {
-            let mut pass = encoder.begin_compute_pass(&describe("lod: cells", 1));
+            let mut pass = encoder.begin_compute_pass(&describe("lod: cells", 2));
             pass.set_pipeline(&p.find_cells);
             pass.set_bind_group(0, find_cells, &[]);
             pass.dispatch_workgroups_indirect(&bound.dispatch, 0);
@@ -307,7 +270,7 @@ impl Extractor for LodGpuExtractor {
             pass.dispatch_workgroups(1, 1, 1);
         }
         {
-            let mut pass = encoder.begin_compute_pass(&describe("lod: triangles", 2));
+            let mut pass = encoder.begin_compute_pass(&describe("lod: triangles", 3));
             pass.set_pipeline(&p.triangles);
             pass.set_bind_group(0, triangles, &[]);
             pass.dispatch_workgroups_indirect(&bound.dispatch, 12);
@@ -318,12 +281,9 @@ impl Extractor for LodGpuExtractor {
         MeshCount::OnDevice
     }
 
+    /// The blocks and triangles per level are counted on the device: the statistics read them back.
     fn lod_summary(&self) -> Option<LodSummary> {
-        Some(LodSummary {
-            resolution: self.selection.resolution,
-            blocks: self.selection.blocks_per_level(),
-            triangles: None,
-            cells_processed: None,
-        })
+        let (rule, _) = self.rule?;
+        Some(LodSummary { resolution: rule.resolution, blocks: Vec::new(), triangles: None, cells_processed: None })
     }
 }

@@ -1,6 +1,8 @@
 //! Level of detail: fine cells near the camera, coarse far away, and no cracks between them.
 //!
-//! - [`select`]: the camera-driven, 2:1-balanced octree of blocks, one function for every path.
+//! - [`select`]: the rule that gives each block its level from its distance alone, and the CPU's
+//!   walk by it.
+//! - [`walk`]: the same walk in compute passes, level by level, with nothing sent back.
 //! - [`transition`]: Transvoxel transition cells over the published tables.
 //! - [`mesher`]: the LOD mesh on the CPU; [`cpu`] puts it behind the extraction interface.
 //! - [`gpu`]: the same mesh in compute shaders.
@@ -10,6 +12,7 @@ pub mod gpu;
 pub mod mesher;
 pub mod select;
 pub mod transition;
+pub mod walk;
 
 #[cfg(test)]
 mod tests;
@@ -22,19 +25,21 @@ use crate::scene::Sphere;
 use crate::scene::params::view::Blend;
 use select::{Eye, Selection};
 
-/// The selection for `job`, or `None` to keep `current` (frozen, and made for the same resolution).
-/// Blocks are refined only where the field's exact bounds let the surface cross, as the meshers
-/// skip blocks.
-pub fn next_selection(current: &Selection, job: &Job) -> Option<Selection> {
+/// The eye `job` selects by: its own, or while the selection is frozen (`lod_freeze`) the one kept in
+/// `frozen` from the first frozen frame. `None` without level of detail.
+pub fn eye_of(frozen: &mut Option<Eye>, job: &Job) -> Option<Eye> {
     let lod = job.lod?;
-    let resolution = job.grid.cells_per_axis;
-    if lod.freeze && current.resolution == resolution && !current.blocks.is_empty() {
-        return None;
+    if !lod.freeze {
+        *frozen = None;
+        return Some(lod.eye);
     }
-    Some(select_for_surface(job.spheres, job.iso, job.construction.blend, resolution, &lod.eye))
+    // A frozen eye keeps its levels; what it culls follows the frame (a readback wants everything).
+    let kept = frozen.get_or_insert(lod.eye);
+    Some(Eye { cull: lod.eye.cull, ..*kept })
 }
 
-/// [`select::select`] refining only where the surface f = `iso` of `spheres` may cross.
+/// [`select::select`] keeping only the blocks the surface f = `iso` of `spheres` may cross, by the
+/// field's exact bounds, as the meshers skip blocks.
 pub fn select_for_surface(
     spheres: &[Sphere],
     iso: f32,

@@ -1,14 +1,31 @@
-//! Level selection: each frame, an octree of blocks over the box, fine near the camera and coarse far
-//! away, 2:1 balanced. The one function [`select`] serves every LOD extractor.
+//! Level selection: each frame, the blocks of an octree over the box that the surface may cross, fine
+//! near the camera and coarse far away. One [`Rule`] decides every level, on the CPU ([`select`]) and in
+//! the compute passes (`shaders/extract/lod_select.wgsl`, which read the rule's numbers).
 //!
 //! A block holds [`BLOCK_CELLS`]³ cells of its level; a cell of level `k` is `2^k` finest cells wide.
-//! The finest cells are those of a uniform grid of `resolution` cells per axis. A block is split while
-//! its cells would cover more than `lod_pixels` pixels at the block's nearest point to the camera, and
-//! blocks outside the view frustum stay as coarse as the balance allows, as do blocks the surface
-//! cannot cross (by the field's exact bounds). Balance: blocks the surface may cross that share a face,
-//! an edge or a corner differ by at most one level, so every seam is between two neighbouring levels,
-//! where a transition cell closes it. A block the surface cannot cross needs no balance: its closed box,
-//! faces and edges included, holds no crossing, so nothing meets it to be stitched.
+//! The finest cells are those of a uniform grid of `resolution` cells per axis.
+//!
+//! **Levels from distance alone.** A block splits while its cells would look larger than the eye's
+//! cell size in pixels at the block's point nearest the eye. The view frustum and the field's exact
+//! bounds only prune the walk: a block outside the view or one the surface cannot cross is dropped,
+//! children and all, and never makes another block finer or coarser.
+//!
+//! **Why no balance pass is needed.** Write `D_k` for the distance below which a block of level `k`
+//! splits: `2^k · ppu / px` finest cells (ppu: pixels one unit covers at distance 1, px: the cell size
+//! in pixels), and `W_k = BLOCK_CELLS · 2^k` for its width. Suppose a leaf `A` of level `a` touches a
+//! leaf `B` of level `b ≥ a + 2`. `A`'s parent `P` split, so `P` is nearer than `D_{a+1}`; `B` touches
+//! `P`, so `B` is nearer than `D_{a+1} + √3 · W_{a+1}` (`P`'s diagonal). `B` did not split, so it is at
+//! least `D_b ≥ 2 D_{a+1}` away. Both hold only if `D_{a+1} < √3 · W_{a+1}`, that is
+//! `ppu / (BLOCK_CELLS · px) < √3`. So where `px ≤ ppu / (BLOCK_CELLS · √3)` ([`Eye::balanced_pixels`],
+//! about 40 pixels for a 640-pixel-high 60° view), touching blocks differ by at most one level, and a
+//! larger `lod-pixels` is clamped to it. Four transition faces cannot meet around an edge either: for
+//! four blocks around an edge, the squared distances of the two across it from each other sum to the
+//! same as the other two's, so the two beside a block cannot both be nearer than `D` while it and the
+//! one across the edge are not.
+//!
+//! **Transition faces from six distance tests.** A leaf's face gets transition cells when the block of
+//! its own size across the face splits: that block's ancestors are nearer still, so they split too,
+//! and the finer blocks beyond exist.
 
 use crate::scene::BOX_HALF_EXTENT;
 use glam::{Mat4, UVec3, Vec3, Vec4};
@@ -17,6 +34,9 @@ use glam::{Mat4, UVec3, Vec3, Vec4};
 pub const BLOCK_CELLS: u32 = crate::scene::params::LOD_BLOCK_CELLS;
 /// The most levels a selection has (the finest is level 0).
 pub const MAX_LEVELS: u32 = 10;
+/// Blocks that touch differ by at most one level while pixels per unit ÷ (block cells × cell pixels)
+/// is at least √3; this is √3 with a margin above `f32` rounding.
+pub const BALANCED_RATIO: f32 = 1.733;
 
 /// The camera, as level selection needs it.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -28,8 +48,11 @@ pub struct Eye {
     /// Pixels one world unit covers at distance 1 (perspective), or at any distance (orthographic).
     pub pixels_per_unit: f32,
     pub orthographic: bool,
-    /// The largest a cell may look, in pixels.
+    /// The largest a cell may look, in pixels, as asked (see [`Eye::cell_pixels`]).
     pub lod_pixels: f32,
+    /// Drop the blocks outside the view frustum: true where nothing but the picture reads the mesh,
+    /// false where the whole surface is wanted (exports, readbacks).
+    pub cull: bool,
 }
 
 impl Eye {
@@ -38,9 +61,25 @@ impl Eye {
         if self.orthographic { size * self.pixels_per_unit } else { size * self.pixels_per_unit / distance }
     }
 
+    /// The largest cell size in pixels for which levels chosen by distance alone keep touching blocks
+    /// within one level (see the module's proof); unbounded for an orthographic view, whose blocks all
+    /// share one level.
+    pub fn balanced_pixels(&self) -> f32 {
+        if self.orthographic {
+            f32::INFINITY
+        } else {
+            self.pixels_per_unit / (BLOCK_CELLS as f32 * BALANCED_RATIO)
+        }
+    }
+
+    /// The cell size in pixels the selection uses: `lod_pixels`, clamped to [`Eye::balanced_pixels`].
+    pub fn cell_pixels(&self) -> f32 {
+        self.lod_pixels.min(self.balanced_pixels())
+    }
+
     /// False when the box from `low` to `high` lies wholly outside one plane of the view frustum.
     pub fn sees(&self, low: Vec3, high: Vec3) -> bool {
-        let corners = (0..8).map(|i| {
+        let corners: [Vec4; 8] = std::array::from_fn(|i| {
             let p = Vec3::new(
                 if i & 1 == 0 { low.x } else { high.x },
                 if i & 2 == 0 { low.y } else { high.y },
@@ -48,7 +87,6 @@ impl Eye {
             );
             self.view_projection * Vec4::from((p, 1.0))
         });
-        let corners: Vec<Vec4> = corners.collect();
         let outside = |test: &dyn Fn(Vec4) -> bool| corners.iter().all(|&c| test(c));
         !(outside(&|c| c.x < -c.w)
             || outside(&|c| c.x > c.w)
@@ -83,7 +121,8 @@ impl Block {
     }
 }
 
-/// A frame's blocks: they tile the box without gaps or overlaps.
+/// A frame's blocks: the leaves of the octree that the surface may cross (and, culling, that the eye
+/// sees). They never overlap.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Selection {
     /// Finest cells per axis.
@@ -114,182 +153,130 @@ pub fn supports(resolution: u32) -> bool {
     resolution.is_multiple_of(BLOCK_CELLS)
 }
 
-#[derive(Clone, Copy)]
-struct Node {
-    origin: UVec3,
-    level: u32,
-    /// Index of the first of eight children, or 0 for a leaf.
-    children: u32,
+/// The rule that gives every block its level, as numbers the CPU and the compute passes both read.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Rule {
+    /// Finest cells per axis.
+    pub resolution: u32,
+    /// The roots' level.
+    pub top: u32,
+    /// The eye, in finest cells from the box's low corner.
+    pub eye: Vec3,
+    /// Per level, the squared distance in finest cells below which a block of that level splits;
+    /// negative where it never does (level 0, levels at or below the floor).
+    pub split_below: [f32; MAX_LEVELS as usize],
 }
 
-struct Tree {
-    nodes: Vec<Node>,
-    /// Per node: the surface may cross its closed box.
-    holds: Vec<bool>,
-    roots_per_axis: u32,
-    root_width: u32,
-    resolution: u32,
-}
+impl Rule {
+    /// The rule for `eye` on a grid of `resolution` cells, with no block of level `floor` or finer
+    /// split (0: none held back; a larger floor answers a frame that overflowed with larger cells).
+    pub fn new(resolution: u32, eye: &Eye, floor: u32) -> Self {
+        let finest = 2.0 * BOX_HALF_EXTENT / resolution as f32;
+        let top = coarsest_level(resolution);
+        let pixels = eye.cell_pixels();
+        let split_below = std::array::from_fn(|k| {
+            let k = k as u32;
+            let cells = (1u32 << k) as f32;
+            if k == 0 || k <= floor || k > top {
+                -1.0
+            } else if eye.orthographic {
+                if cells * finest * eye.pixels_per_unit > pixels { f32::MAX } else { -1.0 }
+            } else {
+                let reach = cells * eye.pixels_per_unit / pixels;
+                (reach * reach).min(f32::MAX)
+            }
+        });
+        Self { resolution, top, eye: (eye.position + BOX_HALF_EXTENT) / finest, split_below }
+    }
 
-impl Tree {
-    fn leaf_at(&self, p: UVec3) -> usize {
-        let r = p / self.root_width;
-        let mut i = (r.x + self.roots_per_axis * (r.y + self.roots_per_axis * r.z)) as usize;
-        while self.nodes[i].children != 0 {
-            let n = self.nodes[i];
-            let half = (BLOCK_CELLS << n.level) / 2;
-            let o = (p - n.origin) / half;
-            i = n.children as usize + (o.x + 2 * o.y + 4 * o.z) as usize;
+    /// The squared distance, in finest cells, from the eye to the block of `level` at `origin`.
+    pub fn distance_squared(&self, origin: UVec3, level: u32) -> f32 {
+        let low = origin.as_vec3();
+        let high = (origin + UVec3::splat(BLOCK_CELLS << level)).as_vec3();
+        let d = self.eye.clamp(low, high) - self.eye;
+        d.x * d.x + d.y * d.y + d.z * d.z
+    }
+
+    /// True when the block of `level` at `origin` is split into eight.
+    pub fn splits(&self, origin: UVec3, level: u32) -> bool {
+        self.distance_squared(origin, level) < self.split_below[level as usize]
+    }
+
+    /// The transition faces of a leaf: those across which the block of its size splits.
+    pub fn transitions(&self, origin: UVec3, level: u32) -> u8 {
+        let width = BLOCK_CELLS << level;
+        let mut faces = 0;
+        for axis in 0..3 {
+            for side in 0..2 {
+                let mut beyond = origin;
+                if side == 0 {
+                    if origin[axis] == 0 {
+                        continue;
+                    }
+                    beyond[axis] -= width;
+                } else {
+                    if origin[axis] + width >= self.resolution {
+                        continue;
+                    }
+                    beyond[axis] += width;
+                }
+                if self.splits(beyond, level) {
+                    faces |= 1 << (2 * axis + side);
+                }
+            }
         }
-        i
+        faces
     }
 
-    fn push(&mut self, node: Node, surface: &Surface<'_>) {
-        let far = node.origin + UVec3::splat(BLOCK_CELLS << node.level);
-        let walls = node.origin.min_element() == 0 || far.max_element() == self.resolution;
-        self.holds.push(surface(self.world(node.origin), self.world(far), walls));
-        self.nodes.push(node);
+    /// Roots per axis: the blocks of level `top` that tile the box.
+    pub fn roots_per_axis(&self) -> u32 {
+        self.resolution / (BLOCK_CELLS << self.top)
     }
-
-    fn world(&self, p: UVec3) -> Vec3 {
-        Vec3::splat(-BOX_HALF_EXTENT) + p.as_vec3() * (2.0 * BOX_HALF_EXTENT / self.resolution as f32)
-    }
-
-    fn split(&mut self, i: usize, surface: &Surface<'_>) -> std::ops::Range<usize> {
-        let n = self.nodes[i];
-        let first = self.nodes.len();
-        let half = (BLOCK_CELLS << n.level) / 2;
-        for c in 0..8u32 {
-            let offset = UVec3::new(c & 1, (c >> 1) & 1, (c >> 2) & 1) * half;
-            self.push(Node { origin: n.origin + offset, level: n.level - 1, children: 0 }, surface);
-        }
-        self.nodes[i].children = first as u32;
-        first..first + 8
-    }
-
-    /// The point just beyond node `n` in direction `d` (each component −1, 0 or 1), if in the box.
-    fn beyond(&self, n: Node, d: [i32; 3]) -> Option<UVec3> {
-        let width = BLOCK_CELLS << n.level;
-        let mut p = [0u32; 3];
-        for a in 0..3 {
-            p[a] = match d[a] {
-                -1 => n.origin[a].checked_sub(1)?,
-                1 => Some(n.origin[a] + width).filter(|&x| x < self.resolution)?,
-                _ => n.origin[a],
-            };
-        }
-        Some(UVec3::from_array(p))
-    }
-}
-
-impl Tree {
-    /// True when, around one of the block's edges, the two blocks beside it are finer and the one
-    /// across the edge is not: four transition faces would then meet on that edge, where a closed
-    /// surface has room for two. Splitting the block leaves one coarse block around the edge.
-    fn alternates_around_an_edge(&self, n: Node) -> bool {
-        if n.level == 0 {
-            return false;
-        }
-        // Only blocks the surface may cross count: an edge of one that it cannot holds no crossing.
-        let level = |d: [i32; 3]| {
-            let j = self.leaf_at(self.beyond(n, d)?);
-            Some(if self.holds[j] { self.nodes[j].level } else { u32::MAX })
-        };
-        (0..3).any(|axis| {
-            let (b, c) = ((axis + 1) % 3, (axis + 2) % 3);
-            [(-1, -1), (-1, 1), (1, -1), (1, 1)].into_iter().any(|(sb, sc)| {
-                let mut across_b = [0; 3];
-                across_b[b] = sb;
-                let mut across_c = [0; 3];
-                across_c[c] = sc;
-                let mut diagonal = across_b;
-                diagonal[c] = sc;
-                let finer = |l: Option<u32>| l.is_some_and(|l| l < n.level);
-                finer(level(across_b))
-                    && finer(level(across_c))
-                    && level(diagonal).is_some_and(|l| l >= n.level)
-            })
-        })
-    }
-}
-
-/// The 26 directions to a block's neighbours.
-fn directions() -> impl Iterator<Item = [i32; 3]> {
-    (0..27).map(|i| [i % 3 - 1, i / 3 % 3 - 1, i / 9 - 1]).filter(|d| *d != [0, 0, 0])
 }
 
 /// Whether the surface may cross the box from `low` to `high` (touching the box's walls or not).
 pub type Surface<'a> = dyn Fn(Vec3, Vec3, bool) -> bool + 'a;
 
 /// Selects the blocks for `eye` on a grid of `resolution` finest cells per axis (a multiple of
-/// [`BLOCK_CELLS`]), refining only where `surface` says it may cross. Deterministic: the same inputs
+/// [`BLOCK_CELLS`]), keeping only those `surface` says it may cross. Deterministic: the same inputs
 /// give the same blocks in the same order.
 pub fn select(resolution: u32, eye: &Eye, surface: &Surface<'_>) -> Selection {
+    select_by(&Rule::new(resolution, eye, 0), eye, surface)
+}
+
+/// [`select`] by a given rule: level by level from the roots, as the compute passes walk.
+pub fn select_by(rule: &Rule, eye: &Eye, surface: &Surface<'_>) -> Selection {
+    let resolution = rule.resolution;
     assert!(supports(resolution), "resolution {resolution} is not a multiple of {BLOCK_CELLS}");
-    let top = coarsest_level(resolution);
-    let root_width = BLOCK_CELLS << top;
-    let roots_per_axis = resolution / root_width;
     let finest = 2.0 * BOX_HALF_EXTENT / resolution as f32;
     let world = |p: UVec3| Vec3::splat(-BOX_HALF_EXTENT) + p.as_vec3() * finest;
-    let mut tree = Tree { nodes: Vec::new(), holds: Vec::new(), roots_per_axis, root_width, resolution };
-    for z in 0..roots_per_axis {
-        for y in 0..roots_per_axis {
-            for x in 0..roots_per_axis {
-                let origin = UVec3::new(x, y, z) * root_width;
-                tree.push(Node { origin, level: top, children: 0 }, surface);
-            }
-        }
-    }
-    // Refine by the camera, breadth first.
-    let mut i = 0;
-    while i < tree.nodes.len() {
-        let n = tree.nodes[i];
-        if n.level > 0 {
-            let (low, high) = (world(n.origin), world(n.origin + UVec3::splat(BLOCK_CELLS << n.level)));
-            let distance = (eye.position.clamp(low, high) - eye.position).length().max(1e-6);
-            let cell = finest * (1u32 << n.level) as f32;
-            if tree.holds[i] && eye.sees(low, high) && eye.projected(cell, distance) > eye.lod_pixels {
-                tree.split(i, surface);
-            }
-        }
-        i += 1;
-    }
-    // Balance: split any block more than one level coarser than a neighbour, until none is.
-    let leaf_with_surface = |tree: &Tree, i: usize| tree.nodes[i].children == 0 && tree.holds[i];
-    let mut pending: Vec<usize> = (0..tree.nodes.len()).filter(|&i| leaf_with_surface(&tree, i)).collect();
-    while let Some(i) = pending.pop() {
-        if !leaf_with_surface(&tree, i) {
-            continue;
-        }
-        let n = tree.nodes[i];
-        for d in directions() {
-            let Some(p) = tree.beyond(n, d) else { continue };
-            let j = tree.leaf_at(p);
-            if tree.holds[j] && tree.nodes[j].level > n.level + 1 {
-                pending.extend(tree.split(j, surface));
-                pending.push(i);
-                break;
-            }
-        }
-        if tree.nodes[i].children == 0 && tree.alternates_around_an_edge(n) {
-            pending.extend(tree.split(i, surface));
-        }
-    }
+    let roots = rule.roots_per_axis();
+    let root_width = BLOCK_CELLS << rule.top;
+    let mut queue: Vec<UVec3> = (0..roots.pow(3))
+        .map(|i| UVec3::new(i % roots, i / roots % roots, i / (roots * roots)) * root_width)
+        .collect();
     let mut blocks = Vec::new();
-    for n in tree.nodes.iter().filter(|n| n.children == 0) {
-        let mut transitions = 0u8;
-        for a in 0..3 {
-            for s in 0..2 {
-                let mut d = [0; 3];
-                d[a] = if s == 0 { -1 } else { 1 };
-                if let Some(p) = tree.beyond(*n, d)
-                    && tree.nodes[tree.leaf_at(p)].level < n.level
-                {
-                    transitions |= 1 << (2 * a + s);
-                }
+    for level in (0..=rule.top).rev() {
+        let width = BLOCK_CELLS << level;
+        let mut next = Vec::new();
+        for origin in queue {
+            let far = origin + UVec3::splat(width);
+            let (low, high) = (world(origin), world(far));
+            if eye.cull && !eye.sees(low, high) {
+                continue;
+            }
+            let walls = origin.min_element() == 0 || far.max_element() == resolution;
+            if !surface(low, high, walls) {
+                continue;
+            }
+            if rule.splits(origin, level) {
+                let half = width / 2;
+                next.extend((0..8u32).map(|c| origin + UVec3::new(c & 1, (c >> 1) & 1, c >> 2) * half));
+            } else {
+                blocks.push(Block { origin, level, transitions: rule.transitions(origin, level) });
             }
         }
-        blocks.push(Block { origin: n.origin, level: n.level, transitions });
+        queue = next;
     }
-    Selection { resolution, levels: top + 1, blocks }
+    Selection { resolution, levels: rule.top + 1, blocks }
 }
