@@ -38,7 +38,8 @@ struct WalkState {
     queued: array<atomic<u32>, 2>,
     // The leaves of the last frame.
     leaves: u32,
-    _pad: u32,
+    // Some block of the last frame would have split but for the floor.
+    held: u32,
 }
 
 @group(0) @binding(15) var<uniform> walk: Walk;
@@ -53,15 +54,20 @@ struct WalkState {
 @group(0) @binding(14) var<storage, read_write> lod_data: array<u32>;
 
 const LOD_CELLS: u32 = 8u;
-// How far below the capacities a frame must stay for a raised floor to come down a level (each level
-// finer has up to four times the blocks near the surface).
-const ROOM_FACTOR: u32 = 16u;
+// How far below the capacities a frame must stay for a raised floor to come down a level: a level
+// finer has about four times the blocks near the surface.
+const ROOM_FACTOR: u32 = 4u;
 
 fn split_below(level: u32) -> f32 {
     if (level <= walk_state.floor) {
         return -1.0;
     }
     return walk.split_below[level / 4u][level % 4u];
+}
+
+// True when the floor alone keeps the block from splitting.
+fn held_back(origin: vec3<u32>, level: u32) -> bool {
+    return level <= walk_state.floor && distance_squared(origin, level) < walk.split_below[level / 4u][level % 4u];
 }
 
 fn distance_squared(origin: vec3<u32>, level: u32) -> f32 {
@@ -128,10 +134,14 @@ fn unpack(entry: u32) -> vec3<u32> {
 fn begin_walk() {
     if (walk_state.overflowed != 0u) {
         walk_state.floor = min(walk_state.floor + 1u, walk.top);
+    } else if (walk_state.held == 0u) {
+        // The floor changed nothing: the rule alone fits.
+        walk_state.floor = 0u;
     } else if (walk_state.floor > 0u && ROOM_FACTOR * walk_state.peak < walk.queue_capacity
         && ROOM_FACTOR * walk_state.leaves < grid.max_blocks) {
         walk_state.floor -= 1u;
     }
+    walk_state.held = 0u;
     walk_state.level = walk.top;
     walk_state.overflowed = 0u;
     walk_state.peak = 0u;
@@ -185,6 +195,9 @@ fn select_blocks(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_inv
         return;
     }
     if (!splits(origin, level)) {
+        if (held_back(origin, level)) {
+            walk_state.held = 1u;
+        }
         emit_leaf(origin, level);
         return;
     }

@@ -80,7 +80,8 @@ impl Capacity {
             blocks: grow(self.blocks, counters.active_blocks),
             cells: grow(self.cells, counters.active_cells),
             vertices: grow(self.vertices, counters.vertices),
-            indices: grow(self.indices, counters.indices) / 3 * 3 + 3,
+            // Whole triangles: rounded up to a multiple of three, and unchanged where it fits.
+            indices: grow(self.indices, counters.indices).div_ceil(3) * 3,
         }
     }
 }
@@ -159,7 +160,7 @@ impl MeshBuffers {
             lod_data: buffer(
                 "mesh: LOD levels and blocks",
                 if storage { (capacity.indices as u64 / 3 + 4 * blocks) * 4 } else { 0 },
-                U::COPY_DST,
+                U::COPY_DST | U::COPY_SRC,
             ),
             draw_args: buffer("mesh: draw arguments", 20, U::INDIRECT),
         }

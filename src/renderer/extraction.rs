@@ -209,8 +209,8 @@ impl Renderer {
         chosen.or_else(|| find(&|_, _| true)).unwrap_or(0)
     }
 
-    /// The camera as level selection sees it.
-    fn lod_eye(&self) -> Eye {
+    /// The camera as level selection sees it (for the frames drawn; a readback culls nothing).
+    pub fn lod_eye(&self) -> Eye {
         let view = self.camera_view();
         Eye {
             position: view.eye(),

@@ -104,12 +104,25 @@ impl Renderer {
         Ok(())
     }
 
+    /// Fixes the blocks the buffers hold (`None` returns to buffers that grow with the surface): a
+    /// level-of-detail frame that selects more keeps the mesh it had, and the next frames use larger
+    /// cells until there is room. For tests and tools that provoke it.
+    pub fn set_max_blocks(&mut self, max_blocks: Option<u32>) -> Result<(), ParamError> {
+        self.stage.sizing = match max_blocks {
+            Some(n) => Sizing::FixedBlocks(params::check_u32("block budget", n, 1, u32::MAX)?),
+            None => Sizing::Automatic,
+        };
+        self.reallocate(self.starting_capacity());
+        Ok(())
+    }
+
     pub(super) fn starting_capacity(&self) -> Capacity {
         let lod = self.settings.view.lod;
         let automatic =
             automatic_capacity(self.context.limits(), self.grid(), lod, self.context.has_compute());
         match self.stage.sizing {
             Sizing::Automatic => automatic,
+            Sizing::FixedBlocks(blocks) => Capacity { blocks, ..automatic },
             // Everything but the index buffer holds the whole grid, so only triangles overflow.
             Sizing::FixedTriangles(n) => {
                 let largest = Capacity::largest(self.grid(), storage_limit(self.context.limits()));

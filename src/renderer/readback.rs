@@ -37,6 +37,25 @@ impl Renderer {
         self.mesh_readback().finish_clamped().await.0
     }
 
+    /// With level of detail, the blocks the latest frame selected, as the views draw them (origin in
+    /// finest cells, then level | transition faces << 8), read back from the device; empty without.
+    /// Waits for the GPU: for tests and tools.
+    pub async fn lod_blocks(&self) -> Vec<[u32; 4]> {
+        let buffers = &self.stage.buffers;
+        if !self.settings.view.lod || !buffers.counters.usage().contains(wgpu::BufferUsages::STORAGE) {
+            return Vec::new();
+        }
+        let counters = read_buffer(&self.device, &self.queue, &buffers.counters, 0, 16).await;
+        let counters: Counters = bytemuck::pod_read_unaligned(&counters);
+        let count = counters.active_blocks.min(buffers.capacity.blocks) as u64;
+        if count == 0 {
+            return Vec::new();
+        }
+        let at = 4 * buffers.lod_blocks_offset() as u64;
+        let bytes = read_buffer(&self.device, &self.queue, &buffers.lod_data, at, 16 * count).await;
+        bytemuck::cast_slice(&bytes).to_vec()
+    }
+
     /// The field values the GPU computed for the current state: every grid point of every active block,
     /// with its grid coordinates (a point on a face between blocks appears once per block).
     pub async fn extract_field(&mut self) -> Vec<(UVec3, f32)> {

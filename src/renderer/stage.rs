@@ -14,6 +14,9 @@ pub(super) enum Sizing {
     Automatic,
     /// A fixed triangle budget (tests and tools); overflow is reported, nothing grows.
     FixedTriangles(u32),
+    /// A fixed number of blocks (tests and tools): level of detail answers a frame that needs more
+    /// with larger cells; everything else grows as with `Automatic`.
+    FixedBlocks(u32),
 }
 
 /// How the latest frame's mesh was counted.
@@ -115,9 +118,12 @@ impl MeshStage {
     /// most `largest`) when it overflowed and the buffers still are that size and grow by themselves.
     pub fn plan_growth(&mut self, capacity: Capacity, counters: &Counters, largest: Capacity) {
         let current = self.pending_capacity.unwrap_or(self.buffers.capacity);
-        if !capacity.holds(counters) && self.sizing == Sizing::Automatic && capacity == self.buffers.capacity
-        {
-            let grown = current.grown_for(counters).min(largest);
+        let grows = matches!(self.sizing, Sizing::Automatic | Sizing::FixedBlocks(_));
+        if !capacity.holds(counters) && grows && capacity == self.buffers.capacity {
+            let mut grown = current.grown_for(counters).min(largest);
+            if let Sizing::FixedBlocks(blocks) = self.sizing {
+                grown.blocks = blocks;
+            }
             if grown != current {
                 self.pending_capacity = Some(grown);
             }

@@ -238,9 +238,7 @@ impl Renderer {
         #[cfg(not(target_arch = "wasm32"))]
         let _ = self.device.poll(wgpu::PollType::Poll);
         let grid = self.grid();
-        for Reading { frame, capacity, counters, levels, counted, measures } in
-            self.stats.ring.take_ready()
-        {
+        for Reading { frame, capacity, counters, levels, counted, measures } in self.stats.ring.take_ready() {
             if let Some(sums) = measures {
                 self.teaching.take_measures(frame, &sums);
             }
@@ -249,8 +247,7 @@ impl Renderer {
             }
             let overflowed = !capacity.holds(&counters);
             let bytes = self.stage.buffers.bytes();
-            let stats =
-                FrameStats::from_counts(frame, grid, capacity, counters, overflowed, bytes, levels);
+            let stats = FrameStats::from_counts(frame, grid, capacity, counters, overflowed, bytes, levels);
             self.stats.offer(stats);
             // Grow once per size: figures from frames drawn with smaller buffers than now are stale.
             self.stage.plan_growth(capacity, &counters, largest_capacity(self.context.limits(), grid));

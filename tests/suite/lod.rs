@@ -43,7 +43,7 @@ fn mesh_by(name: &str, settings: Settings, scene: Option<&Scene>) -> (IndexedMes
 #[test]
 fn gpu_and_cpu_lod_meshes_are_equal_and_closed() {
     for (seed, spheres, resolution, lod_pixels, distance) in
-        [(1, 5, 64, 6.0, 2.0), (2, 16, 128, 8.0, 1.8), (3, 16, 256, 4.0, 3.0), (4, 64, 128, 3.0, 2.5)]
+        [(1, 5, 64, 14.0, 2.0), (2, 16, 128, 12.0, 1.8), (3, 16, 256, 8.0, 3.0), (4, 64, 128, 10.0, 2.5)]
     {
         let settings = lod_settings(seed, spheres, resolution, lod_pixels, distance);
         let (gpu, gpu_levels, gpu_triangles) = mesh_by("lod-gpu", settings, None);
@@ -82,6 +82,7 @@ fn a_coarsening_draws_the_cells_of_a_larger_lod_pixels_and_refuses_less_than_one
         assert_eq!(o.renderer.lod_coarsening(), 1.0);
         o.renderer.set_lod_coarsening(4.0).unwrap();
         let mesh = pollster::block_on(o.renderer.extract_mesh());
+        o.render();
         assert_eq!(o.renderer.lod_summary().unwrap().blocks, coarse_levels, "the selection of lod_pixels 8");
         mesh.to_soup()
             .matches(&coarse_mesh.to_soup(), 0.0, 0.0)
@@ -93,7 +94,7 @@ fn a_coarsening_draws_the_cells_of_a_larger_lod_pixels_and_refuses_less_than_one
         }
         assert_eq!(o.renderer.lod_coarsening(), 4.0, "a refused factor was taken");
         o.renderer.set_lod_coarsening(1.0).unwrap();
-        pollster::block_on(o.renderer.extract_mesh());
+        o.render();
         assert_eq!(o.renderer.lod_summary().unwrap().blocks, fine_levels, "back to lod_pixels 2");
     });
 }

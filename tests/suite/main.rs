@@ -26,6 +26,7 @@ mod js_layers;
 mod kept_mesh;
 mod lab;
 mod lod;
+mod lod_select;
 mod manifest;
 mod march;
 mod mc33;

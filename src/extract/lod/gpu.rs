@@ -7,7 +7,9 @@ use super::select::{Eye, Rule};
 use super::transition;
 use super::walk::{LOD_COMMON_WGSL, Walk, WalkPipelines};
 use super::{LodSummary, eye_of};
-use crate::device::{COMMON_WGSL, bind_buffers, bindings, compute_pipeline, has_compute, shader_module, wgsl};
+use crate::device::{
+    COMMON_WGSL, bind_buffers, bindings, compute_pipeline, has_compute, shader_module, wgsl,
+};
 use crate::extract::buffers::MeshBuffers;
 use crate::extract::extractor::{Capabilities, Extractor, Job, MeshCount, Output};
 use crate::extract::gpu::scene_buffers::SceneBuffers;
@@ -83,12 +85,7 @@ struct Bound {
 }
 
 impl Bound {
-    fn new(
-        device: &wgpu::Device,
-        p: &Pipelines,
-        scene: &SceneBuffers,
-        mesh: &MeshBuffers,
-    ) -> Self {
+    fn new(device: &wgpu::Device, p: &Pipelines, scene: &SceneBuffers, mesh: &MeshBuffers) -> Self {
         use wgpu::BufferUsages as U;
         let buffer = |label: &str, size: u64, usage: U| {
             device.create_buffer(&wgpu::BufferDescriptor {
@@ -233,7 +230,8 @@ impl Extractor for LodGpuExtractor {
 
     /// Makes the frame's rule: a few numbers, whatever the blocks; the device walks the octree.
     fn prepare(&mut self, job: &Job) -> Option<Counters> {
-        self.rule = eye_of(&mut self.frozen, job).map(|eye| (Rule::new(job.grid.cells_per_axis, &eye, 0), eye));
+        self.rule =
+            eye_of(&mut self.frozen, job).map(|eye| (Rule::new(job.grid.cells_per_axis, &eye, 0), eye));
         None
     }
 
@@ -284,6 +282,11 @@ impl Extractor for LodGpuExtractor {
     /// The blocks and triangles per level are counted on the device: the statistics read them back.
     fn lod_summary(&self) -> Option<LodSummary> {
         let (rule, _) = self.rule?;
-        Some(LodSummary { resolution: rule.resolution, blocks: Vec::new(), triangles: None, cells_processed: None })
+        Some(LodSummary {
+            resolution: rule.resolution,
+            blocks: Vec::new(),
+            triangles: None,
+            cells_processed: None,
+        })
     }
 }

@@ -143,7 +143,10 @@ fn culling_keeps_only_blocks_in_view_and_each_projects_within_lod_pixels() {
         let distance = (culled.position.clamp(low, high) - culled.position).length();
         let cell = finest * b.step() as f32;
         assert!(culled.sees(low, high), "{b:?} is out of view");
-        assert!(b.level == 0 || culled.projected(cell, distance) <= culled.lod_pixels, "{b:?} looks too coarse");
+        assert!(
+            b.level == 0 || culled.projected(cell, distance) <= culled.lod_pixels,
+            "{b:?} looks too coarse"
+        );
         finest_count += (b.level == 0) as usize;
     }
     // Culling drops blocks and never changes a kept block's level or faces.
@@ -397,4 +400,3 @@ fn in_the_finest_blocks_vertices_lie_as_close_to_the_exact_surface_as_the_unifor
     // Linear interpolation of this field puts vertices a few hundredths of a cell from the surface.
     assert!(uniform_rms < 0.1, "{uniform_rms}");
 }
-

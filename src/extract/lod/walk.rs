@@ -67,7 +67,8 @@ pub struct WalkState {
     pub peak: u32,
     pub queued: [u32; 2],
     pub leaves: u32,
-    pub _pad: u32,
+    /// Some block of the last frame would have split but for the floor.
+    pub held: u32,
 }
 
 /// The walk's pipelines, compiled once per device.
@@ -81,7 +82,8 @@ pub struct WalkPipelines {
 impl WalkPipelines {
     pub fn new(device: &wgpu::Device) -> Self {
         let source = wgsl!(include_str!("../../../shaders/extract/lod_select.wgsl"));
-        let module = shader_module(device, "lod walk: shader", &[crate::device::COMMON_WGSL, LOD_COMMON_WGSL, source]);
+        let module =
+            shader_module(device, "lod walk: shader", &[crate::device::COMMON_WGSL, LOD_COMMON_WGSL, source]);
         let pipeline =
             |name: &str| crate::device::compute_pipeline(device, &format!("lod walk: {name}"), &module, name);
         Self {
@@ -120,9 +122,15 @@ impl Walk {
         let queue_capacity =
             (QUEUED_PER_BLOCK * mesh.capacity.blocks as u64).clamp(4096, MOST_QUEUED.min(limit)) as u32;
         let buffer = |label: &str, size: u64, usage: U| {
-            device.create_buffer(&wgpu::BufferDescriptor { label: Some(label), size, usage, mapped_at_creation: false })
+            device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some(label),
+                size,
+                usage,
+                mapped_at_creation: false,
+            })
         };
-        let uniform = buffer("lod walk: uniforms", std::mem::size_of::<WalkUniform>() as u64, U::UNIFORM | U::COPY_DST);
+        let uniform =
+            buffer("lod walk: uniforms", std::mem::size_of::<WalkUniform>() as u64, U::UNIFORM | U::COPY_DST);
         let queues = buffer("lod walk: queues", 8 * queue_capacity as u64, U::STORAGE);
         let state = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("lod walk: state"),
@@ -157,7 +165,11 @@ impl Walk {
                 device,
                 "lod walk: plan",
                 &p.plan,
-                &[(bindings::WALK, &uniform), (bindings::WALK_STATE, &state), (bindings::WALK_DISPATCH, &dispatch)],
+                &[
+                    (bindings::WALK, &uniform),
+                    (bindings::WALK_STATE, &state),
+                    (bindings::WALK_DISPATCH, &dispatch),
+                ],
             ),
             bind_buffers(
                 device,
