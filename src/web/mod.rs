@@ -315,6 +315,13 @@ impl View {
         out
     }
 
+    /// With level of detail, the largest a cell may look on screen as the selection uses it, in
+    /// pixels: `lod-pixels` times the coarsening, held down where larger cells would let touching
+    /// blocks differ by more than one level; 0 without level of detail.
+    pub fn lod_cell_pixels(&self) -> f32 {
+        self.renderer.lod_cell_pixels().unwrap_or(0.0)
+    }
+
     /// The mesh's measures while `color_by` is `error` or `quality`: `[frame, RMS error, largest error
     /// (cells), vertices measured, then triangles in ten shape bins, slivers first]`; empty otherwise.
     pub fn measures(&self) -> Vec<f64> {

@@ -156,7 +156,7 @@ export class Hud {
       this.stats.mesher = mesher;
       this.#showAdapter();
     }
-    this.#showLevels(view.lod_levels());
+    this.#showLevels(view.lod_levels(), view.lod_cell_pixels());
     this.#showMeasures(view.measures());
     const stats = view.stats();
     if (!stats) return 0;
@@ -223,8 +223,12 @@ export class Hud {
     });
   }
 
-  /** Level of detail: `[resolution, blocks₀, triangles₀, …]` from the view, or empty without it. */
-  #showLevels(flat) {
+  /**
+   * Level of detail: `[resolution, blocks₀, triangles₀, …]` from the view, or empty without it, and
+   * the cell size the selection uses (held below what was asked where larger cells would let touching
+   * blocks differ by more than one level).
+   */
+  #showLevels(flat, heldPixels) {
     const $ = (id) => this.root.getElementById(id);
     if (!flat.length) {
       this.stats.lod = null;
@@ -235,12 +239,14 @@ export class Hud {
     for (let i = 1; i + 1 < flat.length; i += 2) levels.push({ blocks: flat[i], triangles: flat[i + 1] });
     const used = levels.filter((l) => l.blocks > 0).length;
     const state = this.#ctx.state;
-    const cellPixels = this.#ctx.get(FigureDetail).lodPixels ?? state['lod-pixels'];
+    const asked = this.#ctx.get(FigureDetail).lodPixels ?? state['lod-pixels'];
+    const held = heldPixels > 0 && heldPixels < asked * (1 - 1e-6);
+    const cellPixels = held ? heldPixels : asked;
     this.stats.lod = { resolution: flat[0], levels, cellPixels };
     $('hud-lod').hidden = $('hud-lod-cell').hidden = false;
     const [least, most] = [state['lod-pixels'], Math.max(state['lod-pixels'], state['max-lod-pixels'])];
     this.#show('lod', (words) => {
-      $('hud-lod-cell-text').textContent = words.t('hud.lod-cell-value', {
+      $('hud-lod-cell-text').textContent = words.t(held ? 'hud.lod-cell-held' : 'hud.lod-cell-value', {
         cell: upTo2(words, cellPixels), least: upTo2(words, least), most: upTo2(words, most) });
       $('hud-lod-summary').textContent = words.t('hud.lod-summary', { resolution: whole(words, flat[0]), count: used });
       $('hud-lod-levels').replaceChildren(...levels.map(({ blocks, triangles }, k) => {

@@ -86,6 +86,7 @@ export default {
   'hud.shape-bar': { zero: 'الشكل {from}–{to}: {triangles} مثلث', one: 'الشكل {from}–{to}: {triangles} مثلث', two: 'الشكل {from}–{to}: {triangles} مثلث', few: 'الشكل {from}–{to}: {triangles} مثلثات', many: 'الشكل {from}–{to}: {triangles} مثلث', other: 'الشكل {from}–{to}: {triangles} مثلث' },
   'hud.shapes-label': 'أشكال المثلثات من الرفيع إلى متساوي الأضلاع؛ {percent} % دون {limit}',
   'hud.lod-cell-value': '≤ {cell} px ({least}–{most})',
+  'hud.lod-cell-held': '≤ {cell} px، مقيّد لكي لا تختلف الكتل المتجاورة بأكثر من مستوى واحد (المطلوب {least}–{most})',
   'hud.lod-summary': { zero: 'دقة فعلية {resolution}³ · {count} مستوى', one: 'دقة فعلية {resolution}³ · مستوى واحد', two: 'دقة فعلية {resolution}³ · مستويان', few: 'دقة فعلية {resolution}³ · {count} مستويات', many: 'دقة فعلية {resolution}³ · {count} مستوى', other: 'دقة فعلية {resolution}³ · {count} مستوى' },
   'hud.lod-level': '{level}: القطاعات {blocks} · {triangles} △',
   'play.button': '▶ تشغيل',

@@ -86,6 +86,7 @@ export default {
   'hud.shape-bar': { one: 'Form {from}–{to}: {triangles} Dreieck', other: 'Form {from}–{to}: {triangles} Dreiecke' },
   'hud.shapes-label': 'Dreiecksformen von Splitter bis gleichseitig; {percent} % unter {limit}',
   'hud.lod-cell-value': '≤ {cell} px ({least}–{most})',
+  'hud.lod-cell-held': '≤ {cell} px, dort gehalten, damit sich benachbarte Blöcke um höchstens eine Stufe unterscheiden ({least}–{most} verlangt)',
   'hud.lod-summary': { one: '{resolution}³ effektiv · {count} Stufe', other: '{resolution}³ effektiv · {count} Stufen' },
   'hud.lod-level': '{level}: {blocks} Blöcke · {triangles} △',
   'play.button': '▶ Abspielen',

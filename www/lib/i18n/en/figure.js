@@ -138,6 +138,7 @@ export default {
   'hud.shape-bar': { one: 'shape {from}–{to}: {triangles} triangle', other: 'shape {from}–{to}: {triangles} triangles' },
   'hud.shapes-label': 'triangle shapes from sliver to equilateral; {percent} % below {limit}',
   'hud.lod-cell-value': '≤ {cell} px ({least}–{most})',
+  'hud.lod-cell-held': '≤ {cell} px, held there so that touching blocks differ by one level ({least}–{most} asked)',
   'hud.lod-summary': { one: '{resolution}³ effective · {count} level', other: '{resolution}³ effective · {count} levels' },
   // One level of detail: its number, its blocks and its triangles (△).
   'hud.lod-level': '{level}: {blocks} blocks · {triangles} △',

@@ -86,6 +86,7 @@ export default {
   'hud.shape-bar': { one: 'forma {from}–{to}: {triangles} triángulo', many: 'forma {from}–{to}: {triangles} de triángulos', other: 'forma {from}–{to}: {triangles} triángulos' },
   'hud.shapes-label': 'formas de triángulo, de astilla a equilátero; {percent} % por debajo de {limit}',
   'hud.lod-cell-value': '≤ {cell} px ({least}–{most})',
+  'hud.lod-cell-held': '≤ {cell} px, limitado para que los bloques vecinos difieran en un solo nivel ({least}–{most} pedidos)',
   'hud.lod-summary': { one: '{resolution}³ efectivas · {count} nivel', many: '{resolution}³ efectivas · {count} de niveles', other: '{resolution}³ efectivas · {count} niveles' },
   'hud.lod-level': '{level}: {blocks} bloques · {triangles} △',
   'play.button': '▶ Reproducir',

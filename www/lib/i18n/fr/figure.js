@@ -86,6 +86,7 @@ export default {
   'hud.shape-bar': { one: 'forme {from}–{to} : {triangles} triangle', many: 'forme {from}–{to} : {triangles} triangles', other: 'forme {from}–{to} : {triangles} triangles' },
   'hud.shapes-label': 'formes des triangles, de l’aplati à l’équilatéral ; {percent} % sous {limit}',
   'hud.lod-cell-value': '≤ {cell} px ({least}–{most})',
+  'hud.lod-cell-held': '≤ {cell} px, limité pour que des blocs voisins ne diffèrent que d’un niveau ({least}–{most} demandés)',
   'hud.lod-summary': { one: '{resolution}³ effectifs · {count} niveau', many: '{resolution}³ effectifs · {count} niveaux', other: '{resolution}³ effectifs · {count} niveaux' },
   'hud.lod-level': '{level} : {blocks} blocs · {triangles} △',
   'play.button': '▶ Lecture',

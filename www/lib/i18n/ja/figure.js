@@ -86,6 +86,7 @@ export default {
   'hud.shape-bar': { other: '形状 {from}–{to}：三角形 {triangles} 個' },
   'hud.shapes-label': '細長いものから正三角形までの三角形の形状。{limit} 未満が {percent} %',
   'hud.lod-cell-value': '≤ {cell} px（{least}–{most}）',
+  'hud.lod-cell-held': '≤ {cell} px（隣接ブロックのレベル差を 1 以内に保つため制限。指定 {least}–{most}）',
   'hud.lod-summary': { other: '実効 {resolution}³ · {count} レベル' },
   'hud.lod-level': '{level}：{blocks} ブロック · {triangles} △',
   'play.button': '▶ 再生',

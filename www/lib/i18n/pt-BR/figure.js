@@ -86,6 +86,7 @@ export default {
   'hud.shape-bar': { one: 'forma {from}–{to}: {triangles} triângulo', many: 'forma {from}–{to}: {triangles} triângulos', other: 'forma {from}–{to}: {triangles} triângulos' },
   'hud.shapes-label': 'formas dos triângulos, de lasca a equilátero; {percent} % abaixo de {limit}',
   'hud.lod-cell-value': '≤ {cell} px ({least}–{most})',
+  'hud.lod-cell-held': '≤ {cell} px, limitado para que blocos vizinhos difiram em um só nível ({least}–{most} pedidos)',
   'hud.lod-summary': { one: '{resolution}³ efetivo · {count} nível', many: '{resolution}³ efetivo · {count} níveis', other: '{resolution}³ efetivo · {count} níveis' },
   'hud.lod-level': '{level}: {blocks} blocos · {triangles} △',
   'play.button': '▶ Reproduzir',

@@ -86,6 +86,7 @@ export default {
   'hud.shape-bar': { other: '形状 {from}–{to}：{triangles} 个三角形' },
   'hud.shapes-label': '三角形形状，从狭长到等边；{percent} % 低于 {limit}',
   'hud.lod-cell-value': '≤ {cell} px（{least}–{most}）',
+  'hud.lod-cell-held': '≤ {cell} px，限制于此以使相邻块最多相差一级（要求 {least}–{most}）',
   'hud.lod-summary': { other: '等效 {resolution}³ · {count} 个层级' },
   'hud.lod-level': '{level}：{blocks} 个块 · {triangles} △',
   'play.button': '▶ 播放',
