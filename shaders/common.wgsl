@@ -116,6 +116,18 @@ fn block_index(coords: vec3<u32>) -> u32 {
 }
 
 // The active block a workgroup of a per-block pass works on.
+// The arguments of an indirect dispatch.
+struct DispatchIndirect {
+    x: u32,
+    y: u32,
+    z: u32,
+}
+
+// Workgroups for `count`, in rows of at most DISPATCH_ROW (`slot_of` reads them back).
+fn rows(count: u32) -> DispatchIndirect {
+    return DispatchIndirect(min(count, DISPATCH_ROW), (count + DISPATCH_ROW - 1u) / DISPATCH_ROW, 1u);
+}
+
 fn slot_of(workgroup: vec3<u32>) -> u32 {
     return workgroup.x + workgroup.y * DISPATCH_ROW;
 }

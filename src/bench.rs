@@ -162,8 +162,10 @@ fn measure(offscreen: &mut Offscreen, plan: &Plan, timed: bool) -> Result<Record
         std::array::from_fn(|i| {
             // An extractor on the CPU runs no compute pass: only the shading stage is timed.
             let computed = i + 1 < STAGES.len();
-            // Only level of detail selects blocks in a stage of its own.
-            if (!on_device && computed) || (i == 0 && !settings.view.lod) {
+            // Level of detail selects its blocks in the first stage, where a uniform grid has none,
+            // and has no second (the selection keeps only blocks the surface may cross).
+            let missing = if settings.view.lod { i == 1 } else { i == 0 };
+            if (!on_device && computed) || missing {
                 0.0
             } else {
                 median(&mut stages.iter().map(|s| s.stages_ms[i]).collect::<Vec<_>>())

@@ -20,6 +20,14 @@ if ! command -v wasm-bindgen >/dev/null || [ "$(wasm-bindgen --version | awk '{p
     cargo install wasm-bindgen-cli --version "=$version"
 fi
 
+# A panic's message names its source file: name the registry's crates' files from the crate's folder on
+# (`wgpu-30.0.1/src/…`), whichever folder this machine keeps them in, so that the build is the same
+# size everywhere (and smaller). Added to .cargo/config.toml's flags: cargo joins the lists.
+remap=()
+for dir in "${CARGO_HOME:-$HOME/.cargo}"/registry/src/*/; do
+    [ -d "$dir" ] && remap+=(--config "target.wasm32-unknown-unknown.rustflags=[\"--remap-path-prefix=$dir=\"]")
+done
+
 # build OUT [wasm-bindgen flags] -- [cargo flags]
 build() {
     local out=$1
@@ -27,7 +35,7 @@ build() {
     local bindgen=()
     while [ "$1" != "--" ]; do bindgen+=("$1"); shift; done
     shift
-    cargo build --profile wasm --lib --target wasm32-unknown-unknown "$@"
+    cargo build "${remap[@]}" --profile wasm --lib --target wasm32-unknown-unknown "$@"
     wasm-bindgen --target web --no-typescript "${bindgen[@]}" --out-dir "$out" \
         target/wasm32-unknown-unknown/wasm/metaballs.wasm
     # Short names for the imports from the glue (wasm-bindgen's carry 16 hex digits of hash each).
@@ -40,7 +48,7 @@ build pkg --remove-name-section --remove-producers-section --
 build pkg-webgl --remove-name-section --remove-producers-section -- --no-default-features --features webgl
 # The critical points' search and the measures along the iso level (levels/): a third, small module,
 # loaded by the topology worker only when a figure asks for them.
-cargo build --profile wasm --lib --target wasm32-unknown-unknown -p metaballs-levels
+cargo build "${remap[@]}" --profile wasm --lib --target wasm32-unknown-unknown -p metaballs-levels
 wasm-bindgen --target web --no-typescript --remove-name-section --remove-producers-section --out-dir pkg-levels \
     target/wasm32-unknown-unknown/wasm/metaballs_levels.wasm
 echo "built pkg-levels/metaballs_levels_bg.wasm ($(wc -c < pkg-levels/metaballs_levels_bg.wasm) bytes, $(gzip -9c pkg-levels/metaballs_levels_bg.wasm | wc -c) gzipped)"

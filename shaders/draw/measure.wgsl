@@ -28,12 +28,6 @@ struct CounterWords {
     _after: array<u32, 2>,
 }
 
-struct DispatchIndirect {
-    x: u32,
-    y: u32,
-    z: u32,
-}
-
 const SQUARES_SCALE: f32 = 1048576.0;
 
 @group(0) @binding(2) var<storage, read_write> counters: CounterWords;
@@ -60,9 +54,7 @@ fn triangle_count() -> u32 {
 @compute @workgroup_size(1)
 fn plan_measures() {
     let count = (max(vertex_count(), triangle_count()) + 63u) / 64u;
-    measure_dispatch.x = min(count, DISPATCH_ROW);
-    measure_dispatch.y = (count + DISPATCH_ROW - 1u) / DISPATCH_ROW;
-    measure_dispatch.z = 1u;
+    measure_dispatch = rows(count);
 }
 
 fn position(i: u32) -> vec3<f32> {

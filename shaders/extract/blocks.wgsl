@@ -32,19 +32,11 @@ fn classify_blocks(@builtin(global_invocation_id) id: vec3<u32>) {
     block_slots[block] = slot;
 }
 
-struct DispatchIndirect {
-    x: u32,
-    y: u32,
-    z: u32,
-}
-
 @group(0) @binding(5) var<storage, read_write> block_dispatch: DispatchIndirect;
 
 // One invocation: one workgroup per active block (that fits), in rows of DISPATCH_ROW.
 @compute @workgroup_size(1)
 fn plan_dispatch() {
     let count = min(atomicLoad(&counters.active_blocks), grid.max_blocks);
-    block_dispatch.x = min(count, DISPATCH_ROW);
-    block_dispatch.y = (count + DISPATCH_ROW - 1u) / DISPATCH_ROW;
-    block_dispatch.z = 1u;
+    block_dispatch = rows(count);
 }

@@ -176,19 +176,11 @@ fn interior_code(f: array<f32, 8>) -> u32 {
     return 0u;
 }
 
-struct DispatchIndirect {
-    x: u32,
-    y: u32,
-    z: u32,
-}
-
 @group(0) @binding(9) var<storage, read_write> cell_dispatch: DispatchIndirect;
 
 // One invocation: one workgroup per 64 active cells (that fit), in rows of DISPATCH_ROW.
 @compute @workgroup_size(1)
 fn plan_cell_dispatch() {
     let count = (min(atomicLoad(&counters.active_cells), grid.max_cells) + 63u) / 64u;
-    cell_dispatch.x = min(count, DISPATCH_ROW);
-    cell_dispatch.y = (count + DISPATCH_ROW - 1u) / DISPATCH_ROW;
-    cell_dispatch.z = 1u;
+    cell_dispatch = rows(count);
 }

@@ -1,6 +1,6 @@
 // Level of detail on the device (src/extract/lod/gpu.rs): the frame's blocks come from the selection
-// passes (shaders/extract/lod_select.wgsl), which keep those the surface may cross; these passes mesh
-// them as src/extract/lod/mesher.rs does.
+// passes (shaders/extract/lod_select.wgsl, in the same module), which keep those the surface may
+// cross; these passes mesh them as src/extract/lod/mesher.rs does.
 //
 // `find_cells`: one workgroup per kept block samples the block at its level (and each transition face
 // at the level below) into workgroup memory, lists the crossed cells and transition cells, and makes
@@ -8,6 +8,28 @@
 // finest cells, its axis and its level): a fine block and the transition cells of its coarse neighbour
 // name a shared edge alike. `make_triangles`: each listed cell looks its vertices up and appends its
 // triangles. `finalize_draw`: the indexed indirect draw. Nothing is read back.
+
+// The counters; from word 64 (byte 256, LEVEL_COUNTS_OFFSET) the triangles of each level, then the
+// leaves of each level.
+struct LodCounters {
+    active_blocks: atomic<u32>,
+    vertices: atomic<u32>,
+    indices: atomic<u32>,
+    active_cells: atomic<u32>,
+    // The selection ran out of room: this frame meshes nothing and keeps the mesh it had.
+    lod_overflowed: u32,
+    // Levels at or below it were held back from splitting.
+    lod_floor: u32,
+    _pad: array<u32, 58>,
+    level_triangles: array<atomic<u32>, 12>,
+    level_blocks: array<atomic<u32>, 12>,
+}
+
+@group(0) @binding(2) var<storage, read_write> counters: LodCounters;
+
+// The meshing passes' dispatches: [0] one workgroup per kept block (written after the selection), [1]
+// one invocation per listed cell.
+@group(0) @binding(26) var<storage, read_write> lod_dispatch: array<DispatchIndirect, 2>;
 
 struct Lod {
     _unused: u32,
@@ -18,8 +40,6 @@ struct Lod {
     _pad: u32,
 }
 
-// Kept blocks, as indices into the selection.
-@group(0) @binding(24) var<storage, read_write> kept_blocks: array<u32>;
 // The tables, in one buffer (WebGPU lets a stage bind only 8 storage buffers): from CASES, per case
 // bits 0..11 the crossed edges and bits 16.. the triangle count; from TRIANGLES, per case 16 edge
 // numbers of the triangles (0xffffffff after the last); from TRANSITIONS, per transition case 13
@@ -33,8 +53,6 @@ const TRANSITIONS: u32 = 4352u;
 @group(0) @binding(11) var<storage, read_write> vertices: array<f32>;
 @group(0) @binding(12) var<storage, read_write> indices: array<u32>;
 @group(0) @binding(20) var<uniform> lod: Lod;
-// The selection: origin in finest cells (xyz), then level | transition faces << 8.
-@group(0) @binding(21) var<storage, read> selection: array<vec4<u32>>;
 // The listed cells: kept block's slot, then cell | case << 10 (cells 0..511 regular, 512.. transition).
 @group(0) @binding(22) var<storage, read_write> cells: array<vec2<u32>>;
 // The hash table: per slot, the edge key (0 for an empty slot) and the vertex made for it.
@@ -62,8 +80,10 @@ struct Block {
     transitions: u32,
 }
 
+// The kept block in slot `index`, where the selection passes left it in `lod_data`.
 fn block_at(index: u32) -> Block {
-    let b = selection[index];
+    let at = lod.blocks_offset + 4u * index;
+    let b = vec4<u32>(lod_data[at], lod_data[at + 1u], lod_data[at + 2u], lod_data[at + 3u]);
     return Block(b.xyz, b.w & 0xffu, (b.w >> 8u) & 0x3fu);
 }
 
@@ -81,18 +101,6 @@ fn sample(id: vec3<u32>) -> f32 {
         return 0.0;
     }
     return field_at(grid_point(id));
-}
-
-// [0]: one workgroup per kept block; [1]: one invocation per listed cell.
-@group(0) @binding(26) var<storage, read_write> lod_dispatch: array<DispatchIndirect, 2>;
-
-@compute @workgroup_size(1)
-fn plan_blocks() {
-    var blocks = min(atomicLoad(&counters.active_blocks), grid.max_blocks);
-    if (counters.lod_overflowed != 0u) {
-        blocks = 0u;
-    }
-    lod_dispatch[0] = rows(blocks);
 }
 
 @compute @workgroup_size(1)
@@ -239,7 +247,7 @@ fn transition_edge(b: Block, face: u32, edge: u32, ci: u32, cj: u32) -> Transiti
 @compute @workgroup_size(64)
 fn find_cells(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_invocation_index) local: u32) {
     let slot = slot_of(workgroup);
-    let b = block_at(kept_blocks[slot]);
+    let b = block_at(slot);
     let step = 1u << b.level;
     for (var i = local; i < LOD_POINTS * LOD_POINTS * LOD_POINTS; i += 64u) {
         let c = vec3<u32>(i % LOD_POINTS, (i / LOD_POINTS) % LOD_POINTS, i / (LOD_POINTS * LOD_POINTS));
@@ -347,7 +355,7 @@ fn make_triangles(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_in
         return;
     }
     let listed = cells[id];
-    let b = block_at(kept_blocks[listed.x]);
+    let b = block_at(listed.x);
     let cell = listed.y & 0x3ffu;
     let case_index = listed.y >> 10u;
     let step = 1u << b.level;

@@ -50,7 +50,7 @@ bindings! {
     /// Its two queues of candidate blocks.
     QUEUES = 16,
     /// Its state between dispatches and frames.
-    WALK_STATE = 18,
+    STATE = 18,
     /// Its indirect dispatch of each level.
     WALK_DISPATCH = 19,
 
@@ -60,14 +60,10 @@ bindings! {
 
     /// Level of detail's uniforms (`shaders/extract/lod.wgsl`).
     LOD = 20,
-    /// The selected blocks, from the selection passes.
-    SELECTION = 21,
     /// The listed cells of the kept blocks.
     CELLS = 22,
     /// The hash table of the vertices made on edges.
     HASH = 23,
-    /// The selected blocks, as indices into the selection.
-    KEPT_BLOCKS = 24,
     /// The regular and transition cells' tables, in one buffer.
     LOD_TABLES = 25,
     /// The level-of-detail passes' indirect dispatches.

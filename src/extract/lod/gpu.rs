@@ -5,7 +5,7 @@
 
 use super::select::{Eye, Rule};
 use super::transition;
-use super::walk::{LOD_COMMON_WGSL, Walk, WalkPipelines};
+use super::walk::{Walk, WalkPipelines};
 use super::{LodSummary, eye_of};
 use crate::device::{
     COMMON_WGSL, bind_buffers, bindings, compute_pipeline, has_compute, shader_module, wgsl,
@@ -42,7 +42,6 @@ pub fn packed_transition_table() -> Vec<u32> {
 /// The pipelines and tables, compiled once per device.
 struct Pipelines {
     walk: WalkPipelines,
-    plan_blocks: wgpu::ComputePipeline,
     find_cells: wgpu::ComputePipeline,
     plan_cells: wgpu::ComputePipeline,
     triangles: wgpu::ComputePipeline,
@@ -53,15 +52,19 @@ struct Pipelines {
 
 impl Pipelines {
     fn new(device: &wgpu::Device) -> Self {
-        let source = wgsl!(include_str!("../../../shaders/extract/lod.wgsl"));
-        let module = shader_module(device, "lod: shader", &[COMMON_WGSL, LOD_COMMON_WGSL, source]);
+        let meshing = wgsl!(include_str!("../../../shaders/extract/lod.wgsl"));
+        let selection = wgsl!(include_str!("../../../shaders/extract/lod_select.wgsl"));
+        let module = shader_module(device, "lod: shader", &[COMMON_WGSL, meshing, selection]);
         let pipeline = |name: &str| compute_pipeline(device, &format!("lod: {name} pipeline"), &module, name);
         let mut tables: Vec<u32> = packed_case_table().to_vec();
         tables.extend(flat_triangle_table().iter().map(|&e| e as u32));
         tables.extend(packed_transition_table());
         Self {
-            walk: WalkPipelines::new(device),
-            plan_blocks: pipeline("plan_blocks"),
+            walk: WalkPipelines {
+                begin: pipeline("begin_walk"),
+                select: pipeline("select_blocks"),
+                plan: pipeline("plan_level"),
+            },
             find_cells: pipeline("find_cells"),
             plan_cells: pipeline("plan_cells"),
             triangles: pipeline("make_triangles"),
@@ -81,7 +84,7 @@ struct Bound {
     /// Per slot of the vertex hash table, its edge key and vertex.
     hash: wgpu::Buffer,
     dispatch: wgpu::Buffer,
-    groups: [wgpu::BindGroup; 5],
+    groups: [wgpu::BindGroup; 4],
 }
 
 impl Bound {
@@ -104,8 +107,6 @@ impl Bound {
             contents: bytemuck::cast_slice(&[0u32, partition_slots as u32, mesh.lod_blocks_offset(), 0]),
             usage: U::UNIFORM | U::COPY_DST,
         });
-        let selection = buffer("lod: selection", capacity.blocks as u64 * 16, U::empty());
-        let active = buffer("lod: kept blocks", capacity.blocks as u64 * 4, U::empty());
         let cells = buffer("lod: listed cells", capacity.cells as u64 * 8, U::empty());
         let hash = buffer("lod: vertex hash table", table_slots * 8, U::COPY_DST);
         let dispatch = buffer("lod: dispatch", 24, U::INDIRECT);
@@ -114,28 +115,18 @@ impl Bound {
         };
         let groups = [
             group(
-                "lod: plan blocks",
-                &p.plan_blocks,
-                &[
-                    (bindings::GRID, &scene.grid),
-                    (bindings::COUNTERS, &mesh.counters),
-                    (bindings::LOD_DISPATCH, &dispatch),
-                ],
-            ),
-            group(
                 "lod: find cells",
                 &p.find_cells,
                 &[
                     (bindings::GRID, &scene.grid),
                     (bindings::SPHERES, &scene.spheres),
                     (bindings::COUNTERS, &mesh.counters),
-                    (bindings::KEPT_BLOCKS, &active),
                     (bindings::LOD_TABLES, &p.tables),
                     (bindings::VERTICES, &mesh.vertices),
                     (bindings::LOD, &uniform),
-                    (bindings::SELECTION, &selection),
                     (bindings::CELLS, &cells),
                     (bindings::HASH, &hash),
+                    (bindings::LOD_DATA, &mesh.lod_data),
                 ],
             ),
             group(
@@ -153,11 +144,9 @@ impl Bound {
                 &[
                     (bindings::GRID, &scene.grid),
                     (bindings::COUNTERS, &mesh.counters),
-                    (bindings::KEPT_BLOCKS, &active),
                     (bindings::LOD_TABLES, &p.tables),
                     (bindings::INDICES, &mesh.indices),
                     (bindings::LOD, &uniform),
-                    (bindings::SELECTION, &selection),
                     (bindings::CELLS, &cells),
                     (bindings::HASH, &hash),
                     (bindings::LOD_DATA, &mesh.lod_data),
@@ -173,7 +162,7 @@ impl Bound {
                 ],
             ),
         ];
-        let walk = Walk::new(device, &p.walk, scene, mesh, &selection, &active);
+        let walk = Walk::new(device, &p.walk, scene, mesh, &dispatch);
         Self { walk, hash, dispatch, groups }
     }
 }
@@ -243,7 +232,7 @@ impl Extractor for LodGpuExtractor {
         bound.walk.prepare(queue, &rule, &eye);
         encoder.clear_buffer(&buffers.counters, 0, None);
         encoder.clear_buffer(&bound.hash, 0, None);
-        let [plan_blocks, find_cells, plan_cells, triangles, finalize] = &bound.groups;
+        let [find_cells, plan_cells, triangles, finalize] = &bound.groups;
         let describe = |label: &'static str, stage: u32| wgpu::ComputePassDescriptor {
             label: Some(label),
             timestamp_writes: timing.map(|t| t.compute_writes(stage)),
@@ -251,12 +240,6 @@ impl Extractor for LodGpuExtractor {
         {
             let mut pass = encoder.begin_compute_pass(&describe("lod: selection", 0));
             bound.walk.encode(&mut pass, &p.walk, &rule);
-        }
-        {
-            let mut pass = encoder.begin_compute_pass(&describe("lod: blocks", 1));
-            pass.set_pipeline(&p.plan_blocks);
-            pass.set_bind_group(0, plan_blocks, &[]);
-            pass.dispatch_workgroups(1, 1, 1);
         }
         {
             let mut pass = encoder.begin_compute_pass(&describe("lod: cells", 2));

@@ -25,17 +25,15 @@ use crate::scene::Sphere;
 use crate::scene::params::view::Blend;
 use select::{Eye, Selection};
 
-/// The eye `job` selects by: its own, or while the selection is frozen (`lod_freeze`) the one kept in
-/// `frozen` from the first frozen frame. `None` without level of detail.
+/// The eye `job` selects by: its own, kept in `frozen`, or while the selection is frozen (`lod_freeze`)
+/// the one kept there from before. `None` without level of detail.
 pub fn eye_of(frozen: &mut Option<Eye>, job: &Job) -> Option<Eye> {
     let lod = job.lod?;
-    if !lod.freeze {
-        *frozen = None;
-        return Some(lod.eye);
+    if !lod.freeze || frozen.is_none() {
+        *frozen = Some(lod.eye);
     }
     // A frozen eye keeps its levels; what it culls follows the frame (a readback wants everything).
-    let kept = frozen.get_or_insert(lod.eye);
-    Some(Eye { cull: lod.eye.cull, ..*kept })
+    Some(Eye { cull: lod.eye.cull, ..(*frozen)? })
 }
 
 /// [`select::select`] keeping only the blocks the surface f = `iso` of `spheres` may cross, by the

@@ -77,23 +77,21 @@ impl Eye {
         self.lod_pixels.min(self.balanced_pixels())
     }
 
-    /// False when the box from `low` to `high` lies wholly outside one plane of the view frustum.
+    /// The view frustum's six planes, from the projection (clip depth 0 to 1): a point `p` is inside
+    /// where `plane.xyz · p + plane.w ≥ 0` for each.
+    pub fn planes(&self) -> [Vec4; 6] {
+        let row = |i| self.view_projection.row(i);
+        [row(3) + row(0), row(3) - row(0), row(3) + row(1), row(3) - row(1), row(2), row(3) - row(2)]
+    }
+
+    /// False when the box from `low` to `high` lies wholly outside one plane of the view frustum: its
+    /// corner farthest along the plane's normal is outside.
     pub fn sees(&self, low: Vec3, high: Vec3) -> bool {
-        let corners: [Vec4; 8] = std::array::from_fn(|i| {
-            let p = Vec3::new(
-                if i & 1 == 0 { low.x } else { high.x },
-                if i & 2 == 0 { low.y } else { high.y },
-                if i & 4 == 0 { low.z } else { high.z },
-            );
-            self.view_projection * Vec4::from((p, 1.0))
-        });
-        let outside = |test: &dyn Fn(Vec4) -> bool| corners.iter().all(|&c| test(c));
-        !(outside(&|c| c.x < -c.w)
-            || outside(&|c| c.x > c.w)
-            || outside(&|c| c.y < -c.w)
-            || outside(&|c| c.y > c.w)
-            || outside(&|c| c.z < 0.0)
-            || outside(&|c| c.z > c.w))
+        self.planes().iter().all(|plane| {
+            let normal = plane.truncate();
+            let farthest = Vec3::select(normal.cmpgt(Vec3::ZERO), high, low);
+            normal.dot(farthest) + plane.w >= 0.0
+        })
     }
 }
 
@@ -163,8 +161,9 @@ pub struct Rule {
     /// The eye, in finest cells from the box's low corner.
     pub eye: Vec3,
     /// Per level, the squared distance in finest cells below which a block of that level splits;
-    /// negative where it never does (level 0, levels at or below the floor).
-    pub split_below: [f32; MAX_LEVELS as usize],
+    /// negative where it never does (level 0, levels at or below the floor, and the slots past the
+    /// coarsest, which pad it to three vectors of four for the compute passes).
+    pub split_below: [f32; 12],
 }
 
 impl Rule {
@@ -174,18 +173,16 @@ impl Rule {
         let finest = 2.0 * BOX_HALF_EXTENT / resolution as f32;
         let top = coarsest_level(resolution);
         let pixels = eye.cell_pixels();
-        let split_below = std::array::from_fn(|k| {
-            let k = k as u32;
+        let mut split_below = [-1.0; 12];
+        for k in floor + 1..=top.min(MAX_LEVELS - 1) {
             let cells = (1u32 << k) as f32;
-            if k == 0 || k <= floor || k > top {
-                -1.0
-            } else if eye.orthographic {
+            split_below[k as usize] = if eye.orthographic {
                 if cells * finest * eye.pixels_per_unit > pixels { f32::MAX } else { -1.0 }
             } else {
                 let reach = cells * eye.pixels_per_unit / pixels;
                 (reach * reach).min(f32::MAX)
-            }
-        });
+            };
+        }
         Self { resolution, top, eye: (eye.position + BOX_HALF_EXTENT) / finest, split_below }
     }
 
@@ -247,7 +244,8 @@ pub fn select(resolution: u32, eye: &Eye, surface: &Surface<'_>) -> Selection {
 /// [`select`] by a given rule: level by level from the roots, as the compute passes walk.
 pub fn select_by(rule: &Rule, eye: &Eye, surface: &Surface<'_>) -> Selection {
     let resolution = rule.resolution;
-    assert!(supports(resolution), "resolution {resolution} is not a multiple of {BLOCK_CELLS}");
+    // The settings hold a level-of-detail resolution to a multiple of the blocks' cells.
+    debug_assert!(supports(resolution));
     let finest = 2.0 * BOX_HALF_EXTENT / resolution as f32;
     let world = |p: UVec3| Vec3::splat(-BOX_HALF_EXTENT) + p.as_vec3() * finest;
     let roots = rule.roots_per_axis();

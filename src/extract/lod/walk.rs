@@ -5,14 +5,10 @@
 //! crosses between the CPU and the device.
 
 use super::select::{Eye, MAX_LEVELS, Rule};
-use crate::device::{bind_buffers, bindings, shader_module, wgsl};
+use crate::device::{bind_buffers, bindings};
 use crate::extract::buffers::MeshBuffers;
 use crate::extract::gpu::scene_buffers::SceneBuffers;
 use bytemuck::{Pod, Zeroable};
-use wgpu::util::DeviceExt;
-
-/// The level-of-detail passes' shared declarations (`shaders/extract/lod_common.wgsl`).
-pub(crate) const LOD_COMMON_WGSL: &str = wgsl!(include_str!("../../../shaders/extract/lod_common.wgsl"));
 
 /// Workgroups in a row of a dispatch (`DISPATCH_ROW` in `shaders/common.wgsl`).
 const DISPATCH_ROW: u32 = 32768;
@@ -25,29 +21,26 @@ const MOST_QUEUED: u64 = 1 << 22;
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Pod, Zeroable, PartialEq)]
 pub struct WalkUniform {
-    pub view_projection: [[f32; 4]; 4],
+    /// The view frustum's planes ([`Eye::planes`]).
+    pub planes: [glam::Vec4; 6],
     /// The eye in finest cells from the box's low corner; w: 1 to drop the blocks outside the view.
     pub eye: [f32; 4],
-    /// [`Rule::split_below`], four levels to a vector.
-    pub split_below: [[f32; 4]; 3],
+    /// [`Rule::split_below`] (four levels to a vector in the shader).
+    pub split_below: [f32; 12],
     pub top: u32,
     pub roots_per_axis: u32,
     pub queue_capacity: u32,
     /// Where the kept blocks start in `lod_data`, in words.
     pub blocks_offset: u32,
 }
-const _: () = assert!(std::mem::size_of::<WalkUniform>() == 144);
+const _: () = assert!(std::mem::size_of::<WalkUniform>() == 176);
 
 impl WalkUniform {
     pub fn new(rule: &Rule, eye: &Eye, queue_capacity: u32, blocks_offset: u32) -> Self {
-        let mut split_below = [[-1.0; 4]; 3];
-        for (level, &d) in rule.split_below.iter().enumerate() {
-            split_below[level / 4][level % 4] = d;
-        }
         Self {
-            view_projection: eye.view_projection.to_cols_array_2d(),
+            planes: eye.planes(),
             eye: [rule.eye.x, rule.eye.y, rule.eye.z, if eye.cull { 1.0 } else { 0.0 }],
-            split_below,
+            split_below: rule.split_below,
             top: rule.top,
             roots_per_axis: rule.roots_per_axis(),
             queue_capacity,
@@ -64,35 +57,19 @@ pub struct WalkState {
     /// Levels at or below it are held back from splitting, after a frame ran out of room.
     pub floor: u32,
     pub overflowed: u32,
-    pub peak: u32,
     pub queued: [u32; 2],
     pub leaves: u32,
     /// Some block of the last frame would have split but for the floor.
     pub held: u32,
+    pub _pad: u32,
 }
 
-/// The walk's pipelines, compiled once per device.
+/// The walk's pipelines, compiled once per device from the level-of-detail module
+/// (`shaders/extract/lod_select.wgsl` with `shaders/extract/lod.wgsl`).
 pub struct WalkPipelines {
-    begin: wgpu::ComputePipeline,
-    select: wgpu::ComputePipeline,
-    plan: wgpu::ComputePipeline,
-    end: wgpu::ComputePipeline,
-}
-
-impl WalkPipelines {
-    pub fn new(device: &wgpu::Device) -> Self {
-        let source = wgsl!(include_str!("../../../shaders/extract/lod_select.wgsl"));
-        let module =
-            shader_module(device, "lod walk: shader", &[crate::device::COMMON_WGSL, LOD_COMMON_WGSL, source]);
-        let pipeline =
-            |name: &str| crate::device::compute_pipeline(device, &format!("lod walk: {name}"), &module, name);
-        Self {
-            begin: pipeline("begin_walk"),
-            select: pipeline("select_blocks"),
-            plan: pipeline("plan_level"),
-            end: pipeline("end_walk"),
-        }
-    }
+    pub begin: wgpu::ComputePipeline,
+    pub select: wgpu::ComputePipeline,
+    pub plan: wgpu::ComputePipeline,
 }
 
 /// One renderer's walk: its buffers and bind groups, for one capacity of the mesh buffers.
@@ -103,19 +80,18 @@ pub struct Walk {
     dispatch: wgpu::Buffer,
     queue_capacity: u32,
     blocks_offset: u32,
-    groups: [wgpu::BindGroup; 4],
+    groups: [wgpu::BindGroup; 3],
 }
 
 impl Walk {
-    /// The walk writing its leaves into `selection` and `kept` and the mesh buffers' counters and
-    /// `lod_data`, with queues sized for the mesh buffers' blocks.
+    /// The walk writing its leaves into the mesh buffers' `lod_data` and counters, and the meshing
+    /// passes' dispatch into `meshing` (`lod_dispatch`), with queues sized for the blocks they hold.
     pub fn new(
         device: &wgpu::Device,
         p: &WalkPipelines,
         scene: &SceneBuffers,
         mesh: &MeshBuffers,
-        selection: &wgpu::Buffer,
-        kept: &wgpu::Buffer,
+        meshing: &wgpu::Buffer,
     ) -> Self {
         use wgpu::BufferUsages as U;
         let limit = device.limits().max_storage_buffer_binding_size as u64 / 8;
@@ -130,24 +106,21 @@ impl Walk {
             })
         };
         let uniform =
-            buffer("lod walk: uniforms", std::mem::size_of::<WalkUniform>() as u64, U::UNIFORM | U::COPY_DST);
-        let queues = buffer("lod walk: queues", 8 * queue_capacity as u64, U::STORAGE);
-        let state = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: Some("lod walk: state"),
-            contents: bytemuck::bytes_of(&WalkState::default()),
-            usage: U::STORAGE | U::COPY_SRC,
-        });
-        let dispatch = buffer("lod walk: dispatches", 12 * MAX_LEVELS as u64, U::STORAGE | U::INDIRECT);
+            buffer("lod: rule", std::mem::size_of::<WalkUniform>() as u64, U::UNIFORM | U::COPY_DST);
+        let queues = buffer("lod: queues", 8 * queue_capacity as u64, U::STORAGE);
+        // Zeroed, as every new buffer is: no level held back, nothing overflowed.
+        let state = buffer("lod: walk", std::mem::size_of::<WalkState>() as u64, U::STORAGE | U::COPY_SRC);
+        let dispatch = buffer("lod: walk dispatch", 12 * MAX_LEVELS as u64, U::STORAGE | U::INDIRECT);
         let groups = [
             bind_buffers(
                 device,
-                "lod walk: begin",
+                "lod: begin",
                 &p.begin,
-                &[(bindings::GRID, &scene.grid), (bindings::WALK, &uniform), (bindings::WALK_STATE, &state)],
+                &[(bindings::GRID, &scene.grid), (bindings::WALK, &uniform), (bindings::STATE, &state)],
             ),
             bind_buffers(
                 device,
-                "lod walk: select",
+                "lod: select",
                 &p.select,
                 &[
                     (bindings::GRID, &scene.grid),
@@ -155,27 +128,22 @@ impl Walk {
                     (bindings::COUNTERS, &mesh.counters),
                     (bindings::WALK, &uniform),
                     (bindings::QUEUES, &queues),
-                    (bindings::WALK_STATE, &state),
-                    (bindings::SELECTION, selection),
-                    (bindings::KEPT_BLOCKS, kept),
+                    (bindings::STATE, &state),
                     (bindings::LOD_DATA, &mesh.lod_data),
                 ],
             ),
             bind_buffers(
                 device,
-                "lod walk: plan",
+                "lod: plan",
                 &p.plan,
                 &[
+                    (bindings::GRID, &scene.grid),
+                    (bindings::COUNTERS, &mesh.counters),
                     (bindings::WALK, &uniform),
-                    (bindings::WALK_STATE, &state),
+                    (bindings::STATE, &state),
                     (bindings::WALK_DISPATCH, &dispatch),
+                    (bindings::LOD_DISPATCH, meshing),
                 ],
-            ),
-            bind_buffers(
-                device,
-                "lod walk: end",
-                &p.end,
-                &[(bindings::COUNTERS, &mesh.counters), (bindings::WALK_STATE, &state)],
             ),
         ];
         Self { uniform, state, dispatch, queue_capacity, blocks_offset: mesh.lod_blocks_offset(), groups }
@@ -192,10 +160,10 @@ impl Walk {
         queue.write_buffer(&self.uniform, 0, bytemuck::bytes_of(&uniform));
     }
 
-    /// Encodes the walk for `rule` (written by `prepare`) into `pass`: the leaves are in the counters'
-    /// `active_blocks` after it.
+    /// Encodes the walk for `rule` (written by `prepare`) into `pass`: after it the leaves are in
+    /// `lod_data`, counted by the counters' `active_blocks`, and the meshing passes' dispatch is written.
     pub fn encode(&self, pass: &mut wgpu::ComputePass<'_>, p: &WalkPipelines, rule: &Rule) {
-        let [begin, select, plan, end] = &self.groups;
+        let [begin, select, plan] = &self.groups;
         pass.set_pipeline(&p.begin);
         pass.set_bind_group(0, begin, &[]);
         pass.dispatch_workgroups(1, 1, 1);
@@ -208,14 +176,9 @@ impl Walk {
             } else {
                 pass.dispatch_workgroups_indirect(&self.dispatch, 12 * level as u64);
             }
-            if level > 0 {
-                pass.set_pipeline(&p.plan);
-                pass.set_bind_group(0, plan, &[]);
-                pass.dispatch_workgroups(1, 1, 1);
-            }
+            pass.set_pipeline(&p.plan);
+            pass.set_bind_group(0, plan, &[]);
+            pass.dispatch_workgroups(1, 1, 1);
         }
-        pass.set_pipeline(&p.end);
-        pass.set_bind_group(0, end, &[]);
-        pass.dispatch_workgroups(1, 1, 1);
     }
 }
