@@ -78,7 +78,7 @@ async function setAndSettle(page, name, value) {
 }
 
 test('a LOD figure draws coloured by level and its HUD counts each level, on the CPU and the GPU', async () => {
-  const { page, errors } = await open('?lod=on&res=256&lod_px=8&dist=2&color_by=level&hud=on&paused=1&aa=0');
+  const { page, errors } = await open('?lod=on&res=256&lod_px=8&dist=1.5&color_by=level&hud=on&paused=1&aa=0');
   const cpuTriangles = await settledTriangles(page);
   assert.ok(cpuTriangles > 500, `${cpuTriangles} triangles`);
   assert.match(await page.textContent('#adapter'), /swiftshader · LOD-CPU meshing$/i);
@@ -102,7 +102,7 @@ test('a LOD figure draws coloured by level and its HUD counts each level, on the
 });
 
 test('a frozen selection stays while the camera orbits away, and follows it again when thawed', async () => {
-  const { page, errors } = await open('?lod=on&res=256&lod_px=8&dist=2&hud=on&paused=1&aa=0');
+  const { page, errors } = await open('?lod=on&res=256&lod_px=8&dist=1.5&hud=on&paused=1&aa=0');
   await settledTriangles(page);
   await setAndSettle(page, 'lod_freeze', 'on');
   const frozen = await levels(page);

@@ -94,7 +94,7 @@ impl Walk {
         meshing: &wgpu::Buffer,
     ) -> Self {
         use wgpu::BufferUsages as U;
-        let limit = device.limits().max_storage_buffer_binding_size as u64 / 8;
+        let limit = device.limits().max_storage_buffer_binding_size / 8;
         let queue_capacity =
             (QUEUED_PER_BLOCK * mesh.capacity.blocks as u64).clamp(4096, MOST_QUEUED.min(limit)) as u32;
         let buffer = |label: &str, size: u64, usage: U| {
