@@ -115,7 +115,6 @@ fn block_index(coords: vec3<u32>) -> u32 {
     return coords.x + n * (coords.y + n * coords.z);
 }
 
-// The active block a workgroup of a per-block pass works on.
 // The arguments of an indirect dispatch.
 struct DispatchIndirect {
     x: u32,
@@ -128,6 +127,7 @@ fn rows(count: u32) -> DispatchIndirect {
     return DispatchIndirect(min(count, DISPATCH_ROW), (count + DISPATCH_ROW - 1u) / DISPATCH_ROW, 1u);
 }
 
+// The active block a workgroup of a per-block pass works on.
 fn slot_of(workgroup: vec3<u32>) -> u32 {
     return workgroup.x + workgroup.y * DISPATCH_ROW;
 }

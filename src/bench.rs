@@ -158,22 +158,24 @@ fn measure(offscreen: &mut Offscreen, plan: &Plan, timed: bool) -> Result<Record
     pollster::block_on(offscreen.renderer.flush_stats());
     let stats = offscreen.renderer.stats().unwrap_or_default();
     let on_device = offscreen.renderer.mesh_capabilities().needs_compute;
+    // Level of detail selects its blocks in the first stage, where a uniform grid has none, and has no
+    // second (the selection keeps only blocks the surface may cross): a stage a frame does not run
+    // keeps the time an earlier row wrote there, so it is left out.
+    let runs = |i: usize| {
+        let computed = i + 1 < STAGES.len();
+        let missing = if settings.view.lod { i == 1 } else { i == 0 };
+        // An extractor on the CPU runs no compute pass: only the shading stage is timed.
+        !missing && (on_device || !computed)
+    };
     let stage_ms = (!stages.is_empty()).then(|| {
         std::array::from_fn(|i| {
-            // An extractor on the CPU runs no compute pass: only the shading stage is timed.
-            let computed = i + 1 < STAGES.len();
-            // Level of detail selects its blocks in the first stage, where a uniform grid has none,
-            // and has no second (the selection keeps only blocks the surface may cross).
-            let missing = if settings.view.lod { i == 1 } else { i == 0 };
-            if (!on_device && computed) || missing {
-                0.0
-            } else {
-                median(&mut stages.iter().map(|s| s.stages_ms[i]).collect::<Vec<_>>())
-            }
+            if runs(i) { median(&mut stages.iter().map(|s| s.stages_ms[i]).collect::<Vec<_>>()) } else { 0.0 }
         })
     });
     let mesh_ms = if on_device && !stages.is_empty() {
-        median(&mut stages.iter().map(|s| s.extraction_ms()).collect::<Vec<_>>())
+        let meshing =
+            |s: &StageTimes| (0..STAGES.len() - 1).filter(|&i| runs(i)).map(|i| s.stages_ms[i]).sum();
+        median(&mut stages.iter().map(meshing).collect::<Vec<_>>())
     } else {
         let mut times: Vec<f64> = (0..plan.frames.max(1))
             .map(|_| {

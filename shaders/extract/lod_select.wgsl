@@ -123,9 +123,9 @@ fn begin_walk() {
     } else if (state.held == 0u) {
         // The floor changed nothing: the rule alone fits.
         state.floor = 0u;
-    } else if (state.floor > 0u && 4u * state.leaves < grid.max_blocks) {
-        // Room for four times the blocks (and so their candidates), as a level finer has about that
-        // many near the surface.
+    } else if (state.floor > 0u && 8u * state.leaves < grid.max_blocks) {
+        // Room for eight times the blocks (and so their candidates): a level finer has about four
+        // times as many near the surface, and up to eight.
         state.floor -= 1u;
     }
     state.held = 0u;
@@ -211,6 +211,11 @@ fn plan_level() {
         counters.lod_floor = state.floor;
         counters.lod_overflowed = state.overflowed;
         lod_dispatch[0] = rows(select(min(leaves, grid.max_blocks), 0u, state.overflowed != 0u));
+        // Out of room, the frame asks for half as many blocks again (a queue may have run out first),
+        // so that the buffers grow.
+        if (state.overflowed != 0u) {
+            atomicMax(&counters.active_blocks, grid.max_blocks + grid.max_blocks / 2u + 1u);
+        }
         return;
     }
     let next = level - 1u;

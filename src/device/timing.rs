@@ -14,11 +14,6 @@ pub struct StageTimes {
 }
 
 impl StageTimes {
-    /// Mesh generation: every stage but shading.
-    pub fn extraction_ms(&self) -> f64 {
-        self.stages_ms[..4].iter().sum()
-    }
-
     /// From the first stage's start to the last one's end.
     pub fn total_ms(&self) -> f64 {
         self.stages_ms.iter().sum()

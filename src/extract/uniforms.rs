@@ -69,7 +69,7 @@ pub struct Measures {
 
 /// The whole counters buffer: the counters, then (with level of detail) what the selection passes
 /// report, triangles and blocks per level, then the mesh's measures (`LodCounters` in
-/// `shaders/extract/lod_common.wgsl`).
+/// `shaders/extract/lod.wgsl`).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Pod, Zeroable, PartialEq, Eq)]
 pub struct CounterBlock {

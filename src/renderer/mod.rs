@@ -358,7 +358,16 @@ impl Renderer {
         self.cull_lod = false;
         self.make_mesh(&mut encoder, false);
         self.cull_lod = true;
+        // What the whole surface needed comes back like a frame's figures, never shown as one (frame 0),
+        // so that the buffers grow for the next readback: level of detail meshes more here than in a
+        // frame drawn, which leaves out what is outside the view.
+        let on_device = self.stage.counted.on_device;
+        let slot =
+            on_device.then(|| self.stats.ring.record(&mut encoder, &self.stage.buffers.counters)).flatten();
         self.queue.submit([encoder.finish()]);
+        if let Some(slot) = slot {
+            self.stats.ring.map(slot, 0, self.stage.buffers.capacity, true, false);
+        }
     }
 }
 

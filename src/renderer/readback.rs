@@ -10,6 +10,8 @@ use crate::extract::uniforms::Counters;
 use glam::{UVec3, Vec3};
 
 impl Renderer {
+    /// Extracts and reads the counters back, with a level-of-detail selection that ran out of room
+    /// asking for more blocks than the buffers hold (it does by itself: see `plan_level`).
     async fn run_extraction(&mut self) -> Counters {
         self.extract();
         let bytes = read_buffer(&self.device, &self.queue, &self.stage.buffers.counters, 0, 16).await;
@@ -119,14 +121,28 @@ impl Renderer {
 pub enum MeshReadback {
     /// A mesh kept on the CPU: nothing to wait for.
     Ready(IndexedMesh),
-    /// Copies of the counters and the vertex and index buffers, queued behind the extraction.
-    Queued { device: wgpu::Device, counters: wgpu::Buffer, vertices: wgpu::Buffer, indices: wgpu::Buffer },
+    /// Copies of the counters and the vertex and index buffers, queued behind the extraction, and the
+    /// capacity the buffers had.
+    Queued {
+        device: wgpu::Device,
+        counters: wgpu::Buffer,
+        vertices: wgpu::Buffer,
+        indices: wgpu::Buffer,
+        capacity: Capacity,
+    },
 }
 
 impl MeshReadback {
     /// The mesh, or why it is incomplete (the frame's triangles outgrew the buffers).
     pub async fn finish(self) -> Result<IndexedMesh, String> {
         let (mesh, requested) = self.finish_clamped().await;
+        if requested == usize::MAX {
+            return Err(
+                "the surface needs more room than the mesh buffers held in this frame; try again in \
+                        a moment, or lower the resolution"
+                    .into(),
+            );
+        }
         if requested > mesh.triangles.len() {
             return Err(format!(
                 "the surface needs {requested} triangles, more than the mesh buffers held in this frame; \
@@ -136,15 +152,17 @@ impl MeshReadback {
         Ok(mesh)
     }
 
-    /// The mesh as far as the buffers held it, and the triangle count the frame asked for.
+    /// The mesh as far as the buffers held it, and the triangle count the frame asked for (`usize::MAX`
+    /// where a level-of-detail selection ran out of room, so that nothing was meshed, or the blocks,
+    /// cells or vertices did, so that triangles are missing or lost corners).
     pub async fn finish_clamped(self) -> (IndexedMesh, usize) {
-        let (device, counters, vertices, indices) = match self {
+        let (device, counters, vertices, indices, capacity) = match self {
             MeshReadback::Ready(mesh) => {
                 let count = mesh.triangles.len();
                 return (mesh, count);
             }
-            MeshReadback::Queued { device, counters, vertices, indices } => {
-                (device, counters, vertices, indices)
+            MeshReadback::Queued { device, counters, vertices, indices, capacity } => {
+                (device, counters, vertices, indices, capacity)
             }
         };
         // A device lost while the copies were on their way gives no bytes: an empty mesh, not a panic
@@ -154,7 +172,10 @@ impl MeshReadback {
             return empty();
         };
         let counters: Counters = bytemuck::pod_read_unaligned(&block[..std::mem::size_of::<Counters>()]);
+        let out_of_room = block.get(16..20).is_some_and(|w| w != [0; 4]);
         let vertex_count = (counters.vertices as u64).min(vertices.size() / VERTEX_BYTES);
+        // Blocks, cells or vertices past the buffers leave triangles out or without corners.
+        let out_of_room = out_of_room || !capacity.holds(&Counters { indices: 0, ..counters });
         let index_count = (counters.indices as u64).min(indices.size() / INDEX_BYTES / 3 * 3);
         let (Some(vertex_bytes), Some(index_bytes)) =
             (try_map_and_read(&device, &vertices).await, try_map_and_read(&device, &indices).await)
@@ -169,7 +190,7 @@ impl MeshReadback {
             normals: floats.iter().map(|v| Vec3::new(v[3], v[4], v[5])).collect(),
             triangles: indices.chunks(3).map(|t| [t[0], t[1], t[2]]).collect(),
         };
-        (mesh, counters.indices as usize / 3)
+        (mesh, if out_of_room { usize::MAX } else { counters.indices as usize / 3 })
     }
 }
 
@@ -196,17 +217,19 @@ impl Renderer {
                 mapped_at_creation: false,
             })
         };
-        let counters = staging("mesh readback: counters", 16);
+        // The counters, and whether a level-of-detail selection ran out of room (`lod_overflowed`).
+        let counters = staging("mesh readback: counters", 24);
         let mesh = &self.stage.buffers;
         let vertices = staging("mesh readback: vertices", mesh.vertices.size());
         let indices = staging("mesh readback: indices", mesh.indices.size());
         let mut encoder = self
             .device
             .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("mesh readback: copy") });
-        encoder.copy_buffer_to_buffer(&mesh.counters, 0, &counters, 0, 16);
+        encoder.copy_buffer_to_buffer(&mesh.counters, 0, &counters, 0, 24);
         encoder.copy_buffer_to_buffer(&mesh.vertices, 0, &vertices, 0, mesh.vertices.size());
         encoder.copy_buffer_to_buffer(&mesh.indices, 0, &indices, 0, mesh.indices.size());
         self.queue.submit([encoder.finish()]);
-        MeshReadback::Queued { device: self.device.clone(), counters, vertices, indices }
+        let capacity = mesh.capacity;
+        MeshReadback::Queued { device: self.device.clone(), counters, vertices, indices, capacity }
     }
 }

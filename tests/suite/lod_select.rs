@@ -6,8 +6,10 @@
 use crate::common::*;
 use metaballs::Settings;
 use metaballs::extract::field::Spheres;
-use metaballs::extract::lod::select::{BLOCK_CELLS, Block, Eye, Rule, coarsest_level};
+use metaballs::extract::lod::mesher::LodMesher;
+use metaballs::extract::lod::select::{BLOCK_CELLS, Block, Eye, Rule, coarsest_level, select_by};
 use metaballs::extract::lod::select_for_surface;
+use metaballs::extract::reference::Construction;
 use metaballs::scene::BOX_HALF_EXTENT;
 use metaballs::scene::params::view::Blend;
 use std::collections::{HashMap, HashSet};
@@ -208,8 +210,25 @@ fn a_selection_out_of_room_keeps_its_mesh_and_coarsens_the_next_frame() {
         // The frame out of room drew the mesh it had: the surface, not a hole, where the next one is.
         let (a, b) = (covered(&kept), covered(&coarse));
         assert!(b > 2000 && a.abs_diff(b) * 20 < b, "{a} bright pixels while out of room, {b} after");
-        let mesh = pollster::block_on(o.renderer.extract_mesh());
-        let topology = mesh.topology();
+        // The coarsened blocks are the rule's with the finest levels held back, and mesh closed.
+        let eye = o.renderer.lod_eye();
+        let spheres = o.renderer.scene().spheres().to_vec();
+        let iso = o.renderer.settings().iso;
+        let mut bounds = Spheres::default();
+        bounds.set(&spheres);
+        let surface = |low, high, walls| bounds.straddles(low, high, walls, iso, false);
+        let rule = Rule::new(near.resolution, &eye, after.lod_floor);
+        let device: HashSet<Block> =
+            pollster::block_on(o.renderer.lod_blocks()).into_iter().map(unpack).collect();
+        let cpu: HashSet<Block> = select_by(&rule, &eye, &surface).blocks.into_iter().collect();
+        for &b in device.symmetric_difference(&cpu) {
+            assert!(near_a_tie(b, &eye, &rule, &bounds, iso, false), "{b:?} differs from the rule's");
+        }
+        let whole = select_by(&rule, &Eye { cull: false, ..eye }, &surface);
+        let mut mesher = LodMesher::new();
+        mesher.mesh(&spheres, iso, Construction::default(), &whole);
+        let topology = mesher.to_indexed().topology();
+        assert!(mesher.triangle_count() > 1000, "{} triangles", mesher.triangle_count());
         assert_eq!(topology.open_or_nonmanifold_edges, 0, "the coarsened mesh is open");
         // With room again (farther away), the floor comes back down.
         o.renderer.set_settings(far.validated().unwrap()).unwrap();
@@ -219,5 +238,47 @@ fn a_selection_out_of_room_keeps_its_mesh_and_coarsens_the_next_frame() {
         pollster::block_on(o.renderer.flush_stats());
         let back = o.renderer.stats().unwrap();
         assert_eq!(back.lod_floor, 0, "the floor stayed up: {back:?}, at first {fits:?}");
+    });
+}
+
+#[test]
+fn a_readback_after_frames_that_leave_out_what_is_not_in_view_meshes_the_whole_surface() {
+    let mut s = settings(2, 16, 64, 1.0).with_parameter("lod", "on").unwrap();
+    s.resolution = 512;
+    s.camera.fov_y_degrees = 15.0;
+    s.camera.distance = 3.0;
+    with_renderer(s.validated().unwrap(), 240, 180, |o| {
+        o.renderer.pin_extractor(Some("lod-gpu")).unwrap();
+        for _ in 0..3 {
+            o.render();
+            pollster::block_on(o.renderer.flush_stats());
+        }
+        let drawn = o.renderer.stats().unwrap();
+        assert!(o.renderer.mesh_culled() && !drawn.overflowed, "{drawn:?}");
+        // What an export reads (`exportMesh()`): the whole surface, closed, or a request to try again
+        // while the buffers grow to hold it; never a mesh with parts missing.
+        let mut tries = 0;
+        let mesh = loop {
+            match pollster::block_on(o.renderer.mesh_readback().finish()) {
+                Ok(mesh) => break mesh,
+                Err(e) => assert!(e.contains("try again"), "{e}"),
+            }
+            tries += 1;
+            assert!(tries < 4, "still out of room after {tries} tries");
+            o.render();
+            pollster::block_on(o.renderer.flush_stats());
+        };
+        println!(
+            "whole surface after {tries} retries: {} triangles, {} drawn",
+            mesh.triangles.len(),
+            drawn.triangles
+        );
+        assert!(
+            10 * mesh.triangles.len() as u32 > 11 * drawn.triangles,
+            "the readback left out what is outside the view"
+        );
+        let topology = mesh.topology();
+        assert_eq!(topology.open_or_nonmanifold_edges, 0, "the whole surface is open");
+        assert_eq!(topology.misoriented_edges, 0);
     });
 }

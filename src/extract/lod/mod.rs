@@ -26,14 +26,16 @@ use crate::scene::params::view::Blend;
 use select::{Eye, Selection};
 
 /// The eye `job` selects by: its own, kept in `frozen`, or while the selection is frozen (`lod_freeze`)
-/// the one kept there from before. `None` without level of detail.
+/// the one kept there from before, culling nothing (a frozen selection is looked at from elsewhere).
+/// `None` without level of detail.
 pub fn eye_of(frozen: &mut Option<Eye>, job: &Job) -> Option<Eye> {
     let lod = job.lod?;
     if !lod.freeze || frozen.is_none() {
         *frozen = Some(lod.eye);
     }
-    // A frozen eye keeps its levels; what it culls follows the frame (a readback wants everything).
-    Some(Eye { cull: lod.eye.cull, ..(*frozen)? })
+    // A frozen selection is looked at from elsewhere: nothing is left out as outside its view.
+    let cull = lod.eye.cull && !lod.freeze;
+    Some(Eye { cull, ..(*frozen)? })
 }
 
 /// [`select::select`] keeping only the blocks the surface f = `iso` of `spheres` may cross, by the
