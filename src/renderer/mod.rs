@@ -309,12 +309,19 @@ impl Renderer {
         if let Some(timing) = timing {
             timing.resolve(&mut encoder);
         }
+        self.submit_counted(encoder, self.stats.frame, measured);
+    }
+
+    /// Submits `encoder` with a copy of the counters, when the device counted the mesh or measured it,
+    /// that comes back as the figures of frame `frame` (0: never shown, but the buffers grow for it).
+    fn submit_counted(&mut self, mut encoder: wgpu::CommandEncoder, frame: u64, measured: bool) {
         let counted = self.stage.counted.on_device;
+        let buffers = &self.stage.buffers;
         let slot =
             if counted || measured { self.stats.ring.record(&mut encoder, &buffers.counters) } else { None };
         self.queue.submit([encoder.finish()]);
         if let Some(slot) = slot {
-            self.stats.ring.map(slot, self.stats.frame, buffers.capacity, counted, measured);
+            self.stats.ring.map(slot, frame, buffers.capacity, counted, measured);
         }
     }
 
@@ -358,16 +365,10 @@ impl Renderer {
         self.cull_lod = false;
         self.make_mesh(&mut encoder, false);
         self.cull_lod = true;
-        // What the whole surface needed comes back like a frame's figures, never shown as one (frame 0),
-        // so that the buffers grow for the next readback: level of detail meshes more here than in a
-        // frame drawn, which leaves out what is outside the view.
-        let on_device = self.stage.counted.on_device;
-        let slot =
-            on_device.then(|| self.stats.ring.record(&mut encoder, &self.stage.buffers.counters)).flatten();
-        self.queue.submit([encoder.finish()]);
-        if let Some(slot) = slot {
-            self.stats.ring.map(slot, 0, self.stage.buffers.capacity, true, false);
-        }
+        // What the whole surface needed comes back as frame 0's figures, never shown, so that the
+        // buffers grow for the next readback: level of detail meshes more here than in a frame drawn,
+        // which leaves out what is outside the view.
+        self.submit_counted(encoder, 0, false);
     }
 }
 

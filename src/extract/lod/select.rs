@@ -173,16 +173,18 @@ impl Rule {
         let finest = 2.0 * BOX_HALF_EXTENT / resolution as f32;
         let top = coarsest_level(resolution);
         let pixels = eye.cell_pixels();
-        let mut split_below = [-1.0; 12];
-        for k in floor + 1..=top.min(MAX_LEVELS - 1) {
+        let split_below = std::array::from_fn(|k| {
+            let k = k as u32;
             let cells = (1u32 << k) as f32;
-            split_below[k as usize] = if eye.orthographic {
+            if k <= floor || k > top {
+                -1.0
+            } else if eye.orthographic {
                 if cells * finest * eye.pixels_per_unit > pixels { f32::MAX } else { -1.0 }
             } else {
                 let reach = cells * eye.pixels_per_unit / pixels;
                 (reach * reach).min(f32::MAX)
-            };
-        }
+            }
+        });
         Self { resolution, top, eye: (eye.position + BOX_HALF_EXTENT) / finest, split_below }
     }
 
