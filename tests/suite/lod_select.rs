@@ -166,6 +166,13 @@ fn the_devices_blocks_are_the_cpu_rules_for_hundreds_of_random_cameras() {
     assert!(ties * 1000 <= blocks, "{ties} ties in {blocks} blocks");
 }
 
+/// Seed `seed`'s 16 spheres with level of detail at `resolution`.
+fn lod_at(seed: u64, resolution: u32) -> Settings {
+    let mut s = settings(seed, 16, 64, 1.0).with_parameter("lod", "on").unwrap();
+    s.resolution = resolution;
+    s
+}
+
 /// Bright pixels: the surface's, against the dark background.
 fn covered(pixels: &[u8]) -> usize {
     pixels.chunks(4).filter(|p| luminance(p) > 40.0).count()
@@ -173,8 +180,7 @@ fn covered(pixels: &[u8]) -> usize {
 
 #[test]
 fn a_selection_out_of_room_keeps_its_mesh_and_coarsens_the_next_frame() {
-    let mut far = settings(4, 16, 64, 1.0).with_parameter("lod", "on").unwrap();
-    far.resolution = 1024;
+    let mut far = lod_at(4, 1024);
     far.view.lod_pixels = 1.0;
     far.camera.distance = 6.0;
     let mut near = far;
@@ -243,8 +249,7 @@ fn a_selection_out_of_room_keeps_its_mesh_and_coarsens_the_next_frame() {
 
 #[test]
 fn a_readback_after_frames_that_leave_out_what_is_not_in_view_meshes_the_whole_surface() {
-    let mut s = settings(2, 16, 64, 1.0).with_parameter("lod", "on").unwrap();
-    s.resolution = 512;
+    let mut s = lod_at(2, 512);
     s.camera.fov_y_degrees = 15.0;
     s.camera.distance = 3.0;
     with_renderer(s.validated().unwrap(), 240, 180, |o| {
