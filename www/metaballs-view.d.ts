@@ -119,8 +119,8 @@ export declare class MetaballsView extends HTMLElement {
   lodFreeze: boolean;
   /** Mesh-on: auto, gpu, cpu. Attribute `mesh-on`; default "auto". */
   meshOn: 'auto' | 'gpu' | 'cpu';
-  /** Method: marching_cubes, surface_nets. Attribute `method`; default "marching_cubes". */
-  method: 'marching_cubes' | 'surface_nets';
+  /** Method: marching_cubes, surface_nets, dual_contouring. Attribute `method`; default "marching_cubes". */
+  method: 'marching_cubes' | 'surface_nets' | 'dual_contouring';
   /** Animation speed: 0 to 3. Attribute `speed`; default 1. */
   speed: number;
   /** Layout seed: 0 to 4294967295. Attribute `seed`; default 1. */
@@ -135,8 +135,8 @@ export declare class MetaballsView extends HTMLElement {
   compare: 'none' | 'split' | 'overlay';
   /** Grid: none, lattice, cells, blocks. Attribute `grid`; default "none". */
   grid: 'none' | 'lattice' | 'cells' | 'blocks';
-  /** Color-by: none, area, quality, case, level, error. Attribute `color-by`; default "none". */
-  colorBy: 'none' | 'area' | 'quality' | 'case' | 'level' | 'error';
+  /** Color-by: none, area, quality, case, level, error, rank. Attribute `color-by`; default "none". */
+  colorBy: 'none' | 'area' | 'quality' | 'case' | 'level' | 'error' | 'rank';
   /** Ambiguous: a boolean attribute. Attribute `ambiguous`; default false. */
   ambiguous: boolean;
   /** Critical: a boolean attribute. Attribute `critical`; default false. */

@@ -106,7 +106,8 @@ pub struct MeshBuffers {
     pub edge_vertices: wgpu::Buffer,
     pub vertices: wgpu::Buffer,
     pub indices: wgpu::Buffer,
-    /// With `lod=on`: each triangle's level of detail (for `color-by=level`), then from
+    /// With `lod=on`: each triangle's level of detail (for `color-by=level`), or with dual contouring
+    /// its corners' QEF ranks (`color-by=rank`, `DualMesher::triangle_marks`); then from
     /// [`MeshBuffers::lod_blocks_offset`] the blocks the surface may cross, four words each (origin,
     /// level | transition faces << 8; for `grid=blocks`, as many as the counters' `active_blocks`). One
     /// buffer, as a stage binds at most 8 storage buffers.

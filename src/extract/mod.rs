@@ -10,7 +10,7 @@
 //! - [`gpu`]: the compute passes (blocks → field → marching cubes), all on the device, no readback.
 //! - [`cpu`]: the CPU mesher, uploaded into the same buffers (faster on software adapters, the only
 //!   one on WebGL2).
-//!   It also holds surface nets, the dual method, to compare with.
+//!   It also holds the dual methods, surface nets and dual contouring, to compare with.
 //! - [`lod`]: level of detail: fine blocks near the camera, coarse far away, closed by transition
 //!   cells.
 //!
@@ -43,6 +43,7 @@ pub const EXTRACTORS: &[Compile] = &[
     lod::gpu::LodGpuExtractor::compile,
     lod::cpu::LodCpuExtractor::compile,
     cpu::SurfaceNetsExtractor::compile,
+    cpu::DualContouringExtractor::compile,
 ];
 
 /// The extractors `device` can run, in the order of [`EXTRACTORS`].

@@ -14,6 +14,7 @@ use crate::extract::{
 };
 use crate::scene::checks::check_f32;
 use crate::scene::params::ParamError;
+use crate::scene::params::view::ColorBy;
 use crate::scene::params::view::MeshOn;
 use crate::scene::params::view::{March, Method, Projection};
 use crate::scene::{BOX_HALF_EXTENT, Sphere};
@@ -110,8 +111,11 @@ impl Renderer {
     /// mesher on the CPU makes it; `None` when compute passes do.
     pub fn cpu_job(&self) -> Option<Vec<f32>> {
         let capabilities = self.stage.extractors[self.next_extractor()].capabilities();
-        // Part way through the march, the frame meshes its cells on its own.
-        (!capabilities.needs_compute && !capabilities.lod && self.settings.view.march.is_none())
+        let view = &self.settings.view;
+        // Part way through the march, the frame meshes its cells on its own; so does a frame coloured
+        // by the QEF's rank, which a mesh made elsewhere does not carry.
+        let ranked = views::shown(view).color_by == ColorBy::Rank;
+        (!capabilities.needs_compute && !capabilities.lod && view.march.is_none() && !ranked)
             .then(|| elsewhere::pack(capabilities.method, &self.job_of(self.scene.spheres())))
     }
 

@@ -78,7 +78,7 @@ test('bad comparison values get the notice and the figure keeps its view', async
   await settledTriangles(page);
   const notice = await page.textContent('#notice');
   for (const fragment of ['compare=sideways', 'one of none, split, overlay', 'extractor=dual',
-    'one of marching_cubes, surface_nets', 'divider position must be between 0.05 and 0.95, got 2']) {
+    'one of marching_cubes, surface_nets, dual_contouring', 'divider position must be between 0.05 and 0.95, got 2']) {
     assert.ok(notice.includes(fragment), `the notice lacks ${fragment}: ${notice}`);
   }
   const kept = await page.$eval('metaballs-view', (e) => [e.compare, e.extractor, e.divider]);

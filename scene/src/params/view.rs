@@ -18,6 +18,9 @@ macro_rules! choice {
             /// The words a link or attribute uses, in order.
             pub const WORDS: &'static [&'static str] = &[$($word),+];
 
+            /// Every choice, in the order of `WORDS`.
+            pub const ALL: &'static [Self] = &[$(Self::$variant),+];
+
             /// The word for this choice.
             pub fn word(self) -> &'static str {
                 match self { $(Self::$variant => $word),+ }
@@ -94,6 +97,9 @@ choice!(
         Level = "level",
         /// Each vertex's distance to the exact surface f = iso, in cells.
         Error = "error",
+        /// Dual contouring: the rank of each vertex's QEF (1 a face, 2 an edge, 3 a corner), darker
+        /// where its minimiser left its cell and was clamped back.
+        Rank = "rank",
     }
 );
 
@@ -156,10 +162,22 @@ choice!(
     Method {
         /// One to five triangles per crossed cell from the 256-case table, vertices on the grid's edges.
         MarchingCubes = "marching_cubes",
-        /// One vertex per crossed cell, quads across crossed edges (on the CPU; the uniform grid only).
+        /// One vertex per crossed cell at its crossings' mean, quads across crossed edges (on the CPU;
+        /// the uniform grid only).
         SurfaceNets = "surface_nets",
+        /// Surface nets' quads, each cell's vertex at the minimiser of its crossings' quadratic error
+        /// function (their tangent planes), so sharp edges and corners stay sharp (on the CPU; the
+        /// uniform grid only).
+        DualContouring = "dual_contouring",
     }
 );
+
+impl Method {
+    /// One vertex per crossed cell (surface nets, dual contouring): no cases, no cell lists.
+    pub fn is_dual(self) -> bool {
+        self != Method::MarchingCubes
+    }
+}
 
 choice!(
     /// How marching squares joins a saddle square of the field slice: one whose two inside corners sit

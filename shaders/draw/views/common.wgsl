@@ -36,6 +36,7 @@ const COLOR_QUALITY: u32 = 2u;
 const COLOR_CASE: u32 = 3u;
 const COLOR_LEVEL: u32 = 4u;
 const COLOR_ERROR: u32 = 5u;
+const COLOR_RANK: u32 = 6u;
 // The error at the top of its key, in cells.
 const ERROR_TOP: f32 = 0.5;
 
@@ -50,6 +51,13 @@ fn error_color(cells: f32) -> vec3<f32> {
 fn level_color(k: u32) -> vec3<f32> {
     return class_color((9u + 4u * k) % 15u);
 }
+// Colour of a QEF of rank 1 (a face), 2 (an edge) or 3 (a corner): the first three levels' colours;
+// darker where the vertex was clamped back into its cell (www/lib/features/legends.js draws the same).
+fn rank_color(mark: u32) -> vec3<f32> {
+    let color = level_color(max(mark & 3u, 1u) - 1u);
+    return select(color, 0.3 * color, (mark & 4u) != 0u);
+}
+
 // Lines and points hidden by this vertex: outside the clip volume.
 const HIDDEN: vec4<f32> = vec4<f32>(2.0, 2.0, 2.0, 1.0);
 

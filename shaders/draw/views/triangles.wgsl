@@ -1,4 +1,5 @@
-// The mesh one triangle at a time (display=flat, wireframe; color-by=area, quality, case, level, error).
+// The mesh one triangle at a time (display=flat, wireframe; color-by=area, quality, case, level, error,
+// rank).
 
 struct TriangleOut {
     @builtin(position) clip: vec4<f32>,
@@ -9,6 +10,8 @@ struct TriangleOut {
     @location(4) @interpolate(flat) albedo: vec3<f32>,
     // With color-by=error, this vertex's distance to the exact surface in cells.
     @location(5) error: f32,
+    // With color-by=rank, the QEF marks of the triangle's three corners, three bits each.
+    @location(6) @interpolate(flat) marks: u32,
 }
 
 fn triangle_color(a: vec3<f32>, b: vec3<f32>, c: vec3<f32>, triangle: u32) -> vec3<f32> {
@@ -48,6 +51,10 @@ fn triangle_vertex(@builtin(vertex_index) v: u32) -> TriangleOut {
     out.barycentric = vec3<f32>(f32(v % 3u == 0u), f32(v % 3u == 1u), f32(v % 3u == 2u));
     out.albedo = triangle_color(a, b, c, v / 3u);
     out.error = 0.0;
+    out.marks = 0u;
+    if (shading.color_by == COLOR_RANK) {
+        out.marks = lod_data[v / 3u];
+    }
     if (shading.color_by == COLOR_ERROR) {
         out.error = surface_distance(out.world);
     }
@@ -66,6 +73,12 @@ fn triangle_fragment(in: TriangleOut, @builtin(front_facing) front: bool) -> @lo
     var albedo = in.albedo;
     if (shading.color_by == COLOR_ERROR) {
         albedo = error_color(in.error);
+    }
+    if (shading.color_by == COLOR_RANK) {
+        // Each corner's part of the triangle (nearest it) in its vertex's colour.
+        let b = in.barycentric;
+        let corner = select(select(2u, 1u, b.y >= b.z), 0u, b.x >= b.y && b.x >= b.z);
+        albedo = rank_color(in.marks >> (3u * corner));
     }
     var color = lit(albedo, in.world, n);
     if (shading.display == DISPLAY_WIREFRAME) {

@@ -57,19 +57,25 @@ pub fn needed(options: &ViewOptions, selected: bool) -> bool {
 }
 
 /// True when the frame's mesh comes without the cell lists the teaching views read: level of detail
-/// and surface nets.
+/// and the dual methods.
 pub fn mesh_only(options: &ViewOptions) -> bool {
-    options.lod || options.method == Method::SurfaceNets
+    options.lod || options.method.is_dual()
 }
 
 /// The views `options` ask for that the frame's mesh can show: with level of detail there is no
 /// uniform grid, so its lattice, cells, ambiguous faces and slice are left out (`grid=blocks` shows
-/// the LOD blocks); surface nets keep the grid but have no cases, so the crossed cells, kept blocks,
-/// ambiguous faces and case colours are left out.
+/// the LOD blocks); the dual methods keep the grid but have no cases, so the crossed cells, kept
+/// blocks, ambiguous faces and case colours are left out.
 pub fn shown(options: &ViewOptions) -> ViewOptions {
     let options = &exact::mesh_side(options);
+    // Only dual contouring's vertices have a QEF rank.
+    let ranked = options.method == Method::DualContouring && !options.lod;
+    let options = &match options.color_by {
+        ColorBy::Rank if !ranked => ViewOptions { color_by: ColorBy::None, ..*options },
+        _ => *options,
+    };
     if !options.lod {
-        if options.method != Method::SurfaceNets {
+        if !options.method.is_dual() {
             return *options;
         }
         let grid = if options.grid == GridView::Lattice { GridView::Lattice } else { GridView::None };

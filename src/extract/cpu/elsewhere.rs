@@ -2,7 +2,7 @@
 //! packed as numbers, meshed from them by the same CPU meshers, and the mesh handed back to the
 //! extractor that draws it, which takes it in place of meshing when the job is still the frame's.
 
-use super::{CpuMesher, CpuMeshing, SurfaceNetsMesher};
+use super::{CpuMesher, CpuMeshing, DualContouringMesher, SurfaceNetsMesher};
 use crate::extract::extractor::{GivenMesh, Job};
 use crate::extract::reference::{Construction, Grid};
 use crate::scene::Sphere;
@@ -41,6 +41,7 @@ pub fn pack(method: Method, job: &Job) -> Vec<f32> {
 pub struct Meshers {
     marching_cubes: CpuMesher,
     surface_nets: SurfaceNetsMesher,
+    dual_contouring: DualContouringMesher,
     /// The last job was marching cubes.
     marched: bool,
 }
@@ -54,6 +55,7 @@ impl Meshers {
         let mesher: &mut dyn CpuMeshed = match method {
             Method::MarchingCubes => &mut self.marching_cubes,
             Method::SurfaceNets => &mut self.surface_nets,
+            Method::DualContouring => &mut self.dual_contouring,
         };
         mesher.mesh_it(&job);
         Ok(mesher.given(packed.to_vec()))
@@ -84,7 +86,7 @@ impl Meshers {
     }
 
     /// The cells of the last job's mesh whose triangles the asymptotic decider or MC33 changes, with
-    /// their kind (`CpuMesher::decided_cells`), whatever its table; none after a surface-nets job.
+    /// their kind (`CpuMesher::decided_cells`), whatever its table; none after a job of a dual method.
     pub fn decided_cells(&self) -> &[[u32; 4]] {
         if self.marched { self.marching_cubes.decided_cells() } else { &[] }
     }
@@ -136,10 +138,10 @@ fn unpack(packed: &[f32]) -> Result<Unpacked, String> {
     if packed.len() < HEAD || !(packed.len() - HEAD).is_multiple_of(PER_SPHERE) {
         return Err(format!("a packed mesh job has {} numbers: 6 and then 5 per sphere", packed.len()));
     }
-    let method = [Method::MarchingCubes, Method::SurfaceNets][word(0, Method::WORDS)?];
-    let interpolation = [Interpolation::Linear, Interpolation::Midpoint][word(3, Interpolation::WORDS)?];
-    let blend = [Blend::Sum, Blend::Max][word(4, Blend::WORDS)?];
-    let case_table = [CaseTable::Classic, CaseTable::Decider, CaseTable::Mc33][word(5, CaseTable::WORDS)?];
+    let method = Method::ALL[word(0, Method::WORDS)?];
+    let interpolation = Interpolation::ALL[word(3, Interpolation::WORDS)?];
+    let blend = Blend::ALL[word(4, Blend::WORDS)?];
+    let case_table = CaseTable::ALL[word(5, CaseTable::WORDS)?];
     let cells = packed[2];
     if !((1.0..=MAX_CELLS).contains(&cells) && cells.fract() == 0.0) {
         return Err(format!("a packed mesh job has {} cells per axis", num(cells)));
@@ -178,12 +180,13 @@ mod tests {
             construction,
             lod: None,
         };
-        for method in [Method::MarchingCubes, Method::SurfaceNets] {
+        for &method in Method::ALL {
             let packed = pack(method, &job);
             let given = Meshers::default().mesh(&packed).unwrap();
             let mut direct: Box<dyn CpuMeshed> = match method {
                 Method::MarchingCubes => Box::<CpuMesher>::default(),
                 Method::SurfaceNets => Box::<SurfaceNetsMesher>::default(),
+                Method::DualContouring => Box::<DualContouringMesher>::default(),
             };
             direct.mesh_it(&job);
             assert_eq!(given, direct.given(packed.clone()), "{method:?}");

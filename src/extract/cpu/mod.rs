@@ -1,14 +1,15 @@
-//! Extraction on the CPU: a mesher (marching cubes, [`CpuMesher`], or surface nets) meshes the frame in
+//! Extraction on the CPU: a mesher (marching cubes, [`CpuMesher`], surface nets or dual contouring)
+//! meshes the frame in
 //! `prepare`, then `write` uploads its vertices and indices into the same buffers the compute passes
 //! fill (`Queue::write_buffer`), and the mesh is drawn the same way. On a software adapter it beats
 //! compute passes emulated on the CPU; on WebGL2 it is the only extractor.
 
 pub mod elsewhere;
 // The meshers themselves are in the `metaballs-core` crate (`core/src/extract/cpu/`), built for speed.
-pub use metaballs_core::extract::cpu::{facing, mesher, surface_nets};
+pub use metaballs_core::extract::cpu::{dual, facing, mesher};
 
+pub use dual::{DualContouringMesher, SurfaceNetsMesher};
 pub use mesher::CpuMesher;
-pub use surface_nets::SurfaceNetsMesher;
 
 use super::extractor::{Capabilities, Extractor, GivenMesh, Job, MeshCount, Output};
 use super::mesh::IndexedMesh;
@@ -31,11 +32,15 @@ pub trait CpuMeshing: Default + wgpu::WasmNotSendSync + 'static {
     fn to_indexed(&self) -> IndexedMesh;
     /// Takes a mesh another mesher of its kind made (the page's mesher worker) as its last mesh.
     fn install(&mut self, mesh: GivenMesh);
+    /// One word per triangle for the views (`color-by=rank`), or none.
+    fn triangle_marks(&self) -> Vec<u32> {
+        Vec::new()
+    }
 }
 
 /// Both meshers keep their mesh in `vertices` and `indices` and count blocks and cells in `stats()`.
 macro_rules! cpu_meshing {
-    ($mesher:ty, $name:literal, $method:expr) => {
+    ($mesher:ty, $name:literal, $method:expr $(, $marks:ident)?) => {
         impl CpuMeshing for $mesher {
             const NAME: &'static str = $name;
             const METHOD: Method = $method;
@@ -58,17 +63,24 @@ macro_rules! cpu_meshing {
                 let grid = mesh.grid();
                 <$mesher>::install(self, mesh.vertices, mesh.indices, mesh.counts, grid);
             }
+            $(fn triangle_marks(&self) -> Vec<u32> {
+                let $marks = <$mesher>::triangle_marks(self);
+                $marks
+            })?
         }
     };
 }
 
 cpu_meshing!(CpuMesher, "cpu", Method::MarchingCubes);
 cpu_meshing!(SurfaceNetsMesher, "surface-nets", Method::SurfaceNets);
+cpu_meshing!(DualContouringMesher, "dual-contouring", Method::DualContouring, marks);
 
 /// Marching cubes on the CPU (`mesh-on=cpu`, and everything on WebGL2).
 pub type CpuExtractor = CpuMeshExtractor<CpuMesher>;
 /// Surface nets on the CPU (`method=surface_nets`).
 pub type SurfaceNetsExtractor = CpuMeshExtractor<SurfaceNetsMesher>;
+/// Dual contouring on the CPU (`method=dual_contouring`).
+pub type DualContouringExtractor = CpuMeshExtractor<DualContouringMesher>;
 
 /// A CPU mesher and what it last uploaded.
 #[derive(Default)]
@@ -165,6 +177,18 @@ impl<M: CpuMeshing> Extractor for CpuMeshExtractor<M> {
         let written = if front { needed.indices } else { drawn };
         self.uploaded = fits;
         self.written = written;
+        let buffers = output.buffers;
+        // The views count what to draw from the device's counters, and `color-by=rank` reads a word
+        // per triangle where level of detail keeps its levels.
+        if buffers.counters.usage().contains(wgpu::BufferUsages::STORAGE) {
+            let counts = Counters { indices: written, ..needed };
+            output.queue.write_buffer(&buffers.counters, 0, bytemuck::bytes_of(&counts));
+            let marks = self.mesher.triangle_marks();
+            let triangles = (written as usize / 3).min(marks.len());
+            if triangles > 0 && !front && buffers.lod_data.size() >= 4 * triangles as u64 {
+                output.queue.write_buffer(&buffers.lod_data, 0, bytemuck::cast_slice(&marks[..triangles]));
+            }
+        }
         MeshCount::Known { needed, indices: written, drawn }
     }
 

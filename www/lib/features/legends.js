@@ -35,6 +35,23 @@ function levels(words) {
   return list;
 }
 
+// The QEF's ranks with dual contouring: the first three levels' colours, as the views draw them.
+function ranks(words) {
+  const list = document.createElement('div');
+  list.className = 'legend classes';
+  for (let rank = 1; rank <= 3; rank += 1) {
+    const item = document.createElement('span');
+    item.title = words.t(`legend.rank-${rank}`);
+    item.innerHTML = `<i style="background: ${levelColor(rank - 1)}"></i>`;
+    item.append(words.number(rank));
+    list.append(item);
+  }
+  const note = document.createElement('span');
+  note.textContent = words.t('legend.rank-note');
+  list.append(note);
+  return list;
+}
+
 // A ramp with its ends' words.
 function ramp(low, high) {
   const bar = document.createElement('div');
@@ -68,6 +85,7 @@ export function colorKey(state, classNames, words) {
     case 'quality': return ramp(words.t('legend.sliver'), words.t('legend.equilateral'));
     case 'case': return classes(classNames, words);
     case 'level': return levels(words);
+    case 'rank': return state.method === 'dual_contouring' && !state.lod ? ranks(words) : null;
     // The views colour the square root of the error's share of half a cell: the middle is ⅛ cell.
     case 'error': return ramp(words.t('legend.error-low'), words.t('legend.error-high'));
     default: return state.grid === 'cells' ? classes(classNames, words) : null;

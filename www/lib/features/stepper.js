@@ -106,10 +106,10 @@ export class Stepper {
     else this.stepTo(Infinity);
   }
 
-  // With level of detail or surface nets the whole mesh is drawn: says so, and says true.
+  // With level of detail or a dual method the whole mesh is drawn: says so, and says true.
   #wholeMesh() {
     const { lod, method } = this.#ctx.state;
-    if (!lod && method !== 'surface_nets') return false;
+    if (!lod && method === 'marching_cubes') return false;
     this.#ctx.notice(this.#ctx.t('march.whole-mesh'));
     return true;
   }

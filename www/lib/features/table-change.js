@@ -35,9 +35,10 @@ export class TableChange {
     const view = this.#ctx.view;
     const { lod, method } = this.#ctx.state;
     if (!view) return;
-    if (lod || method === 'surface_nets') {
+    if (lod || method !== 'marching_cubes') {
       this.#pending = null;
-      this.#ctx.notice(this.#ctx.t(lod ? 'notice.table-kept-lod' : 'notice.table-kept-nets', { table: value }));
+      const kept = lod ? 'lod' : method === 'surface_nets' ? 'nets' : 'dual';
+      this.#ctx.notice(this.#ctx.t(`notice.table-kept-${kept}`, { table: value }));
       return;
     }
     // The blobs under the table left (the mesh on screen), and which kinds of cell change.

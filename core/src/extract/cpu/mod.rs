@@ -1,13 +1,14 @@
 //! The CPU meshers (`metaballs::extract::cpu` re-exports them and uploads their meshes): marching
-//! cubes ([`CpuMesher`]), surface nets, and which triangles face the viewer.
+//! cubes ([`CpuMesher`]), the dual methods (surface nets and dual contouring), and which triangles face the viewer.
 
 mod blocks;
+pub mod dual;
 pub mod facing;
 pub mod mesher;
 mod normals;
 mod planes;
-pub mod surface_nets;
+pub mod qef;
 mod vertices;
 
+pub use dual::{DualContouringMesher, SurfaceNetsMesher};
 pub use mesher::CpuMesher;
-pub use surface_nets::SurfaceNetsMesher;

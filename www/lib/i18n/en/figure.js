@@ -81,6 +81,7 @@ export default {
   'notice.table-blobs': 'table={table}: blobs {before} → {after}',
   'notice.table-kept-lod': 'table={table}: level of detail keeps the classic table; the mesh is unchanged',
   'notice.table-kept-nets': 'table={table}: surface nets keeps the classic table; the mesh is unchanged',
+  'notice.table-kept-dual': 'table={table}: dual contouring has no case table; the mesh is unchanged',
   'notice.table-none-face': 'table={table}: no cell here has a face the asymptotic decider joins; both tables give this mesh',
   'notice.table-none-tunnel': 'table={table}: no cell here has a tunnel MC33 draws; both tables give this mesh',
   'notice.table-none-both': 'table={table}: no cell here has a face the asymptotic decider joins or a tunnel MC33 '
@@ -182,6 +183,10 @@ export default {
   'legend.equilateral': 'equilateral',
   'legend.error-low': 'on the surface',
   'legend.error-high': '½ cell away (middle: ⅛)',
+  'legend.rank-1': 'rank 1: a face (the planes agree)',
+  'legend.rank-2': 'rank 2: an edge (two families of planes)',
+  'legend.rank-3': 'rank 3: a corner',
+  'legend.rank-note': 'darker: minimiser outside its cell',
   'legend.slice-low': 'f = iso ÷ 16',
   'legend.slice-high': 'iso × 16',
 

@@ -1,40 +1,71 @@
-//! Surface nets on the CPU: the dual of marching cubes. Every cell the surface crosses gets one vertex,
-//! at the mean of the crossings on its edges; every crossed grid edge joins the four cells around it
-//! with a quad, split along its shorter diagonal into two triangles: two triangles for each vertex
-//! marching cubes would make. The triangles are rounder, but the vertices lie off the surface (they
-//! are averages, not crossings), and one vertex per cell joins the sheets an ambiguous cell keeps
-//! apart in marching cubes.
+//! The dual methods on the CPU, surface nets and dual contouring. Every cell the surface crosses gets
+//! one vertex; every crossed grid edge joins the four cells around it with a quad, split along its
+//! shorter diagonal into two triangles: two triangles for each vertex marching cubes would make. One
+//! vertex per cell joins the sheets an ambiguous cell keeps apart in marching cubes, so such a vertex
+//! can be non-manifold (the shape's measures report it).
 //!
-//! It reads the same field, block bounds, boundary rule and edge placement as every other extractor
-//! (the crossings come from `reference::surface_vertex`), so the two meshes differ only in how they
-//! join the crossings up.
+//! The two differ only in where a cell's vertex goes:
+//! - **Surface nets** ([`SurfaceNetsMesher`]): at the mean of the crossings on its edges. The triangles
+//!   are round, but the vertices lie off the surface (they are averages), and sharp edges are cut off.
+//! - **Dual contouring** ([`DualContouringMesher`]): at the minimiser of the crossings' quadratic error
+//!   function ([`qef`](super::qef)), the point nearest every tangent plane through a crossing, so an
+//!   edge or a corner where the surface folds stays sharp. The crossings are found on the field itself
+//!   (not the linear interpolation of its samples) and their normals are its analytic gradient: the
+//!   Hermite data. Where the minimiser lies more than [`SLACK`] outside its cell, the vertex is the
+//!   QEF's minimiser over the cell so widened instead, and each vertex keeps its QEF's rank and
+//!   whether its minimiser left the cell ([`DualMesher::placed`]), for the teaching views.
+//!
+//! Both read the same field, block bounds, boundary rule and edge placement as every other extractor
+//! (the crossings come from `reference::surface_vertex`), so they differ from marching cubes only in
+//! how they join the crossings up.
 
+use super::qef;
 use crate::extract::field::{BLOCK_CELLS, Spheres, sample_run};
 use crate::extract::mesh::IndexedMesh;
-use crate::extract::reference::{self, Construction, Grid};
+use crate::extract::reference::{self, Construction, Grid, blended_field_at};
 use crate::extract::tables::{CORNER_OFFSETS, EDGE_CORNERS};
+use crate::scene::params::view::Interpolation;
 use crate::scene::{BOX_HALF_EXTENT, Sphere};
 use glam::Vec3;
 
 /// Marks a cell without a vertex.
 const NONE: u32 = u32::MAX;
 
+/// In [`DualMesher::placed`]: the vertex's QEF minimiser lay outside its cell.
+pub const STRAYED: u8 = 4;
+
+/// How far, in cells, a dual-contouring vertex may lie outside its cell. A quarter cell keeps the
+/// vertices of cells two apart in order along each axis, so the clamp still bounds how far a
+/// vertex can run; and where a crease only clips a corner of a cell, its minimiser lies just outside
+/// (up to 0.21 cells on the crease scene of `tests/suite/dual.rs`), where clamping to the cell
+/// itself would move the vertex off the crease by up to 0.15 cells.
+pub const SLACK: f32 = 0.25;
+
 /// Counts of the last mesh.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct SurfaceNetsStats {
+pub struct DualStats {
     /// Blocks the bounds could not skip.
     pub active_blocks: u32,
     /// Cells the surface crosses: one vertex each.
     pub active_cells: u32,
 }
 
-/// A reusable surface-nets mesher, filling `vertices` (position then outward normal, 6 `f32` each) and
-/// `indices` (three per triangle, counter-clockwise seen from outside) like the marching-cubes mesher.
+/// Surface nets: each vertex at its crossings' mean.
+pub type SurfaceNetsMesher = DualMesher<false>;
+/// Dual contouring: each vertex at its crossings' QEF minimiser, within [`SLACK`] of its cell.
+pub type DualContouringMesher = DualMesher<true>;
+
+/// A reusable dual mesher (`QEF`: dual contouring, else surface nets), filling `vertices` (position
+/// then outward normal, 6 `f32` each) and `indices` (three per triangle, counter-clockwise seen from
+/// outside) like the marching-cubes mesher.
 #[derive(Default)]
-pub struct SurfaceNetsMesher {
+pub struct DualMesher<const QEF: bool> {
     pub vertices: Vec<f32>,
     pub indices: Vec<u32>,
-    stats: SurfaceNetsStats,
+    /// With dual contouring, each vertex's QEF rank (1 a face, 2 an edge, 3 a corner), plus
+    /// [`STRAYED`] where its solution left its cell; empty with surface nets.
+    pub placed: Vec<u8>,
+    stats: DualStats,
     spheres: Spheres,
     coords: Vec<f32>,
     /// Field values at every grid point of a kept block (others are never read).
@@ -46,13 +77,23 @@ pub struct SurfaceNetsMesher {
     kept: Vec<[u32; 3]>,
 }
 
-impl SurfaceNetsMesher {
-    pub fn stats(&self) -> SurfaceNetsStats {
+impl<const QEF: bool> DualMesher<QEF> {
+    pub fn stats(&self) -> DualStats {
         self.stats
     }
 
     pub fn vertex_count(&self) -> u32 {
         (self.vertices.len() / 6) as u32
+    }
+
+    /// With dual contouring, one word per triangle: [`DualMesher::placed`] of its three corners, three
+    /// bits each, first corner lowest (what `color-by=rank` reads); empty with surface nets.
+    pub fn triangle_marks(&self) -> Vec<u32> {
+        if self.placed.is_empty() {
+            return Vec::new();
+        }
+        let mark = |i: &u32| self.placed[*i as usize] as u32;
+        self.indices.chunks_exact(3).map(|t| mark(&t[0]) | mark(&t[1]) << 3 | mark(&t[2]) << 6).collect()
     }
 
     pub fn to_indexed(&self) -> IndexedMesh {
@@ -64,7 +105,8 @@ impl SurfaceNetsMesher {
         let [active_blocks, active_cells] = counts;
         self.vertices = vertices;
         self.indices = indices;
-        self.stats = SurfaceNetsStats { active_blocks, active_cells };
+        self.placed.clear();
+        self.stats = DualStats { active_blocks, active_cells };
     }
 
     /// Meshes the surface f = `iso` of `spheres` on `grid`.
@@ -88,6 +130,7 @@ impl SurfaceNetsMesher {
         self.values.resize((n as usize + 1).pow(3), 0.0);
         self.vertices.clear();
         self.indices.clear();
+        self.placed.clear();
         self.keep_blocks(iso, n, construction);
         let kept = std::mem::take(&mut self.kept);
         for &block in &kept {
@@ -149,8 +192,9 @@ impl SurfaceNetsMesher {
         self.values[p[0] as usize + width * (p[1] as usize + width * p[2] as usize)]
     }
 
-    /// One vertex in each crossed cell of a kept block: the mean of its edges' crossings, with the
-    /// normalised mean of their normals.
+    /// One vertex in each crossed cell of a kept block, from the crossings on its edges: at their
+    /// mean, or at their QEF's minimiser within [`SLACK`] of the cell; with the normalised mean of their
+    /// normals.
     fn place_vertices(
         &mut self,
         spheres: &[Sphere],
@@ -159,8 +203,9 @@ impl SurfaceNetsMesher {
         grid: Grid,
         construction: Construction,
     ) {
-        let n = grid.cells_per_axis;
+        let (n, cell) = (grid.cells_per_axis, grid.cell_size());
         let end = |b: u32| ((b + 1) * BLOCK_CELLS).min(n);
+        let mut crossings = [(Vec3::ZERO, Vec3::ZERO); 12];
         for z in bz * BLOCK_CELLS..end(bz) {
             for y in by * BLOCK_CELLS..end(by) {
                 for x in bx * BLOCK_CELLS..end(bx) {
@@ -172,7 +217,7 @@ impl SurfaceNetsMesher {
                     if inside.iter().all(|&i| i) || !inside.iter().any(|&i| i) {
                         continue;
                     }
-                    let (mut sum, mut normals, mut count) = (Vec3::ZERO, Vec3::ZERO, 0.0);
+                    let mut count = 0;
                     for [a, b] in EDGE_CORNERS {
                         if inside[a] == inside[b] {
                             continue;
@@ -182,14 +227,26 @@ impl SurfaceNetsMesher {
                             let on_wall = p.contains(&0) || p.contains(&n);
                             (Vec3::from_array(p.map(|i| self.coords[i as usize])), self.value(p, n), on_wall)
                         };
-                        let (p, normal) =
-                            reference::surface_vertex(spheres, iso, construction, end(a), end(b));
-                        sum += p;
-                        normals += normal;
-                        count += 1.0;
+                        crossings[count] = if QEF {
+                            hermite(spheres, iso, construction, end(a), end(b))
+                        } else {
+                            reference::surface_vertex(spheres, iso, construction, end(a), end(b))
+                        };
+                        count += 1;
                     }
-                    let p = sum / count;
-                    let normal = normals.try_normalize().unwrap_or(Vec3::Z);
+                    let crossings = &crossings[..count];
+                    let normal =
+                        crossings.iter().map(|c| c.1).sum::<Vec3>().try_normalize().unwrap_or(Vec3::Z);
+                    let p = if QEF {
+                        let low = Vec3::from_array([x, y, z].map(|i| self.coords[i as usize]));
+                        let high = Vec3::from_array([x, y, z].map(|i| self.coords[i as usize + 1]));
+                        let qef = qef::Qef::new(crossings);
+                        let qef::Solved { point: p, rank, strayed } = qef.solve_in(low, high, SLACK * cell);
+                        self.placed.push(rank | if strayed { STRAYED } else { 0 });
+                        p
+                    } else {
+                        crossings.iter().map(|c| c.0).sum::<Vec3>() / count as f32
+                    };
                     self.cell_vertex[index([x, y, z], n)] = self.vertex_count();
                     self.vertices.extend_from_slice(&[p.x, p.y, p.z, normal.x, normal.y, normal.z]);
                     self.crossed.push([x, y, z]);
@@ -235,6 +292,50 @@ impl SurfaceNetsMesher {
     }
 }
 
+/// Regula falsi steps (Illinois) that move a crossing from the samples' interpolation onto the field.
+const CROSSING_STEPS: u32 = 12;
+
+/// A crossing as dual contouring reads it, Hermite data: where the field itself equals `iso` on the
+/// edge, and the field's outward normal there. With midpoint placement, or where an end is on the
+/// box's wall (which reads outside whatever the field), the crossing is `surface_vertex`'s.
+pub fn hermite(
+    spheres: &[Sphere],
+    iso: f32,
+    construction: Construction,
+    a: (Vec3, f32, bool),
+    b: (Vec3, f32, bool),
+) -> (Vec3, Vec3) {
+    if construction.interpolation == Interpolation::Midpoint || a.2 || b.2 {
+        return reference::surface_vertex(spheres, iso, construction, a, b);
+    }
+    let at = |t: f32| blended_field_at(spheres, a.0 + (b.0 - a.0) * t, construction.blend) - iso;
+    let (mut t0, mut g0, mut t1, mut g1) = (0.0f32, a.1 - iso, 1.0f32, b.1 - iso);
+    let mut t = construction.edge_parameter(iso, a.1, b.1);
+    for step in 0..CROSSING_STEPS {
+        if step > 0 {
+            t = (t0 * g1 - t1 * g0) / (g1 - g0);
+            if !t.is_finite() || t <= t0.min(t1) || t >= t0.max(t1) {
+                t = 0.5 * (t0 + t1);
+            }
+        }
+        let g = at(t);
+        if g == 0.0 {
+            break;
+        }
+        if (g > 0.0) == (g0 > 0.0) {
+            (t0, g0) = (t, g);
+            g1 *= 0.5;
+        } else {
+            (t1, g1) = (t, g);
+            g0 *= 0.5;
+        }
+    }
+    let p = a.0 + (b.0 - a.0) * t.clamp(reference::EDGE_MARGIN, 1.0 - reference::EDGE_MARGIN);
+    let outward = if a.1 > iso { b.0 - a.0 } else { a.0 - b.0 };
+    let gradient = reference::outward_gradient(spheres, p, construction.blend);
+    (p, gradient.try_normalize().unwrap_or(outward.normalize()))
+}
+
 fn index([x, y, z]: [u32; 3], n: u32) -> usize {
     x as usize + n as usize * (y as usize + n as usize * z as usize)
 }
@@ -259,5 +360,30 @@ mod tests {
         let volume = mesh.enclosed_volume() as f32;
         let exact = 4.0 / 3.0 * std::f32::consts::PI * 0.125;
         assert!((volume / exact - 1.0).abs() < 0.03, "{volume} against {exact}");
+    }
+
+    #[test]
+    fn dual_contouring_keeps_each_vertex_within_a_quarter_cell_of_its_cell() {
+        // Spheres of both signs, close enough to fold the surface where they meet.
+        let spheres = [
+            Sphere::from_signed(Vec3::new(-0.2, 0.05, 0.0), 0.45, Vec3::ZERO),
+            Sphere::from_signed(Vec3::new(0.25, -0.1, 0.1), 0.4, Vec3::ZERO),
+            Sphere::from_signed(Vec3::new(0.0, 0.3, 0.1), -0.2, Vec3::ZERO),
+        ];
+        let grid = Grid { cells_per_axis: 20 };
+        for blend in [crate::scene::params::view::Blend::Sum, crate::scene::params::view::Blend::Max] {
+            let mut mesher = DualContouringMesher::default();
+            mesher.mesh(&spheres, 1.0, grid, Construction { blend, ..Construction::default() });
+            assert_eq!(mesher.placed.len(), mesher.crossed.len());
+            let cell = grid.cell_size();
+            for (k, c) in mesher.crossed.iter().enumerate() {
+                let p = Vec3::from_slice(&mesher.vertices[6 * k..6 * k + 3]);
+                let low = Vec3::from_array(c.map(|i| mesher.coords[i as usize]));
+                let out = (low - p).max(p - low - cell).max_element() / cell;
+                assert!(out <= SLACK + 1e-4, "{blend:?}: vertex {k} {out} cells out of its cell");
+                assert!((1..=3).contains(&(mesher.placed[k] & 3)));
+            }
+            assert!(mesher.to_indexed().shape().closed);
+        }
     }
 }

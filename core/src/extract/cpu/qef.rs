@@ -1,0 +1,194 @@
+//! The quadratic error function of dual contouring (Ju, Losasso, Schaefer and Warren 2002): the point
+//! of a cell nearest, in the least-squares sense, to every plane through a crossing on its edges with
+//! the field's normal there. E(x) = Σᵢ (nᵢ · (x − pᵢ))².
+//!
+//! Its normal matrix AᵀA = Σᵢ nᵢ nᵢᵀ is symmetric, so its singular value decomposition is its
+//! eigen-decomposition (nalgebra's `SymmetricEigen`). Directions whose singular value (the square root
+//! of the eigenvalue) is under [`TRUNCATION`] of the largest are left out, as the paper does: along
+//! them E barely changes, and the solution stays at the crossings' mean (the mass point) instead of
+//! running off along a plane or an edge. The directions kept are the rank: 1 where the crossings'
+//! planes agree (a face), 2 where two families meet (an edge, a crease), 3 at a corner.
+
+use glam::Vec3;
+use nalgebra::{Matrix3, Vector3};
+
+/// Singular values under this fraction of the largest are truncated.
+pub const TRUNCATION: f32 = 0.1;
+
+/// Sweeps of the box-constrained minimisation, more than it needs for the cells' few planes.
+const SWEEPS: u32 = 64;
+
+/// Weight of the pull towards the mass point in the box-constrained minimisation, relative to the
+/// normal matrix's largest eigenvalue: enough to choose among equal minimisers, too little to move
+/// a well-determined one.
+const MASS_BIAS: f32 = 1e-3;
+
+/// A cell's QEF: the normal matrix AᵀA, Aᵀb about the mass point, and the mass point.
+pub struct Qef {
+    ata: Matrix3<f32>,
+    atb: Vector3<f32>,
+    mass: Vec3,
+}
+
+/// A cell's QEF solved: where its vertex goes, how many directions fixed it, and whether the
+/// minimiser nearest the mass point lay outside the cell.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Solved {
+    pub point: Vec3,
+    /// 1 (a face), 2 (an edge) or 3 (a corner).
+    pub rank: u8,
+    pub strayed: bool,
+}
+
+impl Qef {
+    /// The QEF of `crossings` (point, unit normal): E(x) = Σ (nᵢ · (x − pᵢ))².
+    pub fn new(crossings: &[(Vec3, Vec3)]) -> Qef {
+        let count = crossings.len().max(1) as f32;
+        let mass = crossings.iter().map(|c| c.0).sum::<Vec3>() / count;
+        let (mut ata, mut atb) = (Matrix3::<f32>::zeros(), Vector3::<f32>::zeros());
+        for &(p, n) in crossings {
+            let n = Vector3::new(n.x, n.y, n.z);
+            ata += n * n.transpose();
+            atb += n * n.dot(&Vector3::new(p.x - mass.x, p.y - mass.y, p.z - mass.z));
+        }
+        Qef { ata, atb, mass }
+    }
+
+    /// The minimiser nearest the mass point, with the small singular values truncated, and its rank.
+    pub fn minimiser(&self) -> (Vec3, u8) {
+        let eigen = self.ata.symmetric_eigen();
+        let largest = eigen.eigenvalues.iter().fold(0.0f32, |a, &b| a.max(b));
+        // σ < TRUNCATION·σ_max, with σ² the eigenvalues.
+        let floor = TRUNCATION * TRUNCATION * largest;
+        let mut offset = Vector3::zeros();
+        let mut rank = 0;
+        for (i, &value) in eigen.eigenvalues.iter().enumerate() {
+            if value > floor && value > 0.0 {
+                let v = eigen.eigenvectors.column(i);
+                offset += v * (v.dot(&self.atb) / value);
+                rank += 1;
+            }
+        }
+        (self.mass + Vec3::new(offset.x, offset.y, offset.z), rank.max(1))
+    }
+
+    /// The vertex of the cell from `low` to `high`, kept within `slack` of it: the truncated
+    /// minimiser where it lies there; else the minimiser of the QEF over that box (plus a slight pull
+    /// towards the mass point), found by projected coordinate descent, the QEF being convex. That
+    /// point lies on the box's boundary as near every plane as the box allows (an edge's vertex stays
+    /// on the edge where the edge crosses the box), not where clamping each coordinate would put it.
+    /// `strayed`: the minimiser lay outside the cell itself.
+    pub fn solve_in(&self, low: Vec3, high: Vec3, slack: f32) -> Solved {
+        let (point, rank) = self.minimiser();
+        let outside = |low: Vec3, high: Vec3| {
+            let margin = 1e-4 * (high - low).max_element();
+            point.cmplt(low - margin).any() || point.cmpgt(high + margin).any()
+        };
+        let strayed = outside(low, high);
+        let (low, high) = (low - slack, high + slack);
+        if !outside(low, high) {
+            return Solved { point: point.clamp(low, high), rank, strayed };
+        }
+        let (a, b) = (&self.ata, &self.atb);
+        let bias = MASS_BIAS * a.trace().max(f32::MIN_POSITIVE);
+        // y = x − mass, within the box moved by the mass point.
+        let (from, to) = (low - self.mass, high - self.mass);
+        let mut y = (point - self.mass).clamp(from, to);
+        for _ in 0..SWEEPS {
+            for i in 0..3 {
+                let others: f32 = (0..3).filter(|&j| j != i).map(|j| a[(i, j)] * y[j]).sum();
+                y[i] = ((b[i] - others) / (a[(i, i)] + bias)).clamp(from[i], to[i]);
+            }
+        }
+        Solved { point: self.mass + y, rank, strayed }
+    }
+}
+
+/// The minimiser of Σ (nᵢ · (x − pᵢ))² over `crossings` (point, unit normal) nearest their mean
+/// among the minimisers with the small singular values truncated, and its rank.
+pub fn solve(crossings: &[(Vec3, Vec3)]) -> (Vec3, u8) {
+    Qef::new(crossings).minimiser()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn plane(p: Vec3, n: Vec3) -> (Vec3, Vec3) {
+        (p, n.normalize())
+    }
+
+    #[test]
+    fn three_planes_meet_at_their_corner() {
+        let corner = Vec3::new(0.3, -0.2, 0.1);
+        let crossings = [
+            plane(corner + Vec3::new(0.0, 0.4, 0.1), Vec3::X),
+            plane(corner + Vec3::new(0.0, -0.1, 0.3), Vec3::X),
+            plane(corner + Vec3::new(0.2, 0.0, 0.1), Vec3::Y),
+            plane(corner + Vec3::new(-0.3, 0.0, 0.2), Vec3::Y),
+            plane(corner + Vec3::new(0.1, 0.3, 0.0), Vec3::Z),
+        ];
+        let (point, rank) = solve(&crossings);
+        assert_eq!(rank, 3);
+        assert!(point.distance(corner) < 1e-5, "{point}");
+    }
+
+    #[test]
+    fn two_planes_give_the_point_of_their_edge_nearest_the_mass_point() {
+        // The planes x = 0 and y = 0 meet along z; the crossings' mean has z = 0.25.
+        let crossings = [
+            plane(Vec3::new(0.0, 0.2, 0.0), Vec3::X),
+            plane(Vec3::new(0.0, 0.4, 0.5), Vec3::X),
+            plane(Vec3::new(0.3, 0.0, 0.0), Vec3::Y),
+            plane(Vec3::new(0.1, 0.0, 0.5), Vec3::Y),
+        ];
+        let (point, rank) = solve(&crossings);
+        assert_eq!(rank, 2);
+        assert!(point.distance(Vec3::new(0.0, 0.0, 0.25)) < 1e-5, "{point}");
+    }
+
+    #[test]
+    fn a_vertex_outside_its_box_is_the_qef_minimiser_over_the_box() {
+        // The edge x = y = 0 runs along z; the mass point's foot on it is at z = 0.25, above the box.
+        let crossings = [
+            plane(Vec3::new(0.0, 0.05, 0.2), Vec3::X),
+            plane(Vec3::new(0.0, -0.05, 0.3), Vec3::X),
+            plane(Vec3::new(0.05, 0.0, 0.2), Vec3::Y),
+            plane(Vec3::new(-0.05, 0.0, 0.3), Vec3::Y),
+        ];
+        let solved = Qef::new(&crossings).solve_in(Vec3::splat(-0.1), Vec3::splat(0.1), 0.0);
+        assert!(solved.strayed && solved.rank == 2);
+        assert!(solved.point.distance(Vec3::new(0.0, 0.0, 0.1)) < 1e-5, "{}", solved.point);
+        // A corner outside the box: the vertex is the box's point nearest the three planes.
+        let crossings = [
+            plane(Vec3::new(0.2, 0.0, 0.0), Vec3::X),
+            plane(Vec3::new(0.0, 0.0, 0.0), Vec3::Y),
+            plane(Vec3::new(0.0, 0.0, 0.0), Vec3::Z),
+        ];
+        let solved = Qef::new(&crossings).solve_in(Vec3::splat(-0.1), Vec3::splat(0.1), 0.05);
+        assert!(solved.strayed && solved.rank == 3);
+        assert!(solved.point.distance(Vec3::new(0.15, 0.0, 0.0)) < 1e-4, "{}", solved.point);
+        // A minimiser within the slack stays where it is, though it strayed; one inside, too.
+        let solved = Qef::new(&crossings).solve_in(Vec3::splat(-0.1), Vec3::splat(0.1), 0.1);
+        assert!(solved.strayed && solved.point.distance(Vec3::new(0.2, 0.0, 0.0)) < 1e-5);
+        let solved = Qef::new(&crossings).solve_in(Vec3::splat(-0.3), Vec3::splat(0.3), 0.0);
+        assert!(!solved.strayed && solved.point.distance(Vec3::new(0.2, 0.0, 0.0)) < 1e-5);
+    }
+
+    #[test]
+    fn nearly_parallel_planes_keep_the_vertex_at_the_mass_point_along_them() {
+        // Normals a degree apart: the second singular value is truncated, so the vertex moves only
+        // across the planes, not far along them.
+        let tilt = Vec3::new(0.0, 1.0_f32.to_radians().sin(), 0.0);
+        let crossings = [
+            plane(Vec3::new(0.0, 0.0, 0.0), Vec3::X),
+            plane(Vec3::new(0.01, 0.5, 0.0), Vec3::X + tilt),
+            plane(Vec3::new(0.0, 0.0, 0.5), Vec3::X),
+        ];
+        let (point, rank) = solve(&crossings);
+        assert_eq!(rank, 1);
+        let mass = crossings.iter().map(|c| c.0).sum::<Vec3>() / 3.0;
+        let along = point - mass;
+        assert!(along.y.abs() < 1e-3 && along.z.abs() < 1e-5, "{point} from {mass}");
+    }
+}
