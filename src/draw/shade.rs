@@ -3,9 +3,8 @@
 
 use crate::device::bindings;
 use crate::draw::uniforms::{SHADE_WGSL, ShadingUniform};
-use crate::draw::views::{ViewPipelines, ViewState};
+use crate::draw::views::{ViewFrame, ViewPipelines, ViewState};
 use crate::extract::buffers::VERTEX_BYTES;
-use crate::scene::params::ViewOptions;
 use std::sync::{Arc, OnceLock};
 
 /// Samples per pixel with antialiasing on; 4 is supported for every renderable format WebGPU guarantees.
@@ -196,14 +195,6 @@ pub struct MeshDraw<'a> {
     pub front_only: bool,
 }
 
-/// What the shading pass draws of the teaching views this frame.
-pub struct ViewFrame<'a> {
-    pub state: &'a ViewState,
-    pub pipelines: &'a ViewPipelines,
-    pub options: &'a ViewOptions,
-    pub selected: bool,
-}
-
 /// Draws a renderer's frames: shared pipelines, plus its own uniform buffer and colour and depth
 /// targets sized to the output.
 pub struct ShadePass {
@@ -321,7 +312,7 @@ impl ShadePass {
         }
         if let Some(v) = &views {
             let size = (self.targets.depth.width(), self.targets.depth.height());
-            v.state.draw_after_surface(&mut pass, v.pipelines, v.options, v.selected, size);
+            v.state.draw_after_surface(&mut pass, v, size);
         }
     }
 }

@@ -155,6 +155,12 @@ pub trait Extractor: wgpu::WasmNotSendSync {
     /// its mesh would draw again (benchmarks time the meshing itself).
     fn forget_mesh(&mut self) {}
 
+    /// The records after the mesh's vertices in the vertex buffer that hold the crossings of the
+    /// grid's edges (point, normal), for `display=normals` with dual contouring.
+    fn crossings(&self) -> Option<std::ops::Range<u32>> {
+        None
+    }
+
     /// The latest mesh as written (clamped as the buffers held it), where it is kept on the CPU.
     fn cpu_mesh(&self) -> Option<IndexedMesh> {
         None

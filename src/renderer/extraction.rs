@@ -14,8 +14,8 @@ use crate::extract::{
 };
 use crate::scene::checks::check_f32;
 use crate::scene::params::ParamError;
-use crate::scene::params::view::ColorBy;
 use crate::scene::params::view::MeshOn;
+use crate::scene::params::view::{ColorBy, Display};
 use crate::scene::params::view::{March, Method, Projection};
 use crate::scene::{BOX_HALF_EXTENT, Sphere};
 
@@ -112,10 +112,12 @@ impl Renderer {
     pub fn cpu_job(&self) -> Option<Vec<f32>> {
         let capabilities = self.stage.extractors[self.next_extractor()].capabilities();
         let view = &self.settings.view;
-        // Part way through the march, the frame meshes its cells on its own; so does a frame coloured
-        // by the QEF's rank, which a mesh made elsewhere does not carry.
-        let ranked = views::shown(view).color_by == ColorBy::Rank;
-        (!capabilities.needs_compute && !capabilities.lod && view.march.is_none() && !ranked)
+        // Part way through the march, the frame meshes its cells on its own; so does a frame showing
+        // dual contouring's QEF ranks or crossings, which a mesh made elsewhere does not carry.
+        let shown = views::shown(view);
+        let dual = shown.method == Method::DualContouring && !shown.lod;
+        let hermite = dual && (shown.color_by == ColorBy::Rank || shown.display == Display::Normals);
+        (!capabilities.needs_compute && !capabilities.lod && view.march.is_none() && !hermite)
             .then(|| elsewhere::pack(capabilities.method, &self.job_of(self.scene.spheres())))
     }
 

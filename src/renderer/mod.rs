@@ -21,7 +21,8 @@ pub use readback::{MeshReadback, OverlayReadback};
 pub use stats::FrameStats;
 
 use crate::device::timing::StageTimes;
-use crate::draw::shade::{MULTISAMPLES, MeshDraw, ShadePass, ViewFrame};
+use crate::draw::shade::{MULTISAMPLES, MeshDraw, ShadePass};
+use crate::draw::views::ViewFrame;
 use crate::draw::views::{self, ViewState};
 use crate::extract::buffers::{BLOCK_CELLS, Capacity};
 use crate::extract::gpu::scene_buffers::SceneBuffers;
@@ -291,7 +292,8 @@ impl Renderer {
             (Some(state), true) => {
                 let pipelines = self.shade.pipelines().views(&self.device);
                 state.encode(&mut encoder, pipelines, &shown);
-                Some(ViewFrame { state, pipelines, options: &shown, selected })
+                let crossings = self.stage.active().crossings();
+                Some(ViewFrame { state, pipelines, options: &shown, selected, crossings })
             }
             _ => None,
         };

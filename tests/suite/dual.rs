@@ -189,14 +189,18 @@ fn crease_error(mesh: &IndexedMesh, a: (Vec3, f32), b: (Vec3, f32), cell: f32) -
         .fold(0.0, f32::max)
 }
 
-#[test]
-fn dual_contouring_keeps_the_crease_of_a_union_of_two_spheres_sharp() {
-    // Two spheres, off the grid's symmetries, as the union of their terms (blend=max): they meet in
-    // a circle where the surface folds, 0.4 across, at 32 cells.
-    let spheres = [
+/// The crease scene: two spheres off the grid's symmetries, meeting in a circle 0.4 across.
+fn crease_spheres() -> [Sphere; 2] {
+    [
         Sphere::from_signed(Vec3::new(-0.31, 0.023, -0.017), 0.5, Vec3::ZERO),
         Sphere::from_signed(Vec3::new(0.29, 0.013, 0.031), 0.5, Vec3::ZERO),
-    ];
+    ]
+}
+
+#[test]
+fn dual_contouring_keeps_the_crease_of_a_union_of_two_spheres_sharp() {
+    // The union of the two spheres' terms (blend=max) folds where they meet; 32 cells.
+    let spheres = crease_spheres();
     let balls = spheres.map(|s| (s.center, s.radius));
     let grid = Grid { cells_per_axis: 32 };
     let construction = Construction { blend: Blend::Max, ..Construction::default() };
@@ -243,4 +247,46 @@ fn dual_contouring_keeps_the_crease_of_a_union_of_two_spheres_sharp() {
     assert!(off <= 0.1, "an edge vertex {off} cells off the surface");
     // The balls themselves are faces: each of their cells' normals agree within a few degrees.
     assert!(ranks(1) > 4 * ranks(2), "{} faces", ranks(1));
+}
+
+#[test]
+fn dual_contourings_views_show_its_ranks_and_crossings_on_a_fresh_renderer() {
+    let blue = |p: &[u8]| p[2] as i32 > p[0] as i32 + 60 && p[2] as i32 > p[1] as i32 + 30;
+    let magenta = |p: &[u8]| p[0] as i32 > p[1] as i32 + 60 && p[2] as i32 > p[1] as i32 + 60;
+    let yellow = |p: &[u8]| p[0] > 170 && p[1] > 130 && (p[2] as i32) < p[1] as i32 - 60;
+    let share = |pixels: &[u8], test: &dyn Fn(&[u8]) -> bool| {
+        pixels.chunks(4).filter(|p| test(p)).count() as f32 / (pixels.len() / 4) as f32
+    };
+    let picture = |method: &str, view: &str| {
+        // A renderer of its own for each picture: the views count what to draw from what this
+        // mesher wrote, with nothing left from an earlier frame.
+        with_renderer(settings(1, 2, 32, 1.0), 320, 240, |o| {
+            o.renderer.set_scene(Scene::from_spheres(crease_spheres().to_vec()).unwrap());
+            let mut settings = *o.renderer.settings();
+            settings = settings.with_parameter("blend", "max").unwrap();
+            settings = settings.with_parameter("method", method).unwrap();
+            for (key, value) in view.split('&').filter_map(|pair| pair.split_once('=')) {
+                settings = settings.with_parameter(key, value).unwrap();
+            }
+            o.renderer.set_settings(settings).unwrap();
+            let pixels = o.render_rgba();
+            let name = format!("dual_{method}_{}.png", view.replace(['=', '&'], "_"));
+            metaballs::offscreen::write_png(&output_dir().join(name), 320, 240, &pixels).unwrap();
+            pixels
+        })
+    };
+    // Ranks: the balls are faces (blue), the crease between them an edge (magenta).
+    let ranks = picture("dual_contouring", "color_by=rank");
+    let (faces, edges) = (share(&ranks, &blue), share(&ranks, &magenta));
+    println!("rank view: {faces:.3} of the picture faces, {edges:.4} edges");
+    assert!(faces > 0.05 && edges > 0.001 && edges < faces / 5.0, "faces {faces}, edges {edges}");
+    // Surface nets have no QEF: the view falls back to the material's colour, drawn all the same.
+    let nets = picture("surface_nets", "color_by=rank&display=wireframe");
+    assert_eq!(share(&nets, &magenta), 0.0);
+    assert!(share(&nets, &|p: &[u8]| p[0] > 60) > 0.05, "surface nets' wireframe is drawn");
+    // The crossings' normals: yellow segments, with dual contouring only.
+    let crossings = share(&picture("dual_contouring", "display=normals"), &yellow);
+    let none = share(&picture("surface_nets", "display=normals"), &yellow);
+    println!("crossing segments: {crossings:.4} of the picture; {none:.4} with surface nets");
+    assert!(crossings > 0.005 && none < crossings / 20.0, "{crossings} against {none}");
 }

@@ -86,6 +86,16 @@ pub fn shown(options: &ViewOptions) -> ViewOptions {
     ViewOptions { grid, ambiguous: false, slice: None, ..*options }
 }
 
+/// What the shading pass draws of the teaching views this frame.
+pub struct ViewFrame<'a> {
+    pub state: &'a ViewState,
+    pub pipelines: &'a ViewPipelines,
+    pub options: &'a ViewOptions,
+    pub selected: bool,
+    /// The vertex records holding the crossings of the grid's edges, where the mesher wrote them.
+    pub crossings: Option<std::ops::Range<u32>>,
+}
+
 /// One renderer's view resources for one grid: the slice's samples and contour, the overlay counts
 /// and draws, and the bind groups over its mesh buffers.
 pub struct ViewState {
@@ -258,15 +268,8 @@ impl ViewState {
     }
 
     /// Draws the surface in its display mode (unless the shading pass draws it) and the overlays.
-    pub fn draw_after_surface(
-        &self,
-        pass: &mut wgpu::RenderPass,
-        pipelines: &ViewPipelines,
-        options: &ViewOptions,
-        selected: bool,
-        size: (u32, u32),
-    ) {
-        let p = pipelines;
+    pub fn draw_after_surface(&self, pass: &mut wgpu::RenderPass, frame: &ViewFrame, size: (u32, u32)) {
+        let (p, options, selected) = (frame.pipelines, frame.options, frame.selected);
         pass.set_bind_group(0, &self.draw_group, &[]);
         exact::clip_mesh(pass, options, size);
         if options.display == Display::Points {
@@ -279,6 +282,11 @@ impl ViewState {
         }
         if options.display == Display::Normals {
             self.indirect(pass, &p.normals, Draw::Normals);
+            // Dual contouring's Hermite data: each crossing with the field's normal, two vertices each.
+            if let Some(crossings) = &frame.crossings {
+                pass.set_pipeline(&p.crossings);
+                pass.draw(2 * crossings.start..2 * crossings.end, 0..1);
+            }
         }
         exact::draw_beside_mesh(pass, p, options, size);
         match options.grid {

@@ -36,6 +36,11 @@ pub trait CpuMeshing: Default + wgpu::WasmNotSendSync + 'static {
     fn triangle_marks(&self) -> Vec<u32> {
         Vec::new()
     }
+    /// Records laid out as vertices, drawn by the views after the mesh's (dual contouring's crossings,
+    /// for `display=normals`), or none.
+    fn crossings(&self) -> &[f32] {
+        &[]
+    }
 }
 
 /// Both meshers keep their mesh in `vertices` and `indices` and count blocks and cells in `stats()`.
@@ -66,6 +71,9 @@ macro_rules! cpu_meshing {
             $(fn triangle_marks(&self) -> Vec<u32> {
                 let $marks = <$mesher>::triangle_marks(self);
                 $marks
+            }
+            fn crossings(&self) -> &[f32] {
+                &self.crossings
             })?
         }
     };
@@ -97,6 +105,8 @@ pub struct CpuMeshExtractor<M> {
     held: Vec<f32>,
     /// The buffers hold the vertices of the mesh held: a frame drawing it again writes its indices only.
     uploaded: bool,
+    /// Crossings the buffers hold after the mesh's vertices.
+    crossings: u32,
 }
 
 impl<M: CpuMeshing> CpuMeshExtractor<M> {
@@ -156,6 +166,7 @@ impl<M: CpuMeshing> Extractor for CpuMeshExtractor<M> {
         self.uploaded &= kept;
         self.held = packed;
         let Counters { vertices, indices, .. } = self.counters();
+        let vertices = vertices + (self.mesher.crossings().len() / 6) as u32;
         Some(Counters { active_blocks: 0, vertices, indices, active_cells: 0 })
     }
 
@@ -171,9 +182,20 @@ impl<M: CpuMeshing> Extractor for CpuMeshExtractor<M> {
             }
             _ => false,
         };
-        // The vertices of a mesh drawn again are in the buffers already.
-        let sent = if self.uploaded { &[][..] } else { vertices };
+        // The vertices of a mesh drawn again are in the buffers already; the crossings follow them.
+        let crossings = self.mesher.crossings();
+        let joined;
+        let sent = match (self.uploaded, crossings.is_empty()) {
+            (true, _) => &[][..],
+            (false, true) => vertices,
+            (false, false) => {
+                joined = [vertices, crossings].concat();
+                &joined[..]
+            }
+        };
         let drawn = output.buffers.upload(output.queue, sent, if front { &self.front } else { indices });
+        let room = output.buffers.holds(needed.vertices + (crossings.len() / 6) as u32, needed.indices);
+        self.crossings = if room { (crossings.len() / 6) as u32 } else { 0 };
         let written = if front { needed.indices } else { drawn };
         self.uploaded = fits;
         self.written = written;
@@ -194,6 +216,12 @@ impl<M: CpuMeshing> Extractor for CpuMeshExtractor<M> {
 
     fn buffers_changed(&mut self) {
         self.uploaded = false;
+        self.crossings = 0;
+    }
+
+    fn crossings(&self) -> Option<std::ops::Range<u32>> {
+        let first = (self.mesher.vertices().len() / 6) as u32;
+        (self.crossings > 0).then_some(first..first + self.crossings)
     }
 
     fn give_mesh(&mut self, mesh: GivenMesh) {

@@ -62,6 +62,9 @@ pub type DualContouringMesher = DualMesher<true>;
 pub struct DualMesher<const QEF: bool> {
     pub vertices: Vec<f32>,
     pub indices: Vec<u32>,
+    /// With dual contouring, the crossings of the crossed grid edges (Hermite data: point, then the
+    /// field's outward normal, 6 `f32` each), for the teaching views; empty with surface nets.
+    pub crossings: Vec<f32>,
     /// With dual contouring, each vertex's QEF rank (1 a face, 2 an edge, 3 a corner), plus
     /// [`STRAYED`] where its solution left its cell; empty with surface nets.
     pub placed: Vec<u8>,
@@ -106,6 +109,7 @@ impl<const QEF: bool> DualMesher<QEF> {
         self.vertices = vertices;
         self.indices = indices;
         self.placed.clear();
+        self.crossings.clear();
         self.stats = DualStats { active_blocks, active_cells };
     }
 
@@ -131,6 +135,7 @@ impl<const QEF: bool> DualMesher<QEF> {
         self.vertices.clear();
         self.indices.clear();
         self.placed.clear();
+        self.crossings.clear();
         self.keep_blocks(iso, n, construction);
         let kept = std::mem::take(&mut self.kept);
         for &block in &kept {
@@ -227,11 +232,17 @@ impl<const QEF: bool> DualMesher<QEF> {
                             let on_wall = p.contains(&0) || p.contains(&n);
                             (Vec3::from_array(p.map(|i| self.coords[i as usize])), self.value(p, n), on_wall)
                         };
-                        crossings[count] = if QEF {
+                        let crossing = if QEF {
                             hermite(spheres, iso, construction, end(a), end(b))
                         } else {
                             reference::surface_vertex(spheres, iso, construction, end(a), end(b))
                         };
+                        // Each crossed edge is kept once: by the cell whose lowest corner it leaves.
+                        if QEF && a == 0 {
+                            let (p, normal) = crossing;
+                            self.crossings.extend_from_slice(&[p.x, p.y, p.z, normal.x, normal.y, normal.z]);
+                        }
+                        crossings[count] = crossing;
                         count += 1;
                     }
                     let crossings = &crossings[..count];
