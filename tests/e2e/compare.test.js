@@ -117,3 +117,29 @@ test('figures with one sync name share spheres and camera: turning one turns the
   assert.equal(after[0], after[1], 'the other figure turned with it');
   assert.deepEqual(errors, []);
 });
+
+test('the lecture compares marching cubes, surface nets and dual contouring on one union, with counts and errors', async () => {
+  const { page, errors } = await open('www/examples/lecture.html');
+  const figures = '#creases metaballs-view';
+  await page.$eval('#creases', (e) => e.scrollIntoView());
+  await page.waitForFunction((sel) => [...document.querySelectorAll(sel)].every((e) => e.stats.triangles > 0 && e.stats.error),
+    figures, { timeout: 60000 });
+  await screenshot(page, 'lecture-creases');
+  const stats = await page.$$eval(figures, (es) => es.map((e) => ({
+    adapter: e.stats.adapter, triangles: e.stats.triangles, max: e.stats.error.max, rms: e.stats.error.rms,
+    hud: e.shadowRoot.getElementById('hud-error-text').textContent,
+  })));
+  assert.match(stats[0].adapter, /CPU|GPU/);
+  assert.match(stats[1].adapter, /SURFACE-NETS/);
+  assert.match(stats[2].adapter, /DUAL-CONTOURING/);
+  // The dual methods make two triangles per crossed edge; all three meshes are of one size.
+  for (const s of stats) assert.ok(Math.abs(s.triangles / stats[0].triangles - 1) < 0.1, JSON.stringify(stats));
+  // Surface nets' vertices are averages off the surface; dual contouring's sit on it, as the HUD says.
+  assert.ok(stats[2].max < stats[1].max / 2, JSON.stringify(stats));
+  assert.ok(stats.every((s) => /\d/.test(s.hud)), 'each HUD gives the error');
+  // The rank view colours dual contouring's vertices, and its key says what the colours are.
+  await page.$$eval(figures, (es) => es[2].setAttribute('color-by', 'rank'));
+  await page.waitForFunction((sel) => document.querySelectorAll(sel)[2].shadowRoot.textContent.includes('minimiser'), figures);
+  await screenshot(page, 'lecture-creases-rank');
+  assert.deepEqual(errors, []);
+});

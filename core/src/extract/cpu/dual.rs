@@ -13,7 +13,7 @@
 //!   (not the linear interpolation of its samples) and their normals are its analytic gradient: the
 //!   Hermite data. Where the minimiser lies more than [`SLACK`] outside its cell, the vertex is the
 //!   QEF's minimiser over the cell so widened instead, and each vertex keeps its QEF's rank and
-//!   whether its minimiser left the cell ([`DualMesher::placed`]), for the teaching views.
+//!   whether its minimiser left the cell ([`Dual::placed`]), for the teaching views.
 //!
 //! Both read the same field, block bounds, boundary rule and edge placement as every other extractor
 //! (the crossings come from `reference::surface_vertex`), so they differ from marching cubes only in
@@ -31,7 +31,7 @@ use glam::Vec3;
 /// Marks a cell without a vertex.
 const NONE: u32 = u32::MAX;
 
-/// In [`DualMesher::placed`]: the vertex's QEF minimiser lay outside its cell.
+/// In [`Dual::placed`]: the vertex's QEF minimiser lay outside its cell.
 pub const STRAYED: u8 = 4;
 
 /// How far, in cells, a dual-contouring vertex may lie outside its cell. A quarter cell keeps the
@@ -55,11 +55,52 @@ pub type SurfaceNetsMesher = DualMesher<false>;
 /// Dual contouring: each vertex at its crossings' QEF minimiser, within [`SLACK`] of its cell.
 pub type DualContouringMesher = DualMesher<true>;
 
-/// A reusable dual mesher (`QEF`: dual contouring, else surface nets), filling `vertices` (position
-/// then outward normal, 6 `f32` each) and `indices` (three per triangle, counter-clockwise seen from
-/// outside) like the marching-cubes mesher.
+/// A reusable dual mesher of one method (`QEF`: dual contouring, else surface nets). Both methods'
+/// code is one ([`Dual`], which it dereferences to), so the page's WebAssembly carries it once.
 #[derive(Default)]
-pub struct DualMesher<const QEF: bool> {
+pub struct DualMesher<const QEF: bool>(Dual);
+
+impl<const QEF: bool> DualMesher<QEF> {
+    /// Meshes the surface f = `iso` of `spheres` on `grid`.
+    pub fn mesh(&mut self, spheres: &[Sphere], iso: f32, grid: Grid, construction: Construction) {
+        self.0.qef = QEF;
+        self.0.mesh(spheres, iso, grid, construction);
+    }
+
+    pub fn to_indexed(&self) -> IndexedMesh {
+        self.0.to_indexed()
+    }
+
+    pub fn triangle_marks(&self) -> Vec<u32> {
+        self.0.triangle_marks()
+    }
+
+    /// Takes a mesh made by another mesher of its kind as its last one, with what that one counted.
+    pub fn install(&mut self, vertices: Vec<f32>, indices: Vec<u32>, counts: [u32; 2], grid: Grid) {
+        self.0.install(vertices, indices, counts, grid);
+    }
+}
+
+impl<const QEF: bool> std::ops::Deref for DualMesher<QEF> {
+    type Target = Dual;
+    fn deref(&self) -> &Dual {
+        &self.0
+    }
+}
+
+impl<const QEF: bool> std::ops::DerefMut for DualMesher<QEF> {
+    fn deref_mut(&mut self) -> &mut Dual {
+        &mut self.0
+    }
+}
+
+/// A reusable dual mesher, filling `vertices` (position then outward normal, 6 `f32` each) and
+/// `indices` (three per triangle, counter-clockwise seen from outside) like the marching-cubes
+/// mesher.
+#[derive(Default)]
+pub struct Dual {
+    /// Dual contouring, else surface nets.
+    qef: bool,
     pub vertices: Vec<f32>,
     pub indices: Vec<u32>,
     /// With dual contouring, the crossings of the crossed grid edges (Hermite data: point, then the
@@ -80,7 +121,7 @@ pub struct DualMesher<const QEF: bool> {
     kept: Vec<[u32; 3]>,
 }
 
-impl<const QEF: bool> DualMesher<QEF> {
+impl Dual {
     pub fn stats(&self) -> DualStats {
         self.stats
     }
@@ -89,7 +130,7 @@ impl<const QEF: bool> DualMesher<QEF> {
         (self.vertices.len() / 6) as u32
     }
 
-    /// With dual contouring, one word per triangle: [`DualMesher::placed`] of its three corners, three
+    /// With dual contouring, one word per triangle: [`Dual::placed`] of its three corners, three
     /// bits each, first corner lowest (what `color-by=rank` reads); empty with surface nets.
     pub fn triangle_marks(&self) -> Vec<u32> {
         if self.placed.is_empty() {
@@ -114,7 +155,7 @@ impl<const QEF: bool> DualMesher<QEF> {
     }
 
     /// Meshes the surface f = `iso` of `spheres` on `grid`.
-    pub fn mesh(&mut self, spheres: &[Sphere], iso: f32, grid: Grid, construction: Construction) {
+    fn mesh(&mut self, spheres: &[Sphere], iso: f32, grid: Grid, construction: Construction) {
         let n = grid.cells_per_axis;
         let cell = grid.cell_size();
         self.spheres.set(spheres);
@@ -232,13 +273,13 @@ impl<const QEF: bool> DualMesher<QEF> {
                             let on_wall = p.contains(&0) || p.contains(&n);
                             (Vec3::from_array(p.map(|i| self.coords[i as usize])), self.value(p, n), on_wall)
                         };
-                        let crossing = if QEF {
+                        let crossing = if self.qef {
                             hermite(spheres, iso, construction, end(a), end(b))
                         } else {
                             reference::surface_vertex(spheres, iso, construction, end(a), end(b))
                         };
                         // Each crossed edge is kept once: by the cell whose lowest corner it leaves.
-                        if QEF && a == 0 {
+                        if self.qef && a == 0 {
                             let (p, normal) = crossing;
                             self.crossings.extend_from_slice(&[p.x, p.y, p.z, normal.x, normal.y, normal.z]);
                         }
@@ -248,7 +289,7 @@ impl<const QEF: bool> DualMesher<QEF> {
                     let crossings = &crossings[..count];
                     let normal =
                         crossings.iter().map(|c| c.1).sum::<Vec3>().try_normalize().unwrap_or(Vec3::Z);
-                    let p = if QEF {
+                    let p = if self.qef {
                         let low = Vec3::from_array([x, y, z].map(|i| self.coords[i as usize]));
                         let high = Vec3::from_array([x, y, z].map(|i| self.coords[i as usize + 1]));
                         let qef = qef::Qef::new(crossings);

@@ -97,7 +97,8 @@ impl Qef {
         for _ in 0..SWEEPS {
             for i in 0..3 {
                 let others: f32 = (0..3).filter(|&j| j != i).map(|j| a[(i, j)] * y[j]).sum();
-                y[i] = ((b[i] - others) / (a[(i, i)] + bias)).clamp(from[i], to[i]);
+                // max then min, not `f32::clamp`, whose check of its bounds the compiler cannot drop.
+                y[i] = ((b[i] - others) / (a[(i, i)] + bias)).max(from[i]).min(to[i]);
             }
         }
         Solved { point: self.mass + y, rank, strayed }
