@@ -88,7 +88,7 @@ fn cpu_mesher_equals_the_oracle_in_wasm() {
                 interpolation: Interpolation::Midpoint,
                 blend: Blend::Max,
                 case_table: CaseTable::Decider,
-                march: None,
+                ..Construction::default()
             },
             Construction { case_table: CaseTable::Mc33, ..Construction::default() },
         ] {

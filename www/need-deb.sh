@@ -15,9 +15,9 @@ need_deb() {
     as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q "${missing[@]}"
 }
 
-# `need_esbuild`: installs the packages pinned in www/tools/package.json (esbuild, and the libraries
-# bundled into www/vendor/) when one is missing or not at its pinned version (and Node.js with them), and
-# sets `esbuild` to its path. Run from the repository's root.
+# `need_esbuild`: installs the packages pinned in www/tools/package.json (esbuild, binaryen's wasm-opt,
+# and the libraries bundled into www/vendor/) when one is missing or not at its pinned version (and
+# Node.js with them), and sets `esbuild` to its path. Run from the repository's root.
 need_esbuild() {
     esbuild=www/tools/node_modules/.bin/esbuild
     local name version stale=0

@@ -121,35 +121,43 @@ pub fn spheres_text(spheres: &[Sphere]) -> String {
         let t = t.trim_end_matches('0').trim_end_matches('.');
         if t == "-0" || t.is_empty() { "0".to_string() } else { t.to_string() }
     };
-    spheres
-        .iter()
-        .map(|s| {
-            let radius = parse_f32(&n(s.radius, 3)).unwrap_or(s.radius);
-            let limit = BOX_HALF_EXTENT - radius;
-            let mut parts: Vec<String> = s
-                .center
-                .to_array()
-                .iter()
-                .map(|&c| {
-                    let mut t = n(c, 3);
-                    for step in 1..=3 {
-                        if !parse_f32(&t).is_some_and(|v| v.abs() > limit) {
-                            break;
-                        }
-                        t = n(c - c.signum() * 0.001 * step as f32, 3);
+    // Written straight into one string (a join of owned strings is a second copy of the joining
+    // code in the wasm, beside the one for lists of words).
+    let mut text = String::new();
+    for (i, s) in spheres.iter().enumerate() {
+        if i > 0 {
+            text.push(';');
+        }
+        let radius = parse_f32(&n(s.radius, 3)).unwrap_or(s.radius);
+        let limit = BOX_HALF_EXTENT - radius;
+        let mut parts: Vec<String> = s
+            .center
+            .to_array()
+            .iter()
+            .map(|&c| {
+                let mut t = n(c, 3);
+                for step in 1..=3 {
+                    if !parse_f32(&t).is_some_and(|v| v.abs() > limit) {
+                        break;
                     }
-                    t
-                })
-                .collect();
-            parts.push(n(radius * s.charge, 3));
-            let v: Vec<String> = s.velocity.to_array().iter().map(|&c| n(c, 2)).collect();
-            if v.iter().any(|c| c != "0") {
-                parts.extend(v);
+                    t = n(c - c.signum() * 0.001 * step as f32, 3);
+                }
+                t
+            })
+            .collect();
+        parts.push(n(radius * s.charge, 3));
+        let v: Vec<String> = s.velocity.to_array().iter().map(|&c| n(c, 2)).collect();
+        if v.iter().any(|c| c != "0") {
+            parts.extend(v);
+        }
+        for (k, part) in parts.iter().enumerate() {
+            if k > 0 {
+                text.push(',');
             }
-            parts.join(",")
-        })
-        .collect::<Vec<_>>()
-        .join(";")
+            text.push_str(part);
+        }
+    }
+    text
 }
 
 /// Reads the compact form written by [`spheres_text`] (a negative radius: a subtractive sphere); every

@@ -211,7 +211,7 @@ impl View {
             interpolation,
             blend: settings.view.blend,
             case_table: settings.view.case_table,
-            march: None,
+            ..Construction::default()
         };
         let p = error_at(self.renderer.scene().spheres(), settings.iso, construction, cells_per_axis);
         Ok(vec![p.rms, p.max, p.triangles as f64])

@@ -93,7 +93,7 @@ pub fn subtractive_scenes(how_many: usize) -> Vec<OracleScene> {
                     interpolation,
                     blend,
                     case_table: alternate(case / 4),
-                    march: None,
+                    ..Construction::default()
                 },
             }
         })
@@ -133,7 +133,12 @@ pub fn oracle_scenes(random: usize) -> Vec<OracleScene> {
                         spheres: spheres.clone(),
                         iso,
                         resolution: 32,
-                        construction: Construction { interpolation, blend, case_table, march: None },
+                        construction: Construction {
+                            interpolation,
+                            blend,
+                            case_table,
+                            ..Construction::default()
+                        },
                     });
                 }
             }

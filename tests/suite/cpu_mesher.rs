@@ -66,8 +66,12 @@ fn walls_overlaps_extreme_levels_and_constructions_equal_the_oracle() {
                             format!("{name}, iso {iso}, {interpolation:?}, {blend:?}, {resolution} cells");
                         // The three tables in turn.
                         tables += 1;
-                        let construction =
-                            Construction { interpolation, blend, case_table: alternate(tables), march: None };
+                        let construction = Construction {
+                            interpolation,
+                            blend,
+                            case_table: alternate(tables),
+                            ..Construction::default()
+                        };
                         assert_equals_oracle(&mut mesher, spheres, iso, resolution, construction, &what);
                     }
                 }

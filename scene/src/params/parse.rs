@@ -60,11 +60,14 @@ impl Parameter {
             // checked is the value used, and it reads back as itself.
             Kind::Number => self.read_f32(noun, trimmed, text).map(Value::of_f32),
             Kind::Levels => {
-                let mut levels = Vec::new();
+                let mut levels = String::new();
                 for item in trimmed.split(',').map(str::trim).filter(|s| !s.is_empty()) {
-                    levels.push(num(self.read_f32(noun, item, item)?).to_string());
+                    if !levels.is_empty() {
+                        levels.push(',');
+                    }
+                    levels.push_str(&num(self.read_f32(noun, item, item)?).to_string());
                 }
-                Ok(Value::Text(levels.join(",")))
+                Ok(Value::Text(levels))
             }
             Kind::Boolean => match trimmed.to_ascii_lowercase().as_str() {
                 "" | "1" | "true" | "on" | "yes" => Ok(Value::Boolean(true)),

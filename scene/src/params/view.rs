@@ -173,9 +173,10 @@ choice!(
 );
 
 impl Method {
-    /// One vertex per crossed cell (surface nets, dual contouring): no cases, no cell lists.
-    pub fn is_dual(self) -> bool {
-        self != Method::MarchingCubes
+    /// Marching cubes: the one method with cases and cell lists, which the teaching views of cells
+    /// read and the case table changes.
+    pub fn has_cases(self) -> bool {
+        self == Method::MarchingCubes
     }
 }
 
@@ -360,7 +361,7 @@ pub struct ViewOptions {
     pub spot_softness: f32,
     pub projection: Projection,
     pub mesh_on: MeshOn,
-    /// Marching cubes or surface nets (with `lod`, always marching cubes and its transition cells).
+    /// How the mesh is made (with `lod`, always marching cubes and its transition cells).
     pub method: Method,
     /// Level of detail: fine cells near the camera, coarse far away (`resolution` is the finest).
     pub lod: bool,

@@ -57,14 +57,14 @@ pub fn needed(options: &ViewOptions, selected: bool) -> bool {
 }
 
 /// True when the frame's mesh comes without the cell lists the teaching views read: level of detail
-/// and the dual methods.
+/// and every method but marching cubes.
 pub fn mesh_only(options: &ViewOptions) -> bool {
-    options.lod || options.method.is_dual()
+    options.lod || !options.method.has_cases()
 }
 
 /// The views `options` ask for that the frame's mesh can show: with level of detail there is no
 /// uniform grid, so its lattice, cells, ambiguous faces and slice are left out (`grid=blocks` shows
-/// the LOD blocks); the dual methods keep the grid but have no cases, so the crossed cells, kept
+/// the LOD blocks); the other methods keep the grid but have no cases, so the crossed cells, kept
 /// blocks, ambiguous faces and case colours are left out.
 pub fn shown(options: &ViewOptions) -> ViewOptions {
     let options = &exact::mesh_side(options);
@@ -75,7 +75,7 @@ pub fn shown(options: &ViewOptions) -> ViewOptions {
         _ => *options,
     };
     if !options.lod {
-        if !options.method.is_dual() {
+        if options.method.has_cases() {
             return *options;
         }
         let grid = if options.grid == GridView::Lattice { GridView::Lattice } else { GridView::None };

@@ -86,7 +86,7 @@ impl Meshers {
     }
 
     /// The cells of the last job's mesh whose triangles the asymptotic decider or MC33 changes, with
-    /// their kind (`CpuMesher::decided_cells`), whatever its table; none after a job of a dual method.
+    /// their kind (`CpuMesher::decided_cells`), whatever its table; none after a job of another method.
     pub fn decided_cells(&self) -> &[[u32; 4]] {
         if self.marched { self.marching_cubes.decided_cells() } else { &[] }
     }

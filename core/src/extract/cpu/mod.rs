@@ -1,5 +1,6 @@
 //! The CPU meshers (`metaballs::extract::cpu` re-exports them and uploads their meshes): marching
-//! cubes ([`CpuMesher`]), the dual methods (surface nets and dual contouring), and which triangles face the viewer.
+//! cubes ([`CpuMesher`]), the dual methods (surface nets and dual contouring), and which triangles
+//! face the viewer.
 
 mod blocks;
 pub mod dual;

@@ -3,14 +3,17 @@
 //! the field's normal there. E(x) = Σᵢ (nᵢ · (x − pᵢ))².
 //!
 //! Its normal matrix AᵀA = Σᵢ nᵢ nᵢᵀ is symmetric, so its singular value decomposition is its
-//! eigen-decomposition (nalgebra's `SymmetricEigen`). Directions whose singular value (the square root
+//! eigen-decomposition, found here by Jacobi rotations ([`symmetric_eigen`]). A linear-algebra
+//! library would do it too, but this mesher runs in the page's WebAssembly, which holds a download
+//! budget of 200 KB gzipped: nalgebra's `SymmetricEigen` added 2.4 KB to it and glamx's
+//! `SymmetricEigen3` (with its own glam) 3.7 KB, where the dozen lines of Jacobi's method add a few
+//! hundred bytes. `tests` holds it to the definition (A v = λ v, orthonormal v) on random matrices. Directions whose singular value (the square root
 //! of the eigenvalue) is under [`TRUNCATION`] of the largest are left out, as the paper does: along
 //! them E barely changes, and the solution stays at the crossings' mean (the mass point) instead of
 //! running off along a plane or an edge. The directions kept are the rank: 1 where the crossings'
 //! planes agree (a face), 2 where two families meet (an edge, a crease), 3 at a corner.
 
-use glam::Vec3;
-use nalgebra::{Matrix3, Vector3};
+use glam::{Mat3, Vec3};
 
 /// Singular values under this fraction of the largest are truncated.
 pub const TRUNCATION: f32 = 0.1;
@@ -25,8 +28,8 @@ const MASS_BIAS: f32 = 1e-3;
 
 /// A cell's QEF: the normal matrix AᵀA, Aᵀb about the mass point, and the mass point.
 pub struct Qef {
-    ata: Matrix3<f32>,
-    atb: Vector3<f32>,
+    ata: Mat3,
+    atb: Vec3,
     mass: Vec3,
 }
 
@@ -45,31 +48,30 @@ impl Qef {
     pub fn new(crossings: &[(Vec3, Vec3)]) -> Qef {
         let count = crossings.len().max(1) as f32;
         let mass = crossings.iter().map(|c| c.0).sum::<Vec3>() / count;
-        let (mut ata, mut atb) = (Matrix3::<f32>::zeros(), Vector3::<f32>::zeros());
+        let (mut ata, mut atb) = (Mat3::ZERO, Vec3::ZERO);
         for &(p, n) in crossings {
-            let n = Vector3::new(n.x, n.y, n.z);
-            ata += n * n.transpose();
-            atb += n * n.dot(&Vector3::new(p.x - mass.x, p.y - mass.y, p.z - mass.z));
+            ata += Mat3::from_cols(n * n.x, n * n.y, n * n.z);
+            atb += n * n.dot(p - mass);
         }
         Qef { ata, atb, mass }
     }
 
     /// The minimiser nearest the mass point, with the small singular values truncated, and its rank.
     pub fn minimiser(&self) -> (Vec3, u8) {
-        let eigen = self.ata.symmetric_eigen();
-        let largest = eigen.eigenvalues.iter().fold(0.0f32, |a, &b| a.max(b));
+        let (values, vectors) = symmetric_eigen(self.ata.to_cols_array_2d());
+        let largest = values.iter().fold(0.0f32, |a, &b| a.max(b));
         // σ < TRUNCATION·σ_max, with σ² the eigenvalues.
         let floor = TRUNCATION * TRUNCATION * largest;
-        let mut offset = Vector3::zeros();
+        let mut offset = Vec3::ZERO;
         let mut rank = 0;
-        for (i, &value) in eigen.eigenvalues.iter().enumerate() {
-            if value > floor && value > 0.0 {
-                let v = eigen.eigenvectors.column(i);
-                offset += v * (v.dot(&self.atb) / value);
+        for (value, v) in values.iter().zip(vectors) {
+            if *value > floor && *value > 0.0 {
+                let v = Vec3::from_array(v);
+                offset += v * (v.dot(self.atb) / value);
                 rank += 1;
             }
         }
-        (self.mass + Vec3::new(offset.x, offset.y, offset.z), rank.max(1))
+        (self.mass + offset, rank.max(1))
     }
 
     /// The vertex of the cell from `low` to `high`, kept within `slack` of it: the truncated
@@ -89,20 +91,65 @@ impl Qef {
         if !outside(low, high) {
             return Solved { point: point.clamp(low, high), rank, strayed };
         }
-        let (a, b) = (&self.ata, &self.atb);
-        let bias = MASS_BIAS * a.trace().max(f32::MIN_POSITIVE);
+        let a = self.ata.to_cols_array_2d();
+        let b = self.atb.to_array();
+        let bias = MASS_BIAS * (a[0][0] + a[1][1] + a[2][2]).max(f32::MIN_POSITIVE);
         // y = x − mass, within the box moved by the mass point.
-        let (from, to) = (low - self.mass, high - self.mass);
-        let mut y = (point - self.mass).clamp(from, to);
+        let (from, to) = ((low - self.mass).to_array(), (high - self.mass).to_array());
+        let mut y = (point - self.mass).clamp(low - self.mass, high - self.mass).to_array();
         for _ in 0..SWEEPS {
-            for i in 0..3 {
-                let others: f32 = (0..3).filter(|&j| j != i).map(|j| a[(i, j)] * y[j]).sum();
+            for (i, row) in a.iter().enumerate() {
+                // The matrix is symmetric: its column i is its row i.
+                let others = row[0] * y[0] + row[1] * y[1] + row[2] * y[2] - row[i] * y[i];
                 // max then min, not `f32::clamp`, whose check of its bounds the compiler cannot drop.
-                y[i] = ((b[i] - others) / (a[(i, i)] + bias)).max(from[i]).min(to[i]);
+                y[i] = ((b[i] - others) / (row[i] + bias)).max(from[i]).min(to[i]);
             }
         }
-        Solved { point: self.mass + y, rank, strayed }
+        Solved { point: self.mass + Vec3::from_array(y), rank, strayed }
     }
+}
+
+/// Jacobi sweeps: each halves the off-diagonal's digits at least; a 3 × 3 matrix in `f32` needs a few.
+const JACOBI_SWEEPS: u32 = 8;
+
+/// The eigenvalues of the symmetric matrix `a` (columns) and their unit eigenvectors, by the cyclic
+/// Jacobi method: rotations in each coordinate plane in turn that zero the off-diagonal entry.
+fn symmetric_eigen(mut a: [[f32; 3]; 3]) -> ([f32; 3], [[f32; 3]; 3]) {
+    // The rotations' product: its columns become the eigenvectors.
+    let mut v = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    for _ in 0..JACOBI_SWEEPS {
+        for (p, q) in [(0, 1), (0, 2), (1, 2)] {
+            let off = a[q][p];
+            if off.abs() <= f32::EPSILON * 1e-3 * (a[p][p].abs() + a[q][q].abs()) {
+                continue;
+            }
+            // The rotation angle's tangent, the smaller root of t² + 2θt − 1 = 0.
+            let theta = (a[q][q] - a[p][p]) / (2.0 * off);
+            let t = theta.signum() / (theta.abs() + (theta * theta + 1.0).sqrt());
+            let c = 1.0 / (t * t + 1.0).sqrt();
+            let s = t * c;
+            let rotate = |m: &mut [[f32; 3]; 3]| {
+                for column in m.iter_mut() {
+                    let (x, y) = (column[p], column[q]);
+                    column[p] = c * x - s * y;
+                    column[q] = s * x + c * y;
+                }
+            };
+            // A ← JᵀAJ, column by column and then row by row (A is symmetric); V ← VJ.
+            rotate(&mut a);
+            let (cp, cq) = (a[p], a[q]);
+            for k in 0..3 {
+                a[p][k] = c * cp[k] - s * cq[k];
+                a[q][k] = s * cp[k] + c * cq[k];
+            }
+            let (vp, vq) = (v[p], v[q]);
+            for k in 0..3 {
+                v[p][k] = c * vp[k] - s * vq[k];
+                v[q][k] = s * vp[k] + c * vq[k];
+            }
+        }
+    }
+    ([a[0][0], a[1][1], a[2][2]], v)
 }
 
 /// The minimiser of Σ (nᵢ · (x − pᵢ))² over `crossings` (point, unit normal) nearest their mean
@@ -117,6 +164,36 @@ mod tests {
 
     fn plane(p: Vec3, n: Vec3) -> (Vec3, Vec3) {
         (p, n.normalize())
+    }
+
+    #[test]
+    fn the_eigen_decomposition_meets_its_definition() {
+        // Random symmetric matrices, Σ n nᵀ of random directions as the QEF makes them, and
+        // degenerate ones (a plane's, an edge's).
+        let mut seed = 12345u32;
+        let mut random = || {
+            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            (seed >> 8) as f32 / (1 << 24) as f32 * 2.0 - 1.0
+        };
+        for k in 0..200 {
+            let count = 1 + k % 6;
+            let mut a = Mat3::ZERO;
+            for _ in 0..count {
+                let n = Vec3::new(random(), random(), random()).normalize_or(Vec3::X);
+                a += Mat3::from_cols(n * n.x, n * n.y, n * n.z);
+            }
+            let (values, vectors) = symmetric_eigen(a.to_cols_array_2d());
+            let scale = values.iter().fold(0.0f32, |m, v| m.max(v.abs())).max(1.0);
+            for (i, (&value, v)) in values.iter().zip(vectors).enumerate() {
+                let v = Vec3::from_array(v);
+                assert!((v.length() - 1.0).abs() < 1e-5, "matrix {k}: |v{i}| = {}", v.length());
+                let residual = (a * v - v * value).length();
+                assert!(residual < 1e-5 * scale, "matrix {k}: A v{i} − λ v{i} = {residual}");
+                for w in &vectors[i + 1..] {
+                    assert!(v.dot(Vec3::from_array(*w)).abs() < 1e-5, "matrix {k}: v{i} not orthogonal");
+                }
+            }
+        }
     }
 
     #[test]
