@@ -34,15 +34,22 @@ done
 # `optimise FILE`: binaryen's optimisations over the whole module, in place, without its inlining (which
 # makes the module smaller but compresses worse: measured, the WebGPU build is about 5 KB smaller
 # gzipped without it and 2 KB larger with it). The features are those the module was built with, as
-# its target_features section lists them; the section itself is left out (only tools read it).
+# its target_features section lists them; the section itself is left out (only tools read it). Further
+# flags follow: `--converge` repeats the passes until the module stops shrinking (a few hundred bytes
+# more, and seconds on the small modules, but minutes on the WebGL2 one, which is run once).
 optimise() {
+    local file=$1
+    shift
     "$wasm_opt" -O3 --flexible-inline-max-function-size=0 --one-caller-inline-max-function-size=0 \
-        --converge --strip-target-features "$1" -o "$1"
+        --strip-target-features "$@" "$file" -o "$file"
 }
 
-# build OUT [wasm-bindgen flags] -- [cargo flags]
+# build OUT [wasm-opt flags] -- [wasm-bindgen flags] -- [cargo flags]
 build() {
     local out=$1
+    shift
+    local passes=()
+    while [ "$1" != "--" ]; do passes+=("$1"); shift; done
     shift
     local bindgen=()
     while [ "$1" != "--" ]; do bindgen+=("$1"); shift; done
@@ -50,21 +57,21 @@ build() {
     cargo build "${remap[@]}" --profile wasm --lib --target wasm32-unknown-unknown "$@"
     wasm-bindgen --target web --no-typescript "${bindgen[@]}" --out-dir "$out" \
         target/wasm32-unknown-unknown/wasm/metaballs.wasm
-    optimise "$out/metaballs_bg.wasm"
+    optimise "$out/metaballs_bg.wasm" "${passes[@]}"
     # Short names for the imports from the glue (wasm-bindgen's carry 16 hex digits of hash each).
     node www/tools/short-imports.mjs "$out"
     echo "built $out/metaballs_bg.wasm ($(wc -c < "$out/metaballs_bg.wasm") bytes, $(gzip -9c "$out/metaballs_bg.wasm" | wc -c) gzipped)"
 }
 # Both builds use the `wasm` profile (Cargo.toml: optimised for size, whole-program) and drop the
 # function names (panic traces show indices instead).
-build pkg --remove-name-section --remove-producers-section --
-build pkg-webgl --remove-name-section --remove-producers-section -- --no-default-features --features webgl
+build pkg --converge -- --remove-name-section --remove-producers-section --
+build pkg-webgl -- --remove-name-section --remove-producers-section -- --no-default-features --features webgl
 # The critical points' search and the measures along the iso level (levels/): a third, small module,
 # loaded by the topology worker only when a figure asks for them.
 cargo build "${remap[@]}" --profile wasm --lib --target wasm32-unknown-unknown -p metaballs-levels
 wasm-bindgen --target web --no-typescript --remove-name-section --remove-producers-section --out-dir pkg-levels \
     target/wasm32-unknown-unknown/wasm/metaballs_levels.wasm
-optimise pkg-levels/metaballs_levels_bg.wasm
+optimise pkg-levels/metaballs_levels_bg.wasm --converge
 echo "built pkg-levels/metaballs_levels_bg.wasm ($(wc -c < pkg-levels/metaballs_levels_bg.wasm) bytes, $(gzip -9c pkg-levels/metaballs_levels_bg.wasm | wc -c) gzipped)"
 # What www/lib/figure/clip.js loads when a clip is recorded: mediabunny and gifenc, pinned in www/tools/.
 need_clip_codecs

@@ -5,8 +5,9 @@
 
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
+import path from 'node:path';
 import {
-  useServerAndBrowser, openClosedAfterEach, picture, settledTriangles, screenshot, differingFraction, frameDrawn,
+  useServerAndBrowser, openClosedAfterEach, picture, settledTriangles, screenshot, differingFraction, frameDrawn, outputDir,
 } from './helpers.js';
 
 useServerAndBrowser();
@@ -124,7 +125,8 @@ test('the lecture compares marching cubes, surface nets and dual contouring on o
   await page.$eval('#creases', (e) => e.scrollIntoView());
   await page.waitForFunction((sel) => [...document.querySelectorAll(sel)].every((e) => e.stats.triangles > 0 && e.stats.error),
     figures, { timeout: 60000 });
-  await screenshot(page, 'lecture-creases');
+  const shot = (name) => page.locator('#creases').screenshot({ path: path.join(outputDir, `e2e-${name}.png`) });
+  await shot('lecture-creases');
   const stats = await page.$$eval(figures, (es) => es.map((e) => ({
     adapter: e.stats.adapter, triangles: e.stats.triangles, max: e.stats.error.max, rms: e.stats.error.rms,
     hud: e.shadowRoot.getElementById('hud-error-text').textContent,
@@ -140,6 +142,6 @@ test('the lecture compares marching cubes, surface nets and dual contouring on o
   // The rank view colours dual contouring's vertices, and its key says what the colours are.
   await page.$$eval(figures, (es) => es[2].setAttribute('color-by', 'rank'));
   await page.waitForFunction((sel) => document.querySelectorAll(sel)[2].shadowRoot.textContent.includes('minimiser'), figures);
-  await screenshot(page, 'lecture-creases-rank');
+  await shot('lecture-creases-rank');
   assert.deepEqual(errors, []);
 });
