@@ -118,6 +118,8 @@ pub struct Dual {
     cell_vertex: Vec<u32>,
     /// The crossed cells, in the order their vertices were made.
     crossed: Vec<[u32; 3]>,
+    /// The crossings (point, normal) on the edges of the block being placed ([`local`]).
+    near: Vec<(Vec3, Vec3)>,
     kept: Vec<[u32; 3]>,
 }
 
@@ -250,6 +252,8 @@ impl Dual {
         construction: Construction,
     ) {
         let (n, cell) = (grid.cells_per_axis, grid.cell_size());
+        let origin = [bx, by, bz].map(|b| b * BLOCK_CELLS);
+        self.find_crossings(spheres, origin, iso, n, construction);
         let end = |b: u32| ((b + 1) * BLOCK_CELLS).min(n);
         let mut crossings = [(Vec3::ZERO, Vec3::ZERO); 12];
         for z in bz * BLOCK_CELLS..end(bz) {
@@ -265,26 +269,14 @@ impl Dual {
                     }
                     let mut count = 0;
                     for [a, b] in EDGE_CORNERS {
-                        if inside[a] == inside[b] {
-                            continue;
+                        if inside[a] != inside[b] {
+                            // The edge leaves corner a (the one nearer the grid's origin) along one axis.
+                            let (from, to) = (CORNER_OFFSETS[a], CORNER_OFFSETS[b]);
+                            let axis = (0..3).find(|&i| from[i] != to[i]).unwrap_or(0);
+                            let at = std::array::from_fn(|i| [x, y, z][i] + from[i] - origin[i]);
+                            crossings[count] = self.near[local(at, axis)];
+                            count += 1;
                         }
-                        let end = |c: usize| {
-                            let p = corner(c);
-                            let on_wall = p.contains(&0) || p.contains(&n);
-                            (Vec3::from_array(p.map(|i| self.coords[i as usize])), self.value(p, n), on_wall)
-                        };
-                        let crossing = if self.qef {
-                            hermite(spheres, iso, construction, end(a), end(b))
-                        } else {
-                            reference::surface_vertex(spheres, iso, construction, end(a), end(b))
-                        };
-                        // Each crossed edge is kept once: by the cell whose lowest corner it leaves.
-                        if self.qef && a == 0 {
-                            let (p, normal) = crossing;
-                            self.crossings.extend_from_slice(&[p.x, p.y, p.z, normal.x, normal.y, normal.z]);
-                        }
-                        crossings[count] = crossing;
-                        count += 1;
                     }
                     let crossings = &crossings[..count];
                     let normal =
@@ -302,6 +294,49 @@ impl Dual {
                     self.cell_vertex[index([x, y, z], n)] = self.vertex_count();
                     self.vertices.extend_from_slice(&[p.x, p.y, p.z, normal.x, normal.y, normal.z]);
                     self.crossed.push([x, y, z]);
+                }
+            }
+        }
+    }
+
+    /// The crossings of the crossed edges leaving each grid point of the block at `origin` and of the
+    /// layer of points past its far faces, into `near` (each edge by its lower point and axis): every
+    /// edge of the block's cells, each found once (`hermite` with dual contouring, else
+    /// `surface_vertex`). Those whose lower point is one of the block's cells' are the block's own,
+    /// kept in `crossings` for the views with dual contouring.
+    fn find_crossings(&mut self, spheres: &[Sphere], origin: [u32; 3], iso: f32, n: u32, c: Construction) {
+        let span = BLOCK_CELLS + 1;
+        self.near.clear();
+        self.near.resize((3 * span * span * span) as usize, (Vec3::ZERO, Vec3::ZERO));
+        for lz in 0..span {
+            for ly in 0..span {
+                for lx in 0..span {
+                    let p = [origin[0] + lx, origin[1] + ly, origin[2] + lz];
+                    if p.iter().any(|&i| i >= n) {
+                        // On or past the far walls: every edge from here runs along a wall (outside).
+                        continue;
+                    }
+                    for axis in 0..3 {
+                        let mut q = p;
+                        q[axis] += 1;
+                        if (self.value(p, n) > iso) == (self.value(q, n) > iso) {
+                            continue;
+                        }
+                        let end = |p: [u32; 3]| {
+                            let on_wall = p.contains(&0) || p.contains(&n);
+                            (Vec3::from_array(p.map(|i| self.coords[i as usize])), self.value(p, n), on_wall)
+                        };
+                        let crossing = if self.qef {
+                            hermite(spheres, iso, c, end(p), end(q))
+                        } else {
+                            reference::surface_vertex(spheres, iso, c, end(p), end(q))
+                        };
+                        self.near[local([lx, ly, lz], axis)] = crossing;
+                        if self.qef && lx < BLOCK_CELLS && ly < BLOCK_CELLS && lz < BLOCK_CELLS {
+                            let (p, normal) = crossing;
+                            self.crossings.extend_from_slice(&[p.x, p.y, p.z, normal.x, normal.y, normal.z]);
+                        }
+                    }
                 }
             }
         }
@@ -344,8 +379,10 @@ impl Dual {
     }
 }
 
-/// Regula falsi steps (Illinois) that move a crossing from the samples' interpolation onto the field.
+/// Regula falsi steps (Illinois) that move a crossing from the samples' interpolation onto the field,
+/// at most: they stop once the bracket is narrower than [`CROSSING_TOLERANCE`] of the edge.
 const CROSSING_STEPS: u32 = 12;
+const CROSSING_TOLERANCE: f32 = 1e-5;
 
 /// A crossing as dual contouring reads it, Hermite data: where the field itself equals `iso` on the
 /// edge, and the field's outward normal there. With midpoint placement, or where an end is on the
@@ -363,29 +400,45 @@ pub fn hermite(
     let at = |t: f32| blended_field_at(spheres, a.0 + (b.0 - a.0) * t, construction.blend) - iso;
     let (mut t0, mut g0, mut t1, mut g1) = (0.0f32, a.1 - iso, 1.0f32, b.1 - iso);
     let mut t = construction.edge_parameter(iso, a.1, b.1);
+    // Which end the last step replaced: when the same end is replaced twice running, the other end's
+    // value is halved (the Illinois rule), so that the bracket shrinks from both sides.
+    let mut last = 0;
     for step in 0..CROSSING_STEPS {
         if step > 0 {
             t = (t0 * g1 - t1 * g0) / (g1 - g0);
-            if !t.is_finite() || t <= t0.min(t1) || t >= t0.max(t1) {
+            if !t.is_finite() || t <= t0 || t >= t1 {
                 t = 0.5 * (t0 + t1);
             }
         }
         let g = at(t);
-        if g == 0.0 {
+        if g == 0.0 || t1 - t0 < CROSSING_TOLERANCE {
             break;
         }
         if (g > 0.0) == (g0 > 0.0) {
             (t0, g0) = (t, g);
-            g1 *= 0.5;
+            if last == -1 {
+                g1 *= 0.5;
+            }
+            last = -1;
         } else {
             (t1, g1) = (t, g);
-            g0 *= 0.5;
+            if last == 1 {
+                g0 *= 0.5;
+            }
+            last = 1;
         }
     }
     let p = a.0 + (b.0 - a.0) * t.clamp(reference::EDGE_MARGIN, 1.0 - reference::EDGE_MARGIN);
     let outward = if a.1 > iso { b.0 - a.0 } else { a.0 - b.0 };
     let gradient = reference::outward_gradient(spheres, p, construction.blend);
     (p, gradient.try_normalize().unwrap_or(outward.normalize()))
+}
+
+/// The place in `Dual::near` of the edge leaving the block's point `[x, y, z]` (from its origin, 0 to
+/// `BLOCK_CELLS`) along `axis`.
+fn local([x, y, z]: [u32; 3], axis: usize) -> usize {
+    let span = BLOCK_CELLS + 1;
+    3 * (x + span * (y + span * z)) as usize + axis
 }
 
 fn index([x, y, z]: [u32; 3], n: u32) -> usize {

@@ -109,7 +109,8 @@ impl Qef {
     }
 }
 
-/// Jacobi sweeps: each halves the off-diagonal's digits at least; a 3 × 3 matrix in `f32` needs a few.
+/// Jacobi sweeps at most: each at least halves the off-diagonal's digits, and a sweep that rotates
+/// nothing ends them; a 3 × 3 matrix in `f32` needs a few.
 const JACOBI_SWEEPS: u32 = 8;
 
 /// The eigenvalues of the symmetric matrix `a` (columns) and their unit eigenvectors, by the cyclic
@@ -118,11 +119,13 @@ fn symmetric_eigen(mut a: [[f32; 3]; 3]) -> ([f32; 3], [[f32; 3]; 3]) {
     // The rotations' product: its columns become the eigenvectors.
     let mut v = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
     for _ in 0..JACOBI_SWEEPS {
+        let mut rotated = false;
         for (p, q) in [(0, 1), (0, 2), (1, 2)] {
             let off = a[q][p];
             if off.abs() <= f32::EPSILON * 1e-3 * (a[p][p].abs() + a[q][q].abs()) {
                 continue;
             }
+            rotated = true;
             // The rotation angle's tangent, the smaller root of t² + 2θt − 1 = 0.
             let theta = (a[q][q] - a[p][p]) / (2.0 * off);
             let t = theta.signum() / (theta.abs() + (theta * theta + 1.0).sqrt());
@@ -147,6 +150,9 @@ fn symmetric_eigen(mut a: [[f32; 3]; 3]) -> ([f32; 3], [[f32; 3]; 3]) {
                 v[p][k] = c * vp[k] - s * vq[k];
                 v[q][k] = s * vp[k] + c * vq[k];
             }
+        }
+        if !rotated {
+            break;
         }
     }
     ([a[0][0], a[1][1], a[2][2]], v)
