@@ -19,37 +19,33 @@ export function levelColor(k) {
   return classColor((9 + 4 * k) % 15);
 }
 
-function levels(words) {
+// Numbered swatches, each `[number, colour, title]`, and a note after them.
+function swatches(items, note, words) {
   const list = document.createElement('div');
   list.className = 'legend classes';
-  for (let k = 0; k < 9; k += 1) {
+  for (const [number, color, title] of items) {
     const item = document.createElement('span');
-    item.title = k ? words.t('legend.level', { level: k, factor: 2 ** k }) : words.t('legend.level-0', { level: 0 });
-    item.innerHTML = `<i style="background: ${levelColor(k)}"></i>`;
-    item.append(words.number(k));
+    item.title = title;
+    item.innerHTML = `<i style="background: ${color}"></i>`;
+    item.append(words.number(number));
     list.append(item);
   }
-  const note = document.createElement('span');
-  note.textContent = words.t('legend.levels-note');
-  list.append(note);
+  const after = document.createElement('span');
+  after.textContent = note;
+  list.append(after);
   return list;
+}
+
+function levels(words) {
+  const items = Array.from({ length: 9 }, (_, k) => [k, levelColor(k),
+    k ? words.t('legend.level', { level: k, factor: 2 ** k }) : words.t('legend.level-0', { level: 0 })]);
+  return swatches(items, words.t('legend.levels-note'), words);
 }
 
 // The QEF's ranks with dual contouring: the first three levels' colours, as the views draw them.
 function ranks(words) {
-  const list = document.createElement('div');
-  list.className = 'legend classes';
-  for (let rank = 1; rank <= 3; rank += 1) {
-    const item = document.createElement('span');
-    item.title = words.t(`legend.rank-${rank}`);
-    item.innerHTML = `<i style="background: ${levelColor(rank - 1)}"></i>`;
-    item.append(words.number(rank));
-    list.append(item);
-  }
-  const note = document.createElement('span');
-  note.textContent = words.t('legend.rank-note');
-  list.append(note);
-  return list;
+  const items = [1, 2, 3].map((rank) => [rank, levelColor(rank - 1), words.t(`legend.rank-${rank}`)]);
+  return swatches(items, words.t('legend.rank-note'), words);
 }
 
 // A ramp with its ends' words.
