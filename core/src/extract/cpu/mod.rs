@@ -5,6 +5,7 @@
 mod blocks;
 pub mod dual;
 pub mod facing;
+pub mod hermite;
 pub mod mesher;
 mod normals;
 mod planes;
