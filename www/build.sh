@@ -32,8 +32,8 @@ for dir in "${CARGO_HOME:-$HOME/.cargo}"/registry/src/*/; do
 done
 
 # `optimise FILE`: binaryen's optimisations over the whole module, in place, without its inlining (which
-# makes the module smaller but compresses worse: measured, the WebGPU build is about 5 KB smaller
-# gzipped without it and 2 KB larger with it). The features are those the module was built with, as
+# makes the module smaller but compresses worse: the WebGPU build is about 5 KB smaller gzipped without
+# it, 2 KB larger with it). The features are those the module was built with, as
 # its target_features section lists them; the section itself is left out (only tools read it). Further
 # flags follow: `--converge` repeats the passes until the module stops shrinking (a few hundred bytes
 # more, and seconds on the small modules, but minutes on the WebGL2 one, which is run once).
@@ -57,7 +57,7 @@ build() {
     cargo build "${remap[@]}" --profile wasm --lib --target wasm32-unknown-unknown "$@"
     wasm-bindgen --target web --no-typescript "${bindgen[@]}" --out-dir "$out" \
         target/wasm32-unknown-unknown/wasm/metaballs.wasm
-    optimise "$out/metaballs_bg.wasm" "${passes[@]}"
+    optimise "$out/metaballs_bg.wasm" ${passes[@]+"${passes[@]}"}
     # Short names for the imports from the glue (wasm-bindgen's carry 16 hex digits of hash each).
     node www/tools/short-imports.mjs "$out"
     echo "built $out/metaballs_bg.wasm ($(wc -c < "$out/metaballs_bg.wasm") bytes, $(gzip -9c "$out/metaballs_bg.wasm" | wc -c) gzipped)"

@@ -38,6 +38,9 @@ pub struct Job<'a> {
     pub construction: Construction,
     /// With `lod=on`: the camera the levels follow.
     pub lod: Option<LodJob>,
+    /// The frame's views read what only a mesher of this thread keeps of its mesh (dual contouring's
+    /// ranks and crossings), which a mesh made elsewhere lacks.
+    pub teaching: bool,
 }
 
 /// A mesh made elsewhere (the page's mesher worker) from a packed job (`cpu::elsewhere::pack`): vertices (position, then outward normal) and indices as the CPU

@@ -104,6 +104,7 @@ impl Renderer {
                 march: March::on_grid(view.march, self.settings.resolution),
             },
             lod: view.lod.then(|| LodJob { eye: self.lod_eye(), freeze: view.lod_freeze }),
+            teaching: self.teaching_views(),
         }
     }
 
@@ -111,14 +112,18 @@ impl Renderer {
     /// mesher on the CPU makes it; `None` when compute passes do.
     pub fn cpu_job(&self) -> Option<Vec<f32>> {
         let capabilities = self.stage.extractors[self.next_extractor()].capabilities();
-        let view = &self.settings.view;
         // Part way through the march, the frame meshes its cells on its own; so does a frame showing
         // dual contouring's QEF ranks or crossings, which a mesh made elsewhere does not carry.
-        let shown = views::shown(view);
-        let dual = shown.method == Method::DualContouring && !shown.lod;
-        let hermite = dual && (shown.color_by == ColorBy::Rank || shown.display == Display::Normals);
-        (!capabilities.needs_compute && !capabilities.lod && view.march.is_none() && !hermite)
+        let own = self.settings.view.march.is_some() || self.teaching_views();
+        (!capabilities.needs_compute && !capabilities.lod && !own)
             .then(|| elsewhere::pack(capabilities.method, &self.job_of(self.scene.spheres())))
+    }
+
+    /// True when the frame's views show dual contouring's QEF ranks or crossings.
+    fn teaching_views(&self) -> bool {
+        let shown = views::shown(&self.settings.view);
+        let dual = shown.method == Method::DualContouring && !shown.lod;
+        dual && (shown.color_by == ColorBy::Rank || shown.display == Display::Normals) && self.views_shown()
     }
 
     /// The frame's scene as a job for the CPU's marching cubes, whichever extractor runs.

@@ -27,6 +27,7 @@ impl OracleScene {
             grid: Grid { cells_per_axis: self.resolution },
             construction: self.construction,
             lod: None,
+            teaching: false,
         }
     }
 }

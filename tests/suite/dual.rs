@@ -9,6 +9,7 @@ use common::scenes::oracle_scenes;
 use common::*;
 use glam::{UVec3, Vec3};
 use metaballs::extract::cpu::dual::STRAYED;
+use metaballs::extract::cpu::elsewhere::Meshers;
 use metaballs::extract::cpu::{DualContouringMesher, SurfaceNetsMesher};
 use metaballs::extract::mesh::IndexedMesh;
 use metaballs::extract::reference::{self, Construction, Grid};
@@ -65,8 +66,8 @@ fn dual_method_meets_the_shared_scenes(method: Method, source: &str) {
             let grid = Grid { cells_per_axis: scene.resolution };
             let values = reference::sample_blended_field(&scene.spheres, grid, scene.construction.blend);
             assert_eq!(nets.positions.len(), crossed_cells(&values, iso, grid), "{what}: vertices");
-            // Each vertex is a mean of crossings on its cell's edges or clamped into its cell, so it
-            // lies in the grid's box.
+            // Each vertex is a mean of crossings on its cell's edges or within a quarter cell of its
+            // cell, so it lies in the grid's box (give or take that quarter).
             let cell = grid.cell_size();
             for p in &nets.positions {
                 let rel = (*p - grid.point(UVec3::ZERO)) / cell;
@@ -189,7 +190,7 @@ fn crease_error(mesh: &IndexedMesh, a: (Vec3, f32), b: (Vec3, f32), cell: f32) -
         .fold(0.0, f32::max)
 }
 
-/// The crease scene: two spheres off the grid's symmetries, meeting in a circle 0.4 across.
+/// The crease scene: two spheres off the grid's symmetries, meeting in a circle of radius 0.4.
 fn crease_spheres() -> [Sphere; 2] {
     [
         Sphere::from_signed(Vec3::new(-0.31, 0.023, -0.017), 0.5, Vec3::ZERO),
@@ -229,16 +230,26 @@ fn dual_contouring_keeps_the_crease_of_a_union_of_two_spheres_sharp() {
     assert!(dual_error <= 0.5 * cubes && dual_error <= 0.5 * nets, "{errors:?}");
     // The crease's cells are ranked as edges: at least one per cell the circle passes through.
     let ranks = |r: u8| dual.placed.iter().filter(|&&m| m & 3 == r).count();
+    let mesh = dual.to_indexed();
+    let (d, axis) = (balls[0].0.distance(balls[1].0), (balls[1].0 - balls[0].0).normalize());
+    let along = (d * d + balls[0].1.powi(2) - balls[1].1.powi(2)) / (2.0 * d);
+    let (centre, rho) = (balls[0].0 + axis * along, (balls[0].1.powi(2) - along * along).sqrt());
+    let from_crease = |p: Vec3| {
+        let q = p - centre;
+        let h = q.dot(axis);
+        (h * h + ((q - axis * h).length() - rho).powi(2)).sqrt()
+    };
+    let on_crease = (mesh.positions.iter().zip(&dual.placed))
+        .filter(|(p, m)| *m & 3 == 2 && from_crease(**p) < cell)
+        .count();
     let strayed = dual.placed.iter().filter(|&&m| m & STRAYED != 0).count();
     println!("ranks 1/2/3: {}/{}/{}, {strayed} minimisers outside their cell", ranks(1), ranks(2), ranks(3));
-    let circumference = std::f32::consts::TAU * 0.4 / cell;
+    let circumference = std::f32::consts::TAU * rho / cell;
     assert!(
-        ranks(2) as f32 >= circumference,
-        "{} edge vertices along a crease {circumference} cells long",
-        ranks(2)
+        on_crease as f32 >= circumference,
+        "{on_crease} edge vertices along a crease {circumference} cells long"
     );
     // The edge vertices lie on the surface, where marching cubes' crossings would.
-    let mesh = dual.to_indexed();
     let off = (mesh.positions.iter().zip(&dual.placed))
         .filter(|(_, m)| *m & 3 == 2)
         .map(|(p, _)| union_distance(*p, balls[0], balls[1]) / cell)
@@ -289,4 +300,27 @@ fn dual_contourings_views_show_its_ranks_and_crossings_on_a_fresh_renderer() {
     let none = share(&picture("surface_nets", "display=normals"), &yellow);
     println!("crossing segments: {crossings:.4} of the picture; {none:.4} with surface nets");
     assert!(crossings > 0.005 && none < crossings / 20.0, "{crossings} against {none}");
+}
+
+#[test]
+fn the_rank_view_of_a_still_figure_meshed_elsewhere_shows_the_ranks() {
+    // A paused figure: its first mesh made by the mesher worker, then the rank view asked for. The
+    // worker's mesh carries no ranks, so the figure meshes again on its own thread.
+    let magenta = |p: &[u8]| p[0] as i32 > p[1] as i32 + 60 && p[2] as i32 > p[1] as i32 + 60;
+    with_renderer(settings(1, 2, 32, 1.0), 320, 240, |o| {
+        o.renderer.set_scene(Scene::from_spheres(crease_spheres().to_vec()).unwrap());
+        let mut settings = *o.renderer.settings();
+        settings = settings.with_parameter("blend", "max").unwrap();
+        settings = settings.with_parameter("method", "dual_contouring").unwrap();
+        o.renderer.set_settings(settings).unwrap();
+        let job = o.renderer.cpu_job().expect("dual contouring is meshed on the CPU");
+        o.renderer.give_mesh(Meshers::default().mesh(&job).unwrap());
+        o.render();
+        settings = settings.with_parameter("color_by", "rank").unwrap();
+        o.renderer.set_settings(settings).unwrap();
+        assert_eq!(o.renderer.cpu_job(), None, "the rank view is meshed on the figure's own thread");
+        let pixels = o.render_rgba();
+        let edges = pixels.chunks(4).filter(|p| magenta(p)).count();
+        assert!(edges > 20, "the crease's edge vertices show in the rank view: {edges} pixels");
+    });
 }

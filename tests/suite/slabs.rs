@@ -127,6 +127,7 @@ fn slabs_that_do_not_fit_are_refused_with_what_is_wrong() {
         grid: Grid { cells_per_axis: 16 },
         construction: Construction::default(),
         lod: None,
+        teaching: false,
     };
     let mut meshers = Meshers::default();
     let packed = pack(Method::MarchingCubes, &job);

@@ -242,6 +242,7 @@ pub fn check_light_position(position: Vec3) -> Result<Vec3, ParamError> {
     check_vec3("light position", position, -100.0, 100.0)
 }
 
+mod choice;
 mod parse;
 pub mod plane;
 mod rows;

@@ -1,43 +1,9 @@
 //! How the surface is shown and built, for teaching: display modes, grid overlays, a field slice,
 //! triangle colouring, lights, projection, and the two construction toggles (interpolation, blend).
 
+use super::choice::choice;
 use super::{Expected, ParamError, Settings, check_f32};
 use crate::decimal::num;
-
-/// Declares a choice among words: the enum, its words in order, and the conversions.
-macro_rules! choice {
-    ($(#[$doc:meta])* $name:ident { $($(#[$vdoc:meta])* $variant:ident = $word:literal),+ $(,)? }) => {
-        $(#[$doc])*
-        #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-        pub enum $name {
-            #[default]
-            $($(#[$vdoc])* $variant),+
-        }
-
-        impl $name {
-            /// The words a link or attribute uses, in order.
-            pub const WORDS: &'static [&'static str] = &[$($word),+];
-
-            /// Every choice, in the order of `WORDS`.
-            pub const ALL: &'static [Self] = &[$(Self::$variant),+];
-
-            /// The word for this choice.
-            pub fn word(self) -> &'static str {
-                match self { $(Self::$variant => $word),+ }
-            }
-
-            /// The choice a word names.
-            pub fn from_word(word: &str) -> Option<Self> {
-                match word { $($word => Some(Self::$variant),)+ _ => None }
-            }
-
-            /// Its position in `WORDS`, as the shaders number it.
-            pub fn index(self) -> u32 {
-                self as u32
-            }
-        }
-    };
-}
 
 choice!(
     /// How the surface is drawn. The triangle count is the same in every mode but `exact`, which draws
@@ -98,7 +64,7 @@ choice!(
         /// Each vertex's distance to the exact surface f = iso, in cells.
         Error = "error",
         /// Dual contouring: the rank of each vertex's QEF (1 a face, 2 an edge, 3 a corner), darker
-        /// where its minimiser left its cell and was clamped back.
+        /// where its minimiser lay outside its cell.
         Rank = "rank",
     }
 );

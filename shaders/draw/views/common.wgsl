@@ -52,7 +52,7 @@ fn level_color(k: u32) -> vec3<f32> {
     return class_color((9u + 4u * k) % 15u);
 }
 // Colour of a QEF of rank 1 (a face), 2 (an edge) or 3 (a corner): the first three levels' colours;
-// darker where the vertex was clamped back into its cell (www/lib/features/legends.js draws the same).
+// darker where its minimiser lay outside its cell (www/lib/features/legends.js draws the same).
 fn rank_color(mark: u32) -> vec3<f32> {
     let color = level_color(max(mark & 3u, 1u) - 1u);
     return select(color, 0.3 * color, (mark & 4u) != 0u);

@@ -68,10 +68,11 @@ pub fn mesh_only(options: &ViewOptions) -> bool {
 /// blocks, ambiguous faces and case colours are left out.
 pub fn shown(options: &ViewOptions) -> ViewOptions {
     let options = &exact::mesh_side(options);
-    // Only dual contouring's vertices have a QEF rank.
+    // Only dual contouring's vertices have a QEF rank, and only level of detail has levels.
     let ranked = options.method == Method::DualContouring && !options.lod;
     let options = &match options.color_by {
         ColorBy::Rank if !ranked => ViewOptions { color_by: ColorBy::None, ..*options },
+        ColorBy::Level if !options.lod => ViewOptions { color_by: ColorBy::None, ..*options },
         _ => *options,
     };
     if !options.lod {

@@ -50,7 +50,7 @@ impl Meshers {
     /// Meshes a packed job; says what is wrong with one that is not a job.
     pub fn mesh(&mut self, packed: &[f32]) -> Result<GivenMesh, String> {
         let (method, spheres, iso, grid, construction) = unpack(packed)?;
-        let job = Job { spheres: &spheres, iso, grid, construction, lod: None };
+        let job = Job { spheres: &spheres, iso, grid, construction, lod: None, teaching: false };
         self.marched = method == Method::MarchingCubes;
         let mesher: &mut dyn CpuMeshed = match method {
             Method::MarchingCubes => &mut self.marching_cubes,
@@ -179,6 +179,7 @@ mod tests {
             grid: Grid { cells_per_axis: 24 },
             construction,
             lod: None,
+            teaching: false,
         };
         for &method in Method::ALL {
             let packed = pack(method, &job);

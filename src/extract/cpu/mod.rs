@@ -36,6 +36,10 @@ pub trait CpuMeshing: Default + wgpu::WasmNotSendSync + 'static {
     fn triangle_marks(&self) -> Vec<u32> {
         Vec::new()
     }
+    /// False when the mesh came from elsewhere and lacks the marks and crossings this mesher keeps.
+    fn complete(&self) -> bool {
+        true
+    }
     /// Records laid out as vertices, drawn by the views after the mesh's (dual contouring's crossings,
     /// for `display=normals`), or none.
     fn crossings(&self) -> &[f32] {
@@ -74,6 +78,9 @@ macro_rules! cpu_meshing {
             }
             fn crossings(&self) -> &[f32] {
                 &self.crossings
+            }
+            fn complete(&self) -> bool {
+                self.vertices.is_empty() || !self.placed.is_empty()
             })?
         }
     };
@@ -107,6 +114,8 @@ pub struct CpuMeshExtractor<M> {
     uploaded: bool,
     /// Crossings the buffers hold after the mesh's vertices.
     crossings: u32,
+    /// The frame's views read the mesher's teaching data (`Job::teaching`).
+    teaching: bool,
 }
 
 impl<M: CpuMeshing> CpuMeshExtractor<M> {
@@ -152,12 +161,15 @@ impl<M: CpuMeshing> Extractor for CpuMeshExtractor<M> {
         // Part way through the march the frame meshes its cells on its own, and its mesh is not whole.
         let whole = job.construction.march.is_none();
         let packed = if whole { elsewhere::pack(M::METHOD, job) } else { Vec::new() };
+        // A mesh made elsewhere lacks what the frame's teaching views read of this mesher's own.
+        let complete = !job.teaching || self.mesher.complete();
+        self.teaching = job.teaching;
         let kept = match self.given.take() {
-            Some(given) if whole && given.job == packed => {
+            Some(given) if whole && given.job == packed && !job.teaching => {
                 self.mesher.install(given);
                 false
             }
-            _ if whole && self.held == packed => true,
+            _ if whole && self.held == packed && complete => true,
             _ => {
                 self.mesher.mesh_job(job);
                 false
@@ -182,30 +194,33 @@ impl<M: CpuMeshing> Extractor for CpuMeshExtractor<M> {
             }
             _ => false,
         };
-        // The vertices of a mesh drawn again are in the buffers already; the crossings follow them.
+        // The vertices of a mesh drawn again are in the buffers already; the crossings follow them
+        // where there is room.
         let crossings = self.mesher.crossings();
+        let count = (crossings.len() / 6) as u32;
+        let room = count > 0 && output.buffers.holds(needed.vertices + count, 0);
         let joined;
-        let sent = match (self.uploaded, crossings.is_empty()) {
+        let sent = match (self.uploaded, room) {
             (true, _) => &[][..],
-            (false, true) => vertices,
-            (false, false) => {
+            (false, false) => vertices,
+            (false, true) => {
                 joined = [vertices, crossings].concat();
                 &joined[..]
             }
         };
         let drawn = output.buffers.upload(output.queue, sent, if front { &self.front } else { indices });
-        let room = output.buffers.holds(needed.vertices + (crossings.len() / 6) as u32, needed.indices);
-        self.crossings = if room { (crossings.len() / 6) as u32 } else { 0 };
+        self.crossings = if room { count } else { 0 };
         let written = if front { needed.indices } else { drawn };
         self.uploaded = fits;
         self.written = written;
         let buffers = output.buffers;
-        // The views count what to draw from the device's counters, and `color-by=rank` reads a word
-        // per triangle where level of detail keeps its levels.
+        // The views count what to draw from the device's counters (no block or cell lists: this
+        // extractor fills none), and `color-by=rank` reads a word per triangle where level of detail
+        // keeps its levels.
         if buffers.counters.usage().contains(wgpu::BufferUsages::STORAGE) {
-            let counts = Counters { indices: written, ..needed };
+            let counts = Counters { indices: written, active_blocks: 0, active_cells: 0, ..needed };
             output.queue.write_buffer(&buffers.counters, 0, bytemuck::bytes_of(&counts));
-            let marks = self.mesher.triangle_marks();
+            let marks = if self.teaching { self.mesher.triangle_marks() } else { Vec::new() };
             let triangles = (written as usize / 3).min(marks.len());
             if triangles > 0 && !front && buffers.lod_data.size() >= 4 * triangles as u64 {
                 output.queue.write_buffer(&buffers.lod_data, 0, bytemuck::cast_slice(&marks[..triangles]));

@@ -15,9 +15,9 @@
 //!   QEF's minimiser over the cell so widened instead, and each vertex keeps its QEF's rank and
 //!   whether its minimiser left the cell ([`Dual::placed`]), for the teaching views.
 //!
-//! Both read the same field, block bounds, boundary rule and edge placement as every other extractor
-//! (the crossings come from `reference::surface_vertex`), so they differ from marching cubes only in
-//! how they join the crossings up.
+//! Both read the same field, block bounds and boundary rule as every other extractor. Surface nets'
+//! crossings are marching cubes' (`reference::surface_vertex`), so the two differ only in how they
+//! join them up; dual contouring's are the field's own ([`hermite`]).
 
 use super::hermite::hermite;
 use super::qef;
@@ -317,6 +317,10 @@ impl Dual {
                         continue;
                     }
                     for axis in 0..3 {
+                        if [lx, ly, lz][axis] == BLOCK_CELLS {
+                            // Leaves the block through its far face: no cell of the block has it.
+                            continue;
+                        }
                         let mut q = p;
                         q[axis] += 1;
                         if (self.value(p, n) > iso) == (self.value(q, n) > iso) {

@@ -3,11 +3,10 @@
 //! the field's normal there. E(x) = Σᵢ (nᵢ · (x − pᵢ))².
 //!
 //! Its normal matrix AᵀA = Σᵢ nᵢ nᵢᵀ is symmetric, so its singular value decomposition is its
-//! eigen-decomposition, found here by Jacobi rotations ([`symmetric_eigen`]). A linear-algebra
-//! library would do it too, but this mesher runs in the page's WebAssembly, which holds a download
-//! budget of 200 KB gzipped: nalgebra's `SymmetricEigen` added 2.4 KB to it and glamx's
-//! `SymmetricEigen3` (with its own glam) 3.7 KB, where the dozen lines of Jacobi's method add a few
-//! hundred bytes. `tests` holds it to the definition (A v = λ v, orthonormal v) on random matrices. Directions whose singular value (the square root
+//! eigen-decomposition, found here by Jacobi rotations ([`symmetric_eigen`]): a dozen lines, where a
+//! general linear-algebra library's decomposition costs kilobytes of the page's WebAssembly, which
+//! holds a download budget of 200 KB gzipped. `tests` holds it to the definition (A v = λ v,
+//! orthonormal v) on random matrices. Directions whose singular value (the square root
 //! of the eigenvalue) is under [`TRUNCATION`] of the largest are left out, as the paper does: along
 //! them E barely changes, and the solution stays at the crossings' mean (the mass point) instead of
 //! running off along a plane or an edge. The directions kept are the rank: 1 where the crossings'
@@ -18,12 +17,9 @@ use glam::{Mat3, Vec3};
 /// Singular values under this fraction of the largest are truncated.
 pub const TRUNCATION: f32 = 0.1;
 
-/// Sweeps of the box-constrained minimisation, more than it needs for the cells' few planes.
-const SWEEPS: u32 = 64;
-
 /// Weight of the pull towards the mass point in the box-constrained minimisation, relative to the
-/// normal matrix's largest eigenvalue: enough to choose among equal minimisers, too little to move
-/// a well-determined one.
+/// normal matrix's trace (the sum of its eigenvalues): enough to choose among equal minimisers, too
+/// little to move a well-determined one.
 const MASS_BIAS: f32 = 1e-3;
 
 /// A cell's QEF: the normal matrix AᵀA, Aᵀb about the mass point, and the mass point.
@@ -75,11 +71,10 @@ impl Qef {
     }
 
     /// The vertex of the cell from `low` to `high`, kept within `slack` of it: the truncated
-    /// minimiser where it lies there; else the minimiser of the QEF over that box (plus a slight pull
-    /// towards the mass point), found by projected coordinate descent, the QEF being convex. That
-    /// point lies on the box's boundary as near every plane as the box allows (an edge's vertex stays
-    /// on the edge where the edge crosses the box), not where clamping each coordinate would put it.
-    /// `strayed`: the minimiser lay outside the cell itself.
+    /// minimiser where it lies there; else the exact minimiser of the QEF plus a slight pull towards
+    /// the mass point over that box. That point lies on the box's boundary as near every plane as the
+    /// box allows (where an edge crosses the box, on the edge up to the pull), not where clamping
+    /// each coordinate would put it. `strayed`: the minimiser lay outside the cell itself.
     pub fn solve_in(&self, low: Vec3, high: Vec3, slack: f32) -> Solved {
         let (point, rank) = self.minimiser();
         let outside = |low: Vec3, high: Vec3| {
@@ -91,21 +86,50 @@ impl Qef {
         if !outside(low, high) {
             return Solved { point: point.clamp(low, high), rank, strayed };
         }
-        let a = self.ata.to_cols_array_2d();
-        let b = self.atb.to_array();
-        let bias = MASS_BIAS * (a[0][0] + a[1][1] + a[2][2]).max(f32::MIN_POSITIVE);
-        // y = x − mass, within the box moved by the mass point.
-        let (from, to) = ((low - self.mass).to_array(), (high - self.mass).to_array());
-        let mut y = (point - self.mass).clamp(low - self.mass, high - self.mass).to_array();
-        for _ in 0..SWEEPS {
-            for (i, row) in a.iter().enumerate() {
-                // The matrix is symmetric: its column i is its row i.
-                let others = row[0] * y[0] + row[1] * y[1] + row[2] * y[2] - row[i] * y[i];
-                // max then min, not `f32::clamp`, whose check of its bounds the compiler cannot drop.
-                y[i] = ((b[i] - others) / (row[i] + bias)).max(from[i]).min(to[i]);
+        // y = x − mass. The QEF plus the pull is convex, so its minimiser over the box is the
+        // stationary point of one of the box's faces (each coordinate free, or at its lower or upper
+        // bound) that lies in the box and has the least energy: all 27 are tried.
+        let a = self.ata
+            + Mat3::from_diagonal(Vec3::splat(
+                MASS_BIAS
+                    * (self.ata.x_axis.x + self.ata.y_axis.y + self.ata.z_axis.z).max(f32::MIN_POSITIVE),
+            ));
+        let (from, to) = (low - self.mass, high - self.mass);
+        let energy = |y: Vec3| y.dot(a * y) - 2.0 * y.dot(self.atb);
+        let mut best = ((point - self.mass).clamp(from, to), f32::INFINITY);
+        for face in 0..27u32 {
+            // 0: free, 1: at the lower bound, 2: at the upper bound, per axis.
+            let at = [face % 3, face / 3 % 3, face / 9];
+            let mut y = Vec3::from_array(std::array::from_fn(|i| [0.0, from[i], to[i]][at[i] as usize]));
+            let free: Vec<usize> = (0..3).filter(|&i| at[i] == 0).collect();
+            // The free coordinates solve their rows of (A + bias) y = Aᵀb with the others held.
+            let rhs: Vec<f32> = free.iter().map(|&i| self.atb[i] - (a.row(i).dot(y))).collect();
+            let m = |i: usize, j: usize| a.col(free[j])[free[i]];
+            let solved: Option<Vec<f32>> = match free.len() {
+                0 => Some(Vec::new()),
+                1 => Some(vec![rhs[0] / m(0, 0)]),
+                2 => {
+                    let d = m(0, 0) * m(1, 1) - m(0, 1) * m(1, 0);
+                    (d != 0.0).then(|| {
+                        vec![
+                            (rhs[0] * m(1, 1) - m(0, 1) * rhs[1]) / d,
+                            (m(0, 0) * rhs[1] - m(1, 0) * rhs[0]) / d,
+                        ]
+                    })
+                }
+                _ => (a.determinant() != 0.0).then(|| (a.inverse() * self.atb).to_array().to_vec()),
+            };
+            let Some(solved) = solved else { continue };
+            for (k, &i) in free.iter().enumerate() {
+                y[i] = solved[k];
+            }
+            let margin = 1e-6 * (to - from).max_element();
+            if y.cmpge(from - margin).all() && y.cmple(to + margin).all() && energy(y) < best.1 {
+                best = (y.clamp(from, to), energy(y));
             }
         }
-        Solved { point: self.mass + Vec3::from_array(y), rank, strayed }
+        let y = best.0;
+        Solved { point: self.mass + y, rank, strayed }
     }
 }
 
