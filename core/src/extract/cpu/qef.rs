@@ -98,33 +98,27 @@ impl Qef {
         let energy = |y: Vec3| y.dot(a * y) - 2.0 * y.dot(self.atb);
         let mut best = ((point - self.mass).clamp(from, to), f32::INFINITY);
         for face in 0..27u32 {
-            // 0: free, 1: at the lower bound, 2: at the upper bound, per axis.
+            // 0: free, 1: at the lower bound, 2: at the upper bound, per axis. The system is A's rows
+            // for the free coordinates and, for the others, the bound they are held at: one 3 × 3
+            // solve, never singular as A (with the pull) is positive definite.
             let at = [face % 3, face / 3 % 3, face / 9];
-            let mut y = Vec3::from_array(std::array::from_fn(|i| [0.0, from[i], to[i]][at[i] as usize]));
-            let free: Vec<usize> = (0..3).filter(|&i| at[i] == 0).collect();
-            // The free coordinates solve their rows of (A + bias) y = Aᵀb with the others held.
-            let rhs: Vec<f32> = free.iter().map(|&i| self.atb[i] - (a.row(i).dot(y))).collect();
-            let m = |i: usize, j: usize| a.col(free[j])[free[i]];
-            let solved: Option<Vec<f32>> = match free.len() {
-                0 => Some(Vec::new()),
-                1 => Some(vec![rhs[0] / m(0, 0)]),
-                2 => {
-                    let d = m(0, 0) * m(1, 1) - m(0, 1) * m(1, 0);
-                    (d != 0.0).then(|| {
-                        vec![
-                            (rhs[0] * m(1, 1) - m(0, 1) * rhs[1]) / d,
-                            (m(0, 0) * rhs[1] - m(1, 0) * rhs[0]) / d,
-                        ]
-                    })
+            let mut m = [a.row(0), a.row(1), a.row(2)];
+            let mut r = self.atb;
+            for i in 0..3 {
+                if at[i] > 0 {
+                    m[i] = Vec3::AXES[i];
+                    r[i] = if at[i] == 1 { from[i] } else { to[i] };
                 }
-                _ => (a.determinant() != 0.0).then(|| (a.inverse() * self.atb).to_array().to_vec()),
-            };
-            let Some(solved) = solved else { continue };
-            for (k, &i) in free.iter().enumerate() {
-                y[i] = solved[k];
             }
+            // `m` holds the system's rows: transposed into columns for glam.
+            let system = Mat3::from_cols(m[0], m[1], m[2]).transpose();
+            let y = system.inverse() * r;
             let margin = 1e-6 * (to - from).max_element();
-            if y.cmpge(from - margin).all() && y.cmple(to + margin).all() && energy(y) < best.1 {
+            if y.is_finite()
+                && y.cmpge(from - margin).all()
+                && y.cmple(to + margin).all()
+                && energy(y) < best.1
+            {
                 best = (y.clamp(from, to), energy(y));
             }
         }
