@@ -130,16 +130,33 @@ fn surface_nets_follow_the_setting_and_leave_level_of_detail_to_marching_cubes()
     });
 }
 
+/// The circle where two overlapping balls' spheres meet: its centre, its axis (from the first ball's
+/// centre to the second's) and its radius.
+struct Crease {
+    centre: Vec3,
+    axis: Vec3,
+    radius: f32,
+}
+
+impl Crease {
+    fn of((ca, ra): (Vec3, f32), (cb, rb): (Vec3, f32)) -> Crease {
+        let d = ca.distance(cb);
+        let axis = (cb - ca) / d;
+        let along = (d * d + ra * ra - rb * rb) / (2.0 * d);
+        Crease { centre: ca + axis * along, axis, radius: (ra * ra - along * along).sqrt() }
+    }
+
+    fn distance(&self, p: Vec3) -> f32 {
+        let q = p - self.centre;
+        let h = q.dot(self.axis);
+        (h * h + ((q - self.axis * h).length() - self.radius).powi(2)).sqrt()
+    }
+}
+
 /// Distance from `p` to the boundary of the union of two balls (centre, radius): to the visible part
 /// of either sphere, or to the circle where they meet, whichever is nearest.
 fn union_distance(p: Vec3, (ca, ra): (Vec3, f32), (cb, rb): (Vec3, f32)) -> f32 {
-    let d = ca.distance(cb);
-    let axis = (cb - ca) / d;
-    let along = (d * d + ra * ra - rb * rb) / (2.0 * d);
-    let (centre, rho) = (ca + axis * along, (ra * ra - along * along).sqrt());
-    let q = p - centre;
-    let h = q.dot(axis);
-    let mut best = (h * h + ((q - axis * h).length() - rho).powi(2)).sqrt();
+    let mut best = Crease::of((ca, ra), (cb, rb)).distance(p);
     for ((c, r), (other, other_r)) in [((ca, ra), (cb, rb)), ((cb, rb), (ca, ra))] {
         let foot = c + (p - c).normalize() * r;
         if foot.distance(other) >= other_r {
@@ -171,19 +188,15 @@ fn triangle_distance(x: Vec3, [a, b, c]: [Vec3; 3]) -> f32 {
 /// How far, in cells, the exact crease (the circle where the two spheres meet) lies from `mesh`
 /// at its farthest: the largest distance from a point of the circle to the nearest triangle. Marching
 /// cubes and surface nets cut across the fold, so the circle lies under their meshes.
-fn crease_error(mesh: &IndexedMesh, a: (Vec3, f32), b: (Vec3, f32), cell: f32) -> f32 {
-    let d = a.0.distance(b.0);
-    let axis = (b.0 - a.0) / d;
-    let along = (d * d + a.1 * a.1 - b.1 * b.1) / (2.0 * d);
-    let (centre, rho) = (a.0 + axis * along, (a.1 * a.1 - along * along).sqrt());
-    let u = axis.any_orthonormal_vector();
-    let v = axis.cross(u);
+fn crease_error(mesh: &IndexedMesh, crease: &Crease, cell: f32) -> f32 {
+    let u = crease.axis.any_orthonormal_vector();
+    let v = crease.axis.cross(u);
     let triangles: Vec<[Vec3; 3]> =
         mesh.triangles.iter().map(|t| t.map(|i| mesh.positions[i as usize])).collect();
     (0..720)
         .map(|k| {
             let angle = k as f32 / 720.0 * std::f32::consts::TAU;
-            let x = centre + (u * angle.cos() + v * angle.sin()) * rho;
+            let x = crease.centre + (u * angle.cos() + v * angle.sin()) * crease.radius;
             let near = triangles.iter().filter(|t| t[0].distance(x) < 3.0 * cell);
             near.map(|&t| triangle_distance(x, t)).fold(f32::INFINITY, f32::min) / cell
         })
@@ -203,6 +216,7 @@ fn dual_contouring_keeps_the_crease_of_a_union_of_two_spheres_sharp() {
     // The union of the two spheres' terms (blend=max) folds where they meet; 32 cells.
     let spheres = crease_spheres();
     let balls = spheres.map(|s| (s.center, s.radius));
+    let crease = Crease::of(balls[0], balls[1]);
     let grid = Grid { cells_per_axis: 32 };
     let construction = Construction { blend: Blend::Max, ..Construction::default() };
     let cell = grid.cell_size();
@@ -217,7 +231,7 @@ fn dual_contouring_keeps_the_crease_of_a_union_of_two_spheres_sharp() {
         ("dual contouring", dual.to_indexed()),
     ];
     let errors = meshes.each_ref().map(|(name, mesh)| {
-        let error = crease_error(mesh, balls[0], balls[1], cell);
+        let error = crease_error(mesh, &crease, cell);
         println!(
             "{name}: {} triangles, largest distance along the crease {error:.4} cells",
             mesh.triangles.len()
@@ -231,20 +245,12 @@ fn dual_contouring_keeps_the_crease_of_a_union_of_two_spheres_sharp() {
     // The crease's cells are ranked as edges: at least one per cell the circle passes through.
     let ranks = |r: u8| dual.placed.iter().filter(|&&m| m & 3 == r).count();
     let mesh = dual.to_indexed();
-    let (d, axis) = (balls[0].0.distance(balls[1].0), (balls[1].0 - balls[0].0).normalize());
-    let along = (d * d + balls[0].1.powi(2) - balls[1].1.powi(2)) / (2.0 * d);
-    let (centre, rho) = (balls[0].0 + axis * along, (balls[0].1.powi(2) - along * along).sqrt());
-    let from_crease = |p: Vec3| {
-        let q = p - centre;
-        let h = q.dot(axis);
-        (h * h + ((q - axis * h).length() - rho).powi(2)).sqrt()
-    };
     let on_crease = (mesh.positions.iter().zip(&dual.placed))
-        .filter(|(p, m)| *m & 3 == 2 && from_crease(**p) < cell)
+        .filter(|(p, m)| *m & 3 == 2 && crease.distance(**p) < cell)
         .count();
     let strayed = dual.placed.iter().filter(|&&m| m & STRAYED != 0).count();
     println!("ranks 1/2/3: {}/{}/{}, {strayed} minimisers outside their cell", ranks(1), ranks(2), ranks(3));
-    let circumference = std::f32::consts::TAU * rho / cell;
+    let circumference = std::f32::consts::TAU * crease.radius / cell;
     assert!(
         on_crease as f32 >= circumference,
         "{on_crease} edge vertices along a crease {circumference} cells long"
