@@ -15,11 +15,13 @@ struct Grid {
     max_cells: u32,
     // Bit 0: vertices at edge midpoints (else interpolated); bit 1: blend by max (else sum); bit 2:
     // ambiguous faces joined by the asymptotic decider (else the classic table); bit 3: and the cell's
-    // interior resolved too (MC33).
+    // interior resolved too (MC33); bits 4 and 5 (KERNEL_SHIFT): the kernel.
     flags: u32,
     // The step-through of the march: only the cells up to this one (x fastest, then y, then z) give
     // triangles; all of them when it is u32's largest value on each axis.
     march: vec3<u32>,
+    // Blinn's kernel's B.
+    blobbiness: f32,
 }
 
 // True when the march has reached `cell` (`March::reached` on the CPU).
@@ -32,6 +34,8 @@ const FLAG_MIDPOINT: u32 = 1u;
 const FLAG_MAX: u32 = 2u;
 const FLAG_DECIDER: u32 = 4u;
 const FLAG_MC33: u32 = 8u;
+// The kernel (`Kernel` in scene/src/params/view.rs): 0 inverse-square, 1 Blinn's, 2 Wyvill's.
+const KERNEL_SHIFT: u32 = 4u;
 
 // A cell's word in cell_cases: its case in bits 0..7; from bit 8 (CHOSEN_SHIFT), with the decider, the
 // choices its triangles follow on its ambiguous faces, one bit per ambiguous face in face order; from
@@ -138,13 +142,48 @@ fn corner_offset(c: u32) -> vec3<u32> {
     return vec3<u32>(((c >> 1u) ^ c) & 1u, (c >> 1u) & 1u, (c >> 2u) & 1u);
 }
 
-// A sphere's term's numerator, charge · r²: w carries the radius with the charge's sign.
-fn weight(s: vec4<f32>) -> f32 {
-    return s.w * abs(s.w);
+// A term's size with no bound: the inverse square's near its centre.
+const UNBOUNDED: f32 = 3e38;
+
+fn kernel_index() -> u32 {
+    return (grid.flags >> KERNEL_SHIFT) & 3u;
 }
 
-// f(p) = Σ chargeᵢ rᵢ² / |p − cᵢ|² (or, with blend by max, the largest adding term less the largest
-// subtracting one: the union of separate spheres, dented)
+// A sphere's term at squared distance d2 from its centre, as `Terms::term` in
+// core/src/extract/kernel.rs: x, its size (the sign is its charge's): r²/d², exp(B (1 − d²/r²)) or
+// 2/9 t² (5 + 4t) with t = max(1 − d²/4r², 0), infinite at the centre only for the inverse square;
+// y, its slope −d size / d(d²), so that its share of −∇f / 2 is the slope times (p − c).
+fn term(r2: f32, d2: f32) -> vec2<f32> {
+    switch (kernel_index()) {
+        case 1u: {
+            let size = exp(grid.blobbiness * (1.0 - d2 / r2));
+            return vec2<f32>(size, grid.blobbiness / r2 * size);
+        }
+        case 2u: {
+            let t = max(1.0 - d2 / (4.0 * r2), 0.0);
+            return vec2<f32>(2.0 / 9.0 * t * t * (5.0 + 4.0 * t), t * (5.0 + 6.0 * t) / (9.0 * r2));
+        }
+        default: {
+            let d = max(d2, MIN_DISTANCE_SQUARED);
+            return vec2<f32>(r2 / d, r2 / (d * d));
+        }
+    }
+}
+
+// The largest size of a term beyond `gap` from its centre (any point for gap ≤ 0), as
+// `Terms::size_beyond`; UNBOUNDED only for the inverse square.
+fn term_size_beyond(r2: f32, gap: f32) -> f32 {
+    if (gap > 0.0) {
+        return term(r2, gap * gap).x;
+    }
+    if (kernel_index() == 0u) {
+        return UNBOUNDED;
+    }
+    return term(r2, 0.0).x;
+}
+
+// f(p) = Σ chargeᵢ kernel(|p − cᵢ|²) (or, with blend by max, the largest adding term less the
+// largest subtracting one: the union of separate spheres, dented)
 fn field_at(p: vec3<f32>) -> f32 {
     var f = 0.0;
     var dent = 0.0;
@@ -152,20 +191,20 @@ fn field_at(p: vec3<f32>) -> f32 {
     for (var i = 0u; i < grid.sphere_count; i++) {
         let s = spheres[i];
         let d = p - s.xyz;
-        let term = weight(s) / max(dot(d, d), MIN_DISTANCE_SQUARED);
+        let size = term(s.w * s.w, dot(d, d)).x;
         if (!largest) {
-            f += term;
-        } else if (term < 0.0) {
-            dent = max(dent, -term);
+            f += select(size, -size, s.w < 0.0);
+        } else if (s.w < 0.0) {
+            dent = max(dent, size);
         } else {
-            f = max(f, term);
+            f = max(f, size);
         }
     }
     return f - dent;
 }
 
-// −∇f / 2 = Σ chargeᵢ rᵢ² (p − cᵢ) / |p − cᵢ|⁴, pointing out of the surface (with blend by max, the
-// largest adding term's less the largest subtracting term's).
+// −∇f / 2 = Σ chargeᵢ slopeᵢ (p − cᵢ), pointing out of the surface (with blend by max, the largest
+// adding term's less the largest subtracting term's).
 fn outward_gradient(p: vec3<f32>) -> vec3<f32> {
     var g = vec3<f32>(0.0);
     var dent = vec3<f32>(0.0);
@@ -175,21 +214,20 @@ fn outward_gradient(p: vec3<f32>) -> vec3<f32> {
     for (var i = 0u; i < grid.sphere_count; i++) {
         let s = spheres[i];
         let d = p - s.xyz;
-        let d2 = max(dot(d, d), MIN_DISTANCE_SQUARED);
-        let term = d * (weight(s) / (d2 * d2));
+        let t = term(s.w * s.w, dot(d, d));
+        let share = d * select(t.y, -t.y, s.w < 0.0);
         if (!by_max) {
-            g += term;
+            g += share;
             continue;
         }
-        let value = s.w * s.w / d2;
         if (s.w < 0.0) {
-            if (value > deepest) {
-                deepest = value;
-                dent = term;
+            if (t.x > deepest) {
+                deepest = t.x;
+                dent = share;
             }
-        } else if (value > largest) {
-            largest = value;
-            g = term;
+        } else if (t.x > largest) {
+            largest = t.x;
+            g = share;
         }
     }
     return g + dent;
@@ -199,8 +237,9 @@ fn outward_gradient(p: vec3<f32>) -> vec3<f32> {
 const BOUND_MARGIN: f32 = 1e-4;
 
 // False only when the field's bounds over the box from `low` to `high` keep it on one side of iso: no
-// cell there can emit a triangle. Over a box with centre c and half-diagonal h, a sphere's term
-// r²/|p − cᵢ|² lies between r²/(d + h)² and r²/(d − h)² (d = |c − cᵢ|). Adding and subtracting terms
+// cell there can emit a triangle. Over a box with centre c and half-diagonal h, a sphere's term, which
+// falls with distance, lies between its size at d + h and at d − h (d = |c − cᵢ|; its size at the
+// centre where d ≤ h). Adding and subtracting terms
 // are bounded apart: f is at most the adding terms' upper bound less the subtracting terms' lower bound,
 // and at least the adding terms' lower bound less the subtracting terms' upper bound (with blend by
 // max, the largest bounds of each kind). A box touching the walls is never all inside, as the walls
@@ -217,15 +256,11 @@ fn straddles(low: vec3<f32>, high: vec3<f32>, touches_walls: bool) -> bool {
         let s = spheres[i];
         let d = length(centre - s.xyz);
         let r2 = s.w * s.w;
-        let low_term = r2 / ((d + h) * (d + h));
-        let gap = d - h;
-        var high_term = 0.0;
+        let low_term = term(r2, (d + h) * (d + h)).x;
+        let beyond = term_size_beyond(r2, d - h);
         let kind = select(0u, 1u, s.w < 0.0);
-        if (gap <= 0.0) {
-            unbounded[kind] = true;
-        } else {
-            high_term = r2 / (gap * gap);
-        }
+        unbounded[kind] = unbounded[kind] || beyond == UNBOUNDED;
+        let high_term = select(beyond, 0.0, beyond == UNBOUNDED);
         if (by_max) {
             lower[kind] = max(lower[kind], low_term);
             upper[kind] = max(upper[kind], high_term);

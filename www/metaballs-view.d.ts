@@ -155,6 +155,10 @@ export declare class MetaballsView extends HTMLElement {
   table: 'classic' | 'decider' | 'mc33';
   /** Blend: sum, max. Attribute `blend`; default "sum". */
   blend: 'sum' | 'max';
+  /** Kernel: inverse_square, blinn, wyvill. Attribute `kernel`; default "inverse_square". */
+  kernel: 'inverse_square' | 'blinn' | 'wyvill';
+  /** Blobbiness: 0.25 to 8. Attribute `blobbiness`; default 2. */
+  blobbiness: number;
   /** Saddle: table, center, decider. Attribute `saddle`; default "table". */
   saddle: 'table' | 'center' | 'decider';
   /** Levels: a boolean attribute. Attribute `levels`; default false. */
@@ -193,7 +197,7 @@ export declare class MetaballsView extends HTMLElement {
   get sphereList(): MetaballsSphere[];
   /** Sphere-list: x,y,z,radius[,vx,vy,vz] per sphere joined by ; (a negative radius subtracts). Attribute `sphere-list`; default "". */
   set sphereList(value: string | MetaballsSphere[]);
-  /** Controls: all, none, or a comma list of spheres, iso, resolution, lod, lod-pixels, lod-freeze, mesh-on, method, speed, seed, paused, pause-on, step, view, display, compare, grid, color-by, ambiguous, critical, color, theme, antialiasing, slice, interpolation, table, blend, saddle, levels, inspector, step-through, error-plot, light, spot-angle, spot-softness, ambient, diffuse, specular, shininess, projection, fov, edit, scene, export, share. Attribute `controls`; default "none". */
+  /** Controls: all, none, or a comma list of spheres, iso, resolution, lod, lod-pixels, lod-freeze, mesh-on, method, speed, seed, paused, pause-on, step, view, display, compare, grid, color-by, ambiguous, critical, color, theme, antialiasing, slice, interpolation, table, blend, kernel, blobbiness, saddle, levels, inspector, step-through, error-plot, light, spot-angle, spot-softness, ambient, diffuse, specular, shininess, projection, fov, edit, scene, export, share. Attribute `controls`; default "none". */
   controls: string;
   /** Hud: on, off. Attribute `hud`; default "off". */
   hud: 'on' | 'off';

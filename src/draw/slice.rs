@@ -3,9 +3,10 @@
 //! vertices, so the contour meets the surface where the plane cuts it. The GPU draws it
 //! (`shaders/draw/overlays.wgsl`); this is the CPU oracle and the table both use.
 
+use crate::extract::kernel::Terms;
 use crate::extract::reference::{Construction, Grid, blended_field_at};
 use crate::scene::Sphere;
-use crate::scene::params::view::{Blend, Saddle, Slice};
+use crate::scene::params::view::{Saddle, Slice};
 use glam::{UVec2, UVec3, Vec3};
 
 /// Square corners: 0 (0,0), 1 (1,0), 2 (1,1), 3 (0,1). Edges: 0 bottom (0→1), 1 right (1→2),
@@ -62,7 +63,7 @@ pub fn plane_point(slice: Slice, grid: Grid, i: u32, j: u32) -> UVec3 {
 }
 
 /// The slice's samples, (n + 1)² values, i fastest; points on the box's faces read 0 as the GPU's.
-pub fn samples(spheres: &[Sphere], grid: Grid, slice: Slice, blend: Blend) -> Vec<f32> {
+pub fn samples(spheres: &[Sphere], grid: Grid, slice: Slice, terms: Terms) -> Vec<f32> {
     let row = grid.points_per_axis();
     let mut values = Vec::with_capacity((row * row) as usize);
     for j in 0..row {
@@ -71,7 +72,7 @@ pub fn samples(spheres: &[Sphere], grid: Grid, slice: Slice, blend: Blend) -> Ve
             values.push(if grid.is_boundary(id) {
                 0.0
             } else {
-                blended_field_at(spheres, grid.point(id), blend)
+                blended_field_at(spheres, grid.point(id), terms)
             });
         }
     }
@@ -99,7 +100,7 @@ pub fn contour(
     construction: Construction,
     saddle: Saddle,
 ) -> Vec<[Vec3; 2]> {
-    let values = samples(spheres, grid, slice, construction.blend);
+    let values = samples(spheres, grid, slice, construction.terms);
     let row = grid.points_per_axis();
     let value = |p: UVec2| values[(p.x + row * p.y) as usize];
     let mut segments = Vec::new();

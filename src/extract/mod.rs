@@ -25,7 +25,7 @@ pub mod lod;
 // The GPU-free modules live in the `metaballs-core` crate (`core/`), built for speed in the browser's
 // size-optimised build, and keep their paths here.
 pub use metaballs_core::extract::cpu::facing;
-pub use metaballs_core::extract::{decider, field, interior, mesh, reference, tables};
+pub use metaballs_core::extract::{decider, field, interior, kernel, mesh, reference, tables};
 pub mod uniforms;
 
 pub use extractor::{

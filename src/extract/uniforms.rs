@@ -17,12 +17,14 @@ pub struct GridUniform {
     pub max_indices: u32,
     pub max_cells: u32,
     /// Bit 0: vertices at edge midpoints; bit 1: blend by max; bit 2: ambiguous faces by the asymptotic
-    /// decider (`FLAG_*` in `shaders/common.wgsl`).
+    /// decider; bit 3: MC33; bits 4 and 5: the kernel's index (`FLAG_*` and `KERNEL_SHIFT` in
+    /// `shaders/common.wgsl`).
     pub flags: u32,
     /// The step-through of the march: only cells up to this one (x fastest, then y, then z) give
     /// triangles; `u32::MAX` on each axis when the march is off.
     pub march: [u32; 3],
-    pub _pad: u32,
+    /// Blinn's kernel's B.
+    pub blobbiness: f32,
 }
 const _: () = assert!(std::mem::size_of::<GridUniform>() == 64);
 

@@ -7,7 +7,6 @@ use crate::draw::shade::DrawCount;
 use crate::draw::views;
 use crate::extract::cpu::elsewhere;
 use crate::extract::lod::select::Eye;
-use crate::extract::reference::Construction;
 use crate::extract::uniforms::LevelCounts;
 use crate::extract::{
     Capabilities, Extractor, GivenMesh, Job, LodJob, LodSummary, MeshCount, Output, Viewpoint,
@@ -16,7 +15,7 @@ use crate::scene::checks::check_f32;
 use crate::scene::params::ParamError;
 use crate::scene::params::view::MeshOn;
 use crate::scene::params::view::{ColorBy, Display};
-use crate::scene::params::view::{March, Method, Projection};
+use crate::scene::params::view::{Method, Projection};
 use crate::scene::{BOX_HALF_EXTENT, Sphere};
 
 /// The most [`Renderer::set_lod_coarsening`] takes, far beyond what a page asks (its largest cell
@@ -97,12 +96,7 @@ impl Renderer {
             spheres,
             iso: self.settings.iso,
             grid: self.grid(),
-            construction: Construction {
-                interpolation: view.interpolation,
-                blend: view.blend,
-                case_table: view.case_table,
-                march: March::on_grid(view.march, self.settings.resolution),
-            },
+            construction: self.construction(),
             lod: view.lod.then(|| LodJob { eye: self.lod_eye(), freeze: view.lod_freeze }),
             teaching: self.teaching_views(),
         }

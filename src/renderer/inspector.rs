@@ -1,6 +1,7 @@
 //! What the teaching views ask of the renderer: options by name, and picking and inspecting a cell.
 
 use super::Renderer;
+use crate::extract::kernel::Terms;
 use crate::extract::reference::Construction;
 use crate::scene::params::ParamError;
 use crate::scene::params::view::March;
@@ -18,11 +19,11 @@ impl Renderer {
         self.set_settings(self.settings.with_parameters(pairs)?)
     }
 
-    /// How the surface is built (vertex placement and blend), as the oracle takes it.
+    /// How the surface is built (vertex placement, kernel and blend), as the oracle takes it.
     pub fn construction(&self) -> Construction {
         Construction {
             interpolation: self.settings.view.interpolation,
-            blend: self.settings.view.blend,
+            terms: Terms::of(&self.settings.view),
             case_table: self.settings.view.case_table,
             march: March::on_grid(self.settings.view.march, self.settings.resolution),
         }
@@ -53,8 +54,8 @@ impl Renderer {
 
     /// The first cell after `after` in the march's order that the surface crosses now, if any.
     pub fn next_crossed(&self, after: Option<UVec3>) -> Option<UVec3> {
-        let (spheres, blend) = (self.scene.spheres(), self.settings.view.blend);
-        inspect::next_crossed(spheres, self.settings.iso, self.grid(), blend, after)
+        let (spheres, terms) = (self.scene.spheres(), Terms::of(&self.settings.view));
+        inspect::next_crossed(spheres, self.settings.iso, self.grid(), terms, after)
     }
 
     /// What marching cubes decides in `cell` now.

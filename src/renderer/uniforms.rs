@@ -29,9 +29,10 @@ impl Renderer {
             flags: (self.settings.view.interpolation == Interpolation::Midpoint) as u32
                 | ((self.settings.view.blend == Blend::Max) as u32) << 1
                 | ((self.settings.view.case_table != CaseTable::Classic) as u32) << 2
-                | ((self.settings.view.case_table == CaseTable::Mc33) as u32) << 3,
+                | ((self.settings.view.case_table == CaseTable::Mc33) as u32) << 3
+                | self.settings.view.kernel.index() << 4,
             march: March::on_grid(self.settings.view.march, grid.cells_per_axis).unwrap_or([u32::MAX; 3]),
-            _pad: 0,
+            blobbiness: self.settings.view.blobbiness,
         };
         self.queue.write_buffer(&self.scene_buffers.grid, 0, bytemuck::bytes_of(&grid_uniform));
         let packed: Vec<[f32; 4]> = spheres.iter().map(|s| s.to_gpu()).collect();

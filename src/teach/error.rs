@@ -27,7 +27,7 @@ pub fn error_at(spheres: &[Sphere], iso: f32, construction: Construction, cells_
     let cell = grid.cell_size() as f64;
     let (mut squares, mut max) = (0.0f64, 0.0f64);
     for &p in &mesh.positions {
-        let d = surface_distance(spheres, iso, construction.blend, p, grid) as f64 * cell;
+        let d = surface_distance(spheres, iso, construction.terms, p, grid) as f64 * cell;
         squares += d * d;
         max = max.max(d);
     }

@@ -6,10 +6,11 @@
 
 use crate::extract::decider::{ambiguous_faces, decided_triangles, saddle_above};
 use crate::extract::interior::{interior_code, joined_corners};
+use crate::extract::kernel::Terms;
 use crate::extract::reference::{Construction, Grid, blended_field_at};
 use crate::extract::tables::{CORNER_OFFSETS, EDGE_CORNERS, EDGE_TABLE, FACE_CORNERS};
 use crate::scene::Sphere;
-use crate::scene::params::view::{Blend, CaseTable};
+use crate::scene::params::view::CaseTable;
 use crate::teach::case_classes::case_classes;
 use crate::teach::subcases::subcase_of;
 use glam::{UVec3, Vec3};
@@ -81,7 +82,7 @@ pub fn inspect(
     let point = |c: usize| cell + UVec3::from_array(CORNER_OFFSETS[c]);
     let corners: [f32; 8] = std::array::from_fn(|c| {
         let id = point(c);
-        if grid.is_boundary(id) { 0.0 } else { blended_field_at(spheres, grid.point(id), construction.blend) }
+        if grid.is_boundary(id) { 0.0 } else { blended_field_at(spheres, grid.point(id), construction.terms) }
     });
     let case = (0..8).fold(0u8, |m, c| m | ((corners[c] > iso) as u8) << c);
     let decided = construction.case_table != CaseTable::Classic;
@@ -158,7 +159,7 @@ pub fn next_crossed(
     spheres: &[Sphere],
     iso: f32,
     grid: Grid,
-    blend: Blend,
+    terms: Terms,
     after: Option<UVec3>,
 ) -> Option<UVec3> {
     let n = grid.cells_per_axis;
@@ -167,7 +168,7 @@ pub fn next_crossed(
         for y in 0..=n {
             for x in 0..=n {
                 let id = UVec3::new(x, y, z);
-                inside.push(!grid.is_boundary(id) && blended_field_at(spheres, grid.point(id), blend) > iso);
+                inside.push(!grid.is_boundary(id) && blended_field_at(spheres, grid.point(id), terms) > iso);
             }
         }
         inside
@@ -298,7 +299,7 @@ mod tests {
         let grid = Grid { cells_per_axis: 7 };
         let mut walked = Vec::new();
         let mut at = None;
-        while let Some(cell) = next_crossed(&spheres, 1.0, grid, Blend::Sum, at) {
+        while let Some(cell) = next_crossed(&spheres, 1.0, grid, Terms::default(), at) {
             walked.push(cell);
             at = Some(cell);
         }

@@ -2,6 +2,7 @@
 //! report) and the case gallery's data.
 
 use super::{View, js_error};
+use crate::extract::kernel::Terms;
 use crate::extract::reference::Construction;
 use crate::extract::tables::{CORNER_OFFSETS, EDGE_CORNERS};
 use crate::scene::params::view::Interpolation;
@@ -209,7 +210,7 @@ impl View {
         let interpolation = if midpoint { Interpolation::Midpoint } else { Interpolation::Linear };
         let construction = Construction {
             interpolation,
-            blend: settings.view.blend,
+            terms: Terms::of(&settings.view),
             case_table: settings.view.case_table,
             ..Construction::default()
         };

@@ -1,11 +1,12 @@
 //! The scenes every extractor is held to against the oracle: the seeded random draws of the GPU and
 //! CPU tests, spheres against the walls, overlapping and on a grid point at extreme iso levels, with
-//! both vertex placements, both blends and both ways of joining ambiguous faces.
+//! both vertex placements, every kernel, both blends and each way of joining ambiguous faces.
 
 use super::sphere;
 use metaballs::extract::extractor::Job;
+use metaballs::extract::kernel::Terms;
 use metaballs::extract::reference::{Construction, Grid};
-use metaballs::scene::params::view::{Blend, CaseTable, Interpolation};
+use metaballs::scene::params::view::{Blend, CaseTable, Interpolation, Kernel};
 use metaballs::{Scene, Sphere};
 use rand::{RngExt, SeedableRng};
 
@@ -61,7 +62,8 @@ pub fn random_scenes(how_many: usize) -> Vec<OracleScene> {
 }
 
 /// `how_many` seeded random scenes in which about a third of the spheres subtract (charge −1), with
-/// both placements and both blends: the exact bounds must keep every crossed cell with negative terms.
+/// both placements, every kernel and both blends: the exact bounds must keep every crossed cell with
+/// negative terms.
 pub fn subtractive_scenes(how_many: usize) -> Vec<OracleScene> {
     let mut rng = rand_pcg::Pcg32::seed_from_u64(0x6e65_6761);
     (0..how_many)
@@ -81,10 +83,11 @@ pub fn subtractive_scenes(how_many: usize) -> Vec<OracleScene> {
             let negative = spheres.iter().filter(|s| s.is_subtractive()).count();
             let interpolation = if case % 2 == 0 { Interpolation::Linear } else { Interpolation::Midpoint };
             let blend = if case % 4 < 2 { Blend::Sum } else { Blend::Max };
+            let terms = Terms { blend, kernel: Kernel::ALL[case % 3], ..Terms::default() };
             OracleScene {
                 what: format!(
                     "subtractive case {case}: seed {seed}, {count} spheres ({negative} negative), \
-                     {resolution} cells, iso {iso}, {interpolation:?}, {blend:?}, {:?}",
+                     {resolution} cells, iso {iso}, {interpolation:?}, {terms:?}, {:?}",
                     alternate(case / 4)
                 ),
                 spheres,
@@ -92,7 +95,7 @@ pub fn subtractive_scenes(how_many: usize) -> Vec<OracleScene> {
                 resolution,
                 construction: Construction {
                     interpolation,
-                    blend,
+                    terms,
                     case_table: alternate(case / 4),
                     ..Construction::default()
                 },
@@ -115,7 +118,7 @@ pub fn dented() -> Vec<Sphere> {
 
 /// `random` seeded random scenes (the generator of `tests/suite/gpu_matches_oracle.rs`) and as many with
 /// subtracting spheres, then the walls, overlaps, grid-point and dented scenes at five iso levels, two
-/// placements and two blends.
+/// placements and two blends, the kernels and case tables in turn.
 pub fn oracle_scenes(random: usize) -> Vec<OracleScene> {
     let mut scenes = random_scenes(random);
     scenes.extend(subtractive_scenes(random.min(30)));
@@ -129,14 +132,16 @@ pub fn oracle_scenes(random: usize) -> Vec<OracleScene> {
             for interpolation in [Interpolation::Linear, Interpolation::Midpoint] {
                 for blend in [Blend::Sum, Blend::Max] {
                     let case_table = alternate(scenes.len());
+                    let kernel = Kernel::ALL[scenes.len() / 3 % 3];
+                    let terms = Terms { blend, kernel, ..Terms::default() };
                     scenes.push(OracleScene {
-                        what: format!("{name}, iso {iso}, {interpolation:?}, {blend:?}, {case_table:?}"),
+                        what: format!("{name}, iso {iso}, {interpolation:?}, {terms:?}, {case_table:?}"),
                         spheres: spheres.clone(),
                         iso,
                         resolution: 32,
                         construction: Construction {
                             interpolation,
-                            blend,
+                            terms,
                             case_table,
                             ..Construction::default()
                         },

@@ -6,9 +6,10 @@ use crate::common;
 use common::scenes::{alternate, on_grid_point, overlapping, random_scenes, touching_walls};
 use common::*;
 use metaballs::extract::cpu::mesher::CpuMesher;
+use metaballs::extract::kernel::Terms;
 use metaballs::extract::reference::{self, Construction, Grid};
 use metaballs::offscreen::OFFSCREEN_FORMAT;
-use metaballs::scene::params::view::{Blend, Interpolation, MeshOn};
+use metaballs::scene::params::view::{Blend, Interpolation, Kernel, MeshOn};
 use metaballs::{GpuContext, Renderer, Scene, Settings, Sphere};
 use rand::{RngExt, SeedableRng};
 
@@ -62,13 +63,14 @@ fn walls_overlaps_extreme_levels_and_constructions_equal_the_oracle() {
             for interpolation in [Interpolation::Linear, Interpolation::Midpoint] {
                 for blend in [Blend::Sum, Blend::Max] {
                     for resolution in [32, 37] {
-                        let what =
-                            format!("{name}, iso {iso}, {interpolation:?}, {blend:?}, {resolution} cells");
-                        // The three tables in turn.
+                        // The three tables, and the three kernels, in turn.
                         tables += 1;
+                        let terms = Terms { blend, kernel: Kernel::ALL[tables / 3 % 3], ..Terms::default() };
+                        let what =
+                            format!("{name}, iso {iso}, {interpolation:?}, {terms:?}, {resolution} cells");
                         let construction = Construction {
                             interpolation,
-                            blend,
+                            terms,
                             case_table: alternate(tables),
                             ..Construction::default()
                         };

@@ -11,6 +11,7 @@ use glam::{UVec3, Vec3};
 use metaballs::extract::cpu::dual::STRAYED;
 use metaballs::extract::cpu::elsewhere::Meshers;
 use metaballs::extract::cpu::{DualContouringMesher, SurfaceNetsMesher};
+use metaballs::extract::kernel::Terms;
 use metaballs::extract::mesh::IndexedMesh;
 use metaballs::extract::reference::{self, Construction, Grid};
 use metaballs::extract::tables::CORNER_OFFSETS;
@@ -53,10 +54,11 @@ fn dual_method_meets_the_shared_scenes(method: Method, source: &str) {
         let mut counts = Vec::new();
         for scene in &scenes {
             let what = &scene.what;
-            let iso = conditioned_iso(&scene.spheres, scene.iso, scene.resolution);
+            let iso =
+                conditioned_level(&scene.spheres, scene.iso, scene.resolution, scene.construction.terms);
             let mut settings = Settings { resolution: scene.resolution, iso, ..Settings::default() };
             settings.view.interpolation = scene.construction.interpolation;
-            settings.view.blend = scene.construction.blend;
+            scene.construction.terms.set_in(&mut settings.view);
             settings.view.case_table = scene.construction.case_table;
             settings.view.method = method;
             o.renderer.set_settings(settings).unwrap();
@@ -64,7 +66,7 @@ fn dual_method_meets_the_shared_scenes(method: Method, source: &str) {
             let nets = pollster::block_on(o.renderer.extract_mesh());
             assert_eq!(o.renderer.mesh_source(), source, "{what}");
             let grid = Grid { cells_per_axis: scene.resolution };
-            let values = reference::sample_blended_field(&scene.spheres, grid, scene.construction.blend);
+            let values = reference::sample_blended_field(&scene.spheres, grid, scene.construction.terms);
             assert_eq!(nets.positions.len(), crossed_cells(&values, iso, grid), "{what}: vertices");
             // Each vertex is a mean of crossings on its cell's edges or within a quarter cell of its
             // cell, so it lies in the grid's box (give or take that quarter).
@@ -218,7 +220,8 @@ fn dual_contouring_keeps_the_crease_of_a_union_of_two_spheres_sharp() {
     let balls = spheres.map(|s| (s.center, s.radius));
     let crease = Crease::of(balls[0], balls[1]);
     let grid = Grid { cells_per_axis: 32 };
-    let construction = Construction { blend: Blend::Max, ..Construction::default() };
+    let construction =
+        Construction { terms: Terms { blend: Blend::Max, ..Terms::default() }, ..Construction::default() };
     let cell = grid.cell_size();
     let cubes = reference::extract_with(&spheres, 1.0, grid, construction).weld_by_edge();
     let mut nets = SurfaceNetsMesher::default();

@@ -5,29 +5,34 @@
 use crate::common;
 
 use common::*;
+use metaballs::extract::kernel::Terms;
 use metaballs::extract::reference::exact_hit;
-use metaballs::scene::params::view::{Blend, Compare, Display};
+use metaballs::scene::params::view::{Blend, Compare, Display, Kernel};
 use metaballs::{Scene, Settings, Sphere};
 
 const W: u32 = 160;
 const H: u32 = 120;
 
-fn scenes() -> Vec<(&'static str, Vec<Sphere>, Blend)> {
+fn scenes() -> Vec<(&'static str, Vec<Sphere>, Terms)> {
     let seeded = Scene::new(7, 6).unwrap().spheres().to_vec();
+    let terms = |kernel, blend| Terms { kernel, blend, ..Terms::default() };
     vec![
-        ("seeded", seeded.clone(), Blend::Sum),
-        ("seeded, blend by max", seeded, Blend::Max),
-        ("dented", scenes::dented(), Blend::Sum),
-        ("touching the walls", scenes::touching_walls(), Blend::Sum),
+        ("seeded", seeded.clone(), Terms::default()),
+        ("seeded, blend by max", seeded.clone(), terms(Kernel::InverseSquare, Blend::Max)),
+        ("seeded, Blinn's kernel", seeded.clone(), terms(Kernel::Blinn, Blend::Sum)),
+        ("seeded, Wyvill's kernel", seeded, terms(Kernel::Wyvill, Blend::Sum)),
+        ("dented", scenes::dented(), Terms::default()),
+        ("dented, Wyvill's kernel", scenes::dented(), terms(Kernel::Wyvill, Blend::Sum)),
+        ("touching the walls", scenes::touching_walls(), Terms::default()),
     ]
 }
 
 #[test]
 fn the_exact_view_hits_where_a_cpu_ray_caster_does() {
-    for (what, spheres, blend) in scenes() {
+    for (what, spheres, terms) in scenes() {
         let mut settings = Settings { resolution: 128, iso: 1.0, ..Settings::default() };
         settings.view.display = Display::Exact;
-        settings.view.blend = blend;
+        terms.set_in(&mut settings.view);
         with_renderer(settings, W, H, |o| {
             o.renderer.set_scene(Scene::from_spheres(spheres.clone()).unwrap());
             let pixels: Vec<[f32; 2]> = (0..32 * 24)
@@ -37,7 +42,7 @@ fn the_exact_view_hits_where_a_cpu_ray_caster_does() {
             let (mut hits, mut disagree, mut worst) = (0, 0, 0.0f32);
             for (pixel, gpu) in pixels.iter().zip(&gpu) {
                 let (origin, direction) = o.renderer.ray(pixel[0], pixel[1]);
-                let cpu = exact_hit(&spheres, 1.0, blend, origin, direction);
+                let cpu = exact_hit(&spheres, 1.0, terms, origin, direction);
                 match (gpu, cpu) {
                     (Some(a), Some(b)) => {
                         hits += 1;
@@ -83,9 +88,9 @@ fn apart(a: &[bool], b: &[bool], reach: i32) -> usize {
 #[test]
 fn the_exact_silhouette_lies_within_two_pixels_of_the_mesh_at_128_cells() {
     let tiny = vec![sphere([0.0, 0.0, 0.0], 1e-3)];
-    for (what, spheres, blend) in scenes().into_iter().filter(|s| s.2 == Blend::Sum) {
+    for (what, spheres, terms) in scenes().into_iter().filter(|s| s.2.blend == Blend::Sum) {
         let mut settings = Settings { resolution: 128, iso: 1.0, antialiasing: false, ..Settings::default() };
-        settings.view.blend = blend;
+        terms.set_in(&mut settings.view);
         let mesh = with_renderer(settings, W, H, |o| {
             o.renderer.set_scene(Scene::from_spheres(tiny.clone()).unwrap());
             let empty = o.render_rgba();

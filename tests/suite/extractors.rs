@@ -47,10 +47,11 @@ fn every_extractor_in_the_list_matches_the_oracle() {
             let mut with_surface = 0;
             for scene in &scenes {
                 let what = format!("{name}: {}", scene.what);
-                let iso = conditioned_iso(&scene.spheres, scene.iso, scene.resolution);
+                let iso =
+                    conditioned_level(&scene.spheres, scene.iso, scene.resolution, scene.construction.terms);
                 let mut settings = Settings { resolution: scene.resolution, iso, ..Settings::default() };
                 settings.view.interpolation = scene.construction.interpolation;
-                settings.view.blend = scene.construction.blend;
+                scene.construction.terms.set_in(&mut settings.view);
                 settings.view.case_table = scene.construction.case_table;
                 o.renderer.set_settings(settings).unwrap();
                 o.renderer.set_scene(Scene::from_spheres(scene.spheres.clone()).unwrap());
@@ -60,7 +61,9 @@ fn every_extractor_in_the_list_matches_the_oracle() {
                 let oracle = reference::extract_with(&scene.spheres, iso, grid, scene.construction);
                 assert_eq!(ours.triangles.len(), oracle.triangle_count(), "{what}: triangle counts differ");
                 let tolerance = 1e-4 * grid.cell_size();
-                if let Err(e) = ours.to_soup().matches(&oracle, tolerance, 0.01f32.to_radians()) {
+                if let Err(e) =
+                    ours.to_soup().matches(&oracle, tolerance, normal_tolerance(scene.construction.terms))
+                {
                     panic!("{what}: {e}");
                 }
                 let welded = oracle.weld_by_edge();

@@ -4,6 +4,7 @@
 use crate::common;
 
 use common::*;
+use metaballs::extract::kernel::Terms;
 use metaballs::extract::reference::{Construction, Grid, surface_distance};
 use metaballs::scene::params::view::{Blend, ColorBy, Interpolation};
 use metaballs::teach::error::{error_at, fitted_slope};
@@ -23,6 +24,7 @@ fn the_gpu_measures_each_vertex_as_a_cpu_newton_projection_does() {
             settings.view.color_by = ColorBy::Error;
             settings.view.interpolation = interpolation;
             settings.view.blend = blend;
+            let terms = Terms::of(&settings.view);
             let (measures, mesh) = with_renderer(settings, 64, 64, |o| {
                 o.renderer.set_scene(Scene::from_spheres(spheres.clone()).unwrap());
                 o.render();
@@ -32,7 +34,7 @@ fn the_gpu_measures_each_vertex_as_a_cpu_newton_projection_does() {
             });
             let grid = Grid { cells_per_axis: 40 };
             let errors: Vec<f32> =
-                mesh.positions.iter().map(|&p| surface_distance(&spheres, 1.0, blend, p, grid)).collect();
+                mesh.positions.iter().map(|&p| surface_distance(&spheres, 1.0, terms, p, grid)).collect();
             let rms = (errors.iter().map(|e| (*e as f64).powi(2)).sum::<f64>() / errors.len() as f64).sqrt();
             let max = errors.iter().cloned().fold(0.0f32, f32::max);
             let what = format!("{what}, {interpolation:?}, {blend:?}");

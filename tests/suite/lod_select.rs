@@ -6,6 +6,7 @@
 use crate::common::*;
 use metaballs::Settings;
 use metaballs::extract::field::Spheres;
+use metaballs::extract::kernel::Terms;
 use metaballs::extract::lod::mesher::LodMesher;
 use metaballs::extract::lod::select::{BLOCK_CELLS, Block, Eye, Rule, coarsest_level, select_by};
 use metaballs::extract::lod::select_for_surface;
@@ -35,7 +36,7 @@ fn unpack(b: [u32; 4]) -> Block {
 /// True when one of the decisions that place `block` (its own, its ancestors', and its face
 /// neighbours' splits) is within rounding of turning the other way: the CPU and the device compute
 /// them in `f32`, in different orders.
-fn near_a_tie(block: Block, eye: &Eye, rule: &Rule, bounds: &Spheres, iso: f32, by_max: bool) -> bool {
+fn near_a_tie(block: Block, eye: &Eye, rule: &Rule, bounds: &Spheres, iso: f32, terms: Terms) -> bool {
     let finest = 2.0 * BOX_HALF_EXTENT / rule.resolution as f32;
     let world = |p: glam::UVec3| glam::Vec3::splat(-BOX_HALF_EXTENT) + p.as_vec3() * finest;
     let close = |a: f32, b: f32| (a - b).abs() <= 1e-4 * b.abs().max(1e-6);
@@ -46,8 +47,8 @@ fn near_a_tie(block: Block, eye: &Eye, rule: &Rule, bounds: &Spheres, iso: f32, 
         let wall = origin.min_element() == 0 || (origin + width).max_element() == rule.resolution;
         close(rule.distance_squared(origin, level), rule.split_below[level as usize])
             || (eye.cull && eye.sees(low - e, high + e) != eye.sees(low + e, high - e))
-            || bounds.straddles(low, high, wall, iso * (1.0 + 1e-4), by_max)
-                != bounds.straddles(low, high, wall, iso * (1.0 - 1e-4), by_max)
+            || bounds.straddles(low, high, wall, iso * (1.0 + 1e-4), terms)
+                != bounds.straddles(low, high, wall, iso * (1.0 - 1e-4), terms)
     };
     let mut candidates = vec![(block.origin, block.level)];
     for level in block.level + 1..=rule.top {
@@ -138,7 +139,7 @@ fn the_devices_blocks_are_the_cpu_rules_for_hundreds_of_random_cameras() {
             assert!(eye.cull, "a drawn frame leaves out what is outside the view");
             let spheres = o.renderer.scene().spheres().to_vec();
             let iso = o.renderer.settings().iso;
-            let cpu = select_for_surface(&spheres, iso, s.view.blend, s.resolution, &eye).blocks;
+            let cpu = select_for_surface(&spheres, iso, Terms::of(&s.view), s.resolution, &eye).blocks;
             let what = format!("case {case}: {s:?}");
             let on_device: HashSet<Block> = device.iter().copied().collect();
             let on_cpu: HashSet<Block> = cpu.iter().copied().collect();
@@ -148,7 +149,7 @@ fn the_devices_blocks_are_the_cpu_rules_for_hundreds_of_random_cameras() {
             bounds.set(&spheres);
             for &b in on_device.symmetric_difference(&on_cpu) {
                 assert!(
-                    near_a_tie(b, &eye, &rule, &bounds, iso, s.view.blend == Blend::Max),
+                    near_a_tie(b, &eye, &rule, &bounds, iso, Terms::of(&s.view)),
                     "{what}: {b:?} is {} but no decision placing it is near a tie",
                     if on_cpu.contains(&b) { "the CPU's alone" } else { "the device's alone" }
                 );
@@ -222,13 +223,16 @@ fn a_selection_out_of_room_keeps_its_mesh_and_coarsens_the_next_frame() {
         let iso = o.renderer.settings().iso;
         let mut bounds = Spheres::default();
         bounds.set(&spheres);
-        let surface = |low, high, walls| bounds.straddles(low, high, walls, iso, false);
+        let surface = |low, high, walls| bounds.straddles(low, high, walls, iso, Terms::default());
         let rule = Rule::new(near.resolution, &eye, after.lod_floor);
         let device: HashSet<Block> =
             pollster::block_on(o.renderer.lod_blocks()).into_iter().map(unpack).collect();
         let cpu: HashSet<Block> = select_by(&rule, &eye, &surface).blocks.into_iter().collect();
         for &b in device.symmetric_difference(&cpu) {
-            assert!(near_a_tie(b, &eye, &rule, &bounds, iso, false), "{b:?} differs from the rule's");
+            assert!(
+                near_a_tie(b, &eye, &rule, &bounds, iso, Terms::default()),
+                "{b:?} differs from the rule's"
+            );
         }
         let whole = select_by(&rule, &Eye { cull: false, ..eye }, &surface);
         let mut mesher = LodMesher::new();

@@ -25,6 +25,7 @@ mod hostile_inputs;
 mod image;
 mod js_layers;
 mod kept_mesh;
+mod kernels;
 mod lab;
 mod lod;
 mod lod_select;

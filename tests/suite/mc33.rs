@@ -75,7 +75,7 @@ fn census_ambiguous_cells_are_well_under_one_percent_of_the_crossed_cells() {
     let (mut crossed, mut ambiguous, mut joined, mut tunnels) = (0usize, 0usize, 0usize, 0usize);
     for scene in common::scenes::oracle_scenes(40) {
         let grid = Grid { cells_per_axis: scene.resolution };
-        let values = reference::sample_blended_field(&scene.spheres, grid, scene.construction.blend);
+        let values = reference::sample_blended_field(&scene.spheres, grid, scene.construction.terms);
         let n = scene.resolution;
         for id in (0..n * n * n).map(|i| glam::UVec3::new(i % n, i / n % n, i / (n * n))) {
             let f: [f32; 8] = std::array::from_fn(|c| {

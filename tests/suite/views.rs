@@ -9,9 +9,10 @@ use common::*;
 use glam::{UVec3, Vec3};
 use metaballs::draw::slice;
 use metaballs::extract::decider;
+use metaballs::extract::kernel::Terms;
 use metaballs::extract::reference::{self, Construction, Grid};
 use metaballs::offscreen::{Offscreen, write_png};
-use metaballs::scene::params::view::{Blend, Interpolation, Saddle, Slice};
+use metaballs::scene::params::view::{Blend, Interpolation, Kernel, Saddle, Slice};
 use metaballs::teach::case_classes::case_classes;
 use metaballs::{Scene, Settings};
 
@@ -287,23 +288,32 @@ fn overlays_draw_what_the_oracle_finds() {
 }
 
 #[test]
-fn midpoint_vertices_and_blend_by_max_match_the_oracle() {
-    for (interpolation, blend) in [(Interpolation::Midpoint, Blend::Sum), (Interpolation::Linear, Blend::Max)]
-    {
+fn midpoint_vertices_blend_by_max_and_the_kernels_match_the_oracle() {
+    let terms = |kernel, blend| Terms { kernel, blend, ..Terms::default() };
+    for (interpolation, terms) in [
+        (Interpolation::Midpoint, Terms::default()),
+        (Interpolation::Linear, terms(Kernel::InverseSquare, Blend::Max)),
+        (Interpolation::Linear, terms(Kernel::Blinn, Blend::Sum)),
+        (Interpolation::Linear, Terms { blobbiness: 0.5, ..terms(Kernel::Blinn, Blend::Sum) }),
+        (Interpolation::Linear, terms(Kernel::Wyvill, Blend::Sum)),
+        (Interpolation::Midpoint, terms(Kernel::Wyvill, Blend::Max)),
+    ] {
         with_renderer(settings(7, 6, 32, 1.0), 16, 16, |o| {
             o.renderer.update(0.5).unwrap();
             let mut s = *o.renderer.settings();
             s.view.interpolation = interpolation;
-            s.view.blend = blend;
-            o.renderer.set_settings(s).unwrap();
+            terms.set_in(&mut s.view);
             let spheres = o.renderer.scene().spheres().to_vec();
+            s.iso = conditioned_level(&spheres, s.iso, 32, terms);
+            o.renderer.set_settings(s).unwrap();
             let grid = Grid { cells_per_axis: 32 };
-            let construction = Construction { interpolation, blend, ..Construction::default() };
+            let construction = Construction { interpolation, terms, ..Construction::default() };
             let gpu = pollster::block_on(o.renderer.extract_mesh()).to_soup();
             let cpu = reference::extract_with(&spheres, s.iso, grid, construction);
             let plain = reference::extract(&spheres, s.iso, grid);
             assert_eq!(gpu.triangle_count(), cpu.triangle_count(), "{construction:?}");
-            gpu.matches(&cpu, 1e-4 * grid.cell_size(), 0.01f32.to_radians()).unwrap();
+            let close = gpu.matches(&cpu, 1e-4 * grid.cell_size(), normal_tolerance(terms));
+            close.unwrap_or_else(|e| panic!("{construction:?}: {e}"));
             assert!(
                 cpu.matches(&plain, 1e-4 * grid.cell_size(), 0.01f32.to_radians()).is_err(),
                 "it changes the mesh"

@@ -2,10 +2,10 @@
 //! separate arrays, the exact bounds of the field over a box (`straddles` in `shaders/common.wgsl`),
 //! and rows of samples summed in sphere order like the oracle.
 
+use crate::extract::kernel::{MIN_DISTANCE_SQUARED, Terms};
 use crate::extract::lanes::{self, F32x4, LANES};
-use crate::extract::reference::MIN_DISTANCE_SQUARED;
 use crate::scene::Sphere;
-use crate::scene::params::view::Blend;
+use crate::scene::params::view::Kernel;
 use glam::Vec3;
 
 /// Cells along each edge of a block (`BLOCK_CELLS` in `shaders/common.wgsl`).
@@ -44,24 +44,23 @@ impl Spheres {
     /// emit a triangle. A box touching the walls is never all inside, as the walls read outside.
     /// Adding and subtracting terms are bounded apart: the field is at most the adding terms' upper
     /// bound less the subtracting terms' lower bound, and at least the other way round.
-    pub fn straddles(&self, low: Vec3, high: Vec3, touches_walls: bool, iso: f32, by_max: bool) -> bool {
-        self.ball_straddles(0.5 * (low + high), 0.5 * (high - low).length(), touches_walls, iso, by_max)
+    pub fn straddles(&self, low: Vec3, high: Vec3, touches_walls: bool, iso: f32, terms: Terms) -> bool {
+        self.ball_straddles(0.5 * (low + high), 0.5 * (high - low).length(), touches_walls, iso, terms)
     }
 
     /// [`Spheres::straddles`] over the ball of radius `h` about `centre`, which holds the box. A ball
     /// holding another bounds the field more loosely, so where it keeps every point on one side of
     /// `iso`, so does the ball it holds.
-    pub fn ball_straddles(&self, centre: Vec3, h: f32, touches_walls: bool, iso: f32, by_max: bool) -> bool {
+    pub fn ball_straddles(&self, centre: Vec3, h: f32, touches_walls: bool, iso: f32, terms: Terms) -> bool {
         let mut adding = Bounds::default();
         let mut subtracting = Bounds::default();
         for i in 0..self.r2.len() {
             let d = (centre - Vec3::new(self.x[i], self.y[i], self.z[i])).length();
             let r2 = self.r2[i].abs();
-            let low_term = r2 / ((d + h) * (d + h));
-            let gap = d - h;
-            let high_term = if gap <= 0.0 { f32::INFINITY } else { r2 / (gap * gap) };
+            let low_term = terms.size(r2, (d + h) * (d + h));
+            let high_term = terms.size_beyond(r2, d - h);
             let bounds = if self.r2[i] < 0.0 { &mut subtracting } else { &mut adding };
-            bounds.add(low_term, high_term, by_max);
+            bounds.add(low_term, high_term, terms.by_max());
         }
         Bounds::straddle(adding, subtracting, touches_walls, iso)
     }
@@ -69,7 +68,7 @@ impl Spheres {
     /// [`Spheres::straddles`] over the box `b` with the bounds of each term at the box's nearest and
     /// farthest points from the sphere's centre, tighter than over the ball holding the box, so a box
     /// a ball keeps may still be passed over (with the same margin).
-    pub fn box_straddles(&self, b: Block, iso: f32, by_max: bool) -> bool {
+    pub fn box_straddles(&self, b: Block, iso: f32, terms: Terms) -> bool {
         let mut adding = Bounds::default();
         let mut subtracting = Bounds::default();
         let (low, high) = (b.low.to_array(), b.high.to_array());
@@ -83,9 +82,9 @@ impl Spheres {
             let squared = |d: [f32; 3]| d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
             let (near, far) = (squared(near), squared(far));
             let r2 = self.r2[i].abs();
-            let high_term = if near <= 0.0 { f32::INFINITY } else { r2 / near };
+            let high_term = terms.size(r2, near);
             let bounds = if self.r2[i] < 0.0 { &mut subtracting } else { &mut adding };
-            bounds.add(r2 / far, high_term, by_max);
+            bounds.add(terms.size(r2, far), high_term, terms.by_max());
         }
         Bounds::straddle(adding, subtracting, b.touches_walls, iso)
     }
@@ -112,9 +111,9 @@ impl Spheres {
     /// True when block `[bx, by, bz]` (of `BLOCK_CELLS`³ cells) of an `n`³ grid with point coordinates
     /// `coords` may hold the surface, as [`Spheres::straddles`] decides: the block every extractor
     /// keeps.
-    pub fn block_straddles(&self, coords: &[f32], block: [u32; 3], n: u32, iso: f32, by_max: bool) -> bool {
+    pub fn block_straddles(&self, coords: &[f32], block: [u32; 3], n: u32, iso: f32, terms: Terms) -> bool {
         let ball = block_ball(coords, block, n);
-        self.ball_straddles(ball.centre, ball.h, ball.touches_walls, iso, by_max)
+        self.ball_straddles(ball.centre, ball.h, ball.touches_walls, iso, terms)
     }
 
     /// False only when no block of the `group`³ blocks from block `first` on (as many as the grid has)
@@ -128,10 +127,10 @@ impl Spheres {
         group: u32,
         n: u32,
         iso: f32,
-        by_max: bool,
+        terms: Terms,
     ) -> bool {
         let ball = group_ball(coords, first, group, n);
-        self.ball_straddles(ball.centre, ball.h, ball.touches_walls, iso, by_max)
+        self.ball_straddles(ball.centre, ball.h, ball.touches_walls, iso, terms)
     }
 }
 
@@ -212,15 +211,16 @@ impl Bounds {
 /// registers while the sphere loop runs, so the inner loop has no dependence between iterations;
 /// each point still takes its spheres in order. With blend by max, the largest adding term less the
 /// largest subtracting term, as `field_at` in `shaders/common.wgsl` makes it.
-pub fn sample_run(run: &mut [f32], xs: &[f32], py: f32, pz: f32, s: &Spheres, blend: Blend) {
+pub fn sample_run(run: &mut [f32], xs: &[f32], py: f32, pz: f32, s: &Spheres, terms: Terms) {
     let xs = &xs[..run.len()];
     let count = s.r2.len();
     let (sx, sy, sz, sr) = (&s.x[..count], &s.y[..count], &s.z[..count], &s.r2[..count]);
     let floor = F32x4::splat(MIN_DISTANCE_SQUARED);
+    let inverse_square_sum = terms.kernel == Kernel::InverseSquare && !terms.by_max();
     for start in (0..run.len()).step_by(LANES) {
         let (x, len) = lanes::load(xs, start);
         let mut f = [F32x4::splat(0.0); 2];
-        if blend == Blend::Sum {
+        if inverse_square_sum {
             for i in 0..count {
                 let (dy, dz) = (py - sy[i], pz - sz[i]);
                 let (dy2, dz2) = (F32x4::splat(dy * dy), F32x4::splat(dz * dz));
@@ -231,21 +231,39 @@ pub fn sample_run(run: &mut [f32], xs: &[f32], py: f32, pz: f32, s: &Spheres, bl
                 }
             }
         } else {
-            // The largest adding term, and the largest subtracting one (the dent).
+            // With blend by max, the largest adding term, and the largest subtracting one (the dent).
             let mut dent = f;
             for i in 0..count {
                 let (dy, dz) = (py - sy[i], pz - sz[i]);
                 let (dy2, dz2) = (F32x4::splat(dy * dy), F32x4::splat(dz * dz));
-                let (cx, size) = (F32x4::splat(sx[i]), F32x4::splat(sr[i].abs()));
-                let largest = if sr[i] < 0.0 { &mut dent } else { &mut f };
+                let cx = F32x4::splat(sx[i]);
+                let subtracting = sr[i] < 0.0;
                 for v in 0..2 {
                     let dx = x[v] - cx;
-                    largest[v] = largest[v].at_least(size / (dx * dx + dy2 + dz2).at_least(floor));
+                    let size = sizes(terms, sr[i].abs(), dx * dx + dy2 + dz2);
+                    if terms.by_max() {
+                        let largest = if subtracting { &mut dent } else { &mut f };
+                        largest[v] = largest[v].at_least(size);
+                    } else if subtracting {
+                        f[v] = f[v] - size;
+                    } else {
+                        f[v] = f[v] + size;
+                    }
                 }
             }
             f = [f[0] - dent[0], f[1] - dent[1]];
         }
         lanes::store(run, start, f, len);
+    }
+}
+
+/// [`Terms::size`] in each lane: the inverse square four lanes at a time, the others (Blinn's `exp`
+/// has no vector form) a lane at a time by the oracle's own code.
+#[inline(always)]
+fn sizes(terms: Terms, r2: f32, d2: F32x4) -> F32x4 {
+    match terms.kernel {
+        Kernel::InverseSquare => F32x4::splat(r2) / d2.at_least(F32x4::splat(MIN_DISTANCE_SQUARED)),
+        _ => F32x4::from_array(d2.to_array().map(|d2| terms.size(r2, d2))),
     }
 }
 
@@ -320,18 +338,18 @@ pub(crate) mod tests {
                 (0..=n).map(|i| -crate::scene::BOX_HALF_EXTENT + i as f32 * cell).collect();
             let nb = n.div_ceil(BLOCK_CELLS);
             for iso in [0.05, 0.4, 1.0, 3.0] {
-                for by_max in [false, true] {
+                for terms in Terms::every() {
                     for group in [2, 4] {
                         for first in groups(nb, group) {
-                            if s.group_straddles(&coords, first, group, n, iso, by_max) {
+                            if s.group_straddles(&coords, first, group, n, iso, terms) {
                                 continue;
                             }
                             groups_passed += 1;
                             for block in groups(group, 1).map(|b| [0, 1, 2].map(|k| first[k] + b[k])) {
                                 if block.iter().all(|&c| c < nb) {
                                     assert!(
-                                        !s.block_straddles(&coords, block, n, iso, by_max),
-                                        "seed {seed}, {n} cells, iso {iso}, max {by_max}: block {block:?} of \
+                                        !s.block_straddles(&coords, block, n, iso, terms),
+                                        "seed {seed}, {n} cells, iso {iso}, {terms:?}: block {block:?} of \
                                          group {first:?} ({group}) straddles"
                                     );
                                 }

@@ -4,6 +4,7 @@
 //! - [`decider`]: the triangles of cells whose ambiguous faces the asymptotic decider resolves.
 //! - [`interior`]: the joins inside a cell that MC33 makes (tunnels between loops).
 //! - [`reference`]: the CPU oracle every extractor must equal exactly.
+//! - [`kernel`]: the spheres' terms (kernel and blend), once, for every CPU path.
 //! - [`field`]: the field on the CPU as the passes evaluate it (bounds, rows of samples), in vectors
 //!   of four lanes where it can (`lanes`).
 //! - [`mesh`]: triangle meshes and the properties the tests hold them to.
@@ -13,6 +14,7 @@ pub mod cpu;
 pub mod decider;
 pub mod field;
 pub mod interior;
+pub mod kernel;
 mod lanes;
 pub mod mesh;
 pub mod reference;

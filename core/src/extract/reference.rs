@@ -3,15 +3,14 @@
 
 use crate::extract::decider::{MAX_DECIDED_TRIANGLES, decided_triangles, face_choices};
 use crate::extract::interior::interior_code;
+use crate::extract::kernel::Terms;
 use crate::extract::mesh::Mesh;
 use crate::extract::tables::{CORNER_OFFSETS, EDGE_CORNERS, EDGE_TABLE};
-use crate::scene::params::view::{Blend, CaseTable, Interpolation, March};
+use crate::scene::params::view::{CaseTable, Interpolation, March};
 use crate::scene::{BOX_HALF_EXTENT, Sphere};
 use glam::{UVec3, Vec3};
 
-/// Squared distances are clamped to this, so a grid point at a sphere's centre reads a huge but finite
-/// value. The GPU uses the same constant (`MIN_DISTANCE_SQUARED` in `shaders/common.wgsl`).
-pub const MIN_DISTANCE_SQUARED: f32 = 1e-20;
+pub use crate::extract::kernel::MIN_DISTANCE_SQUARED;
 
 /// The sampling grid over the box: `cells_per_axis` cells, `cells_per_axis + 1` points, along each axis.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -58,10 +57,11 @@ pub const EDGE_MARGIN: f32 = 1.0 / 1024.0;
 
 /// How the surface is built: where vertices land on edges, how the spheres' fields combine, and how
 /// marching cubes joins ambiguous faces.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Construction {
     pub interpolation: Interpolation,
-    pub blend: Blend,
+    /// The field: the spheres' kernel and how their terms combine.
+    pub terms: Terms,
     pub case_table: CaseTable,
     /// The step-through of the march: only the cells it has reached give triangles (`March`).
     pub march: Option<[u32; 3]>,
@@ -115,49 +115,52 @@ impl Construction {
 
 /// f(p) = Σ rᵢ² / |p − cᵢ|², summed in sphere order in `f32` like the GPU.
 pub fn field_at(spheres: &[Sphere], p: Vec3) -> f32 {
-    blended_field_at(spheres, p, Blend::Sum)
+    blended_field_at(spheres, p, Terms::default())
 }
 
-/// f(p) with the spheres' terms summed (subtractive ones with their sign) or, with `Blend::Max`, the
-/// largest adding term less the largest subtracting one.
-pub fn blended_field_at(spheres: &[Sphere], p: Vec3, blend: Blend) -> f32 {
+/// f(p) with the spheres' terms shaped by `terms`' kernel and summed (subtractive ones with their
+/// sign) or, with the blend by max, the largest adding term less the largest subtracting one.
+#[inline(never)]
+pub fn blended_field_at(spheres: &[Sphere], p: Vec3, terms: Terms) -> f32 {
     let (mut f, mut dent) = (0.0f32, 0.0f32);
     for s in spheres {
         let d = p - s.center;
-        let term = s.weight() / d.dot(d).max(MIN_DISTANCE_SQUARED);
-        match blend {
-            Blend::Sum => f += term,
-            Blend::Max if term < 0.0 => dent = dent.max(-term),
-            Blend::Max => f = f.max(term),
+        let size = terms.size(s.radius * s.radius, d.dot(d));
+        match (terms.by_max(), s.is_subtractive()) {
+            (false, false) => f += size,
+            (false, true) => f -= size,
+            (true, true) => dent = dent.max(size),
+            (true, false) => f = f.max(size),
         }
     }
     f - dent
 }
 
-/// −∇f / 2 = Σ chargeᵢ rᵢ² (p − cᵢ) / |p − cᵢ|⁴: it points out of the surface (the field falls
-/// outwards). With `Blend::Max`, the largest adding term's less the largest subtracting term's.
-pub fn outward_gradient(spheres: &[Sphere], p: Vec3, blend: Blend) -> Vec3 {
+/// −∇f / 2 = Σ chargeᵢ slopeᵢ (p − cᵢ) (for the inverse square, Σ chargeᵢ rᵢ² (p − cᵢ) / |p − cᵢ|⁴):
+/// it points out of the surface (the field falls outwards). With the blend by max, the largest adding
+/// term's less the largest subtracting term's.
+#[inline(never)]
+pub fn outward_gradient(spheres: &[Sphere], p: Vec3, terms: Terms) -> Vec3 {
     let (mut g, mut dent) = (Vec3::ZERO, Vec3::ZERO);
     let (mut largest, mut deepest) = (-1.0f32, -1.0f32);
     for s in spheres {
         let d = p - s.center;
-        let d2 = d.dot(d).max(MIN_DISTANCE_SQUARED);
-        let term = d * (s.weight() / (d2 * d2));
-        let value = s.radius * s.radius / d2;
-        match blend {
-            Blend::Sum => g += term,
-            Blend::Max if s.is_subtractive() => {
-                if value > deepest {
-                    deepest = value;
-                    dent = term;
-                }
+        let (r2, d2) = (s.radius * s.radius, d.dot(d));
+        let slope = terms.slope(r2, d2);
+        let term = d * if s.is_subtractive() { -slope } else { slope };
+        if !terms.by_max() {
+            g += term;
+            continue;
+        }
+        let value = terms.size(r2, d2);
+        if s.is_subtractive() {
+            if value > deepest {
+                deepest = value;
+                dent = term;
             }
-            Blend::Max => {
-                if value > largest {
-                    largest = value;
-                    g = term;
-                }
-            }
+        } else if value > largest {
+            largest = value;
+            g = term;
         }
     }
     g + dent
@@ -169,16 +172,16 @@ pub const NEWTON_STEPS: u32 = 8;
 /// The distance from `p` to the exact surface f = iso, in cells of `grid`, as `surface_distance` in
 /// `shaders/common.wgsl` measures it: Newton steps along the gradient, p ← p − (f(p) − iso) ∇f / |∇f|²,
 /// each at most a cell long; or to the box face the solid meets, where the face is its surface.
-pub fn surface_distance(spheres: &[Sphere], iso: f32, blend: Blend, p: Vec3, grid: Grid) -> f32 {
+pub fn surface_distance(spheres: &[Sphere], iso: f32, terms: Terms, p: Vec3, grid: Grid) -> f32 {
     let cell = grid.cell_size();
     let mut q = p;
     for _ in 0..NEWTON_STEPS {
-        let g = outward_gradient(spheres, q, blend);
+        let g = outward_gradient(spheres, q, terms);
         let g2 = g.dot(g);
         if g2 <= 0.0 {
             break;
         }
-        let mut step = (blended_field_at(spheres, q, blend) - iso) / (2.0 * g2) * g;
+        let mut step = (blended_field_at(spheres, q, terms) - iso) / (2.0 * g2) * g;
         let len = step.length();
         if len > cell {
             step *= cell / len;
@@ -199,7 +202,7 @@ pub fn surface_distance(spheres: &[Sphere], iso: f32, blend: Blend, p: Vec3, gri
     if p[axis] == 0.0 {
         wall[axis] = -BOX_HALF_EXTENT;
     }
-    if blended_field_at(spheres, wall, blend) >= iso {
+    if blended_field_at(spheres, wall, terms) >= iso {
         d = d.min(BOX_HALF_EXTENT - a[axis]);
     }
     d / cell
@@ -223,7 +226,7 @@ pub fn surface_vertex(
     } else if b_on_wall {
         (pb - pa).normalize()
     } else {
-        let g = outward_gradient(spheres, p, construction.blend);
+        let g = outward_gradient(spheres, p, construction.terms);
         g.try_normalize().unwrap_or(fallback.normalize())
     };
     (p, normal)
@@ -244,11 +247,11 @@ pub fn edge_point(
 
 /// Field values at every grid point, boundary points forced to 0 (outside).
 pub fn sample_field(spheres: &[Sphere], grid: Grid) -> Vec<f32> {
-    sample_blended_field(spheres, grid, Blend::Sum)
+    sample_blended_field(spheres, grid, Terms::default())
 }
 
-/// Field values at every grid point with `blend`, boundary points forced to 0 (outside).
-pub fn sample_blended_field(spheres: &[Sphere], grid: Grid, blend: Blend) -> Vec<f32> {
+/// Field values at every grid point with `terms`, boundary points forced to 0 (outside).
+pub fn sample_blended_field(spheres: &[Sphere], grid: Grid, terms: Terms) -> Vec<f32> {
     let n = grid.points_per_axis();
     let mut values = vec![0.0; (n as usize).pow(3)];
     for z in 0..n {
@@ -256,7 +259,7 @@ pub fn sample_blended_field(spheres: &[Sphere], grid: Grid, blend: Blend) -> Vec
             for x in 0..n {
                 let id = UVec3::new(x, y, z);
                 if !grid.is_boundary(id) {
-                    values[grid.point_index(id)] = blended_field_at(spheres, grid.point(id), blend);
+                    values[grid.point_index(id)] = blended_field_at(spheres, grid.point(id), terms);
                 }
             }
         }
@@ -273,7 +276,7 @@ pub fn extract(spheres: &[Sphere], iso: f32, grid: Grid) -> Mesh {
 
 /// `extract` with the vertex placement, blend, table and march of `construction`.
 pub fn extract_with(spheres: &[Sphere], iso: f32, grid: Grid, construction: Construction) -> Mesh {
-    let values = sample_blended_field(spheres, grid, construction.blend);
+    let values = sample_blended_field(spheres, grid, construction.terms);
     let mut mesh = Mesh::default();
     let n = grid.cells_per_axis;
     for z in 0..n {
@@ -319,7 +322,7 @@ pub fn extract_with(spheres: &[Sphere], iso: f32, grid: Grid, construction: Cons
 /// Where the ray from `origin` along unit `direction` first enters the solid {f > iso} ∩ box, by brute
 /// force: steps of a thousandth of the box, then bisection. `None` where it misses. The exact view's
 /// ray caster (`shaders/draw/views/exact.wgsl`) must agree with it.
-pub fn exact_hit(spheres: &[Sphere], iso: f32, blend: Blend, origin: Vec3, direction: Vec3) -> Option<f32> {
+pub fn exact_hit(spheres: &[Sphere], iso: f32, terms: Terms, origin: Vec3, direction: Vec3) -> Option<f32> {
     let h = BOX_HALF_EXTENT;
     let inv = direction.recip();
     let (a, b) = ((Vec3::splat(-h) - origin) * inv, (Vec3::splat(h) - origin) * inv);
@@ -327,7 +330,7 @@ pub fn exact_hit(spheres: &[Sphere], iso: f32, blend: Blend, origin: Vec3, direc
     if enter >= leave {
         return None;
     }
-    let inside = |t: f32| blended_field_at(spheres, origin + t * direction, blend) > iso;
+    let inside = |t: f32| blended_field_at(spheres, origin + t * direction, terms) > iso;
     if inside(enter) {
         return Some(enter);
     }

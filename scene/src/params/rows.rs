@@ -5,8 +5,8 @@
 
 use super::table::{Action, Field, Group, Kind, Parameter, Value, number, row};
 use super::view::{
-    Blend, CaseTable, ColorBy, Compare, Display, GridView, Interpolation, LIGHT_KINDS, Lights, March, MeshOn,
-    Method, Projection, Saddle, Slice, Theme,
+    Blend, CaseTable, ColorBy, Compare, Display, GridView, Interpolation, Kernel, LIGHT_KINDS, Lights, March,
+    MeshOn, Method, Projection, Saddle, Slice, Theme,
 };
 use super::{MAX_RESOLUTION, MAX_SPHERES, MIN_RESOLUTION, linear_to_srgb_hex, srgb_hex_to_linear};
 use super::{ParamError, ViewOptions};
@@ -144,6 +144,13 @@ pub const PARAMETERS: &[Parameter] = &[
         .group(Teaching)
         .renderer(word!(case_table: CaseTable)),
     row("blend", "Blend", Kind::Choice(Blend::WORDS), "sum").group(Teaching).renderer(word!(blend: Blend)),
+    row("kernel", "Kernel", Kind::Choice(Kernel::WORDS), "inverse_square")
+        .group(Teaching)
+        .renderer(word!(kernel: Kernel)),
+    number("blobbiness", "Blobbiness", "blobbiness", (0.25, 8.0), "2")
+        .slider(0.25, 8.0, 0.25)
+        .group(Teaching)
+        .renderer(real!(view: blobbiness)),
     row("saddle", "Saddles", Kind::Choice(Saddle::WORDS), "table")
         .group(Teaching)
         .compute()

@@ -105,6 +105,19 @@ choice!(
 );
 
 choice!(
+    /// The shape of each sphere's term in the field, as a function of the distance d from its centre;
+    /// every kernel is 1 at d = r, so a lone sphere's surface at iso 1 is the sphere itself.
+    Kernel {
+        /// r² / d²: infinite support, infinite at the centre.
+        InverseSquare = "inverse_square",
+        /// Blinn's blobby Gaussian, exp(B (1 − d² / r²)) with blobbiness B: infinite support.
+        Blinn = "blinn",
+        /// Wyvill's soft objects, 2 C(d / 2r): a polynomial in d² that is 0 from d = 2r on.
+        Wyvill = "wyvill",
+    }
+);
+
+choice!(
     /// Perspective or orthographic camera; the orthographic view keeps the perspective one's framing.
     Projection {
         Perspective = "perspective",
@@ -318,6 +331,10 @@ pub struct ViewOptions {
     /// How marching cubes joins ambiguous faces.
     pub case_table: CaseTable,
     pub blend: Blend,
+    /// The shape of each sphere's term.
+    pub kernel: Kernel,
+    /// With `Kernel::Blinn`, how fast a term falls off (Blinn's B; larger is less blobby).
+    pub blobbiness: f32,
     /// How the field slice's contour joins its saddle squares.
     pub saddle: Saddle,
     pub lights: Lights,
@@ -361,6 +378,8 @@ impl ViewOptions {
             interpolation: Interpolation::Linear,
             case_table: CaseTable::Classic,
             blend: Blend::Sum,
+            kernel: Kernel::InverseSquare,
+            blobbiness: 0.0,
             saddle: Saddle::Table,
             lights: Lights { point: false, directional: false, spot: false },
             spot_angle: 0.0,

@@ -48,19 +48,37 @@ fn box_span(ray: Ray, h: f32) -> vec2<f32> {
     return vec2<f32>(max(max(max(lo.x, lo.y), lo.z), 0.0), min(min(hi.x, hi.y), hi.z));
 }
 
-// An upper bound of |∇f| over the box around `centre` with half-diagonal `h`: Σ 2|wᵢ| / (dᵢ − h)³,
-// infinite where a sphere's centre may lie inside (the largest terms bound the blend by max too).
+// An upper bound of a term's |∇| beyond `gap` from its centre (`Terms::steepness_beyond` in
+// core/src/extract/kernel.rs): 2 r² / gap³ for the inverse square (huge where gap ≤ 0); for Blinn's, its
+// value at the gap or at its steepest point, r / √(2B), whichever is farther; for Wyvill's, its
+// steepest anywhere, 1.6 / r, or 0 beyond its support.
+fn term_steepness_beyond(r2: f32, gap: f32) -> f32 {
+    switch (kernel_index()) {
+        case 1u: {
+            let d = max(gap, sqrt(r2 / (2.0 * grid.blobbiness)));
+            return 2.0 * term(r2, d * d).y * d;
+        }
+        case 2u: {
+            return select(1.6 / sqrt(r2), 0.0, gap >= 2.0 * sqrt(r2));
+        }
+        default: {
+            if (gap <= 0.0) {
+                return 1e30;
+            }
+            return 2.0 * term(r2, gap * gap).y * gap;
+        }
+    }
+}
+
+// An upper bound of |∇f| over the box around `centre` with half-diagonal `h`: the sum of the terms'
+// (the largest terms bound the blend by max too).
 fn gradient_bound(centre: vec3<f32>, h: f32) -> f32 {
     var bound = 0.0;
     for (var i = 0u; i < grid.sphere_count; i++) {
         let s = spheres[i];
-        let gap = length(centre - s.xyz) - h;
-        if (gap <= 0.0) {
-            return 1e30;
-        }
-        bound += 2.0 * abs(weight(s)) / (gap * gap * gap);
+        bound += term_steepness_beyond(s.w * s.w, length(centre - s.xyz) - h);
     }
-    return bound;
+    return min(bound, 1e30);
 }
 
 fn inside_at(p: vec3<f32>) -> bool {

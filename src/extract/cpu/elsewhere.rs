@@ -4,21 +4,22 @@
 
 use super::{CpuMesher, CpuMeshing, DualContouringMesher, SurfaceNetsMesher};
 use crate::extract::extractor::{GivenMesh, Job};
+use crate::extract::kernel::Terms;
 use crate::extract::reference::{Construction, Grid};
 use crate::scene::Sphere;
 use crate::scene::decimal::num;
-use crate::scene::params::view::{Blend, CaseTable, Interpolation, Method};
+use crate::scene::params::view::{Blend, CaseTable, Interpolation, Kernel, Method};
 use glam::Vec3;
 
 /// Numbers before the spheres: method, iso level, cells per axis, interpolation, blend, case table.
-const HEAD: usize = 6;
+const HEAD: usize = 8;
 /// Numbers per sphere: centre, radius, charge.
 const PER_SPHERE: usize = 5;
 /// The finest grid a job may ask for (the largest a device holds without level of detail is smaller).
 const MAX_CELLS: f32 = 1024.0;
 
 /// `job` meshed by a mesher of `method`, as numbers: method, iso, cells per axis, interpolation,
-/// blend, case table, then centre, radius and charge of each sphere.
+/// blend, case table, kernel, blobbiness, then centre, radius and charge of each sphere.
 pub fn pack(method: Method, job: &Job) -> Vec<f32> {
     let construction = job.construction;
     let mut packed = Vec::with_capacity(HEAD + PER_SPHERE * job.spheres.len());
@@ -27,8 +28,10 @@ pub fn pack(method: Method, job: &Job) -> Vec<f32> {
         job.iso,
         job.grid.cells_per_axis as f32,
         construction.interpolation.index() as f32,
-        construction.blend.index() as f32,
+        construction.terms.blend.index() as f32,
         construction.case_table.index() as f32,
+        construction.terms.kernel.index() as f32,
+        construction.terms.blobbiness,
     ]);
     for s in job.spheres {
         packed.extend([s.center.x, s.center.y, s.center.z, s.radius, s.charge]);
@@ -136,12 +139,13 @@ fn unpack(packed: &[f32]) -> Result<Unpacked, String> {
             })
     };
     if packed.len() < HEAD || !(packed.len() - HEAD).is_multiple_of(PER_SPHERE) {
-        return Err(format!("a packed mesh job has {} numbers: 6 and then 5 per sphere", packed.len()));
+        return Err(format!("a packed mesh job has {} numbers: 8 and then 5 per sphere", packed.len()));
     }
     let method = Method::ALL[word(0, Method::WORDS)?];
     let interpolation = Interpolation::ALL[word(3, Interpolation::WORDS)?];
     let blend = Blend::ALL[word(4, Blend::WORDS)?];
     let case_table = CaseTable::ALL[word(5, CaseTable::WORDS)?];
+    let terms = Terms { blend, kernel: Kernel::ALL[word(6, Kernel::WORDS)?], blobbiness: packed[7] };
     let cells = packed[2];
     if !((1.0..=MAX_CELLS).contains(&cells) && cells.fract() == 0.0) {
         return Err(format!("a packed mesh job has {} cells per axis", num(cells)));
@@ -156,7 +160,7 @@ fn unpack(packed: &[f32]) -> Result<Unpacked, String> {
         })
         .collect();
     let grid = Grid { cells_per_axis: cells as u32 };
-    Ok((method, spheres, packed[1], grid, Construction { interpolation, blend, case_table, march: None }))
+    Ok((method, spheres, packed[1], grid, Construction { interpolation, terms, case_table, march: None }))
 }
 
 #[cfg(test)]
@@ -169,7 +173,7 @@ mod tests {
         let scene = Scene::new(7, 5).unwrap();
         let construction = Construction {
             interpolation: Interpolation::Linear,
-            blend: Blend::Sum,
+            terms: Terms { kernel: Kernel::Wyvill, ..Terms::default() },
             case_table: CaseTable::Decider,
             march: None,
         };

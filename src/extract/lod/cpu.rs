@@ -51,8 +51,8 @@ impl Extractor for LodCpuExtractor {
 
     fn prepare(&mut self, job: &Job) -> Option<Counters> {
         if let Some(eye) = eye_of(&mut self.frozen, job) {
-            let blend = job.construction.blend;
-            self.selection = select_for_surface(job.spheres, job.iso, blend, job.grid.cells_per_axis, &eye);
+            let terms = job.construction.terms;
+            self.selection = select_for_surface(job.spheres, job.iso, terms, job.grid.cells_per_axis, &eye);
         }
         self.mesher.mesh(job.spheres, job.iso, job.construction, &self.selection);
         let stats = self.mesher.stats();

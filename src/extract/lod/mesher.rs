@@ -14,7 +14,6 @@ use crate::extract::mesh::IndexedMesh;
 use crate::extract::reference::{self, Construction, Grid};
 use crate::extract::tables::{CASE_TRIANGLES, CORNER_OFFSETS, EDGE_CORNERS, EDGE_TABLE, TRI_TABLE};
 use crate::scene::Sphere;
-use crate::scene::params::view::Blend;
 use glam::UVec3;
 use rustc_hash::FxHashMap;
 
@@ -78,7 +77,7 @@ impl Frame<'_> {
         if self.grid.is_boundary(id) {
             0.0
         } else {
-            reference::blended_field_at(self.spheres, self.grid.point(id), self.construction.blend)
+            reference::blended_field_at(self.spheres, self.grid.point(id), self.construction.terms)
         }
     }
 }
@@ -139,8 +138,7 @@ impl LodMesher {
         let far = origin + UVec3::splat(width);
         let (low, high) = (frame.grid.point(origin), frame.grid.point(far));
         let walls = origin.min_element() == 0 || far.max_element() == n;
-        let by_max = frame.construction.blend == Blend::Max;
-        if !self.spheres.straddles(low, high, walls, frame.iso, by_max) {
+        if !self.spheres.straddles(low, high, walls, frame.iso, frame.construction.terms) {
             return;
         }
         self.stats.active_blocks += 1;
@@ -200,7 +198,7 @@ impl LodMesher {
                     row.fill(0.0);
                     continue;
                 }
-                sample_run(row, &self.xs, py, pz, &self.spheres, frame.construction.blend);
+                sample_run(row, &self.xs, py, pz, &self.spheres, frame.construction.terms);
                 if o.x == 0 {
                     row[0] = 0.0;
                 }

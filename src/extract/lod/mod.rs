@@ -21,8 +21,8 @@ pub use super::extractor::LodSummary;
 
 use super::extractor::Job;
 use super::field::Spheres;
+use super::kernel::Terms;
 use crate::scene::Sphere;
-use crate::scene::params::view::Blend;
 use select::{Eye, Selection};
 
 /// The eye `job` selects by: its own, kept in `frozen`, or while the selection is frozen (`lod_freeze`)
@@ -43,12 +43,11 @@ pub fn eye_of(frozen: &mut Option<Eye>, job: &Job) -> Option<Eye> {
 pub fn select_for_surface(
     spheres: &[Sphere],
     iso: f32,
-    blend: Blend,
+    terms: Terms,
     resolution: u32,
     eye: &Eye,
 ) -> Selection {
     let mut bounds = Spheres::default();
     bounds.set(spheres);
-    let by_max = blend == Blend::Max;
-    select::select(resolution, eye, &|low, high, walls| bounds.straddles(low, high, walls, iso, by_max))
+    select::select(resolution, eye, &|low, high, walls| bounds.straddles(low, high, walls, iso, terms))
 }

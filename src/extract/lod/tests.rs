@@ -4,9 +4,9 @@
 use super::mesher::{LodMesher, TRANSITION};
 use super::select::{BALANCED_RATIO, BLOCK_CELLS, Eye, Rule, Selection, select, select_by};
 use super::select_for_surface;
+use crate::extract::kernel::Terms;
 use crate::extract::mesh::Mesh;
 use crate::extract::reference::{self, Construction, Grid};
-use crate::scene::params::view::Blend;
 use crate::scene::{BOX_HALF_EXTENT, Scene};
 use glam::{UVec3, Vec3};
 
@@ -239,7 +239,7 @@ fn levels_from_distance_alone_differ_by_one_at_the_bound_and_not_always_below_it
 /// The LOD mesh of `scene` seen from `position` at `resolution`.
 fn lod_mesh(scene: &Scene, resolution: u32, position: Vec3, lod_pixels: f32) -> (LodMesher, Selection) {
     let eye = eye_at(position, lod_pixels);
-    let selection = select_for_surface(scene.spheres(), 1.0, Blend::Sum, resolution, &eye);
+    let selection = select_for_surface(scene.spheres(), 1.0, Terms::default(), resolution, &eye);
     let mut mesher = LodMesher::new();
     mesher.mesh(scene.spheres(), 1.0, Construction::default(), &selection);
     (mesher, selection)

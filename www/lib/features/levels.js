@@ -20,7 +20,7 @@ const EVERY_MS = 300;
 const MARK = { 3: '▲', 2: '◆', 1: '●', 0: '▼' };
 
 export class IsoLevels {
-  static attributes = ['critical', 'levels'];
+  static attributes = ['critical', 'levels', 'kernel', 'blend'];
   #ctx;
   #result = null;
   #packed = null;
@@ -43,8 +43,18 @@ export class IsoLevels {
   get latest() { return this.#result; }
 
   changed(name) {
-    if (name === 'levels') this.#showBox();
+    if (name === 'levels' || (this.#open && (name === 'kernel' || name === 'blend'))) this.#showBox();
+    if (!this.#serves()) this.#showHud();
     this.#ctx.redraw(2);
+  }
+
+  /**
+   * The search proves the critical points of the sum of inverse squares only: another kernel or the
+   * blend by max is said so rather than shown with that field's points.
+   */
+  #serves() {
+    const s = this.#ctx.state;
+    return (s.kernel ?? 'inverse_square') === 'inverse_square' && s.blend !== 'max';
   }
 
   connected() { this.#showBox(); }
@@ -53,7 +63,7 @@ export class IsoLevels {
 
   #wanted() {
     const s = this.#ctx.state;
-    return this.#open || on(s.critical) || (s['pause-on'] === 'merge' && !s.paused);
+    return this.#serves() && (this.#open || on(s.critical) || (s['pause-on'] === 'merge' && !s.paused));
   }
 
   holds() {
@@ -106,7 +116,7 @@ export class IsoLevels {
       this.#ctx.each('announce', words.t(join ? 'critical.merge-paused-at' : 'critical.merge-paused', fields));
     }
     this.#showHud();
-    if (this.#open) this.#drawPanel();
+    if (this.#open && this.#serves()) this.#drawPanel();
     this.#ctx.redraw(1);
   }
 
@@ -124,6 +134,13 @@ export class IsoLevels {
     const $ = (id) => this.#ctx.$(id);
     if (!$('hud-field')) return;
     const iso = Number(this.#ctx.state.iso);
+    const s = this.#ctx.state;
+    if (!this.#serves() && (this.#open || on(s.critical))) {
+      $('hud-field').hidden = false;
+      $('hud-field-warning').hidden = true;
+      $('hud-field-text').textContent = this.#ctx.words.t('levels.unserved');
+      return;
+    }
     // Only while a search follows the spheres (an older result is of spheres that have moved on).
     const counts = this.#result && this.#wanted() ? countsAt(this.#result, iso) : null;
     if (!counts) {
@@ -146,7 +163,7 @@ export class IsoLevels {
   language(words) {
     this.#showHud();
     if (this.#said && this.#panel) this.#panel.textContent = words.t(...this.#said);
-    if (this.#open && this.#result) {
+    if (this.#open && this.#result && this.#serves()) {
       this.#plot = null;
       this.#drawPanel();
     }
@@ -155,7 +172,7 @@ export class IsoLevels {
   // ------------------------------------------------------------------ markers over the figure
 
   afterTick() {
-    if (!on(this.#ctx.state.critical) || !this.#result || !this.#ctx.view) {
+    if (!on(this.#ctx.state.critical) || !this.#result || !this.#ctx.view || !this.#serves()) {
       if (this.#marks) this.#marks.hidden = true;
       return;
     }
@@ -220,6 +237,11 @@ export class IsoLevels {
     // (The panel behind the box takes no focus while the box covers it: FigureSheets.)
     box.hidden = false;
     this.#measures = null;
+    if (!this.#serves()) {
+      this.#plot = null;
+      this.#say('levels.unserved');
+      return;
+    }
     const packed = this.#spheres();
     if (packed) {
       this.#search(packed).catch((error) => this.#say('levels.stopped', { reason: error?.message ?? String(error) }));
@@ -235,7 +257,7 @@ export class IsoLevels {
   }
 
   refresh() {
-    if (this.#open && this.#result) this.#drawPanel();
+    if (this.#open && this.#result && this.#serves()) this.#drawPanel();
     this.#showHud();
   }
 

@@ -19,7 +19,7 @@ export function sliceSource(view) {
   // The plane as the 3D figure rounds it to its grid.
   const plane = Math.min(cells, Math.round((Number(position) + 1) * 0.5 * cells));
   return {
-    values: sampleSlice(view.sphereList, cells, axis, plane, view.blend), cells, iso: Number(view.iso),
+    values: sampleSlice(view.sphereList, cells, axis, plane, view.blend, view.kernel, Number(view.blobbiness)), cells, iso: Number(view.iso),
     options: { placement: view.interpolation, saddle: view.saddle }, circles: [],
   };
 }
@@ -27,5 +27,5 @@ export function sliceSource(view) {
 /** What the samples of `view`'s slice depend on, as text. */
 export function sliceKey(view) {
   const spheres = view.sphereList.map((b) => [...b.center, b.radius, b.charge].join(',')).join(';');
-  return [spheres, view.slice, view.resolution, view.iso, view.saddle, view.interpolation, view.blend].join('|');
+  return [spheres, view.slice, view.resolution, view.iso, view.saddle, view.interpolation, view.blend, view.kernel, view.blobbiness].join('|');
 }

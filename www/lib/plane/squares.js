@@ -97,13 +97,27 @@ export function sampleField(circles, cells) {
 }
 
 /**
+ * A term's size at squared distance `d2` from a sphere of radius² `r2` with `kernel` (and Blinn's
+ * `blobbiness`), as `Terms::size` in core/src/extract/kernel.rs.
+ */
+export function termSize(kernel, r2, d2, blobbiness = 2) {
+  if (kernel === 'blinn') return Math.exp(blobbiness * (1 - d2 / r2));
+  if (kernel === 'wyvill') {
+    const t = Math.max(1 - d2 / (4 * r2), 0);
+    return (2 / 9) * t * t * (5 + 4 * t);
+  }
+  return r2 / Math.max(d2, 1e-20);
+}
+
+/**
  * The samples of a 3D figure's slice plane: the field of `spheres` (`{ center: [x, y, z], radius,
- * charge }`, summed, or with `blend` 'max' the largest adding term less the largest subtracting one) at
+ * charge }`, each term shaped by `kernel` (`termSize`), summed, or with `blend` 'max' the largest
+ * adding term less the largest subtracting one) at
  * the grid points of the plane `plane` (0..cells) across `axis` (0 x, 1 y, 2 z) of the figure's grid of
  * `cells` per axis, as `<metaballs-view>` samples them: point (i, j) lies along the next axis after the
  * slice's (i) and the one after that (j); points on the box's faces read 0.
  */
-export function sampleSlice(spheres, cells, axis, plane, blend = 'sum') {
+export function sampleSlice(spheres, cells, axis, plane, blend = 'sum', kernel = 'inverse_square', blobbiness = 2) {
   const n = cells + 1;
   const values = new Float64Array(n * n);
   if (plane === 0 || plane === cells) return values;
@@ -118,10 +132,11 @@ export function sampleSlice(spheres, cells, axis, plane, blend = 'sum') {
       let dent = 0;
       for (const s of spheres) {
         const d = (p[0] - s.center[0]) ** 2 + (p[1] - s.center[1]) ** 2 + (p[2] - s.center[2]) ** 2;
-        const term = (s.charge ?? 1) * s.radius * s.radius / Math.max(d, 1e-20);
-        if (blend !== 'max') f += term;
-        else if (term < 0) dent = Math.max(dent, -term);
-        else f = Math.max(f, term);
+        const size = termSize(kernel, s.radius * s.radius, d, blobbiness);
+        const subtracting = (s.charge ?? 1) < 0;
+        if (blend !== 'max') f += subtracting ? -size : size;
+        else if (subtracting) dent = Math.max(dent, size);
+        else f = Math.max(f, size);
       }
       values[j * n + i] = f - dent;
     }

@@ -4,6 +4,7 @@
 //! the fine groups kept is bounded on its own, then again over its box.
 
 use crate::extract::field::{BLOCK_CELLS, Ball, Spheres, block_ball, block_box, group_ball};
+use crate::extract::kernel::Terms;
 use std::ops::Range;
 
 /// Blocks per side of the fine groups bounded before their blocks, and fine groups per side of the
@@ -25,24 +26,24 @@ pub struct Blocks {
 }
 
 /// Keeps of `balls` (each with a key) those over which the field's bounds straddle the iso level
-/// (`by_max`: with blend by max), in order.
-fn keep_straddling(spheres: &Spheres, (iso, by_max): (f32, bool), balls: &mut Vec<(u32, Ball)>) {
-    balls.retain(|(_, b)| spheres.ball_straddles(b.centre, b.h, b.touches_walls, iso, by_max));
+/// (with the spheres' `terms`), in order.
+fn keep_straddling(spheres: &Spheres, (iso, terms): (f32, Terms), balls: &mut Vec<(u32, Ball)>) {
+    balls.retain(|(_, b)| spheres.ball_straddles(b.centre, b.h, b.touches_walls, iso, terms));
 }
 
 impl Blocks {
     /// Keeps the blocks of the layers `layers` of blocks of an `n`³ grid with point coordinates
-    /// `coords` that may hold the surface f = `iso` (`by_max`: with blend by max), and lists them by
+    /// `coords` that may hold the surface f = `iso` (with the spheres' `terms`), and lists them by
     /// layer (the other layers' lists are left empty). Returns how many it kept.
     pub fn classify(
         &mut self,
         spheres: &Spheres,
         coords: &[f32],
-        bounds: (f32, bool),
+        bounds: (f32, Terms),
         n: u32,
         layers: Range<u32>,
     ) -> u32 {
-        let (iso, by_max) = bounds;
+        let (iso, terms) = bounds;
         let nb = n.div_ceil(BLOCK_CELLS);
         let ng = nb.div_ceil(GROUP_BLOCKS);
         let nc = ng.div_ceil(GROUP_BLOCKS);
@@ -97,7 +98,7 @@ impl Blocks {
             layer.extend(self.balls.iter().map(|&(key, _)| (key & 0xffff, key >> 16)));
             // Of the blocks kept, those whose box's tighter bounds keep every point on one side are
             // passed over: no cell of theirs is crossed, and their points need no field values.
-            layer.retain(|&(bx, by)| spheres.box_straddles(block_box(coords, [bx, by, bz], n), iso, by_max));
+            layer.retain(|&(bx, by)| spheres.box_straddles(block_box(coords, [bx, by, bz], n), iso, terms));
         }
         active
     }
@@ -107,12 +108,12 @@ impl Blocks {
 mod tests {
     use super::*;
     use crate::extract::field::tests::mixed_spheres;
+    use crate::extract::kernel::Terms;
     use crate::extract::reference::{self, Grid};
     use crate::scene::BOX_HALF_EXTENT;
-    use crate::scene::params::view::Blend;
 
     /// Every block left out of the layers (by its groups', its ball's or its box's bounds) holds no
-    /// cell the oracle's field crosses, with adding and subtracting spheres, both blends, and iso levels
+    /// cell the oracle's field crosses, with adding and subtracting spheres, every kernel and blend, and iso levels
     /// near and far from the spheres' values; and the box's bounds leave out some blocks the ball's
     /// keep.
     #[test]
@@ -126,12 +127,11 @@ mod tests {
             let coords: Vec<f32> = (0..=n).map(|i| -BOX_HALF_EXTENT + i as f32 * grid.cell_size()).collect();
             let nb = n.div_ceil(BLOCK_CELLS);
             for iso in [0.05, 0.4, 1.0, 3.0] {
-                for blend in [Blend::Sum, Blend::Max] {
-                    let by_max = blend == Blend::Max;
-                    let active = blocks.classify(&s, &coords, (iso, by_max), n, 0..nb);
+                for terms in Terms::every() {
+                    let active = blocks.classify(&s, &coords, (iso, terms), n, 0..nb);
                     let kept: usize = blocks.layers.iter().map(Vec::len).sum();
                     left_out_by_boxes += active as usize - kept;
-                    let values = reference::sample_blended_field(&spheres, grid, blend);
+                    let values = reference::sample_blended_field(&spheres, grid, terms);
                     for bz in 0..nb {
                         for (by, bx) in (0..nb).flat_map(|by| (0..nb).map(move |bx| (by, bx))) {
                             if blocks.layers[bz as usize].contains(&(bx, by)) {
@@ -150,7 +150,7 @@ mod tests {
                             }
                             assert!(
                                 !(sides[0] && sides[1]),
-                                "seed {seed}, {n} cells, iso {iso}, {blend:?}: block {:?} is crossed",
+                                "seed {seed}, {n} cells, iso {iso}, {terms:?}: block {:?} is crossed",
                                 [bx, by, bz]
                             );
                         }

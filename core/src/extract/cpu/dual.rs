@@ -197,12 +197,11 @@ impl Dual {
     /// The blocks whose field bounds straddle `iso`, as every extractor keeps them.
     fn keep_blocks(&mut self, iso: f32, n: u32, construction: Construction) {
         let nb = n.div_ceil(BLOCK_CELLS);
-        let by_max = construction.blend == crate::scene::params::view::Blend::Max;
         self.kept.clear();
         for bz in 0..nb {
             for by in 0..nb {
                 for bx in 0..nb {
-                    if self.spheres.block_straddles(&self.coords, [bx, by, bz], n, iso, by_max) {
+                    if self.spheres.block_straddles(&self.coords, [bx, by, bz], n, iso, construction.terms) {
                         self.kept.push([bx, by, bz]);
                     }
                 }
@@ -224,7 +223,7 @@ impl Dual {
                     continue;
                 }
                 let (py, pz) = (self.coords[y as usize], self.coords[z as usize]);
-                sample_run(run, &self.coords[x0..=x1], py, pz, &self.spheres, construction.blend);
+                sample_run(run, &self.coords[x0..=x1], py, pz, &self.spheres, construction.terms);
                 if x0 == 0 {
                     run[0] = 0.0;
                 }
@@ -425,16 +424,16 @@ mod tests {
             Sphere::from_signed(Vec3::new(0.0, 0.3, 0.1), -0.2, Vec3::ZERO),
         ];
         let grid = Grid { cells_per_axis: 20 };
-        for blend in [crate::scene::params::view::Blend::Sum, crate::scene::params::view::Blend::Max] {
+        for terms in crate::extract::kernel::Terms::every() {
             let mut mesher = DualContouringMesher::default();
-            mesher.mesh(&spheres, 1.0, grid, Construction { blend, ..Construction::default() });
+            mesher.mesh(&spheres, 1.0, grid, Construction { terms, ..Construction::default() });
             assert_eq!(mesher.placed.len(), mesher.crossed.len());
             let cell = grid.cell_size();
             for (k, c) in mesher.crossed.iter().enumerate() {
                 let p = Vec3::from_slice(&mesher.vertices[6 * k..6 * k + 3]);
                 let low = Vec3::from_array(c.map(|i| mesher.coords[i as usize]));
                 let out = (low - p).max(p - low - cell).max_element() / cell;
-                assert!(out <= SLACK + 1e-4, "{blend:?}: vertex {k} {out} cells out of its cell");
+                assert!(out <= SLACK + 1e-4, "{terms:?}: vertex {k} {out} cells out of its cell");
                 assert!((1..=3).contains(&(mesher.placed[k] & 3)));
             }
             assert!(mesher.to_indexed().shape().closed);

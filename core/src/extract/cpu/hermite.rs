@@ -24,7 +24,7 @@ pub fn hermite(
     if construction.interpolation == Interpolation::Midpoint || a.2 || b.2 {
         return reference::surface_vertex(spheres, iso, construction, a, b);
     }
-    let at = |t: f32| blended_field_at(spheres, a.0 + (b.0 - a.0) * t, construction.blend) - iso;
+    let at = |t: f32| blended_field_at(spheres, a.0 + (b.0 - a.0) * t, construction.terms) - iso;
     let (mut t0, mut g0, mut t1, mut g1) = (0.0f32, a.1 - iso, 1.0f32, b.1 - iso);
     let mut t = construction.edge_parameter(iso, a.1, b.1);
     // Which end the last step replaced: when the same end is replaced twice running, the other end's
@@ -57,6 +57,6 @@ pub fn hermite(
     }
     let p = a.0 + (b.0 - a.0) * t.clamp(reference::EDGE_MARGIN, 1.0 - reference::EDGE_MARGIN);
     let outward = if a.1 > iso { b.0 - a.0 } else { a.0 - b.0 };
-    let gradient = reference::outward_gradient(spheres, p, construction.blend);
+    let gradient = reference::outward_gradient(spheres, p, construction.terms);
     (p, gradient.try_normalize().unwrap_or(outward.normalize()))
 }

@@ -20,10 +20,11 @@ use crate::extract::decider::{
 };
 use crate::extract::field::{BLOCK_CELLS, Spheres};
 use crate::extract::interior::interior_code;
+use crate::extract::kernel::Terms;
 use crate::extract::mesh::IndexedMesh;
 use crate::extract::reference::{Construction, Grid};
 use crate::extract::tables::EDGE_TABLE;
-use crate::scene::params::view::{Blend, March};
+use crate::scene::params::view::March;
 use crate::scene::{BOX_HALF_EXTENT, Sphere};
 use std::ops::Range;
 
@@ -148,7 +149,7 @@ impl CpuMesher {
         let n = grid.cells_per_axis;
         self.prepare(spheres, grid);
         let block_layers = layers.start / BLOCK_CELLS..layers.end.div_ceil(BLOCK_CELLS);
-        self.classify_blocks(iso, n, construction.blend, block_layers);
+        self.classify_blocks(iso, n, construction.terms, block_layers);
         self.edges.start(n);
         self.planes.resize(n);
         self.vertices.clear();
@@ -156,10 +157,10 @@ impl CpuMesher {
         self.decided.clear();
         self.stats.active_cells = 0;
         let mut planes = std::mem::take(&mut self.planes);
-        let blend = construction.blend;
-        planes.sample(layers.start, &self.sweep(n, iso, blend));
+        let terms = construction.terms;
+        planes.sample(layers.start, &self.sweep(n, iso, terms));
         for z in layers {
-            planes.sample(z + 1, &self.sweep(n, iso, blend));
+            planes.sample(z + 1, &self.sweep(n, iso, terms));
             self.march_layer(&planes, z, iso, grid, construction);
             let field = Field { n, iso, construction, coords: &self.coords, spheres, arrays: &self.spheres };
             self.edges.place(&planes, &field, &mut self.vertices);
@@ -169,11 +170,11 @@ impl CpuMesher {
     }
 
     /// What sampling a plane reads.
-    fn sweep(&self, n: u32, iso: f32, blend: Blend) -> Sweep<'_> {
+    fn sweep(&self, n: u32, iso: f32, terms: Terms) -> Sweep<'_> {
         Sweep {
             n,
             iso,
-            blend,
+            terms,
             coords: &self.coords,
             spheres: &self.spheres,
             layer_blocks: &self.blocks.layers,
@@ -189,8 +190,8 @@ impl CpuMesher {
 
     /// Keeps the blocks whose field bounds straddle `iso`, as `classify_blocks` in
     /// `shaders/extract/blocks.wgsl` does, and lists them by layer.
-    fn classify_blocks(&mut self, iso: f32, n: u32, blend: Blend, layers: Range<u32>) {
-        let bounds = (iso, blend == Blend::Max);
+    fn classify_blocks(&mut self, iso: f32, n: u32, terms: Terms, layers: Range<u32>) {
+        let bounds = (iso, terms);
         self.stats.active_blocks = self.blocks.classify(&self.spheres, &self.coords, bounds, n, layers);
         self.stats.total_blocks = n.div_ceil(BLOCK_CELLS).pow(3);
     }

@@ -4,7 +4,7 @@
 
 use crate::extract::field::{BLOCK_CELLS, Spheres, sample_run};
 
-use crate::scene::params::view::Blend;
+use crate::extract::kernel::Terms;
 
 /// The inside bits of a block's row of points where all five lie inside.
 pub const ALL_INSIDE: u8 = (1 << (BLOCK_CELLS + 1)) - 1;
@@ -31,7 +31,7 @@ fn sized<T: Copy + Default>(v: &mut Vec<T>, len: usize) {
 pub struct Sweep<'a> {
     pub n: u32,
     pub iso: f32,
-    pub blend: Blend,
+    pub terms: Terms,
     /// Coordinate of grid point `i` along any axis.
     pub coords: &'a [f32],
     pub spheres: &'a Spheres,
@@ -99,7 +99,7 @@ impl Planes {
                         run.fill(0.0);
                     } else {
                         let (xs, py) = (&sweep.coords[x0..=x1], sweep.coords[y as usize]);
-                        sample_run(run, xs, py, pz, sweep.spheres, sweep.blend);
+                        sample_run(run, xs, py, pz, sweep.spheres, sweep.terms);
                         if x0 == 0 {
                             run[0] = 0.0;
                         }

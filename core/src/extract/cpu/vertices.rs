@@ -6,9 +6,9 @@
 use crate::extract::cpu::normals::PendingNormals;
 use crate::extract::cpu::planes::Planes;
 use crate::extract::field::Spheres;
+use crate::extract::kernel::Terms;
 use crate::extract::reference::{self, Construction};
 use crate::scene::Sphere;
-use crate::scene::params::view::Blend;
 use glam::Vec3;
 
 /// Edge `e` of a cell starts at this corner offset and runs along this axis (`EDGE_CORNERS` in
@@ -131,7 +131,8 @@ impl EdgeVertices {
     pub fn place(&mut self, planes: &Planes, field: &Field, vertices: &mut Vec<f32>) {
         let (n, iso, construction) = (field.n, field.iso, field.construction);
         let width = self.width;
-        let by_sum = construction.blend == Blend::Sum;
+        // The batched gradients sum inverse squares; other terms take the oracle's own.
+        let by_sum = construction.terms == Terms::default();
         for &[x, y, z, edge] in &self.fresh[..self.fresh_count] {
             let id = (vertices.len() / 6) as u32;
             let (offset, axis) = EDGE_START[edge as usize];

@@ -66,6 +66,7 @@ export default {
   'levels.close-title': 'Schließen (levels=false)',
   'levels.finding': 'Die kritischen Punkte werden gesucht…',
   'levels.stopped': 'Die Suche wurde abgebrochen: {reason}',
+  'levels.unserved': 'Kritische Punkte und der Verschmelzungsbaum werden (mit Beweis) nur für die summierte Kernfunktion inverses Quadrat gefunden; kernel=inverse_square und blend=sum zeigen sie.',
   'levels.points-proved': { one: '{count} kritischer Punkt (nachweislich alle gefunden, {ms} ms).', other: '{count} kritische Punkte (nachweislich alle gefunden, {ms} ms).' },
   'levels.points-unproved': { one: '{count} kritischer Punkt (die Suche hat womöglich welche übersehen, {ms} ms).', other: '{count} kritische Punkte (die Suche hat womöglich welche übersehen, {ms} ms).' },
   'levels.at-iso': 'Bei Isowert {iso}: {blobs}, {cavities}, Geschlecht {genus}.',

@@ -94,6 +94,7 @@ export default {
   'levels.close-title': 'Close (levels=false)',
   'levels.finding': 'Finding the critical points…',
   'levels.stopped': 'The search stopped: {reason}',
+  'levels.unserved': 'Critical points and the merge tree are found, with proof, for the inverse-square kernel summed only; set kernel=inverse_square and blend=sum to see them.',
   'levels.points-proved': {
     one: '{count} critical point (all found, with proof, {ms} ms).',
     other: '{count} critical points (all found, with proof, {ms} ms).',

@@ -66,6 +66,7 @@ export default {
   'levels.close-title': 'Cerrar (levels=false)',
   'levels.finding': 'Buscando los puntos críticos…',
   'levels.stopped': 'La búsqueda se detuvo: {reason}',
+  'levels.unserved': 'Los puntos críticos y el árbol de fusión se hallan, con prueba, solo para el núcleo de cuadrado inverso sumado; usa kernel=inverse_square y blend=sum para verlos.',
   'levels.points-proved': { one: '{count} punto crítico (todos encontrados, con demostración, {ms} ms).', many: '{count} de puntos críticos (todos encontrados, con demostración, {ms} ms).', other: '{count} puntos críticos (todos encontrados, con demostración, {ms} ms).' },
   'levels.points-unproved': { one: '{count} punto crítico (puede que la búsqueda haya omitido alguno, {ms} ms).', many: '{count} de puntos críticos (puede que la búsqueda haya omitido alguno, {ms} ms).', other: '{count} puntos críticos (puede que la búsqueda haya omitido alguno, {ms} ms).' },
   'levels.at-iso': 'Con isovalor {iso}: {blobs}, {cavities}, género {genus}.',

@@ -66,6 +66,7 @@ export default {
   'levels.close-title': 'Fermer (levels=false)',
   'levels.finding': 'Recherche des points critiques…',
   'levels.stopped': 'La recherche s’est arrêtée : {reason}',
+  'levels.unserved': 'Les points critiques et l’arbre de fusion ne sont trouvés, avec preuve, que pour le noyau inverse du carré sommé ; kernel=inverse_square et blend=sum les montrent.',
   'levels.points-proved': { one: '{count} point critique (liste complète, prouvée, {ms} ms).', many: '{count} points critiques (liste complète, prouvée, {ms} ms).', other: '{count} points critiques (liste complète, prouvée, {ms} ms).' },
   'levels.points-unproved': { one: '{count} point critique (la recherche a pu en manquer, {ms} ms).', many: '{count} points critiques (la recherche a pu en manquer, {ms} ms).', other: '{count} points critiques (la recherche a pu en manquer, {ms} ms).' },
   'levels.at-iso': 'À iso {iso} : {blobs}, {cavities}, genre {genus}.',

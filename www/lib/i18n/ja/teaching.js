@@ -66,6 +66,7 @@ export default {
   'levels.close-title': '閉じる（levels=false）',
   'levels.finding': '臨界点を探しています…',
   'levels.stopped': '探索が停止しました：{reason}',
+  'levels.unserved': '臨界点と併合木は、逆二乗カーネルの和に対してのみ証明付きで求められます。kernel=inverse_square と blend=sum にすると表示されます。',
   'levels.points-proved': { other: '臨界点 {count} 個（証明付きですべて発見、{ms} ms）。' },
   'levels.points-unproved': { other: '臨界点 {count} 個（見落としがある可能性があります、{ms} ms）。' },
   'levels.at-iso': '等値レベル {iso} での塊と空洞：{blobs}、{cavities}、種数 {genus}。',

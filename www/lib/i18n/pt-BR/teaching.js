@@ -66,6 +66,7 @@ export default {
   'levels.close-title': 'Fechar (levels=false)',
   'levels.finding': 'Buscando os pontos críticos…',
   'levels.stopped': 'A busca parou: {reason}',
+  'levels.unserved': 'Os pontos críticos e a árvore de fusão são encontrados, com prova, só para o núcleo inverso do quadrado somado; use kernel=inverse_square e blend=sum para vê-los.',
   'levels.points-proved': { one: '{count} ponto crítico (todos encontrados, com prova, {ms} ms).', many: '{count} pontos críticos (todos encontrados, com prova, {ms} ms).', other: '{count} pontos críticos (todos encontrados, com prova, {ms} ms).' },
   'levels.points-unproved': { one: '{count} ponto crítico (a busca pode ter deixado passar alguns, {ms} ms).', many: '{count} pontos críticos (a busca pode ter deixado passar alguns, {ms} ms).', other: '{count} pontos críticos (a busca pode ter deixado passar alguns, {ms} ms).' },
   'levels.at-iso': 'Em iso {iso}: {blobs}, {cavities}, gênero {genus}.',

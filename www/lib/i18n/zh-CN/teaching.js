@@ -66,6 +66,7 @@ export default {
   'levels.close-title': '关闭（levels=false）',
   'levels.finding': '正在查找临界点…',
   'levels.stopped': '搜索已停止：{reason}',
+  'levels.unserved': '临界点和合并树只对求和的平方反比核函数给出（附证明）；设 kernel=inverse_square 和 blend=sum 即可查看。',
   'levels.points-proved': { other: '{count} 个临界点（已全部找到，有证明，{ms} ms）。' },
   'levels.points-unproved': { other: '{count} 个临界点（搜索可能有遗漏，{ms} ms）。' },
   'levels.at-iso': '等值 {iso} 时的团块与空腔：{blobs}，{cavities}；亏格 {genus}。',
