@@ -2,8 +2,8 @@
 // (www/lib/engine/slabs.js): run here in Node on the page's own WebAssembly build, the joined mesh is
 // the mesh one worker makes of the whole grid (`mesh_job`) number for number — the same vertices in
 // the same order, the same triangles, so the same count, closed by position, the same area and volume
-// — on seeded scenes (adding and subtracting spheres, both blends, the three case tables, spheres
-// against the walls), cut into two, three and four slabs, seams included; slabs cover the grid in
+// — on seeded scenes (adding and subtracting spheres, both blends, the three case tables and kernels,
+// spheres against the walls), cut into two, three and four slabs, seams included; slabs cover the grid in
 // whole blocks; slabs that do not fit are refused.
 
 import { test } from 'node:test';
@@ -25,13 +25,13 @@ function random(seed) {
   };
 }
 
-// A packed marching-cubes job (`View.cpu_job`): method, iso, cells, interpolation, blend, table, then
-// centre, radius and charge of each sphere.
+// A packed marching-cubes job (`View.cpu_job`): method, iso, cells, interpolation, blend, table,
+// kernel, blobbiness, then centre, radius and charge of each sphere.
 function job(seed) {
   const next = random(seed);
   const count = 1 + Math.floor(next() * 24);
   const cells = [16, 29, 32, 64, 96, 128][seed % 6];
-  const head = [0, 0.5 + next() * 1.5, cells, seed % 2, (seed >> 1) % 2, seed % 3];
+  const head = [0, 0.5 + next() * 1.5, cells, seed % 2, (seed >> 1) % 2, seed % 3, Math.floor(seed / 3) % 3, 2];
   const spheres = Array.from({ length: count }, (_, i) => [
     next() * 1.8 - 0.9, next() * 1.8 - 0.9, next() * 1.8 - 0.9, 0.1 + next() * 0.35, i % 4 === 3 ? -1 : 1,
   ]);

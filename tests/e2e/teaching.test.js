@@ -97,6 +97,25 @@ test('each teaching control changes the picture, keeps the triangles, and its li
   await again.selectOption('#blend', 'max');
   assert.notEqual(await waitForTriangles(again, merged), merged, 'blend by max separates the spheres');
   await again.waitForFunction(() => location.search.includes('blend=max'));
+  // Another kernel is another field: from the panel (Wyvill's soft objects), as an attribute (Blinn's
+  // Gaussian, then a blobbiness), each a different surface that the link keeps; the critical points
+  // say they serve the inverse-square sum only rather than show another field's.
+  await again.selectOption('#blend', 'sum');
+  // At iso 0.5 the kernels' surfaces lie far apart (at iso 1 a lone sphere is the same for every kernel).
+  await again.$eval('metaballs-view', (e) => e.setAttribute('iso', '0.5'));
+  const summed = await waitForTriangles(again, merged).then(() => settledTriangles(again));
+  await again.selectOption('#kernel', 'wyvill');
+  const soft = await waitForTriangles(again, summed);
+  await again.waitForFunction(() => location.search.includes('kernel=wyvill'));
+  await again.$eval('metaballs-view', (e) => e.setAttribute('kernel', 'blinn'));
+  const blobby = await waitForTriangles(again, soft);
+  await again.$eval('metaballs-view', (e) => e.setAttribute('blobbiness', '6'));
+  await waitForTriangles(again, blobby);
+  assert.deepEqual(await again.evaluate(() => [window.metaballs.element.kernel, window.metaballs.element.blobbiness]), ['blinn', 6]);
+  await again.waitForFunction(() => location.search.includes('kernel=blinn') && location.search.includes('blobbiness=6'));
+  await again.$eval('metaballs-view', (e) => e.setAttribute('critical', 'true'));
+  await again.waitForFunction(() => document.querySelector('metaballs-view').shadowRoot.getElementById('hud-field-text')?.textContent.includes('inverse-square'));
+  console.log(`kernels at iso 0.5: ${summed} triangles summing inverse squares, ${soft} with Wyvill's, ${blobby} with Blinn's`);
   assert.deepEqual(errors, []);
   assert.deepEqual(againErrors, []);
   await page.close();
