@@ -145,3 +145,26 @@ test('the lecture compares marching cubes, surface nets and dual contouring on o
   await shot('lecture-creases-rank');
   assert.deepEqual(errors, []);
 });
+
+test('the lecture compares the kernels on the same spheres, each measured against its own exact surface', async () => {
+  const { page, errors } = await open('www/examples/lecture.html');
+  const figures = '#kernels metaballs-view';
+  await page.$eval('#kernels', (e) => e.scrollIntoView());
+  await page.waitForFunction((sel) => [...document.querySelectorAll(sel)].every((e) => e.stats.triangles > 0 && e.stats.error),
+    figures, { timeout: 60000 });
+  await page.locator('#kernels').screenshot({ path: path.join(outputDir, 'e2e-lecture-kernels.png') });
+  const stats = await page.$$eval(figures, (es) => es.map((e) => ({
+    kernel: e.kernel, triangles: e.stats.triangles, max: e.stats.error.max, rms: e.stats.error.rms,
+  })));
+  console.log(`kernels: ${JSON.stringify(stats)}`);
+  assert.deepEqual(stats.map((s) => s.kernel), ['inverse_square', 'blinn', 'wyvill']);
+  // Three different surfaces, each meshed as closely to its own field as marching cubes meshes any.
+  assert.equal(new Set(stats.map((s) => s.triangles)).size, 3, JSON.stringify(stats));
+  for (const s of stats) assert.ok(s.max < 0.5 && s.rms < 0.1, JSON.stringify(s));
+  // Blinn's blobbiness, from the figure's own slider: a faster fall, fewer triangles where spheres join.
+  const blinn = stats[1].triangles;
+  await page.$$eval(figures, (es) => es[1].setAttribute('blobbiness', '6'));
+  await page.waitForFunction(([sel, before]) => document.querySelectorAll(sel)[1].stats.triangles !== before,
+    [figures, blinn], { timeout: 60000 });
+  assert.deepEqual(errors, []);
+});
