@@ -149,7 +149,7 @@ fn kernel_index() -> u32 {
     return (grid.flags >> KERNEL_SHIFT) & 3u;
 }
 
-// A sphere's term at squared distance d2 from its centre, as `Terms::term` in
+// A sphere's term at squared distance d2 from its centre, as `Terms::size` and `Terms::slope` in
 // core/src/extract/kernel.rs: x, its size (the sign is its charge's): r²/d², exp(B (1 − d²/r²)) or
 // 2/9 t² (5 + 4t) with t = max(1 − d²/4r², 0), infinite at the centre only for the inverse square;
 // y, its slope −d size / d(d²), so that its share of −∇f / 2 is the slope times (p − c).

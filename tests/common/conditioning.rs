@@ -14,19 +14,8 @@ pub const FIELD_RELATIVE_TOLERANCE: f32 = 2e-6;
 /// carries the division's rounding times B d²/r².
 const EXP_RELATIVE_TOLERANCE: f32 = 2e-5;
 
-/// How far apart the GPU's and the oracle's vertex normals may point, in radians: 0.01°, or 0.1° with
-/// Blinn's kernel, whose `exp` rounding the gradient's cancelling terms magnify (measured up to 0.1°).
-pub fn normal_tolerance(terms: Terms) -> f32 {
-    if terms.kernel == Kernel::Blinn { 0.1f32.to_radians() } else { 0.01f32.to_radians() }
-}
-
-/// True when no grid sample lies so close to `iso` that the GPU and the oracle could classify it
-/// differently within `FIELD_RELATIVE_TOLERANCE`.
-pub fn well_conditioned(spheres: &[Sphere], iso: f32, resolution: u32) -> bool {
-    let values = sample_blended_field(spheres, Grid { cells_per_axis: resolution }, Terms::default());
-    level_clear_of(&values, iso, FIELD_RELATIVE_TOLERANCE)
-}
-
+/// True when no sample lies so close to `iso` (within `tolerance` of it, relative) that the GPU and the
+/// oracle could classify it differently.
 fn level_clear_of(values: &[f32], iso: f32, tolerance: f32) -> bool {
     values.iter().all(|&f| (f - iso).abs() > tolerance * iso)
 }

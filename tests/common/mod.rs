@@ -137,3 +137,10 @@ pub fn cli(args: &[&str]) -> (i32, String, String) {
         String::from_utf8_lossy(&out.stderr).into(),
     )
 }
+
+/// How far apart the GPU's and the oracle's vertex normals may point, in radians: 0.01°, or 0.1° with
+/// Blinn's kernel, whose `exp` rounding the gradient's cancelling terms magnify (measured up to 0.1°).
+pub fn normal_tolerance(terms: metaballs::extract::kernel::Terms) -> f32 {
+    use metaballs::scene::params::view::Kernel;
+    if terms.kernel == Kernel::Blinn { 0.1f32.to_radians() } else { 0.01f32.to_radians() }
+}

@@ -132,7 +132,9 @@ pub fn oracle_scenes(random: usize) -> Vec<OracleScene> {
             for interpolation in [Interpolation::Linear, Interpolation::Midpoint] {
                 for blend in [Blend::Sum, Blend::Max] {
                     let case_table = alternate(scenes.len());
-                    let kernel = Kernel::ALL[scenes.len() / 3 % 3];
+                    // Above iso 2 the compact and Gaussian kernels' few spheres have no surface left.
+                    let kernel =
+                        if iso > 2.0 { Kernel::InverseSquare } else { Kernel::ALL[scenes.len() / 3 % 3] };
                     let terms = Terms { blend, kernel, ..Terms::default() };
                     scenes.push(OracleScene {
                         what: format!("{name}, iso {iso}, {interpolation:?}, {terms:?}, {case_table:?}"),

@@ -1,7 +1,7 @@
 //! The spheres' terms: the one place that says how a sphere's term falls off with distance (the
 //! kernel) and how the terms combine (the blend), read by the field, its gradient, its bounds over a
-//! box, the oracle and the exact surface on the CPU. `shaders/common.wgsl` (`term_size`,
-//! `term_slope`) evaluates the same expressions in the same order on the GPU.
+//! box, the oracle and the exact surface on the CPU. `shaders/common.wgsl` (`term`, which gives the
+//! size and the slope together) evaluates the same expressions in the same order on the GPU.
 //!
 //! Each kernel is a function of the squared distance d² and of r², decreasing in d², and 1 at d = r:
 //! - inverse-square: r² / d²;
@@ -49,10 +49,18 @@ impl Terms {
         (view.kernel, view.blobbiness, view.blend) = (self.kernel, self.blobbiness, self.blend);
     }
 
-    /// Every kernel with each blend (Blinn's at the default blobbiness), for tests.
+    /// Every kernel with each blend, Blinn's at the least, the default and the largest blobbiness
+    /// (the `blobbiness` row's range), for tests.
     pub fn every() -> impl Iterator<Item = Terms> {
-        Kernel::ALL.iter().flat_map(|&kernel| {
-            Blend::ALL.iter().map(move |&blend| Terms { kernel, blend, ..Terms::default() })
+        let kernels = [
+            (Kernel::InverseSquare, DEFAULT_BLOBBINESS),
+            (Kernel::Blinn, 0.25),
+            (Kernel::Blinn, DEFAULT_BLOBBINESS),
+            (Kernel::Blinn, 8.0),
+            (Kernel::Wyvill, DEFAULT_BLOBBINESS),
+        ];
+        kernels.into_iter().flat_map(|(kernel, blobbiness)| {
+            Blend::ALL.iter().map(move |&blend| Terms { kernel, blobbiness, blend })
         })
     }
 

@@ -11,7 +11,8 @@ use crate::scene::decimal::num;
 use crate::scene::params::view::{Blend, CaseTable, Interpolation, Kernel, Method};
 use glam::Vec3;
 
-/// Numbers before the spheres: method, iso level, cells per axis, interpolation, blend, case table.
+/// Numbers before the spheres: method, iso level, cells per axis, interpolation, blend, case table,
+/// kernel, blobbiness.
 const HEAD: usize = 8;
 /// Numbers per sphere: centre, radius, charge.
 const PER_SPHERE: usize = 5;
@@ -146,6 +147,13 @@ fn unpack(packed: &[f32]) -> Result<Unpacked, String> {
     let blend = Blend::ALL[word(4, Blend::WORDS)?];
     let case_table = CaseTable::ALL[word(5, CaseTable::WORDS)?];
     let terms = Terms { blend, kernel: Kernel::ALL[word(6, Kernel::WORDS)?], blobbiness: packed[7] };
+    // A term must fall with distance for the bounds to hold: Blinn's B is positive.
+    if !(terms.blobbiness > 0.0 && terms.blobbiness.is_finite()) {
+        return Err(format!(
+            "a packed mesh job has blobbiness {}, not a positive number",
+            num(terms.blobbiness)
+        ));
+    }
     let cells = packed[2];
     if !((1.0..=MAX_CELLS).contains(&cells) && cells.fract() == 0.0) {
         return Err(format!("a packed mesh job has {} cells per axis", num(cells)));
@@ -203,10 +211,16 @@ mod tests {
     fn numbers_that_are_not_a_job_are_refused_with_what_is_wrong() {
         let mut meshers = Meshers::default();
         assert!(meshers.mesh(&[0.0, 1.0]).unwrap_err().contains("2 numbers"));
-        assert!(meshers.mesh(&[7.0, 1.0, 8.0, 0.0, 0.0, 0.0]).unwrap_err().contains("marching_cubes"));
-        assert!(
-            meshers.mesh(&[0.0, 1.0, 8.0, 0.0, 0.0, 3.0]).unwrap_err().contains("classic, decider, mc33")
-        );
-        assert!(meshers.mesh(&[0.0, 1.0, 0.5, 0.0, 0.0, 0.0]).unwrap_err().contains("cells per axis"));
+        let refused = |packed: [f32; 8]| Meshers::default().mesh(&packed).unwrap_err();
+        assert!(refused([7.0, 1.0, 8.0, 0.0, 0.0, 0.0, 0.0, 2.0]).contains("marching_cubes"));
+        assert!(refused([0.0, 1.0, 8.0, 0.0, 0.0, 3.0, 0.0, 2.0]).contains("classic, decider, mc33"));
+        assert!(refused([0.0, 1.0, 0.5, 0.0, 0.0, 0.0, 0.0, 2.0]).contains("cells per axis"));
+        assert!(refused([0.0, 1.0, 8.0, 0.0, 0.0, 0.0, 3.0, 2.0]).contains("inverse_square, blinn, wyvill"));
+        for blobbiness in [0.0, -1.0, f32::NAN, f32::INFINITY] {
+            assert!(
+                refused([0.0, 1.0, 8.0, 0.0, 0.0, 0.0, 1.0, blobbiness]).contains("blobbiness"),
+                "{blobbiness}"
+            );
+        }
     }
 }

@@ -124,6 +124,7 @@ export class IsoLevels {
   async result() {
     const packed = this.#spheres();
     if (!packed) throw new Error('the figure is not drawing');
+    if (!this.#serves()) throw new Error(this.#ctx.words.t('levels.unserved'));
     const result = await this.#search(packed);
     return { ...result, iso: Number(this.#ctx.state.iso), counts: countsAt(result, Number(this.#ctx.state.iso)) };
   }

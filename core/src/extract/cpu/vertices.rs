@@ -132,7 +132,8 @@ impl EdgeVertices {
         let (n, iso, construction) = (field.n, field.iso, field.construction);
         let width = self.width;
         // The batched gradients sum inverse squares; other terms take the oracle's own.
-        let by_sum = construction.terms == Terms::default();
+        let (terms, plain) = (construction.terms, Terms::default());
+        let by_sum = terms.kernel == plain.kernel && terms.blend == plain.blend;
         for &[x, y, z, edge] in &self.fresh[..self.fresh_count] {
             let id = (vertices.len() / 6) as u32;
             let (offset, axis) = EDGE_START[edge as usize];
