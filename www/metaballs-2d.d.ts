@@ -60,6 +60,10 @@ export declare class Metaballs2d extends HTMLElement {
   interpolation: 'linear' | 'midpoint';
   /** Saddle: table, center, decider. Attribute `saddle`; default "table". */
   saddle: 'table' | 'center' | 'decider';
+  /** Kernel: inverse_square, blinn, wyvill. Attribute `kernel`; default "inverse_square". */
+  kernel: 'inverse_square' | 'blinn' | 'wyvill';
+  /** Blobbiness: 0.25 to 8. Attribute `blobbiness`; default 2. */
+  blobbiness: number;
   /** Sphere count: 1 to 64. Attribute `spheres`; default 5. */
   spheres: number;
   /** Layout seed: 0 to 4294967295. Attribute `seed`; default 1. */
@@ -84,7 +88,7 @@ export declare class Metaballs2d extends HTMLElement {
   march: string;
   /** The id of a <metaballs-view> with a slice: its slice plane is drawn instead of circles. Attribute `slice-of`; default "". */
   sliceOf: string;
-  /** Controls: all, none, or a comma list of iso, resolution, interpolation, saddle, iso-levels, show, paused, speed, spheres, seed, theme, step-through, circles, scene, share. Attribute `controls`; default "none". */
+  /** Controls: all, none, or a comma list of iso, resolution, interpolation, saddle, kernel, blobbiness, iso-levels, show, paused, speed, spheres, seed, theme, step-through, circles, scene, share. Attribute `controls`; default "none". */
   controls: string;
   /** The circles as placed; set to such a list to place them. */
   circleList: Metaballs2dCircle[];

@@ -63,7 +63,8 @@ test('each setting changes the picture; the saddle rule changes the contour; a b
   const { page, errors } = await lecture();
   let before = await shot(page);
   for (const [name, value] of [['saddle', 'table'], ['iso', '0.9'], ['resolution', '20'], ['interpolation', 'midpoint'],
-    ['iso-levels', '0.5'], ['show', 'grid,contour'], ['theme', 'light']]) {
+    ['iso-levels', '0.5'], ['show', 'grid,contour'], ['kernel', 'wyvill'], ['kernel', 'blinn'], ['blobbiness', '6'],
+    ['kernel', 'inverse_square'], ['theme', 'light']]) {
     await set(page, name, value);
     await drawn(page);
     const after = await shot(page);
@@ -235,6 +236,17 @@ test('a 2D figure following a 3D figure\'s slice plane draws the same samples', 
   await page.waitForFunction(() => document.querySelector('metaballs-2d[slice-of]').samples().values[10 * 21 + 10] !== null);
   const moved = await page.$eval('metaballs-2d[slice-of]', (e) => e.samples().values);
   assert.notDeepEqual(moved, values);
+  // And the 3D figure's kernel: Wyvill's soft objects sampled alike on both (x = -0.2: plane index 8).
+  await page.$eval('#solid', (e) => e.setAttribute('kernel', 'wyvill'));
+  await page.waitForFunction((before) => document.querySelector('metaballs-2d[slice-of]').samples().values[10 * 21 + 10] !== before,
+    moved[10 * 21 + 10]);
+  const soft = await page.$eval('metaballs-2d[slice-of]', (e) => e.samples().values);
+  for (const [j, k] of [[9, 10], [10, 9], [12, 7]]) {
+    // Point (i, j) of the x slice lies along y (i) and z (j): the inspector's cell (8, i, j), corner 0.
+    const report = await page.$eval('#solid', (e, [y, z]) => e.inspectCell(8, y, z), [j, k]);
+    const plane = soft[k * 21 + j];
+    assert.ok(Math.abs(report.corners[0] - plane) <= 1e-5 * Math.max(1, Math.abs(plane)), `(${j}, ${k}): ${report.corners[0]} vs ${plane}`);
+  }
   assert.deepEqual(errors, []);
 });
 

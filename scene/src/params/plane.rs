@@ -17,6 +17,8 @@ pub const PLANE_CONTROLS: &[&str] = &[
     "resolution",
     "interpolation",
     "saddle",
+    "kernel",
+    "blobbiness",
     "iso-levels",
     "show",
     "paused",
@@ -31,8 +33,19 @@ pub const PLANE_CONTROLS: &[&str] = &[
 ];
 
 /// The rows of the parameter table the 2D figure takes as the 3D figure does.
-pub const PLANE_SHARED: &[&str] =
-    &["iso", "interpolation", "saddle", "spheres", "seed", "speed", "paused", "theme", "alt"];
+pub const PLANE_SHARED: &[&str] = &[
+    "iso",
+    "interpolation",
+    "saddle",
+    "kernel",
+    "blobbiness",
+    "spheres",
+    "seed",
+    "speed",
+    "paused",
+    "theme",
+    "alt",
+];
 
 /// The 2D figure's own settings.
 pub const PLANE_PARAMETERS: &[Parameter] = &[

@@ -56,7 +56,7 @@ export class PlaneFrames {
     if (view) return sliceSource(view);
     const circles = this.parts.circles.list;
     return {
-      values: sampleField(circles, s.resolution), cells: s.resolution, iso: s.iso,
+      values: sampleField(circles, s.resolution, s.kernel, Number(s.blobbiness)), cells: s.resolution, iso: s.iso,
       options: { placement: s.interpolation, saddle: s.saddle }, circles,
     };
   }

@@ -59,18 +59,25 @@ function generate(joined) {
 /** Segments (edge pairs, inside on the left) of each case with its saddle cut apart, and joined. */
 export const SEGMENTS = { apart: generate(false), joined: generate(true) };
 
-/** f = Σ qᵢ rᵢ² / |p − cᵢ|² at (x, y), for circles `{ x, y, r, charge }` (charge ±1, 1 when absent). */
-export function fieldAt(circles, x, y) {
+/**
+ * f = Σ qᵢ kernel(|p − cᵢ|²) at (x, y), for circles `{ x, y, r, charge }` (charge ±1, 1 when absent):
+ * by default the inverse square qᵢ rᵢ² / |p − cᵢ|², else `termSize`'s `kernel` with `blobbiness`.
+ */
+export function fieldAt(circles, x, y, kernel = 'inverse_square', blobbiness = 2) {
   let f = 0;
   for (const c of circles) {
     const d = (x - c.x) ** 2 + (y - c.y) ** 2;
-    f += (c.charge ?? 1) * c.r * c.r / Math.max(d, 1e-20);
+    f += (c.charge ?? 1) * termSize(kernel, c.r * c.r, d, blobbiness);
   }
   return f;
 }
 
-/** The field at the (cells + 1)² grid points of [-1, 1]², row by row from y = -1, the edge's points 0. */
-export function sampleField(circles, cells) {
+/**
+ * The field at the (cells + 1)² grid points of [-1, 1]², row by row from y = -1, the edge's points 0,
+ * each circle's term shaped by `kernel` (`termSize`).
+ */
+export function sampleField(circles, cells, kernel = 'inverse_square', blobbiness = 2) {
+  if (kernel !== 'inverse_square') return sampleShaped(circles, cells, kernel, blobbiness);
   const n = cells + 1;
   const values = new Float64Array(n * n);
   // Each circle as x, y and q r², and its squared distance in y for the row at hand.
@@ -92,6 +99,17 @@ export function sampleField(circles, cells) {
       }
       values[j * n + i] = f;
     }
+  }
+  return values;
+}
+
+// `sampleField` with another kernel: each term by `termSize`.
+function sampleShaped(circles, cells, kernel, blobbiness) {
+  const n = cells + 1;
+  const values = new Float64Array(n * n);
+  const step = 2 / cells;
+  for (let j = 1; j < cells; j += 1) {
+    for (let i = 1; i < cells; i += 1) values[j * n + i] = fieldAt(circles, -1 + i * step, -1 + j * step, kernel, blobbiness);
   }
   return values;
 }
