@@ -119,13 +119,20 @@ test('figures with one sync name share spheres and camera: turning one turns the
   assert.deepEqual(errors, []);
 });
 
-test('the lecture compares marching cubes, surface nets and dual contouring on one union, with counts and errors', async () => {
+// The lecture's trio of figures `id`, scrolled to, once each has drawn and measured its error: the page,
+// its errors, the figures' selector, and a screenshot of the trio by name.
+async function lectureTrio(id) {
   const { page, errors } = await open('www/examples/lecture.html');
-  const figures = '#creases metaballs-view';
-  await page.$eval('#creases', (e) => e.scrollIntoView());
+  const figures = `#${id} metaballs-view`;
+  await page.$eval(`#${id}`, (e) => e.scrollIntoView());
   await page.waitForFunction((sel) => [...document.querySelectorAll(sel)].every((e) => e.stats.triangles > 0 && e.stats.error),
     figures, { timeout: 60000 });
-  const shot = (name) => page.locator('#creases').screenshot({ path: path.join(outputDir, `e2e-${name}.png`) });
+  const shot = (name) => page.locator(`#${id}`).screenshot({ path: path.join(outputDir, `e2e-${name}.png`) });
+  return { page, errors, figures, shot };
+}
+
+test('the lecture compares marching cubes, surface nets and dual contouring on one union, with counts and errors', async () => {
+  const { page, errors, figures, shot } = await lectureTrio('creases');
   await shot('lecture-creases');
   const stats = await page.$$eval(figures, (es) => es.map((e) => ({
     adapter: e.stats.adapter, triangles: e.stats.triangles, max: e.stats.error.max, rms: e.stats.error.rms,
@@ -147,12 +154,8 @@ test('the lecture compares marching cubes, surface nets and dual contouring on o
 });
 
 test('the lecture compares the kernels on the same spheres, each measured against its own exact surface', async () => {
-  const { page, errors } = await open('www/examples/lecture.html');
-  const figures = '#kernels metaballs-view';
-  await page.$eval('#kernels', (e) => e.scrollIntoView());
-  await page.waitForFunction((sel) => [...document.querySelectorAll(sel)].every((e) => e.stats.triangles > 0 && e.stats.error),
-    figures, { timeout: 60000 });
-  await page.locator('#kernels').screenshot({ path: path.join(outputDir, 'e2e-lecture-kernels.png') });
+  const { page, errors, figures, shot } = await lectureTrio('kernels');
+  await shot('lecture-kernels');
   const stats = await page.$$eval(figures, (es) => es.map((e) => ({
     kernel: e.kernel, triangles: e.stats.triangles, max: e.stats.error.max, rms: e.stats.error.rms,
   })));
