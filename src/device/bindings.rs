@@ -57,6 +57,8 @@ bindings! {
     /// The marching-cubes triangles of every case and choice on its ambiguous faces
     /// (`shaders/extract/marching_cubes.wgsl`).
     TRIANGLE_TABLE = 17,
+    /// Marching tetrahedra's splits and cases (`shaders/extract/marching_tetrahedra.wgsl`).
+    TETRA_TABLE = 21,
 
     /// Level of detail's uniforms (`shaders/extract/lod.wgsl`).
     LOD = 20,

@@ -7,10 +7,12 @@
 //! - [`decider`]: the triangles of cells whose ambiguous faces the asymptotic decider joins.
 //! - [`field`]: the field on the CPU as the passes evaluate it (bounds, rows of samples).
 //! - [`facing`]: which triangles of a closed mesh face the eye, for the CPU paths to draw those alone.
-//! - [`gpu`]: the compute passes (blocks → field → marching cubes), all on the device, no readback.
+//! - [`gpu`]: the compute passes (blocks → field → marching cubes or tetrahedra), all on the device, no
+//!   readback.
 //! - [`cpu`]: the CPU mesher, uploaded into the same buffers (faster on software adapters, the only
 //!   one on WebGL2).
-//!   It also holds the dual methods, surface nets and dual contouring, to compare with.
+//!   It also holds the dual methods, surface nets and dual contouring, and marching tetrahedra, to
+//!   compare with.
 //! - [`lod`]: level of detail: fine blocks near the camera, coarse far away, closed by transition
 //!   cells.
 //!
@@ -25,7 +27,7 @@ pub mod lod;
 // The GPU-free modules live in the `metaballs-core` crate (`core/`), built for speed in the browser's
 // size-optimised build, and keep their paths here.
 pub use metaballs_core::extract::cpu::facing;
-pub use metaballs_core::extract::{decider, field, interior, kernel, mesh, reference, tables};
+pub use metaballs_core::extract::{decider, field, interior, kernel, mesh, reference, tables, tetra};
 pub mod uniforms;
 
 pub use extractor::{
@@ -44,6 +46,9 @@ pub const EXTRACTORS: &[Compile] = &[
     lod::cpu::LodCpuExtractor::compile,
     cpu::SurfaceNetsExtractor::compile,
     cpu::DualContouringExtractor::compile,
+    gpu::GpuExtractor::compile_tetrahedra,
+    #[cfg(any(not(target_arch = "wasm32"), not(feature = "webgpu")))]
+    cpu::TetrahedraExtractor::compile,
 ];
 
 /// The extractors `device` can run, in the order of [`EXTRACTORS`].

@@ -18,7 +18,7 @@ pub struct GridUniform {
     pub max_cells: u32,
     /// Bit 0: vertices at edge midpoints; bit 1: blend by max; bit 2: ambiguous faces by the asymptotic
     /// decider; bit 3: MC33; bits 4 and 5: the kernel's index (`FLAG_*` and `KERNEL_SHIFT` in
-    /// `shaders/common.wgsl`).
+    /// `shaders/common.wgsl`); bit 6: marching tetrahedra's five-way split.
     pub flags: u32,
     /// The step-through of the march: only cells up to this one (x fastest, then y, then z) give
     /// triangles; `u32::MAX` on each axis when the march is off.

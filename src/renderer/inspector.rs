@@ -26,6 +26,7 @@ impl Renderer {
             terms: Terms::of(&self.settings.view),
             case_table: self.settings.view.case_table,
             march: March::on_grid(self.settings.view.march, self.settings.resolution),
+            split: self.settings.view.split,
         }
     }
 

@@ -1,6 +1,7 @@
 //! Every extractor in `extract::EXTRACTORS`, run through the renderer, against the CPU oracle on the
-//! scenes the GPU and CPU tests use. A new marching-cubes extractor of the uniform grid added to that
-//! list is held to the same scenes without a line here; level-of-detail extractors, whose cells follow
+//! scenes the GPU and CPU tests use. A new marching-cubes or marching-tetrahedra extractor of the
+//! uniform grid added to that list is held to the same scenes (and its method's oracle) without a line
+//! here; level-of-detail extractors, whose cells follow
 //! the camera, are held to the oracle in their finest blocks and to each other in `tests/suite/lod.rs`,
 //! and surface nets, another method, to its own properties in `tests/suite/surface_nets.rs`.
 
@@ -9,8 +10,9 @@ use crate::common;
 use common::scenes::oracle_scenes;
 use common::*;
 use metaballs::extract::reference::{self, Grid};
+use metaballs::extract::tetra::extract_tetrahedra;
 use metaballs::extract::{EXTRACTORS, compile_all};
-use metaballs::scene::params::view::Method;
+use metaballs::scene::params::view::{Method, Split};
 use metaballs::{Scene, Settings};
 
 #[test]
@@ -34,31 +36,39 @@ fn the_renderer_holds_every_extractor_the_list_builds_on_this_device() {
 fn every_extractor_in_the_list_matches_the_oracle() {
     let scenes = oracle_scenes(40);
     let (_, device, _) = device();
-    let uniform: Vec<&str> = compile_all(&device)
+    let marching = [Method::MarchingCubes, Method::MarchingTetrahedra];
+    let uniform: Vec<(&str, Method)> = compile_all(&device)
         .iter()
         .map(|e| (e.capabilities(), e.name()))
-        .filter(|(c, _)| !c.lod && c.method == Method::MarchingCubes)
-        .map(|(_, name)| name)
+        .filter(|(c, _)| !c.lod && marching.contains(&c.method))
+        .map(|(c, name)| (name, c.method))
         .collect();
-    assert!(uniform.len() >= 2, "{uniform:?}");
+    assert_eq!(uniform.len(), 4, "{uniform:?}");
     with_renderer(settings(1, 1, 16, 1.0), 16, 16, |o| {
-        for name in uniform {
+        for (name, method) in uniform {
             o.renderer.pin_extractor(Some(name)).unwrap();
             let mut with_surface = 0;
-            for scene in &scenes {
-                let what = format!("{name}: {}", scene.what);
+            for (k, scene) in scenes.iter().enumerate() {
+                // Marching tetrahedra cuts the cells one way, then the other.
+                let construction = reference::Construction { split: Split::ALL[k % 2], ..scene.construction };
+                let what = format!("{name}: {} ({:?})", scene.what, construction.split);
                 let iso =
                     conditioned_level(&scene.spheres, scene.iso, scene.resolution, scene.construction.terms);
                 let mut settings = Settings { resolution: scene.resolution, iso, ..Settings::default() };
                 settings.view.interpolation = scene.construction.interpolation;
                 scene.construction.terms.set_in(&mut settings.view);
                 settings.view.case_table = scene.construction.case_table;
+                settings.view.method = method;
+                settings.view.split = construction.split;
                 o.renderer.set_settings(settings).unwrap();
                 o.renderer.set_scene(Scene::from_spheres(scene.spheres.clone()).unwrap());
                 let ours = pollster::block_on(o.renderer.extract_mesh());
                 assert_eq!(o.renderer.mesh_source(), name, "{what}: another extractor ran");
                 let grid = Grid { cells_per_axis: scene.resolution };
-                let oracle = reference::extract_with(&scene.spheres, iso, grid, scene.construction);
+                let oracle = match method {
+                    Method::MarchingTetrahedra => extract_tetrahedra(&scene.spheres, iso, grid, construction),
+                    _ => reference::extract_with(&scene.spheres, iso, grid, construction),
+                };
                 assert_eq!(ours.triangles.len(), oracle.triangle_count(), "{what}: triangle counts differ");
                 let tolerance = 1e-4 * grid.cell_size();
                 if let Err(e) =
@@ -70,7 +80,7 @@ fn every_extractor_in_the_list_matches_the_oracle() {
                 assert_eq!(
                     ours.positions.len(),
                     welded.positions.len(),
-                    "{what}: one vertex per crossed edge"
+                    "{what}: one vertex per crossed edge (or diagonal)"
                 );
                 with_surface += (oracle.triangle_count() > 0) as u32;
             }

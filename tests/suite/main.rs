@@ -40,6 +40,7 @@ mod scene_render;
 mod shared_device;
 mod slabs;
 mod table;
+mod tetrahedra;
 mod ties;
 mod topology;
 mod views;

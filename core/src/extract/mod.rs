@@ -8,7 +8,8 @@
 //! - [`field`]: the field on the CPU as the passes evaluate it (bounds, rows of samples), in vectors
 //!   of four lanes where it can (`lanes`).
 //! - [`mesh`]: triangle meshes and the properties the tests hold them to.
-//! - [`cpu`]: the CPU meshers (marching cubes and surface nets).
+//! - [`tetra`]: marching tetrahedra's splits and cases, and its oracle.
+//! - [`cpu`]: the CPU meshers (marching cubes, the dual methods and marching tetrahedra).
 
 pub mod cpu;
 pub mod decider;
@@ -19,3 +20,4 @@ mod lanes;
 pub mod mesh;
 pub mod reference;
 pub mod tables;
+pub mod tetra;

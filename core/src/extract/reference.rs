@@ -6,7 +6,7 @@ use crate::extract::interior::interior_code;
 use crate::extract::kernel::Terms;
 use crate::extract::mesh::Mesh;
 use crate::extract::tables::{CORNER_OFFSETS, EDGE_CORNERS, EDGE_TABLE};
-use crate::scene::params::view::{CaseTable, Interpolation, March};
+use crate::scene::params::view::{CaseTable, Interpolation, March, Split};
 use crate::scene::{BOX_HALF_EXTENT, Sphere};
 use glam::{UVec3, Vec3};
 
@@ -65,6 +65,8 @@ pub struct Construction {
     pub case_table: CaseTable,
     /// The step-through of the march: only the cells it has reached give triangles (`March`).
     pub march: Option<[u32; 3]>,
+    /// How marching tetrahedra cuts each cell.
+    pub split: Split,
 }
 
 impl Construction {

@@ -6,7 +6,7 @@
 use super::table::{Action, Field, Group, Kind, Parameter, Value, number, row};
 use super::view::{
     Blend, CaseTable, ColorBy, Compare, Display, GridView, Interpolation, Kernel, LIGHT_KINDS, Lights, March,
-    MeshOn, Method, Projection, Saddle, Slice, Theme,
+    MeshOn, Method, Projection, Saddle, Slice, Split, Theme,
 };
 use super::{MAX_RESOLUTION, MAX_SPHERES, MIN_RESOLUTION, linear_to_srgb_hex, srgb_hex_to_linear};
 use super::{ParamError, ViewOptions};
@@ -89,6 +89,9 @@ pub const PARAMETERS: &[Parameter] = &[
         .aliases(&["extractor"])
         .group(Surface)
         .renderer(word!(method: Method)),
+    row("split", "Tetrahedra", Kind::Choice(Split::WORDS), "six")
+        .group(Surface)
+        .renderer(word!(split: Split)),
     number("speed", "Speed", "animation speed", (0.0, 3.0), "1").slider(0.0, 3.0, 0.05).group(Surface),
     number("seed", "Layout", "layout seed", (0.0, u32::MAX as f64), "1")
         .whole()

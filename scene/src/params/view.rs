@@ -148,6 +148,22 @@ choice!(
         /// function (their tangent planes), so sharp edges and corners stay sharp (on the CPU; the
         /// uniform grid only).
         DualContouring = "dual_contouring",
+        /// Each cell cut into tetrahedra (`split`), each tetrahedron cut by one triangle or two, with
+        /// no ambiguous case (the uniform grid only).
+        MarchingTetrahedra = "marching_tetrahedra",
+    }
+);
+
+choice!(
+    /// How marching tetrahedra cuts a cell: the surface depends on the cut, as a cell's diagonals
+    /// carry vertices of their own.
+    Split {
+        /// Six tetrahedra around the diagonal from the cell's lowest corner to its highest, the same
+        /// in every cell (Kuhn's triangulation): diagonals on every face and through the cell.
+        Six = "six",
+        /// Five: the tetrahedron of four corners no two of which share an edge, and the four corners
+        /// cut off around it, mirrored cell to cell so that neighbours cut their shared face alike.
+        Five = "five",
     }
 );
 
@@ -348,6 +364,8 @@ pub struct ViewOptions {
     pub method: Method,
     /// Level of detail: fine cells near the camera, coarse far away (`resolution` is the finest).
     pub lod: bool,
+    /// How marching tetrahedra cuts a cell.
+    pub split: Split,
     /// With `lod`, the largest a cell may look on screen, in pixels.
     pub lod_pixels: f32,
     /// With `lod`, keep the current selection of levels whatever the camera does.
@@ -387,6 +405,7 @@ impl ViewOptions {
             projection: Projection::Perspective,
             mesh_on: MeshOn::Auto,
             method: Method::MarchingCubes,
+            split: Split::Six,
             lod: false,
             lod_pixels: 0.0,
             lod_freeze: false,

@@ -2,25 +2,27 @@
 //! packed as numbers, meshed from them by the same CPU meshers, and the mesh handed back to the
 //! extractor that draws it, which takes it in place of meshing when the job is still the frame's.
 
+#[cfg(any(not(target_arch = "wasm32"), not(feature = "webgpu")))]
+use super::TetraMesher;
 use super::{CpuMesher, CpuMeshing, DualContouringMesher, SurfaceNetsMesher};
 use crate::extract::extractor::{GivenMesh, Job};
 use crate::extract::kernel::Terms;
 use crate::extract::reference::{Construction, Grid};
 use crate::scene::Sphere;
 use crate::scene::decimal::num;
-use crate::scene::params::view::{Blend, CaseTable, Interpolation, Kernel, Method};
+use crate::scene::params::view::{Blend, CaseTable, Interpolation, Kernel, Method, Split};
 use glam::Vec3;
 
 /// Numbers before the spheres: method, iso level, cells per axis, interpolation, blend, case table,
-/// kernel, blobbiness.
-const HEAD: usize = 8;
+/// kernel, blobbiness, split.
+const HEAD: usize = 9;
 /// Numbers per sphere: centre, radius, charge.
 const PER_SPHERE: usize = 5;
 /// The finest grid a job may ask for (the largest a device holds without level of detail is smaller).
 const MAX_CELLS: f32 = 1024.0;
 
 /// `job` meshed by a mesher of `method`, as numbers: method, iso, cells per axis, interpolation,
-/// blend, case table, kernel, blobbiness, then centre, radius and charge of each sphere.
+/// blend, case table, kernel, blobbiness, split, then centre, radius and charge of each sphere.
 pub fn pack(method: Method, job: &Job) -> Vec<f32> {
     let construction = job.construction;
     let mut packed = Vec::with_capacity(HEAD + PER_SPHERE * job.spheres.len());
@@ -33,6 +35,7 @@ pub fn pack(method: Method, job: &Job) -> Vec<f32> {
         construction.case_table.index() as f32,
         construction.terms.kernel.index() as f32,
         construction.terms.blobbiness,
+        construction.split.index() as f32,
     ]);
     for s in job.spheres {
         packed.extend([s.center.x, s.center.y, s.center.z, s.radius, s.charge]);
@@ -46,6 +49,8 @@ pub struct Meshers {
     marching_cubes: CpuMesher,
     surface_nets: SurfaceNetsMesher,
     dual_contouring: DualContouringMesher,
+    #[cfg(any(not(target_arch = "wasm32"), not(feature = "webgpu")))]
+    tetrahedra: TetraMesher,
     /// The last job was marching cubes.
     marched: bool,
 }
@@ -60,6 +65,13 @@ impl Meshers {
             Method::MarchingCubes => &mut self.marching_cubes,
             Method::SurfaceNets => &mut self.surface_nets,
             Method::DualContouring => &mut self.dual_contouring,
+            #[cfg(any(not(target_arch = "wasm32"), not(feature = "webgpu")))]
+            Method::MarchingTetrahedra => &mut self.tetrahedra,
+            // The WebGPU page meshes marching tetrahedra in compute shaders alone.
+            #[cfg(all(target_arch = "wasm32", feature = "webgpu"))]
+            Method::MarchingTetrahedra => {
+                return Err("marching tetrahedra meshes on the GPU in this build".into());
+            }
         };
         mesher.mesh_it(&job);
         Ok(mesher.given(packed.to_vec()))
@@ -140,7 +152,7 @@ fn unpack(packed: &[f32]) -> Result<Unpacked, String> {
             })
     };
     if packed.len() < HEAD || !(packed.len() - HEAD).is_multiple_of(PER_SPHERE) {
-        return Err(format!("a packed mesh job has {} numbers: 8 and then 5 per sphere", packed.len()));
+        return Err(format!("a packed mesh job has {} numbers: 9 and then 5 per sphere", packed.len()));
     }
     let method = Method::ALL[word(0, Method::WORDS)?];
     let interpolation = Interpolation::ALL[word(3, Interpolation::WORDS)?];
@@ -154,6 +166,7 @@ fn unpack(packed: &[f32]) -> Result<Unpacked, String> {
             num(terms.blobbiness)
         ));
     }
+    let split = Split::ALL[word(8, Split::WORDS)?];
     let cells = packed[2];
     if !((1.0..=MAX_CELLS).contains(&cells) && cells.fract() == 0.0) {
         return Err(format!("a packed mesh job has {} cells per axis", num(cells)));
@@ -168,7 +181,13 @@ fn unpack(packed: &[f32]) -> Result<Unpacked, String> {
         })
         .collect();
     let grid = Grid { cells_per_axis: cells as u32 };
-    Ok((method, spheres, packed[1], grid, Construction { interpolation, terms, case_table, march: None }))
+    Ok((
+        method,
+        spheres,
+        packed[1],
+        grid,
+        Construction { interpolation, terms, case_table, march: None, split },
+    ))
 }
 
 #[cfg(test)]
@@ -184,6 +203,7 @@ mod tests {
             terms: Terms { kernel: Kernel::Wyvill, ..Terms::default() },
             case_table: CaseTable::Decider,
             march: None,
+            split: Split::Five,
         };
         let job = Job {
             spheres: scene.spheres(),
@@ -200,6 +220,7 @@ mod tests {
                 Method::MarchingCubes => Box::<CpuMesher>::default(),
                 Method::SurfaceNets => Box::<SurfaceNetsMesher>::default(),
                 Method::DualContouring => Box::<DualContouringMesher>::default(),
+                Method::MarchingTetrahedra => Box::<TetraMesher>::default(),
             };
             direct.mesh_it(&job);
             assert_eq!(given, direct.given(packed.clone()), "{method:?}");
@@ -211,14 +232,17 @@ mod tests {
     fn numbers_that_are_not_a_job_are_refused_with_what_is_wrong() {
         let mut meshers = Meshers::default();
         assert!(meshers.mesh(&[0.0, 1.0]).unwrap_err().contains("2 numbers"));
-        let refused = |packed: [f32; 8]| Meshers::default().mesh(&packed).unwrap_err();
-        assert!(refused([7.0, 1.0, 8.0, 0.0, 0.0, 0.0, 0.0, 2.0]).contains("marching_cubes"));
-        assert!(refused([0.0, 1.0, 8.0, 0.0, 0.0, 3.0, 0.0, 2.0]).contains("classic, decider, mc33"));
-        assert!(refused([0.0, 1.0, 0.5, 0.0, 0.0, 0.0, 0.0, 2.0]).contains("cells per axis"));
-        assert!(refused([0.0, 1.0, 8.0, 0.0, 0.0, 0.0, 3.0, 2.0]).contains("inverse_square, blinn, wyvill"));
+        let refused = |packed: [f32; 9]| Meshers::default().mesh(&packed).unwrap_err();
+        assert!(refused([7.0, 1.0, 8.0, 0.0, 0.0, 0.0, 0.0, 2.0, 0.0]).contains("marching_cubes"));
+        assert!(refused([0.0, 1.0, 8.0, 0.0, 0.0, 3.0, 0.0, 2.0, 0.0]).contains("classic, decider, mc33"));
+        assert!(refused([0.0, 1.0, 0.5, 0.0, 0.0, 0.0, 0.0, 2.0, 0.0]).contains("cells per axis"));
+        assert!(
+            refused([0.0, 1.0, 8.0, 0.0, 0.0, 0.0, 3.0, 2.0, 0.0]).contains("inverse_square, blinn, wyvill")
+        );
+        assert!(refused([0.0, 1.0, 8.0, 0.0, 0.0, 0.0, 0.0, 2.0, 2.0]).contains("six, five"));
         for blobbiness in [0.0, -1.0, f32::NAN, f32::INFINITY] {
             assert!(
-                refused([0.0, 1.0, 8.0, 0.0, 0.0, 0.0, 1.0, blobbiness]).contains("blobbiness"),
+                refused([0.0, 1.0, 8.0, 0.0, 0.0, 0.0, 1.0, blobbiness, 0.0]).contains("blobbiness"),
                 "{blobbiness}"
             );
         }

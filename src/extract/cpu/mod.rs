@@ -6,10 +6,11 @@
 
 pub mod elsewhere;
 // The meshers themselves are in the `metaballs-core` crate (`core/src/extract/cpu/`), built for speed.
-pub use metaballs_core::extract::cpu::{dual, facing, mesher};
+pub use metaballs_core::extract::cpu::{dual, facing, mesher, tetra};
 
 pub use dual::{DualContouringMesher, SurfaceNetsMesher};
 pub use mesher::CpuMesher;
+pub use tetra::TetraMesher;
 
 use super::extractor::{Capabilities, Extractor, GivenMesh, Job, MeshCount, Output};
 use super::mesh::IndexedMesh;
@@ -89,6 +90,7 @@ macro_rules! cpu_meshing {
 cpu_meshing!(CpuMesher, "cpu", Method::MarchingCubes);
 cpu_meshing!(SurfaceNetsMesher, "surface-nets", Method::SurfaceNets);
 cpu_meshing!(DualContouringMesher, "dual-contouring", Method::DualContouring, marks);
+cpu_meshing!(TetraMesher, "cpu-tetrahedra", Method::MarchingTetrahedra);
 
 /// Marching cubes on the CPU (`mesh-on=cpu`, and everything on WebGL2).
 pub type CpuExtractor = CpuMeshExtractor<CpuMesher>;
@@ -96,6 +98,9 @@ pub type CpuExtractor = CpuMeshExtractor<CpuMesher>;
 pub type SurfaceNetsExtractor = CpuMeshExtractor<SurfaceNetsMesher>;
 /// Dual contouring on the CPU (`method=dual_contouring`).
 pub type DualContouringExtractor = CpuMeshExtractor<DualContouringMesher>;
+/// Marching tetrahedra on the CPU (`method=marching_tetrahedra`): natively and on WebGL2. The WebGPU
+/// page meshes it in compute shaders alone, so that its WebAssembly stays small.
+pub type TetrahedraExtractor = CpuMeshExtractor<TetraMesher>;
 
 /// A CPU mesher and what it last uploaded.
 #[derive(Default)]

@@ -1,11 +1,11 @@
 //! Extraction in compute shaders, all on the device: the block pass bounds the field over blocks of 4³
 //! cells and lists those the surface may cross, the field pass evaluates them and lists the crossed
-//! cells, and the marching-cubes passes write shared vertices and indices. Counters feed indirect
+//! cells, and the marching passes (cubes, or tetrahedra) write shared vertices and indices. Counters feed indirect
 //! dispatches and the indexed indirect draw; nothing is read back.
 
 pub mod blocks;
 pub mod field;
-pub mod marching_cubes;
+pub mod marching;
 pub mod scene_buffers;
 
 use super::extractor::{Capabilities, Extractor, Job, MeshCount, Output};
@@ -14,7 +14,7 @@ use crate::device::has_compute;
 use crate::scene::params::view::Method;
 use blocks::BlockPass;
 use field::FieldPass;
-use marching_cubes::MarchingCubesPass;
+use marching::MarchingPass;
 use std::sync::{Arc, OnceLock};
 
 /// The three compute passes.
@@ -22,7 +22,7 @@ use std::sync::{Arc, OnceLock};
 struct Passes {
     blocks: BlockPass,
     field: FieldPass,
-    marching: MarchingCubesPass,
+    marching: MarchingPass,
 }
 
 /// The compute passes, compiled once per device on the first frame that uses them (so a page whose
@@ -30,6 +30,8 @@ struct Passes {
 /// compiled pipelines and bind their own buffers.
 #[derive(Clone)]
 pub struct GpuExtractor {
+    /// Marching cubes, or marching tetrahedra.
+    method: Method,
     compiled: Arc<OnceLock<Passes>>,
     /// This renderer's passes, bound to its current buffers; `None` until a frame uses them after the
     /// buffers were made.
@@ -37,30 +39,41 @@ pub struct GpuExtractor {
 }
 
 impl GpuExtractor {
-    /// The passes, on a device with compute shaders (compiled when a frame first needs them).
+    /// Marching cubes' passes, on a device with compute shaders (compiled when a frame first needs
+    /// them).
     pub fn compile(device: &wgpu::Device) -> Option<Box<dyn Extractor>> {
+        Self::of(device, Method::MarchingCubes)
+    }
+
+    /// Marching tetrahedra's passes (`method=marching_tetrahedra`), likewise.
+    pub fn compile_tetrahedra(device: &wgpu::Device) -> Option<Box<dyn Extractor>> {
+        Self::of(device, Method::MarchingTetrahedra)
+    }
+
+    fn of(device: &wgpu::Device, method: Method) -> Option<Box<dyn Extractor>> {
         if !has_compute(device) {
             return None;
         }
         // On wasm32 wgpu's objects are not Send: a page runs them on one thread.
         #[allow(clippy::arc_with_non_send_sync)]
         let compiled = Arc::new(OnceLock::new());
-        Some(Box::new(Self { compiled, bound: None }))
+        Some(Box::new(Self { method, compiled, bound: None }))
     }
 }
 
 impl Extractor for GpuExtractor {
     fn name(&self) -> &'static str {
-        "gpu"
+        if self.method == Method::MarchingCubes { "gpu" } else { "gpu-tetrahedra" }
     }
 
     fn capabilities(&self) -> Capabilities {
         Capabilities {
             needs_compute: true,
-            cell_lists: true,
+            // The teaching views' cell lists are marching cubes' cases.
+            cell_lists: self.method == Method::MarchingCubes,
             cpu_copy: false,
             lod: false,
-            method: Method::MarchingCubes,
+            method: self.method,
         }
     }
 
@@ -89,7 +102,11 @@ impl Extractor for GpuExtractor {
                 .get_or_init(|| Passes {
                     blocks: BlockPass::new(device),
                     field: FieldPass::new(device),
-                    marching: MarchingCubesPass::new(device),
+                    marching: if self.method == Method::MarchingCubes {
+                        MarchingPass::cubes(device)
+                    } else {
+                        MarchingPass::tetrahedra(device)
+                    },
                 })
                 .clone();
             passes.blocks.bind(device, scene, buffers);

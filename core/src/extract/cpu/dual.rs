@@ -20,12 +20,13 @@
 //! join them up; dual contouring's are the field's own ([`hermite`]).
 
 use super::hermite::hermite;
+use super::kept::KeptField;
 use super::qef;
-use crate::extract::field::{BLOCK_CELLS, Spheres, sample_run};
+use crate::extract::field::BLOCK_CELLS;
 use crate::extract::mesh::IndexedMesh;
 use crate::extract::reference::{self, Construction, Grid};
 use crate::extract::tables::{CORNER_OFFSETS, EDGE_CORNERS};
-use crate::scene::{BOX_HALF_EXTENT, Sphere};
+use crate::scene::Sphere;
 use glam::Vec3;
 
 /// Marks a cell without a vertex.
@@ -110,17 +111,13 @@ pub struct Dual {
     /// [`STRAYED`] where its solution left its cell; empty with surface nets.
     pub placed: Vec<u8>,
     stats: DualStats,
-    spheres: Spheres,
-    coords: Vec<f32>,
-    /// Field values at every grid point of a kept block (others are never read).
-    values: Vec<f32>,
+    field: KeptField,
     /// The vertex of each cell, `NONE` where the surface does not cross it.
     cell_vertex: Vec<u32>,
     /// The crossed cells, in the order their vertices were made.
     crossed: Vec<[u32; 3]>,
     /// The crossings (point, normal) on the edges of the block being placed ([`local`]).
     near: Vec<(Vec3, Vec3)>,
-    kept: Vec<[u32; 3]>,
 }
 
 impl Dual {
@@ -159,10 +156,6 @@ impl Dual {
     /// Meshes the surface f = `iso` of `spheres` on `grid`.
     fn mesh(&mut self, spheres: &[Sphere], iso: f32, grid: Grid, construction: Construction) {
         let n = grid.cells_per_axis;
-        let cell = grid.cell_size();
-        self.spheres.set(spheres);
-        self.coords.clear();
-        self.coords.extend((0..=n).map(|i| -BOX_HALF_EXTENT + i as f32 * cell));
         // Forget last frame's vertices where the grid is the same size; start afresh otherwise.
         let cells = (n as usize).pow(3);
         if self.cell_vertex.len() == cells {
@@ -174,69 +167,25 @@ impl Dual {
             self.cell_vertex.resize(cells, NONE);
             self.crossed.clear();
         }
-        self.values.resize((n as usize + 1).pow(3), 0.0);
         self.vertices.clear();
         self.indices.clear();
         self.placed.clear();
         self.crossings.clear();
-        self.keep_blocks(iso, n, construction);
-        let kept = std::mem::take(&mut self.kept);
-        for &block in &kept {
-            self.sample_block(block, n, construction);
-        }
+        self.field.sample(spheres, iso, n, construction.terms);
+        self.stats.active_blocks = self.field.kept.len() as u32;
+        let kept = std::mem::take(&mut self.field.kept);
         for &block in &kept {
             self.place_vertices(spheres, block, iso, grid, construction);
         }
-        self.kept = kept;
+        self.field.kept = kept;
         self.stats.active_cells = self.crossed.len() as u32;
         for k in 0..self.crossed.len() {
             self.join(self.crossed[k], iso, n);
         }
     }
 
-    /// The blocks whose field bounds straddle `iso`, as every extractor keeps them.
-    fn keep_blocks(&mut self, iso: f32, n: u32, construction: Construction) {
-        let nb = n.div_ceil(BLOCK_CELLS);
-        self.kept.clear();
-        for bz in 0..nb {
-            for by in 0..nb {
-                for bx in 0..nb {
-                    if self.spheres.block_straddles(&self.coords, [bx, by, bz], n, iso, construction.terms) {
-                        self.kept.push([bx, by, bz]);
-                    }
-                }
-            }
-        }
-        self.stats.active_blocks = self.kept.len() as u32;
-    }
-
-    /// Field values at a kept block's points, in rows along x (points on the box's faces read 0).
-    fn sample_block(&mut self, [bx, by, bz]: [u32; 3], n: u32, construction: Construction) {
-        let width = n as usize + 1;
-        let (x0, x1) = ((bx * BLOCK_CELLS) as usize, ((bx + 1) * BLOCK_CELLS).min(n) as usize);
-        for z in bz * BLOCK_CELLS..=((bz + 1) * BLOCK_CELLS).min(n) {
-            for y in by * BLOCK_CELLS..=((by + 1) * BLOCK_CELLS).min(n) {
-                let at = width * (y as usize + width * z as usize);
-                let run = &mut self.values[at + x0..=at + x1];
-                if z == 0 || z == n || y == 0 || y == n {
-                    run.fill(0.0);
-                    continue;
-                }
-                let (py, pz) = (self.coords[y as usize], self.coords[z as usize]);
-                sample_run(run, &self.coords[x0..=x1], py, pz, &self.spheres, construction.terms);
-                if x0 == 0 {
-                    run[0] = 0.0;
-                }
-                if x1 == n as usize {
-                    run[x1 - x0] = 0.0;
-                }
-            }
-        }
-    }
-
     fn value(&self, p: [u32; 3], n: u32) -> f32 {
-        let width = n as usize + 1;
-        self.values[p[0] as usize + width * (p[1] as usize + width * p[2] as usize)]
+        self.field.value(p, n)
     }
 
     /// One vertex in each crossed cell of a kept block, from the crossings on its edges: at their
@@ -281,8 +230,8 @@ impl Dual {
                     let normal =
                         crossings.iter().map(|c| c.1).sum::<Vec3>().try_normalize().unwrap_or(Vec3::Z);
                     let p = if self.qef {
-                        let low = Vec3::from_array([x, y, z].map(|i| self.coords[i as usize]));
-                        let high = Vec3::from_array([x, y, z].map(|i| self.coords[i as usize + 1]));
+                        let low = Vec3::from_array([x, y, z].map(|i| self.field.coords[i as usize]));
+                        let high = Vec3::from_array([x, y, z].map(|i| self.field.coords[i as usize + 1]));
                         let qef = qef::Qef::new(crossings);
                         let qef::Solved { point: p, rank, strayed } = qef.solve_in(low, high, SLACK * cell);
                         self.placed.push(rank | if strayed { STRAYED } else { 0 });
@@ -327,7 +276,11 @@ impl Dual {
                         }
                         let end = |p: [u32; 3]| {
                             let on_wall = p.contains(&0) || p.contains(&n);
-                            (Vec3::from_array(p.map(|i| self.coords[i as usize])), self.value(p, n), on_wall)
+                            (
+                                Vec3::from_array(p.map(|i| self.field.coords[i as usize])),
+                                self.value(p, n),
+                                on_wall,
+                            )
                         };
                         let crossing = if self.qef {
                             hermite(spheres, iso, c, end(p), end(q))
@@ -431,7 +384,7 @@ mod tests {
             let cell = grid.cell_size();
             for (k, c) in mesher.crossed.iter().enumerate() {
                 let p = Vec3::from_slice(&mesher.vertices[6 * k..6 * k + 3]);
-                let low = Vec3::from_array(c.map(|i| mesher.coords[i as usize]));
+                let low = Vec3::from_array(c.map(|i| mesher.field.coords[i as usize]));
                 let out = (low - p).max(p - low - cell).max_element() / cell;
                 assert!(out <= SLACK + 1e-4, "{terms:?}: vertex {k} {out} cells out of its cell");
                 assert!((1..=3).contains(&(mesher.placed[k] & 3)));

@@ -6,11 +6,14 @@ mod blocks;
 pub mod dual;
 pub mod facing;
 pub mod hermite;
+mod kept;
 pub mod mesher;
 mod normals;
 mod planes;
 pub mod qef;
+pub mod tetra;
 mod vertices;
 
 pub use dual::{DualContouringMesher, SurfaceNetsMesher};
 pub use mesher::CpuMesher;
+pub use tetra::TetraMesher;

@@ -1,0 +1,84 @@
+// What the per-cell passes of both marching methods share (marching_cubes.wgsl and
+// marching_tetrahedra.wgsl follow it in one module): the mesh buffers, the active cell an invocation
+// works on, the vertices the cells own, and the indexed indirect draw.
+
+@group(0) @binding(2) var<storage, read_write> counters: Counters;
+@group(0) @binding(3) var<storage, read> active_blocks: array<u32>;
+@group(0) @binding(4) var<storage, read> block_slots: array<u32>;
+// The active cells, each as slot * 64 + cell.
+@group(0) @binding(8) var<storage, read> active_cells: array<u32>;
+@group(0) @binding(6) var<storage, read> block_values: array<f32>;
+// Slot s, cell c: the case at s * 64 + c.
+@group(0) @binding(7) var<storage, read> cell_cases: array<u32>;
+// Slot s, cell c, the k-th of the PER_CELL vertices a cell owns: the vertex at (s * 64 + c) * PER_CELL + k
+// (INVALID where the budget was full).
+@group(0) @binding(10) var<storage, read_write> edge_vertices: array<u32>;
+// Per vertex, 6 floats: position, then outward normal.
+@group(0) @binding(11) var<storage, read_write> vertices: array<f32>;
+@group(0) @binding(12) var<storage, read_write> indices: array<u32>;
+
+fn unit(axis: u32) -> vec3<u32> {
+    return vec3<u32>(u32(axis == 0u), u32(axis == 1u), u32(axis == 2u));
+}
+
+fn local_cell(local: u32) -> vec3<u32> {
+    return vec3<u32>(local % BLOCK_CELLS, (local / BLOCK_CELLS) % BLOCK_CELLS, local / (BLOCK_CELLS * BLOCK_CELLS));
+}
+
+fn value_at(slot: u32, point: vec3<u32>) -> f32 {
+    return block_values[slot * 125u + point.x + BLOCK_POINTS * (point.y + BLOCK_POINTS * point.z)];
+}
+
+// The active cell invocation `id` of a per-cell pass works on, as slot * 64 + cell, or INVALID.
+fn active_cell(workgroup: vec3<u32>, local: u32) -> u32 {
+    let id = slot_of(workgroup) * 64u + local;
+    if (id >= min(atomicLoad(&counters.active_cells), grid.max_cells)) {
+        return INVALID;
+    }
+    return active_cells[id];
+}
+
+fn write_vertex(index: u32, p: vec3<f32>, n: vec3<f32>) {
+    let o = index * 6u;
+    vertices[o] = p.x;
+    vertices[o + 1u] = p.y;
+    vertices[o + 2u] = p.z;
+    vertices[o + 3u] = n.x;
+    vertices[o + 4u] = n.y;
+    vertices[o + 5u] = n.z;
+}
+
+// The `k`-th of the `per_cell` vertices `cell` owns, wherever its block's slot is.
+fn owned_vertex(cell: vec3<u32>, k: u32, per_cell: u32) -> u32 {
+    // A crossed edge never starts on the box's far faces (both its ends would read as outside).
+    if (any(cell >= vec3<u32>(grid.cells_per_axis))) {
+        return INVALID;
+    }
+    let slot = block_slots[block_index(cell / BLOCK_CELLS)];
+    if (slot >= grid.max_blocks) {
+        return INVALID;
+    }
+    let at = cell % BLOCK_CELLS;
+    let local = at.x + BLOCK_CELLS * (at.y + BLOCK_CELLS * at.z);
+    return edge_vertices[(slot * 64u + local) * per_cell + k];
+}
+
+// Appends a triangle at `slot_index` of the indices, or a degenerate one (which draws nothing) where a
+// vertex was lost to a full buffer; nothing past the buffer's end.
+fn write_triangle(slot_index: u32, t: vec3<u32>) {
+    if (slot_index + 3u > grid.max_indices) {
+        return;
+    }
+    let triangle = select(vec3<u32>(0u), t, all(t != vec3<u32>(INVALID)));
+    indices[slot_index] = triangle.x;
+    indices[slot_index + 1u] = triangle.y;
+    indices[slot_index + 2u] = triangle.z;
+}
+
+@group(0) @binding(13) var<storage, read_write> draw_args: DrawIndexedIndirect;
+
+// One invocation: the draw covers the indices written, never more than the buffer holds.
+@compute @workgroup_size(1)
+fn finalize_draw() {
+    draw_args = indexed_draw(atomicLoad(&counters.indices));
+}

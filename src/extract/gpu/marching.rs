@@ -1,0 +1,176 @@
+//! The marching passes over the active cells, one struct for both methods: marching cubes
+//! (`shaders/extract/marching_cubes.wgsl`) and marching tetrahedra
+//! (`shaders/extract/marching_tetrahedra.wgsl`), each after the part they share
+//! (`shaders/extract/cells.wgsl`). Vertices on the edges (and with tetrahedra, the diagonals) each
+//! cell owns, then triangles as indices into them, then the indexed indirect draw's arguments.
+
+use crate::device::{COMMON_WGSL, bind_buffers, bindings, compute_pipeline, shader_module, wgsl};
+use crate::extract::buffers::MeshBuffers;
+use crate::extract::decider::variant_table;
+use crate::extract::gpu::scene_buffers::SceneBuffers;
+use metaballs_core::extract::tetra::{
+    SLOTS, TETRAHEDRA, TETRAHEDRA_PER_CELL, TETRAHEDRON_TRIANGLE_COUNTS, TETRAHEDRON_TRIANGLES,
+};
+use wgpu::util::DeviceExt;
+
+const CELLS_WGSL: &str = wgsl!(include_str!("../../../shaders/extract/cells.wgsl"));
+
+/// Marching tetrahedra's tables as the shader reads them: each split's tetrahedra (six words a row,
+/// four corners of 3 bits each), then each case's triangle count and triangles (each vertex as its
+/// edge's two corners of the tetrahedron, 2 bits each).
+fn tetra_table() -> Vec<u32> {
+    let mut table = vec![0; 18 + 16];
+    for (row, &count) in TETRAHEDRA_PER_CELL.iter().enumerate() {
+        for (k, t) in TETRAHEDRA[row][..count].iter().enumerate() {
+            table[row * 6 + k] = (0..4).map(|i| (t[i] as u32) << (3 * i)).sum();
+        }
+    }
+    for (case, triangles) in TETRAHEDRON_TRIANGLES.iter().enumerate() {
+        let count = TETRAHEDRON_TRIANGLE_COUNTS[case];
+        let mut word = count as u32;
+        for (j, triangle) in triangles[..count].iter().enumerate() {
+            for (i, &[a, b]) in triangle.iter().enumerate() {
+                word |= ((a | b << 2) as u32) << (2 + 12 * j + 4 * i);
+            }
+        }
+        table[18 + case] = word;
+    }
+    table
+}
+
+/// Owns one method's marching pipelines, its tables on the GPU, and bind groups for the current
+/// buffers.
+#[derive(Clone)]
+pub struct MarchingPass {
+    label: &'static str,
+    vertices: wgpu::ComputePipeline,
+    triangles: wgpu::ComputePipeline,
+    finalize: wgpu::ComputePipeline,
+    table: wgpu::Buffer,
+    /// Marching tetrahedra: the tables' binding is `TETRA_TABLE`, and the vertices of the seven
+    /// segments each active cell owns are kept in a buffer of the pass's own (the mesh's holds three a
+    /// cell).
+    tetrahedra: bool,
+    groups: Option<[wgpu::BindGroup; 3]>,
+}
+
+impl MarchingPass {
+    /// Marching cubes, with every case table's triangles.
+    pub fn cubes(device: &wgpu::Device) -> Self {
+        let source = wgsl!(include_str!("../../../shaders/extract/marching_cubes.wgsl"));
+        Self::new(
+            device,
+            "marching cubes",
+            source,
+            ["make_vertices", "make_triangles"],
+            variant_table(),
+            false,
+        )
+    }
+
+    /// Marching tetrahedra, either split.
+    pub fn tetrahedra(device: &wgpu::Device) -> Self {
+        let source = wgsl!(include_str!("../../../shaders/extract/marching_tetrahedra.wgsl"));
+        let entries = ["make_tetra_vertices", "make_tetra_triangles"];
+        Self::new(device, "marching tetrahedra", source, entries, &tetra_table(), true)
+    }
+
+    fn new(
+        device: &wgpu::Device,
+        label: &'static str,
+        source: &str,
+        [vertices, triangles]: [&str; 2],
+        table: &[u32],
+        tetrahedra: bool,
+    ) -> Self {
+        let module = shader_module(device, label, &[COMMON_WGSL, CELLS_WGSL, source]);
+        let pipeline = |entry| compute_pipeline(device, label, &module, entry);
+        Self {
+            label,
+            vertices: pipeline(vertices),
+            triangles: pipeline(triangles),
+            finalize: pipeline("finalize_draw"),
+            table: device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some(label),
+                contents: bytemuck::cast_slice(table),
+                usage: wgpu::BufferUsages::STORAGE,
+            }),
+            tetrahedra,
+            groups: None,
+        }
+    }
+
+    /// Binds the passes to new buffers.
+    pub fn bind(&mut self, device: &wgpu::Device, scene: &SceneBuffers, mesh: &MeshBuffers) {
+        let own = self.tetrahedra.then(|| {
+            device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some(self.label),
+                size: (mesh.capacity.blocks as u64 * 64 * SLOTS as u64 * 4).max(16),
+                usage: wgpu::BufferUsages::STORAGE,
+                mapped_at_creation: false,
+            })
+        });
+        let edge_vertices = own.as_ref().unwrap_or(&mesh.edge_vertices);
+        let table = if self.tetrahedra { bindings::TETRA_TABLE } else { bindings::TRIANGLE_TABLE };
+        let group =
+            |pipeline, buffers: &[(u32, &wgpu::Buffer)]| bind_buffers(device, self.label, pipeline, buffers);
+        self.groups = Some([
+            group(
+                &self.vertices,
+                &[
+                    (bindings::GRID, &scene.grid),
+                    (bindings::SPHERES, &scene.spheres),
+                    (bindings::COUNTERS, &mesh.counters),
+                    (bindings::ACTIVE_BLOCKS, &mesh.active_blocks),
+                    (bindings::BLOCK_VALUES, &mesh.block_values),
+                    (bindings::EDGE_VERTICES, edge_vertices),
+                    (bindings::VERTICES, &mesh.vertices),
+                    (bindings::ACTIVE_CELLS, &mesh.active_cells),
+                ],
+            ),
+            group(
+                &self.triangles,
+                &[
+                    (bindings::GRID, &scene.grid),
+                    (bindings::COUNTERS, &mesh.counters),
+                    (bindings::ACTIVE_BLOCKS, &mesh.active_blocks),
+                    (bindings::BLOCK_SLOTS, &mesh.block_slots),
+                    (table, &self.table),
+                    (bindings::CELL_CASES, &mesh.cell_cases),
+                    (bindings::EDGE_VERTICES, edge_vertices),
+                    (bindings::INDICES, &mesh.indices),
+                    (bindings::ACTIVE_CELLS, &mesh.active_cells),
+                ],
+            ),
+            group(
+                &self.finalize,
+                &[
+                    (bindings::GRID, &scene.grid),
+                    (bindings::COUNTERS, &mesh.counters),
+                    (bindings::DRAW_ARGS, &mesh.draw_args),
+                ],
+            ),
+        ]);
+    }
+
+    /// Vertices, then triangles, then the draw arguments, over the active cells.
+    pub fn encode(
+        &self,
+        encoder: &mut wgpu::CommandEncoder,
+        mesh: &MeshBuffers,
+        timestamp_writes: Option<wgpu::ComputePassTimestampWrites>,
+    ) {
+        let [vertices, triangles, finalize] = self.groups.as_ref().expect("MarchingPass::bind before encode");
+        let mut pass = encoder
+            .begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some(self.label), timestamp_writes });
+        pass.set_pipeline(&self.vertices);
+        pass.set_bind_group(0, vertices, &[]);
+        pass.dispatch_workgroups_indirect(&mesh.cell_dispatch, 0);
+        pass.set_pipeline(&self.triangles);
+        pass.set_bind_group(0, triangles, &[]);
+        pass.dispatch_workgroups_indirect(&mesh.cell_dispatch, 0);
+        pass.set_pipeline(&self.finalize);
+        pass.set_bind_group(0, finalize, &[]);
+        pass.dispatch_workgroups(1, 1, 1);
+    }
+}

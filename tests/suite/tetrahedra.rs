@@ -1,0 +1,153 @@
+//! Marching tetrahedra, chosen by `method=` and cut by `split=`: on the scenes every extractor meets,
+//! its mesh is closed and manifold and has the topology of the piecewise-linear interpolant of its
+//! tetrahedra (which has no ambiguous case), counted on the tetrahedra themselves; the two splits give
+//! different surfaces of the same field; and the GPU's and the CPU's meshes equal the oracle
+//! (`tests/suite/extractors.rs`).
+
+use crate::common;
+
+use common::scenes::oracle_scenes;
+use common::*;
+use glam::UVec3;
+use metaballs::extract::cpu::TetraMesher;
+use metaballs::extract::reference::{Construction, Grid, sample_blended_field};
+use metaballs::extract::tables::CORNER_OFFSETS;
+use metaballs::extract::tetra::tetrahedra;
+use metaballs::scene::params::view::{Method, Split};
+use metaballs::{Scene, Settings};
+use std::collections::HashSet;
+
+/// What the interpolant's solid {f > iso} has, counted on the tetrahedra: its Euler characteristic
+/// (that of the simplices whose corners all lie inside, which the solid retracts onto), and how many
+/// pieces the inside and the outside corners each make, joined along the tetrahedra's edges.
+struct Interpolant {
+    euler: i64,
+    inside_pieces: usize,
+    outside_pieces: usize,
+}
+
+fn interpolant(values: &[f32], iso: f32, grid: Grid, split: Split) -> Interpolant {
+    let n = grid.cells_per_axis;
+    let mut simplices: [HashSet<Vec<usize>>; 4] = Default::default();
+    let mut edges = HashSet::new();
+    for z in 0..n {
+        for y in 0..n {
+            for x in 0..n {
+                let point =
+                    |c: usize| grid.point_index(UVec3::new(x, y, z) + UVec3::from_array(CORNER_OFFSETS[c]));
+                for t in tetrahedra(split, [x, y, z]) {
+                    let corners = t.map(point);
+                    for mask in 1..16usize {
+                        let mut face: Vec<usize> =
+                            (0..4).filter(|i| mask >> i & 1 == 1).map(|i| corners[i]).collect();
+                        face.sort();
+                        if face.len() == 2 {
+                            edges.insert((face[0], face[1]));
+                        }
+                        if face.iter().all(|&p| values[p] > iso) {
+                            simplices[face.len() - 1].insert(face);
+                        }
+                    }
+                }
+            }
+        }
+    }
+    let euler = simplices[0].len() as i64 - simplices[1].len() as i64 + simplices[2].len() as i64
+        - simplices[3].len() as i64;
+    // Pieces of each side, by union-find along the edges whose ends lie on that side.
+    let mut parent: Vec<usize> = (0..values.len()).collect();
+    fn root(parent: &mut [usize], mut p: usize) -> usize {
+        while parent[p] != p {
+            parent[p] = parent[parent[p]];
+            p = parent[p];
+        }
+        p
+    }
+    for &(a, b) in &edges {
+        if (values[a] > iso) == (values[b] > iso) {
+            let (ra, rb) = (root(&mut parent, a), root(&mut parent, b));
+            parent[ra] = rb;
+        }
+    }
+    let (mut inside_pieces, mut outside_pieces) = (0, 0);
+    for p in 0..values.len() {
+        if root(&mut parent, p) == p {
+            if values[p] > iso { inside_pieces += 1 } else { outside_pieces += 1 }
+        }
+    }
+    Interpolant { euler, inside_pieces, outside_pieces }
+}
+
+#[test]
+fn the_mesh_has_the_topology_of_the_interpolant_of_its_tetrahedra_under_either_split() {
+    let mut mesher = TetraMesher::default();
+    let mut with_surface = 0;
+    let mut with_holes_or_pieces = 0;
+    for (k, scene) in oracle_scenes(12).iter().enumerate() {
+        if scene.resolution > 32 {
+            continue;
+        }
+        for split in [Split::Six, Split::Five] {
+            let construction = Construction { split, ..scene.construction };
+            let grid = Grid { cells_per_axis: scene.resolution };
+            let what = format!("scene {k}, {}, {split:?}", scene.what);
+            mesher.mesh(&scene.spheres, scene.iso, grid, construction);
+            let mesh = mesher.to_indexed().to_soup().weld_by_position();
+            let shape = mesh.shape();
+            assert!(shape.closed && shape.manifold, "{what}: {shape:?}");
+            let values = sample_blended_field(&scene.spheres, grid, construction.terms);
+            let solid = interpolant(&values, scene.iso, grid, split);
+            let euler: i64 = mesh.topology().component_euler.iter().sum();
+            // The surface bounds the solid: twice its Euler characteristic, and one piece of surface
+            // between each inside piece and the outside piece around it (the pieces nest as a tree).
+            assert_eq!(euler, 2 * solid.euler, "{what}");
+            if !mesh.triangles.is_empty() {
+                assert_eq!(
+                    shape.components as usize,
+                    solid.inside_pieces + solid.outside_pieces - 1,
+                    "{what}: {} pieces inside, {} outside",
+                    solid.inside_pieces,
+                    solid.outside_pieces
+                );
+                with_surface += 1;
+                with_holes_or_pieces += (shape.components > 1 || shape.genus > 0) as u32;
+            }
+        }
+    }
+    println!("{with_surface} surfaces, {with_holes_or_pieces} with several pieces or holes");
+    assert!(with_surface >= 80 && with_holes_or_pieces >= 10, "{with_surface}, {with_holes_or_pieces}");
+}
+
+/// From the panel's settings on the renderer: each split meshes the same field into a different closed
+/// surface, with more triangles than marching cubes' (each cell's are cut by its tetrahedra).
+#[test]
+fn each_split_makes_its_own_closed_surface_with_more_triangles_than_marching_cubes() {
+    let scene = Scene::new(4, 6).unwrap();
+    with_renderer(settings(4, 6, 24, 1.0), 16, 16, |o| {
+        o.renderer.set_scene(scene.clone());
+        let mut meshes = Vec::new();
+        for (method, split) in [
+            (Method::MarchingCubes, Split::Six),
+            (Method::MarchingTetrahedra, Split::Six),
+            (Method::MarchingTetrahedra, Split::Five),
+        ] {
+            let mut settings = Settings { resolution: 24, ..Settings::default() };
+            settings.view.method = method;
+            settings.view.split = split;
+            o.renderer.set_settings(settings).unwrap();
+            let mesh = pollster::block_on(o.renderer.extract_mesh());
+            let shape = mesh.to_soup().weld_by_position().shape();
+            assert!(shape.closed && shape.manifold, "{method:?}, {split:?}: {shape:?}");
+            meshes.push((mesh.triangles.len(), mesh.enclosed_volume()));
+        }
+        let [(cubes, cubes_volume), (six, six_volume), (five, five_volume)] = meshes[..] else {
+            unreachable!()
+        };
+        println!("triangles: cubes {cubes}, six {six}, five {five}");
+        assert!(six > cubes && five > cubes, "{cubes} {six} {five}");
+        assert_ne!(six, five, "the splits give the same triangles");
+        for volume in [six_volume, five_volume] {
+            assert!((volume / cubes_volume - 1.0).abs() < 0.02, "{volume} against {cubes_volume}");
+        }
+    });
+}
