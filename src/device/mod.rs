@@ -201,7 +201,7 @@ pub async fn try_map_and_read(device: &wgpu::Device, buffer: &wgpu::Buffer) -> O
 }
 
 /// `shaders/common.wgsl`: the grid, the spheres and the field, composed before every pass's own source.
-pub(crate) const COMMON_WGSL: &str = wgsl!(include_str!("../../shaders/common.wgsl"));
+pub(crate) const COMMON_WGSL: &str = wgsl!("common.wgsl");
 
 /// A compute shader module made of `shaders/common.wgsl` followed by a pass's own source.
 pub(crate) fn compute_module(device: &wgpu::Device, label: &str, source: &str) -> wgpu::ShaderModule {

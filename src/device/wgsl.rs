@@ -1,14 +1,15 @@
-//! The shaders as the binary carries them: [`wgsl!`](crate::device::wgsl) drops the line comments and
-//! the indentation of a WGSL source while the crate compiles, keeping every line break so that a
-//! shader error's line number still points at the same line of the file under `shaders/`. The
-//! comments are most of the shaders' bytes, and every byte of them is downloaded with the page's
-//! WebAssembly.
+//! The shaders as the binary carries them: `build.rs` gives the names they declare short ones and drops
+//! their comments (into `$OUT_DIR/shaders/`), then [`wgsl!`](crate::device::wgsl) drops the
+//! indentation and the spaces that separate nothing while the crate compiles, keeping every line break
+//! so that a shader error's line number still points at the same line of the file under `shaders/`.
+//! The comments and the long names are most of the shaders' bytes, and every byte of them is
+//! downloaded with the page's WebAssembly.
 
-/// `source` (`include_str!` of a WGSL file) without its comments and indentation, as a `&'static str`
-/// made at compile time.
+/// The shader at `path` under `shaders/`, as `build.rs` renamed it, without its indentation and the
+/// spaces that separate nothing, as a `&'static str` made at compile time.
 macro_rules! wgsl {
-    ($source:expr) => {{
-        const SOURCE: &str = $source;
+    ($path:literal) => {{
+        const SOURCE: &str = include_str!(concat!(env!("OUT_DIR"), "/shaders/", $path));
         const LEN: usize = SOURCE.len();
         const MINIFIED: ([u8; LEN], usize) = $crate::device::wgsl::minify::<LEN>(SOURCE);
         const SQUEEZED: ([u8; LEN], usize) = $crate::device::wgsl::squeeze::<LEN>(&MINIFIED.0, MINIFIED.1);

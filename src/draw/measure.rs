@@ -22,7 +22,7 @@ impl MeasurePass {
         let module = compute_module(
             device,
             "measures: shader",
-            wgsl!(include_str!("../../shaders/draw/measure.wgsl")),
+            wgsl!("draw/measure.wgsl"),
         );
         use wgpu::BufferUsages as U;
         Self {

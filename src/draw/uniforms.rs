@@ -6,7 +6,7 @@ use bytemuck::{Pod, Zeroable};
 
 /// `shaders/draw/shade.wgsl`, whose structs these mirror: the shading pass, and what the teaching views
 /// compose after `shaders/common.wgsl`.
-pub(crate) const SHADE_WGSL: &str = wgsl!(include_str!("../../shaders/draw/shade.wgsl"));
+pub(crate) const SHADE_WGSL: &str = wgsl!("draw/shade.wgsl");
 
 /// One light (`Light` in `shaders/draw/shade.wgsl`).
 #[repr(C)]

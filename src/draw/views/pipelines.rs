@@ -10,17 +10,17 @@ use wgpu::util::DeviceExt;
 
 /// The teaching views' WGSL, one file per view after what they share: one module holds them all.
 const VIEW_SOURCES: [&str; 11] = [
-    wgsl!(include_str!("../../../shaders/draw/views/common.wgsl")),
-    wgsl!(include_str!("../../../shaders/draw/views/triangles.wgsl")),
-    wgsl!(include_str!("../../../shaders/draw/views/points.wgsl")),
-    wgsl!(include_str!("../../../shaders/draw/views/lattice.wgsl")),
-    wgsl!(include_str!("../../../shaders/draw/views/cells.wgsl")),
-    wgsl!(include_str!("../../../shaders/draw/views/blocks.wgsl")),
-    wgsl!(include_str!("../../../shaders/draw/views/ambiguous.wgsl")),
-    wgsl!(include_str!("../../../shaders/draw/views/slice.wgsl")),
-    wgsl!(include_str!("../../../shaders/draw/views/selected.wgsl")),
-    wgsl!(include_str!("../../../shaders/draw/views/gizmo.wgsl")),
-    wgsl!(include_str!("../../../shaders/draw/views/exact.wgsl")),
+    wgsl!("draw/views/common.wgsl"),
+    wgsl!("draw/views/triangles.wgsl"),
+    wgsl!("draw/views/points.wgsl"),
+    wgsl!("draw/views/lattice.wgsl"),
+    wgsl!("draw/views/cells.wgsl"),
+    wgsl!("draw/views/blocks.wgsl"),
+    wgsl!("draw/views/ambiguous.wgsl"),
+    wgsl!("draw/views/slice.wgsl"),
+    wgsl!("draw/views/selected.wgsl"),
+    wgsl!("draw/views/gizmo.wgsl"),
+    wgsl!("draw/views/exact.wgsl"),
 ];
 
 /// The pipelines of the views for one output format and sample count, with the compute pipelines of
@@ -62,7 +62,7 @@ impl ViewPipelines {
         // After the grid and spheres, the shading uniforms and lighting.
         let module = |label, source: &str| shader_module(device, label, &[COMMON_WGSL, SHADE_WGSL, source]);
         let views = module("views: shader", &VIEW_SOURCES.join("\n"));
-        let overlays = module("overlays: shader", wgsl!(include_str!("../../../shaders/draw/overlays.wgsl")));
+        let overlays = module("overlays: shader", wgsl!("draw/overlays.wgsl"));
 
         use wgpu::ShaderStages as S;
         let entry =

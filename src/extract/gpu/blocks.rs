@@ -18,7 +18,7 @@ impl BlockPass {
         let module = compute_module(
             device,
             "blocks: shader",
-            wgsl!(include_str!("../../../shaders/extract/blocks.wgsl")),
+            wgsl!("extract/blocks.wgsl"),
         );
         Self {
             classify: compute_pipeline(device, "blocks: classify pipeline", &module, "classify_blocks"),

@@ -19,7 +19,7 @@ impl FieldPass {
         let module = compute_module(
             device,
             "field: shader",
-            wgsl!(include_str!("../../../shaders/extract/field.wgsl")),
+            wgsl!("extract/field.wgsl"),
         );
         Self {
             pipeline: compute_pipeline(device, "field: pipeline", &module, "evaluate_field"),

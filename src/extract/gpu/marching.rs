@@ -13,7 +13,7 @@ use metaballs_core::extract::tetra::{
 };
 use wgpu::util::DeviceExt;
 
-const CELLS_WGSL: &str = wgsl!(include_str!("../../../shaders/extract/cells.wgsl"));
+const CELLS_WGSL: &str = wgsl!("extract/cells.wgsl");
 
 /// Marching tetrahedra's tables as the shader reads them: each split's tetrahedra (six words a row,
 /// four corners of 3 bits each), then each case's triangle count and triangles (each vertex as its
@@ -57,7 +57,7 @@ pub struct MarchingPass {
 impl MarchingPass {
     /// Marching cubes, with every case table's triangles.
     pub fn cubes(device: &wgpu::Device) -> Self {
-        let source = wgsl!(include_str!("../../../shaders/extract/marching_cubes.wgsl"));
+        let source = wgsl!("extract/marching_cubes.wgsl");
         Self::new(
             device,
             "marching cubes",
@@ -70,7 +70,7 @@ impl MarchingPass {
 
     /// Marching tetrahedra, either split.
     pub fn tetrahedra(device: &wgpu::Device) -> Self {
-        let source = wgsl!(include_str!("../../../shaders/extract/marching_tetrahedra.wgsl"));
+        let source = wgsl!("extract/marching_tetrahedra.wgsl");
         let entries = ["make_tetra_vertices", "make_tetra_triangles"];
         Self::new(device, "marching tetrahedra", source, entries, &tetra_table(), true)
     }

@@ -52,8 +52,8 @@ struct Pipelines {
 
 impl Pipelines {
     fn new(device: &wgpu::Device) -> Self {
-        let meshing = wgsl!(include_str!("../../../shaders/extract/lod.wgsl"));
-        let selection = wgsl!(include_str!("../../../shaders/extract/lod_select.wgsl"));
+        let meshing = wgsl!("extract/lod.wgsl");
+        let selection = wgsl!("extract/lod_select.wgsl");
         let module = shader_module(device, "lod: shader", &[COMMON_WGSL, meshing, selection]);
         let pipeline = |name: &str| compute_pipeline(device, &format!("lod: {name} pipeline"), &module, name);
         let mut tables: Vec<u32> = packed_case_table().to_vec();
