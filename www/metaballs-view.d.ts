@@ -119,8 +119,10 @@ export declare class MetaballsView extends HTMLElement {
   lodFreeze: boolean;
   /** Mesh-on: auto, gpu, cpu. Attribute `mesh-on`; default "auto". */
   meshOn: 'auto' | 'gpu' | 'cpu';
-  /** Method: marching_cubes, surface_nets, dual_contouring. Attribute `method`; default "marching_cubes". */
-  method: 'marching_cubes' | 'surface_nets' | 'dual_contouring';
+  /** Method: marching_cubes, surface_nets, dual_contouring, marching_tetrahedra. Attribute `method`; default "marching_cubes". */
+  method: 'marching_cubes' | 'surface_nets' | 'dual_contouring' | 'marching_tetrahedra';
+  /** Split: six, five. Attribute `split`; default "six". */
+  split: 'six' | 'five';
   /** Animation speed: 0 to 3. Attribute `speed`; default 1. */
   speed: number;
   /** Layout seed: 0 to 4294967295. Attribute `seed`; default 1. */
@@ -197,7 +199,7 @@ export declare class MetaballsView extends HTMLElement {
   get sphereList(): MetaballsSphere[];
   /** Sphere-list: x,y,z,radius[,vx,vy,vz] per sphere joined by ; (a negative radius subtracts). Attribute `sphere-list`; default "". */
   set sphereList(value: string | MetaballsSphere[]);
-  /** Controls: all, none, or a comma list of spheres, iso, resolution, lod, lod-pixels, lod-freeze, mesh-on, method, speed, seed, paused, pause-on, step, view, display, compare, grid, color-by, ambiguous, critical, color, theme, antialiasing, slice, interpolation, table, blend, kernel, blobbiness, saddle, levels, inspector, step-through, error-plot, light, spot-angle, spot-softness, ambient, diffuse, specular, shininess, projection, fov, edit, scene, export, share. Attribute `controls`; default "none". */
+  /** Controls: all, none, or a comma list of spheres, iso, resolution, lod, lod-pixels, lod-freeze, mesh-on, method, split, speed, seed, paused, pause-on, step, view, display, compare, grid, color-by, ambiguous, critical, color, theme, antialiasing, slice, interpolation, table, blend, kernel, blobbiness, saddle, levels, inspector, step-through, error-plot, light, spot-angle, spot-softness, ambient, diffuse, specular, shininess, projection, fov, edit, scene, export, share. Attribute `controls`; default "none". */
   controls: string;
   /** Hud: on, off. Attribute `hud`; default "off". */
   hud: 'on' | 'off';

@@ -8,6 +8,7 @@ import assert from 'node:assert/strict';
 import path from 'node:path';
 import {
   useServerAndBrowser, openClosedAfterEach, picture, settledTriangles, screenshot, differingFraction, frameDrawn, outputDir,
+  openPanelGroups,
 } from './helpers.js';
 
 useServerAndBrowser();
@@ -74,12 +75,46 @@ test('extractor=surface_nets meshes one vertex per crossed cell, shows in the pi
   assert.deepEqual(errors, []);
 });
 
+test('method=marching_tetrahedra from an attribute, split=five from the panel: each another closed surface, in the HUD and the link', async () => {
+  const { page, errors } = await open(`?balls=${BALLS}&res=16&paused=1&aa=0&display=wireframe&hud=on&controls=all`);
+  const cubes = await settledTriangles(page);
+  const before = await picture(page);
+  await set(page, 'method', 'marching_tetrahedra');
+  await page.waitForFunction(() => location.search.includes('extractor=marching_tetrahedra'));
+  // The WebGPU page meshes marching tetrahedra in compute shaders, even on a software adapter.
+  await page.waitForFunction(() => /TETRAHEDRA/.test(window.metaballs.element.stats.adapter), null, { timeout: 20000 });
+  const six = await settledTriangles(page);
+  const after = await picture(page);
+  await screenshot(page, 'extractor-tetrahedra-six');
+  assert.ok(await differingFraction(page, before, after) > 0.005, 'the wireframe changes');
+  // Each crossed cell's triangles are cut by its tetrahedra: more and thinner triangles.
+  assert.ok(six > cubes * 1.5, `${six} against ${cubes}`);
+  assert.equal((await page.$eval('metaballs-view', (e) => e.topology())).closed, true);
+  await openPanelGroups(page);
+  await page.selectOption('#split', 'five');
+  await page.waitForFunction(() => location.search.includes('split=five'));
+  await page.waitForFunction((n) => window.metaballs.element.stats.triangles !== n, six, { timeout: 20000 });
+  const five = await settledTriangles(page);
+  await screenshot(page, 'extractor-tetrahedra-five');
+  assert.notEqual(five, six, 'the five-way split cuts the cells otherwise');
+  const shape = await page.$eval('metaballs-view', (e) => e.topology());
+  assert.equal(shape.closed, true);
+  // The case table has nothing to choose here, and says so.
+  await set(page, 'table', 'mc33');
+  await page.waitForFunction(() => document.querySelector('metaballs-view').shadowRoot.getElementById('notice')
+    .textContent === 'table=mc33: marching tetrahedra has no ambiguous case and no case table; the mesh is unchanged', null, { timeout: 10000 });
+  await frameDrawn(page);
+  assert.equal(await page.$eval('metaballs-view', (e) => e.stats.triangles), five);
+  console.log(`marching tetrahedra at 16³: ${six} triangles cut six ways, ${five} five ways (marching cubes ${cubes})`);
+  assert.deepEqual(errors, []);
+});
+
 test('bad comparison values get the notice and the figure keeps its view', async () => {
   const { page } = await open(`?balls=${BALLS}&res=16&paused=1&compare=sideways&extractor=dual&divider=2`);
   await settledTriangles(page);
   const notice = await page.textContent('#notice');
   for (const fragment of ['compare=sideways', 'one of none, split, overlay', 'extractor=dual',
-    'one of marching_cubes, surface_nets, dual_contouring', 'divider position must be between 0.05 and 0.95, got 2']) {
+    'one of marching_cubes, surface_nets, dual_contouring, marching_tetrahedra', 'divider position must be between 0.05 and 0.95, got 2']) {
     assert.ok(notice.includes(fragment), `the notice lacks ${fragment}: ${notice}`);
   }
   const kept = await page.$eval('metaballs-view', (e) => [e.compare, e.extractor, e.divider]);

@@ -10,7 +10,8 @@ use common::scenes::oracle_scenes;
 use common::*;
 use glam::UVec3;
 use metaballs::extract::cpu::TetraMesher;
-use metaballs::extract::reference::{Construction, Grid, sample_blended_field};
+use metaballs::extract::kernel::Terms;
+use metaballs::extract::reference::{Construction, Grid, sample_blended_field, surface_distance};
 use metaballs::extract::tables::CORNER_OFFSETS;
 use metaballs::extract::tetra::tetrahedra;
 use metaballs::scene::params::view::{Method, Split};
@@ -119,7 +120,9 @@ fn the_mesh_has_the_topology_of_the_interpolant_of_its_tetrahedra_under_either_s
 }
 
 /// From the panel's settings on the renderer: each split meshes the same field into a different closed
-/// surface, with more triangles than marching cubes' (each cell's are cut by its tetrahedra).
+/// surface, with more triangles than marching cubes' (each cell's are cut by its tetrahedra), thinner
+/// ones, and its vertices as near the exact surface (they lie on the linear interpolant along edges
+/// and diagonals alike).
 #[test]
 fn each_split_makes_its_own_closed_surface_with_more_triangles_than_marching_cubes() {
     let scene = Scene::new(4, 6).unwrap();

@@ -37,7 +37,7 @@ export class TableChange {
     if (!view) return;
     if (lod || method !== 'marching_cubes') {
       this.#pending = null;
-      const kept = lod ? 'lod' : { surface_nets: 'nets', dual_contouring: 'dual' }[method];
+      const kept = lod ? 'lod' : { surface_nets: 'nets', dual_contouring: 'dual', marching_tetrahedra: 'tetra' }[method];
       this.#ctx.notice(this.#ctx.t(`notice.table-kept-${kept}`, { table: value }));
       return;
     }

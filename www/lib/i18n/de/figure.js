@@ -50,6 +50,7 @@ export default {
   'notice.table-kept-lod': 'table={table}: Mit Detailstufen bleibt es bei der klassischen Tabelle; das Netz ist unverändert',
   'notice.table-kept-nets': 'table={table}: Surface Nets behält die klassische Tabelle; das Netz ist unverändert',
   'notice.table-kept-dual': 'table={table}: Dual Contouring hat keine Falltabelle; das Netz ist unverändert',
+  'notice.table-kept-tetra': 'table={table}: Marching Tetrahedra hat keinen mehrdeutigen Fall und keine Falltabelle; das Netz ist unverändert',
   'notice.table-none-face': 'table={table}: Keine Zelle hier hat eine Seitenfläche, die der Asymptotic Decider verbindet; beide Tabellen ergeben dieses Netz',
   'notice.table-none-tunnel': 'table={table}: Keine Zelle hier hat einen Tunnel, den MC33 zeichnet; beide Tabellen ergeben dieses Netz',
   'notice.table-none-both': 'table={table}: Keine Zelle hier hat eine Seitenfläche, die der Asymptotic Decider verbindet, oder einen Tunnel, den MC33 zeichnet; beide Tabellen ergeben dieses Netz',

@@ -82,6 +82,7 @@ export default {
   'notice.table-kept-lod': 'table={table}: level of detail keeps the classic table; the mesh is unchanged',
   'notice.table-kept-nets': 'table={table}: surface nets keeps the classic table; the mesh is unchanged',
   'notice.table-kept-dual': 'table={table}: dual contouring has no case table; the mesh is unchanged',
+  'notice.table-kept-tetra': 'table={table}: marching tetrahedra has no ambiguous case and no case table; the mesh is unchanged',
   'notice.table-none-face': 'table={table}: no cell here has a face the asymptotic decider joins; both tables give this mesh',
   'notice.table-none-tunnel': 'table={table}: no cell here has a tunnel MC33 draws; both tables give this mesh',
   'notice.table-none-both': 'table={table}: no cell here has a face the asymptotic decider joins or a tunnel MC33 '

@@ -50,6 +50,7 @@ export default {
   'notice.table-kept-lod': 'table={table}: el nivel de detalle mantiene la tabla clásica; la malla no cambia',
   'notice.table-kept-nets': 'table={table}: surface nets mantiene la tabla clásica; la malla no cambia',
   'notice.table-kept-dual': 'table={table}: dual contouring no tiene tabla de casos; la malla no cambia',
+  'notice.table-kept-tetra': 'table={table}: marching tetrahedra no tiene casos ambiguos ni tabla de casos; la malla no cambia',
   'notice.table-none-face': 'table={table}: aquí ninguna celda tiene una cara que el decisor asintótico una; ambas tablas dan esta malla',
   'notice.table-none-tunnel': 'table={table}: aquí ninguna celda tiene un túnel que MC33 dibuje; ambas tablas dan esta malla',
   'notice.table-none-both': 'table={table}: aquí ninguna celda tiene una cara que el decisor asintótico una ni un túnel que MC33 dibuje; ambas tablas dan esta malla',

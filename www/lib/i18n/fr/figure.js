@@ -50,6 +50,7 @@ export default {
   'notice.table-kept-lod': 'table={table} : le niveau de détail garde la table classique ; le maillage est inchangé',
   'notice.table-kept-nets': 'table={table} : surface nets garde la table classique ; le maillage est inchangé',
   'notice.table-kept-dual': 'table={table} : le dual contouring n’a pas de table de cas ; le maillage est inchangé',
+  'notice.table-kept-tetra': 'table={table} : marching tetrahedra n’a ni cas ambigu ni table de cas ; le maillage est inchangé',
   'notice.table-none-face': 'table={table} : aucune cellule ici n’a de face que le décideur asymptotique relie ; les deux tables donnent ce maillage',
   'notice.table-none-tunnel': 'table={table} : aucune cellule ici n’a de tunnel que MC33 dessine ; les deux tables donnent ce maillage',
   'notice.table-none-both': 'table={table} : aucune cellule ici n’a de face que le décideur asymptotique relie ni de tunnel que MC33 dessine ; les deux tables donnent ce maillage',

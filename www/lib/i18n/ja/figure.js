@@ -50,6 +50,7 @@ export default {
   'notice.table-kept-lod': 'table={table}: 詳細度（LOD）では従来のテーブルのままなので、メッシュは変わりません',
   'notice.table-kept-nets': 'table={table}: サーフェスネット法では従来のテーブルのままなので、メッシュは変わりません',
   'notice.table-kept-dual': 'table={table}：デュアルコンタリングにはケース表がありません。メッシュは変わりません',
+  'notice.table-kept-tetra': 'table={table}：マーチングテトラヘドラ法には曖昧なケースもケース表もありません。メッシュは変わりません',
   'notice.table-none-face': 'table={table}: ここには漸近判定法がつなぐ面を持つセルがないため、どちらのテーブルでもこのメッシュになります',
   'notice.table-none-tunnel': 'table={table}: ここには MC33 がトンネルを描くセルがないため、どちらのテーブルでもこのメッシュになります',
   'notice.table-none-both': 'table={table}: ここには漸近判定法がつなぐ面も MC33 が描くトンネルも持つセルがないため、どちらのテーブルでもこのメッシュになります',

@@ -50,6 +50,7 @@ export default {
   'notice.table-kept-lod': 'table={table}: o nível de detalhe mantém a tabela clássica; a malha não muda',
   'notice.table-kept-nets': 'table={table}: surface nets mantém a tabela clássica; a malha não muda',
   'notice.table-kept-dual': 'table={table}: dual contouring não tem tabela de casos; a malha não muda',
+  'notice.table-kept-tetra': 'table={table}: marching tetrahedra não tem casos ambíguos nem tabela de casos; a malha não muda',
   'notice.table-none-face': 'table={table}: nenhuma célula aqui tem uma face que o decisor assintótico une; as duas tabelas dão esta malha',
   'notice.table-none-tunnel': 'table={table}: nenhuma célula aqui tem um túnel que o MC33 desenha; as duas tabelas dão esta malha',
   'notice.table-none-both': 'table={table}: nenhuma célula aqui tem uma face que o decisor assintótico une nem um túnel que o MC33 desenha; as duas tabelas dão esta malha',

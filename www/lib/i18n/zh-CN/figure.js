@@ -50,6 +50,7 @@ export default {
   'notice.table-kept-lod': 'table={table}：细节层次仍使用经典表；网格不变',
   'notice.table-kept-nets': 'table={table}：Surface Nets 仍使用经典表；网格不变',
   'notice.table-kept-dual': 'table={table}：对偶轮廓法没有情形表；网格不变',
+  'notice.table-kept-tetra': 'table={table}：移动四面体没有歧义情形，也没有情形表；网格不变',
   'notice.table-none-face': 'table={table}：此处没有单元含有渐近判定器会连接的面；两种表给出的网格相同',
   'notice.table-none-tunnel': 'table={table}：此处没有单元含有 MC33 会绘制的隧道；两种表给出的网格相同',
   'notice.table-none-both': 'table={table}：此处没有单元含有渐近判定器会连接的面或 MC33 会绘制的隧道；两种表给出的网格相同',
