@@ -10,7 +10,8 @@
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
-/// WGSL's keywords, and the builtin functions and types a declared name could shadow.
+/// WGSL's keywords, the builtin functions and types a declared name could shadow, and its address
+/// spaces and access modes (a parameter may be called `workgroup`, as `var<workgroup>` says).
 const WGSL_OWN: &[&str] = &[
     "alias", "break", "case", "const", "const_assert", "continue", "continuing", "default", "diagnostic",
     "discard", "else", "enable", "false", "fn", "for", "if", "let", "loop", "override", "requires",
@@ -22,7 +23,8 @@ const WGSL_OWN: &[&str] = &[
     "round", "saturate", "select", "sign", "sin", "smoothstep", "sqrt", "step", "tan", "textureLoad",
     "textureSample", "textureStore", "textureDimensions", "transpose", "trunc", "workgroupBarrier",
     "storageBarrier", "array", "atomic", "bool", "f32", "f16", "i32", "u32", "vec2", "vec3", "vec4",
-    "mat2x2", "mat3x3", "mat4x4", "ptr", "sampler", "NULL", "Self",
+    "mat2x2", "mat3x3", "mat4x4", "ptr", "sampler", "NULL", "Self", "function", "private", "workgroup",
+    "uniform", "storage", "read", "write", "read_write", "handle",
 ];
 
 fn main() {
