@@ -19,11 +19,7 @@ pub struct MeasurePass {
 
 impl MeasurePass {
     pub fn new(device: &wgpu::Device) -> Self {
-        let module = compute_module(
-            device,
-            "measures: shader",
-            wgsl!("draw/measure.wgsl"),
-        );
+        let module = compute_module(device, "measures: shader", wgsl!("draw/measure.wgsl"));
         use wgpu::BufferUsages as U;
         Self {
             plan: compute_pipeline(device, "measures: plan pipeline", &module, "plan_measures"),

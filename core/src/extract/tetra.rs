@@ -128,7 +128,7 @@ const fn five_way(parity: u32) -> [[usize; 4]; 6] {
     let (mut e, mut k, mut c) = (0, 1, 0);
     while c < 8 {
         let o = CORNER_OFFSETS[c];
-        if (o[0] + o[1] + o[2] + parity) % 2 == 0 {
+        if (o[0] + o[1] + o[2] + parity).is_multiple_of(2) {
             even[e] = c;
             e += 1;
         } else {

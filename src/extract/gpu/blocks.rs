@@ -15,11 +15,7 @@ pub struct BlockPass {
 
 impl BlockPass {
     pub fn new(device: &wgpu::Device) -> Self {
-        let module = compute_module(
-            device,
-            "blocks: shader",
-            wgsl!("extract/blocks.wgsl"),
-        );
+        let module = compute_module(device, "blocks: shader", wgsl!("extract/blocks.wgsl"));
         Self {
             classify: compute_pipeline(device, "blocks: classify pipeline", &module, "classify_blocks"),
             plan: compute_pipeline(device, "blocks: plan pipeline", &module, "plan_dispatch"),

@@ -16,11 +16,7 @@ pub struct FieldPass {
 
 impl FieldPass {
     pub fn new(device: &wgpu::Device) -> Self {
-        let module = compute_module(
-            device,
-            "field: shader",
-            wgsl!("extract/field.wgsl"),
-        );
+        let module = compute_module(device, "field: shader", wgsl!("extract/field.wgsl"));
         Self {
             pipeline: compute_pipeline(device, "field: pipeline", &module, "evaluate_field"),
             classify: compute_pipeline(device, "field: classify pipeline", &module, "classify_cells"),

@@ -74,8 +74,8 @@ impl TetraMesher {
                     let case = (0..4).fold(0, |m, i| m | (inside[t[i]] as usize) << i);
                     for triangle in &TETRAHEDRON_TRIANGLES[case][..TETRAHEDRON_TRIANGLE_COUNTS[case]] {
                         for &[i, j] in triangle {
-                            let vertex =
-                                self.vertex(spheres, iso, grid, construction, cell, [t[i], t[j]], &values);
+                            let field = (spheres, iso, grid, construction);
+                            let vertex = self.vertex(field, cell, [t[i], t[j]], &values);
                             self.indices.push(vertex);
                         }
                     }
@@ -89,10 +89,7 @@ impl TetraMesher {
     /// The vertex on the segment between corners `ends` of `cell`, made on first use.
     fn vertex(
         &mut self,
-        spheres: &[Sphere],
-        iso: f32,
-        grid: Grid,
-        construction: Construction,
+        (spheres, iso, grid, construction): (&[Sphere], f32, Grid, Construction),
         cell: [u32; 3],
         [a, b]: [usize; 2],
         values: &[f32; 8],
