@@ -220,4 +220,86 @@ mod tests {
             assert_eq!(ours, code);
         }
     }
+
+    /// What `build.rs` gives the crate: every shader under `shaders/`, renamed, by its path there.
+    fn renamed() -> Vec<(String, String, String)> {
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("shaders");
+        let out = std::path::Path::new(env!("OUT_DIR")).join("shaders");
+        let mut files = Vec::new();
+        let mut dirs = vec![root.clone()];
+        while let Some(dir) = dirs.pop() {
+            for entry in std::fs::read_dir(dir).unwrap() {
+                let path = entry.unwrap().path();
+                if path.is_dir() {
+                    dirs.push(path);
+                } else if path.extension().is_some_and(|e| e == "wgsl") {
+                    let name = path.strip_prefix(&root).unwrap().to_string_lossy().into_owned();
+                    let original = std::fs::read_to_string(&path).unwrap();
+                    let shipped = std::fs::read_to_string(out.join(&name)).unwrap();
+                    files.push((name, original, shipped));
+                }
+            }
+        }
+        assert!(files.len() > 20, "{} shaders", files.len());
+        files
+    }
+
+    /// The words of a line of code and what lies between them (numbers whole).
+    fn words(line: &str) -> Vec<(bool, String)> {
+        let mut out: Vec<(bool, String)> = Vec::new();
+        let mut in_number = false;
+        for c in line.chars() {
+            let word = c.is_ascii_alphanumeric() || c == '_';
+            in_number =
+                in_number && (word || c == '.') || (c.is_ascii_digit() && !out.last().is_some_and(|w| w.0));
+            let is_name = word && !in_number;
+            match out.last_mut() {
+                Some((name, text)) if *name == is_name && (is_name || !word) => text.push(c),
+                _ => out.push((is_name, c.to_string())),
+            }
+        }
+        out
+    }
+
+    /// The shipped shaders are the shaders with their comments gone and their names renamed: line for
+    /// line the same code between the names; one short name for each name, the same in every file, no
+    /// two names sharing one; and the entry points and overrides the host names kept.
+    #[test]
+    fn the_renamed_shaders_are_the_shaders_with_one_short_name_for_each_name() {
+        let mut to_short = std::collections::BTreeMap::new();
+        let mut from_short = std::collections::BTreeMap::new();
+        let (mut before, mut after) = (0, 0);
+        for (file, original, shipped) in renamed() {
+            assert_eq!(shipped.lines().count(), original.lines().count(), "{file}");
+            for (line, (theirs, ours)) in original.lines().zip(shipped.lines()).enumerate() {
+                let code = theirs.split("//").next().unwrap();
+                let (theirs, ours) = (words(code), words(ours));
+                assert_eq!(theirs.len(), ours.len(), "{file}:{}: {code} | {ours:?}", line + 1);
+                for ((is_name, name), (_, short)) in theirs.iter().zip(&ours) {
+                    if !is_name {
+                        assert_eq!(name, short, "{file}:{}", line + 1);
+                        continue;
+                    }
+                    assert_eq!(
+                        to_short.entry(name.clone()).or_insert(short.clone()),
+                        short,
+                        "{file}: {name}"
+                    );
+                    assert_eq!(
+                        from_short.entry(short.clone()).or_insert(name.clone()),
+                        name,
+                        "{file}: {short}"
+                    );
+                    before += name.len();
+                    after += short.len();
+                }
+            }
+        }
+        for kept in
+            ["make_vertices", "make_tetra_triangles", "finalize_draw", "LIGHT_SLOTS", "position", "xyz"]
+        {
+            assert_eq!(to_short.get(kept).map(String::as_str), Some(kept));
+        }
+        assert!(after * 3 < before * 2, "names of {after} bytes, from {before}");
+    }
 }
