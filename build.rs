@@ -249,10 +249,15 @@ fn short_names(codes: &[String]) -> BTreeMap<String, String> {
             }
             let previous = if k > 0 { seq[k - 1] } else { "" };
             let next = seq.get(k + 1).copied().unwrap_or("");
-            // `var<storage, read> name`: the name after the address space's `>`.
+            // An attribute's name (`@size`, `@vertex`) is WGSL's own.
+            if previous == "@" {
+                kept.insert(s.to_string());
+                continue;
+            }
+            // `var<storage, read> name`: the name right after the address space's `>`.
             let after_space = previous == ">" && {
                 let opened = seq[..k].iter().rposition(|t| *t == "<");
-                opened.is_some_and(|at| at > 0 && seq[at - 1] == "var")
+                opened.is_some_and(|at| at > 0 && seq[at - 1] == "var" && !seq[at..k - 1].contains(&">"))
             };
             if matches!(previous, "fn" | "struct" | "let" | "var" | "const" | "alias" | "override")
                 || after_space

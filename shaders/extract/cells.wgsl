@@ -60,7 +60,13 @@ fn owned_vertex(cell: vec3<u32>, k: u32, per_cell: u32) -> u32 {
     }
     let at = cell % BLOCK_CELLS;
     let local = at.x + BLOCK_CELLS * (at.y + BLOCK_CELLS * at.z);
-    return edge_vertices[(slot * 64u + local) * per_cell + k];
+    let index = (slot * 64u + local) * per_cell + k;
+    // Past the end of a buffer too small for every active block (marching tetrahedra's, at the largest
+    // grids): no vertex.
+    if (index >= arrayLength(&edge_vertices)) {
+        return INVALID;
+    }
+    return edge_vertices[index];
 }
 
 // Appends a triangle at `slot_index` of the indices, or a degenerate one (which draws nothing) where a

@@ -8,7 +8,7 @@
 // tetrahedra and appends their triangles as indices into the vertices of the segments they cross (in
 // its own block or a neighbour's).
 
-// The tables (`tetra_table` in src/extract/gpu/tetrahedra.rs): at row * 6 + k, the k-th tetrahedron
+// The tables (`tetra_table` in src/extract/gpu/marching.rs): at row * 6 + k, the k-th tetrahedron
 // of a split's row (0 six-way, 1 and 2 five-way in a cell whose lowest corner's coordinates sum to an
 // even or odd number) as four corners of 3 bits; at CASES + case, the case's triangle count in bits 0
 // and 1, then from bit 2 its triangles, 12 bits each: three vertices, each on the edge between two of
@@ -63,6 +63,10 @@ fn make_tetra_vertices(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(loc
     let local = reference % 64u;
     let at = local_cell(local);
     let cell = block_coords(active_blocks[slot]) * BLOCK_CELLS + at;
+    // The segments' vertices of a block past the buffer's room are not made.
+    if ((slot * 64u + local + 1u) * SEGMENTS > arrayLength(&edge_vertices)) {
+        return;
+    }
     let count = select(SEGMENTS, SEGMENTS - 1u, five_way());
     var crossed = 0u;
     for (var k = 0u; k < count; k++) {
@@ -114,10 +118,6 @@ fn make_tetra_triangles(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(lo
     }
     let slot = reference / 64u;
     let cell = block_coords(active_blocks[slot]) * BLOCK_CELLS + local_cell(reference % 64u);
-    // Part way through the march, the cells not reached yet give no triangles.
-    if (!marched(cell)) {
-        return;
-    }
     let inside = cell_cases[reference] & CASE_BITS;
     let row = select(0u, 1u + u32(odd(cell)), five_way());
     let count = select(6u, 5u, five_way());

@@ -64,9 +64,8 @@ impl Renderer {
                 let overflowed = indices < needed.indices;
                 let made_by = stage.extractors[active].capabilities();
                 // Part way through the march the mesh is open.
-                stage.counted.closed = !overflowed
-                    && made_by.method == Method::MarchingCubes
-                    && self.settings.view.march.is_none();
+                stage.counted.closed =
+                    !overflowed && made_by.method.closes_its_mesh() && self.settings.view.march.is_none();
                 stage.counted.drawn = Some(drawn);
                 let mut levels = LevelCounts::default();
                 if let Some(triangles) = self.lod_summary().and_then(|s| s.triangles) {

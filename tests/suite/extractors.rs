@@ -43,7 +43,7 @@ fn every_extractor_in_the_list_matches_the_oracle() {
         .filter(|(c, _)| !c.lod && marching.contains(&c.method))
         .map(|(c, name)| (name, c.method))
         .collect();
-    assert_eq!(uniform.len(), 4, "{uniform:?}");
+    assert!(uniform.len() >= 4, "{uniform:?}");
     with_renderer(settings(1, 1, 16, 1.0), 16, 16, |o| {
         for (name, method) in uniform {
             o.renderer.pin_extractor(Some(name)).unwrap();

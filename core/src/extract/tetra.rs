@@ -19,7 +19,7 @@ use crate::extract::mesh::Mesh;
 use crate::extract::reference::{Construction, Grid, sample_blended_field, surface_vertex};
 use crate::extract::tables::CORNER_OFFSETS;
 use crate::scene::Sphere;
-use crate::scene::params::view::{March, Split};
+use crate::scene::params::view::Split;
 use glam::UVec3;
 
 /// Slots of segments per grid point: three edges, three face diagonals, one body diagonal.
@@ -227,9 +227,6 @@ pub fn extract_tetrahedra(spheres: &[Sphere], iso: f32, grid: Grid, construction
                 let value = |c: usize| values[grid.point_index(corner(c))];
                 let inside: [bool; 8] = std::array::from_fn(|c| value(c) > iso);
                 if inside.iter().all(|&i| i) || !inside.iter().any(|&i| i) {
-                    continue;
-                }
-                if !March::reached(construction.march, [x, y, z]) {
                     continue;
                 }
                 for t in tetrahedra(construction.split, [x, y, z]) {

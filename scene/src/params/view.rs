@@ -173,6 +173,12 @@ impl Method {
     pub fn has_cases(self) -> bool {
         self == Method::MarchingCubes
     }
+
+    /// The primal methods, whose whole meshes are closed 2-manifolds (a dual method's vertex can join
+    /// sheets): from outside the box their back faces never show.
+    pub fn closes_its_mesh(self) -> bool {
+        matches!(self, Method::MarchingCubes | Method::MarchingTetrahedra)
+    }
 }
 
 choice!(

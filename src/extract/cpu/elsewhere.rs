@@ -35,7 +35,8 @@ pub fn pack(method: Method, job: &Job) -> Vec<f32> {
         construction.case_table.index() as f32,
         construction.terms.kernel.index() as f32,
         construction.terms.blobbiness,
-        construction.split.index() as f32,
+        // Only marching tetrahedra is cut: another method's job is the same under either split.
+        if method == Method::MarchingTetrahedra { construction.split.index() as f32 } else { 0.0 },
     ]);
     for s in job.spheres {
         packed.extend([s.center.x, s.center.y, s.center.z, s.radius, s.charge]);

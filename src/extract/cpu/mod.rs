@@ -191,9 +191,10 @@ impl<M: CpuMeshing> Extractor for CpuMeshExtractor<M> {
         let needed = self.counters();
         let (vertices, indices) = (self.mesher.vertices(), self.mesher.indices());
         let fits = output.buffers.holds(needed.vertices, needed.indices);
-        // A whole marching-cubes mesh is closed, so from outside the box its back faces never show.
+        // A whole marching-cubes or marching-tetrahedra mesh is closed, so from outside the box its back
+        // faces never show.
         let front = match output.front_faces {
-            Some(viewpoint) if fits && M::METHOD == Method::MarchingCubes => {
+            Some(viewpoint) if fits && M::METHOD.closes_its_mesh() => {
                 facing::front_faces(vertices, indices, viewpoint, &mut self.front);
                 true
             }

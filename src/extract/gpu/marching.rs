@@ -15,11 +15,15 @@ use wgpu::util::DeviceExt;
 
 const CELLS_WGSL: &str = wgsl!("extract/cells.wgsl");
 
+/// Where the cases start in marching tetrahedra's tables: after three rows of six tetrahedra (`CASES`
+/// in the shader).
+const CASES: usize = 3 * 6;
+
 /// Marching tetrahedra's tables as the shader reads them: each split's tetrahedra (six words a row,
 /// four corners of 3 bits each), then each case's triangle count and triangles (each vertex as its
 /// edge's two corners of the tetrahedron, 2 bits each).
 fn tetra_table() -> Vec<u32> {
-    let mut table = vec![0; 18 + 16];
+    let mut table = vec![0; CASES + 16];
     for (row, &count) in TETRAHEDRA_PER_CELL.iter().enumerate() {
         for (k, t) in TETRAHEDRA[row][..count].iter().enumerate() {
             table[row * 6 + k] = (0..4).map(|i| (t[i] as u32) << (3 * i)).sum();
@@ -33,7 +37,7 @@ fn tetra_table() -> Vec<u32> {
                 word |= ((a | b << 2) as u32) << (2 + 12 * j + 4 * i);
             }
         }
-        table[18 + case] = word;
+        table[CASES + case] = word;
     }
     table
 }
@@ -102,10 +106,16 @@ impl MarchingPass {
 
     /// Binds the passes to new buffers.
     pub fn bind(&mut self, device: &wgpu::Device, scene: &SceneBuffers, mesh: &MeshBuffers) {
+        // As many active blocks' segments as the mesh holds blocks, or as one binding holds: the cells
+        // of blocks past it get no vertices (their triangles are left out, as when the vertex buffer is
+        // full).
+        let limits = device.limits();
+        let per_block = 64 * SLOTS as u64 * 4;
+        let most = limits.max_storage_buffer_binding_size.min(limits.max_buffer_size) / per_block;
         let own = self.tetrahedra.then(|| {
             device.create_buffer(&wgpu::BufferDescriptor {
                 label: Some(self.label),
-                size: (mesh.capacity.blocks as u64 * 64 * SLOTS as u64 * 4).max(16),
+                size: ((mesh.capacity.blocks as u64).min(most) * per_block).max(16),
                 usage: wgpu::BufferUsages::STORAGE,
                 mapped_at_creation: false,
             })

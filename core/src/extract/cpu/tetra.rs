@@ -12,7 +12,6 @@ use crate::extract::tetra::{
     SLOTS, TETRAHEDRON_TRIANGLE_COUNTS, TETRAHEDRON_TRIANGLES, segment_slot, tetrahedra,
 };
 use crate::scene::Sphere;
-use crate::scene::params::view::March;
 use glam::Vec3;
 use std::collections::HashMap;
 
@@ -46,7 +45,8 @@ impl TetraMesher {
         self.stats = DualStats { active_blocks, active_cells };
     }
 
-    /// Meshes the surface f = `iso` of `spheres` on `grid`, each cell cut by `construction.split`.
+    /// Meshes the surface f = `iso` of `spheres` on `grid`, each cell cut by `construction.split` (the
+    /// whole surface: the step-through of the march walks marching cubes alone).
     pub fn mesh(&mut self, spheres: &[Sphere], iso: f32, grid: Grid, construction: Construction) {
         let n = grid.cells_per_axis;
         self.vertices.clear();
@@ -63,10 +63,7 @@ impl TetraMesher {
                 };
                 let values: [f32; 8] = std::array::from_fn(|c| self.field.value(corner(c), n));
                 let inside = values.map(|v| v > iso);
-                if inside.iter().all(|&i| i)
-                    || !inside.iter().any(|&i| i)
-                    || !March::reached(construction.march, cell)
-                {
+                if inside.iter().all(|&i| i) || !inside.iter().any(|&i| i) {
                     continue;
                 }
                 crossed += 1;
