@@ -16,7 +16,7 @@ struct Grid {
     // Bit 0: vertices at edge midpoints (else interpolated); bit 1: blend by max (else sum); bit 2:
     // ambiguous faces joined by the asymptotic decider (else the classic table); bit 3: and the cell's
     // interior resolved too (MC33); bits 4 and 5 (KERNEL_SHIFT): the kernel; bit 6 (FLAG_FIVE in
-    // marching_tetrahedra.wgsl): cells cut into five tetrahedra.
+    // extract/cells.wgsl): marching tetrahedra cuts cells into five tetrahedra.
     flags: u32,
     // The step-through of the march: only the cells up to this one (x fastest, then y, then z) give
     // triangles; all of them when it is u32's largest value on each axis.

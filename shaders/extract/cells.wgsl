@@ -48,6 +48,85 @@ fn write_vertex(index: u32, p: vec3<f32>, n: vec3<f32>) {
     vertices[o + 5u] = n.z;
 }
 
+// Segments a cell may own: three edges, three face diagonals, one body diagonal.
+const SEGMENTS: u32 = 7u;
+// In grid.flags: marching tetrahedra cuts cells into five tetrahedra, else six.
+const FLAG_FIVE: u32 = 64u;
+
+// A segment, as its ends' offsets from a cell's lowest corner, the end first in grid order first.
+struct Segment {
+    a: vec3<u32>,
+    b: vec3<u32>,
+}
+
+fn five_way() -> bool {
+    return (grid.flags & FLAG_FIVE) != 0u;
+}
+
+fn odd(cell: vec3<u32>) -> bool {
+    return ((cell.x + cell.y + cell.z) & 1u) == 1u;
+}
+
+// The k-th segment `cell` owns: k < 3 the edge along axis k (all marching cubes' cells own); 3 + a the
+// diagonal of the face across axis a (with five tetrahedra, the one between the face's corners whose
+// coordinates sum to an even number); 6 the body diagonal.
+fn owned_segment(cell: vec3<u32>, k: u32) -> Segment {
+    if (k < 3u) {
+        return Segment(vec3<u32>(0u), unit(k));
+    }
+    if (k == 6u) {
+        return Segment(vec3<u32>(0u), vec3<u32>(1u));
+    }
+    let u = unit(select(0u, 1u, k == 3u));
+    let v = unit(select(2u, 1u, k == 5u));
+    if (five_way() && odd(cell)) {
+        return Segment(u, v);
+    }
+    return Segment(vec3<u32>(0u), u + v);
+}
+
+// The vertices on the first `count` segments the active cell of invocation `index` owns, at `per_cell`
+// slots a cell (INVALID where a segment is not crossed or the budget was full). A crossed segment's
+// lowest corner is always an active cell's, so every vertex is made once.
+fn make_owned_vertices(workgroup: vec3<u32>, index: u32, count: u32, per_cell: u32) {
+    let reference = active_cell(workgroup, index);
+    if (reference == INVALID) {
+        return;
+    }
+    let slot = reference / 64u;
+    let local = reference % 64u;
+    let at = local_cell(local);
+    let cell = block_coords(active_blocks[slot]) * BLOCK_CELLS + at;
+    // The segments' vertices of a block past the buffer's room are not made.
+    if ((slot * 64u + local + 1u) * per_cell > arrayLength(&edge_vertices)) {
+        return;
+    }
+    var crossed = 0u;
+    for (var k = 0u; k < count; k++) {
+        let s = owned_segment(cell, k);
+        if ((value_at(slot, at + s.a) > grid.iso) != (value_at(slot, at + s.b) > grid.iso)) {
+            crossed |= 1u << k;
+        }
+    }
+    var next = INVALID;
+    if (crossed != 0u) {
+        next = atomicAdd(&counters.vertices, countOneBits(crossed));
+    }
+    for (var k = 0u; k < per_cell; k++) {
+        var index = INVALID;
+        if ((crossed & (1u << k)) != 0u) {
+            if (next < grid.max_vertices) {
+                index = next;
+                let s = owned_segment(cell, k);
+                let v = edge_vertex(cell + s.a, cell + s.b, value_at(slot, at + s.a), value_at(slot, at + s.b));
+                write_vertex(index, v.position, v.normal);
+            }
+            next += 1u;
+        }
+        edge_vertices[(slot * 64u + local) * per_cell + k] = index;
+    }
+}
+
 // The `k`-th of the `per_cell` vertices `cell` owns, wherever its block's slot is.
 fn owned_vertex(cell: vec3<u32>, k: u32, per_cell: u32) -> u32 {
     // A crossed edge never starts on the box's far faces (both its ends would read as outside).

@@ -32,43 +32,10 @@ fn edge_start(e: u32) -> vec4<u32> {
     }
 }
 
+// The vertices on the three edges leaving the cell's lowest corner: 0 along x, 3 along y, 8 along z.
 @compute @workgroup_size(64)
 fn make_vertices(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_invocation_index) index: u32) {
-    let reference = active_cell(workgroup, index);
-    if (reference == INVALID) {
-        return;
-    }
-    let slot = reference / 64u;
-    let local = reference % 64u;
-    let at = local_cell(local);
-    let cell = block_coords(active_blocks[slot]) * BLOCK_CELLS + at;
-
-    // The edges leaving the lowest corner: 0 along x, 3 along y, 8 along z.
-    let f0 = value_at(slot, at);
-    let inside0 = f0 > grid.iso;
-    var crossed = 0u;
-    for (var axis = 0u; axis < 3u; axis++) {
-        if ((value_at(slot, at + unit(axis)) > grid.iso) != inside0) {
-            crossed |= 1u << axis;
-        }
-    }
-    let count = countOneBits(crossed);
-    var next = INVALID;
-    if (count > 0u) {
-        next = atomicAdd(&counters.vertices, count);
-    }
-    for (var axis = 0u; axis < 3u; axis++) {
-        var index = INVALID;
-        if ((crossed & (1u << axis)) != 0u) {
-            if (next < grid.max_vertices) {
-                index = next;
-                let v = edge_vertex(cell, cell + unit(axis), f0, value_at(slot, at + unit(axis)));
-                write_vertex(index, v.position, v.normal);
-            }
-            next += 1u;
-        }
-        edge_vertices[(slot * 64u + local) * 3u + axis] = index;
-    }
+    make_owned_vertices(workgroup, index, 3u, 3u);
 }
 
 @compute @workgroup_size(64)

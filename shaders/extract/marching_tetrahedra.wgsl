@@ -1,10 +1,10 @@
 // Marching tetrahedra over the active cells, one invocation per cell, after cells.wgsl, with the splits
 // and cases of core/src/extract/tetra.rs.
 //
-// `make_tetra_vertices`: each cell computes the vertices on the segments it owns: the three edges
-// leaving its lowest corner, the diagonal the split draws on each of the three faces through that
-// corner, and with six tetrahedra the diagonal through the cell, so every vertex is computed once (a
-// crossed segment's lowest corner is an active cell's). `make_tetra_triangles`: each cell cuts its
+// `make_tetra_vertices`: each cell computes the vertices on the segments it owns (cells.wgsl): the
+// three edges leaving its lowest corner, the diagonal the split draws on each of the three faces
+// through that corner, and with six tetrahedra the diagonal through the cell, so every vertex is
+// computed once (a crossed segment's lowest corner is an active cell's). `make_tetra_triangles`: each cell cuts its
 // tetrahedra and appends their triangles as indices into the vertices of the segments they cross (in
 // its own block or a neighbour's).
 
@@ -16,82 +16,10 @@
 @group(0) @binding(21) var<storage, read> tetra_table: array<u32>;
 
 const CASES: u32 = 18u;
-// Vertices a cell owns: three edges, three face diagonals, one body diagonal.
-const SEGMENTS: u32 = 7u;
-// In grid.flags: cells cut into five tetrahedra, else six.
-const FLAG_FIVE: u32 = 64u;
-
-// A segment, as its ends' offsets from a cell's lowest corner, the end first in grid order first.
-struct Segment {
-    a: vec3<u32>,
-    b: vec3<u32>,
-}
-
-fn five_way() -> bool {
-    return (grid.flags & FLAG_FIVE) != 0u;
-}
-
-fn odd(cell: vec3<u32>) -> bool {
-    return ((cell.x + cell.y + cell.z) & 1u) == 1u;
-}
-
-// The k-th segment `cell` owns: k < 3 the edge along axis k; 3 + a the diagonal of the face across axis
-// a (with five tetrahedra, the one between the face's corners whose coordinates sum to an even number);
-// 6 the body diagonal.
-fn owned_segment(cell: vec3<u32>, k: u32) -> Segment {
-    if (k < 3u) {
-        return Segment(vec3<u32>(0u), unit(k));
-    }
-    if (k == 6u) {
-        return Segment(vec3<u32>(0u), vec3<u32>(1u));
-    }
-    let u = unit(select(0u, 1u, k == 3u));
-    let v = unit(select(2u, 1u, k == 5u));
-    if (five_way() && odd(cell)) {
-        return Segment(u, v);
-    }
-    return Segment(vec3<u32>(0u), u + v);
-}
 
 @compute @workgroup_size(64)
 fn make_tetra_vertices(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_invocation_index) index: u32) {
-    let reference = active_cell(workgroup, index);
-    if (reference == INVALID) {
-        return;
-    }
-    let slot = reference / 64u;
-    let local = reference % 64u;
-    let at = local_cell(local);
-    let cell = block_coords(active_blocks[slot]) * BLOCK_CELLS + at;
-    // The segments' vertices of a block past the buffer's room are not made.
-    if ((slot * 64u + local + 1u) * SEGMENTS > arrayLength(&edge_vertices)) {
-        return;
-    }
-    let count = select(SEGMENTS, SEGMENTS - 1u, five_way());
-    var crossed = 0u;
-    for (var k = 0u; k < count; k++) {
-        let s = owned_segment(cell, k);
-        if ((value_at(slot, at + s.a) > grid.iso) != (value_at(slot, at + s.b) > grid.iso)) {
-            crossed |= 1u << k;
-        }
-    }
-    var next = INVALID;
-    if (crossed != 0u) {
-        next = atomicAdd(&counters.vertices, countOneBits(crossed));
-    }
-    for (var k = 0u; k < SEGMENTS; k++) {
-        var index = INVALID;
-        if ((crossed & (1u << k)) != 0u) {
-            if (next < grid.max_vertices) {
-                index = next;
-                let s = owned_segment(cell, k);
-                let v = edge_vertex(cell + s.a, cell + s.b, value_at(slot, at + s.a), value_at(slot, at + s.b));
-                write_vertex(index, v.position, v.normal);
-            }
-            next += 1u;
-        }
-        edge_vertices[(slot * 64u + local) * SEGMENTS + k] = index;
-    }
+    make_owned_vertices(workgroup, index, select(SEGMENTS, SEGMENTS - 1u, five_way()), SEGMENTS);
 }
 
 // The vertex on the segment between corners `c` and `d` of `cell`: owned by the cell at the segment's
