@@ -26,12 +26,13 @@ function random(seed) {
 }
 
 // A packed marching-cubes job (`View.cpu_job`): method, iso, cells, interpolation, blend, table,
-// kernel, blobbiness, then centre, radius and charge of each sphere.
+// kernel, blobbiness, split (marching tetrahedra's alone: 0 here), then centre, radius and charge of
+// each sphere.
 function job(seed) {
   const next = random(seed);
   const count = 1 + Math.floor(next() * 24);
   const cells = [16, 29, 32, 64, 96, 128][seed % 6];
-  const head = [0, 0.5 + next() * 1.5, cells, seed % 2, (seed >> 1) % 2, seed % 3, Math.floor(seed / 3) % 3, 2];
+  const head = [0, 0.5 + next() * 1.5, cells, seed % 2, (seed >> 1) % 2, seed % 3, Math.floor(seed / 3) % 3, 2, 0];
   const spheres = Array.from({ length: count }, (_, i) => [
     next() * 1.8 - 0.9, next() * 1.8 - 0.9, next() * 1.8 - 0.9, 0.1 + next() * 0.35, i % 4 === 3 ? -1 : 1,
   ]);
