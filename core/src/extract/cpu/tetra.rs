@@ -13,7 +13,7 @@ use crate::extract::tetra::{
 };
 use crate::scene::Sphere;
 use glam::Vec3;
-use std::collections::HashMap;
+use rustc_hash::FxHashMap;
 
 /// A reusable marching-tetrahedra mesher, filling `vertices` (position then outward normal, 6 `f32`
 /// each) and `indices` (three per triangle, counter-clockwise seen from outside).
@@ -24,7 +24,7 @@ pub struct TetraMesher {
     stats: DualStats,
     field: KeptField,
     /// The vertex on each segment used so far, by `point index · SLOTS + slot`.
-    segments: HashMap<u64, u32>,
+    segments: FxHashMap<u64, u32>,
 }
 
 impl TetraMesher {
