@@ -280,45 +280,48 @@ pub fn extract(spheres: &[Sphere], iso: f32, grid: Grid) -> Mesh {
 pub fn extract_with(spheres: &[Sphere], iso: f32, grid: Grid, construction: Construction) -> Mesh {
     let values = sample_blended_field(spheres, grid, construction.terms);
     let mut mesh = Mesh::default();
-    let n = grid.cells_per_axis;
-    for z in 0..n {
-        for y in 0..n {
-            for x in 0..n {
-                let cell = UVec3::new(x, y, z);
-                let corner = |c: usize| cell + UVec3::from_array(CORNER_OFFSETS[c]);
-                let value = |c: usize| values[grid.point_index(corner(c))];
-                let case = (0..8).fold(0usize, |m, c| m | (((value(c) > iso) as usize) << c));
-                if EDGE_TABLE[case] == 0 || !March::reached(construction.march, [x, y, z]) {
-                    continue;
-                }
-                let vertex = |e: usize| {
-                    let [a, b] = EDGE_CORNERS[e];
-                    let (ia, ib) = (corner(a), corner(b));
-                    let (p, normal) = surface_vertex(
-                        spheres,
-                        iso,
-                        construction,
-                        (grid.point(ia), value(a), grid.is_boundary(ia)),
-                        (grid.point(ib), value(b), grid.is_boundary(ib)),
-                    );
-                    let axis = (0..3).find(|&i| ia[i] != ib[i]).unwrap() as u64;
-                    (p, normal, grid.point_index(ia) as u64 * 3 + axis)
-                };
-                let mut triangles = [[0; 3]; MAX_DECIDED_TRIANGLES];
-                let count =
-                    construction.cell_triangles(case, std::array::from_fn(value), iso, &mut triangles);
-                for tri in &triangles[..count] {
-                    for e in [tri[0], tri[2], tri[1]] {
-                        let (p, normal, edge) = vertex(e);
-                        mesh.positions.push(p);
-                        mesh.normals.push(normal);
-                        mesh.edge_ids.push(edge);
-                    }
-                }
+    for (cell, f) in cells_and_values(&values, grid) {
+        let corner = |c: usize| cell + UVec3::from_array(CORNER_OFFSETS[c]);
+        let case = (0..8).fold(0usize, |m, c| m | (((f[c] > iso) as usize) << c));
+        if EDGE_TABLE[case] == 0 || !March::reached(construction.march, cell.to_array()) {
+            continue;
+        }
+        let vertex = |e: usize| {
+            let [a, b] = EDGE_CORNERS[e];
+            let (ia, ib) = (corner(a), corner(b));
+            let (p, normal) = surface_vertex(
+                spheres,
+                iso,
+                construction,
+                (grid.point(ia), f[a], grid.is_boundary(ia)),
+                (grid.point(ib), f[b], grid.is_boundary(ib)),
+            );
+            let axis = (0..3).find(|&i| ia[i] != ib[i]).unwrap() as u64;
+            (p, normal, grid.point_index(ia) as u64 * 3 + axis)
+        };
+        let mut triangles = [[0; 3]; MAX_DECIDED_TRIANGLES];
+        let count = construction.cell_triangles(case, f, iso, &mut triangles);
+        for tri in &triangles[..count] {
+            for e in [tri[0], tri[2], tri[1]] {
+                let (p, normal, edge) = vertex(e);
+                mesh.positions.push(p);
+                mesh.normals.push(normal);
+                mesh.edge_ids.push(edge);
             }
         }
     }
     mesh
+}
+
+/// Every cell of `grid` (its lowest corner), x fastest, with its corners' values in corner order, read
+/// from `values`, the field at every grid point: the walk each oracle takes.
+pub fn cells_and_values(values: &[f32], grid: Grid) -> impl Iterator<Item = (UVec3, [f32; 8])> + '_ {
+    let n = grid.cells_per_axis;
+    let cells = (0..n).flat_map(move |z| (0..n).flat_map(move |y| (0..n).map(move |x| UVec3::new(x, y, z))));
+    cells.map(move |cell| {
+        let value = |c: usize| values[grid.point_index(cell + UVec3::from_array(CORNER_OFFSETS[c]))];
+        (cell, std::array::from_fn(value))
+    })
 }
 
 /// Where the ray from `origin` along unit `direction` first enters the solid {f > iso} ∩ box, by brute

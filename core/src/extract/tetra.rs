@@ -16,7 +16,7 @@
 //! both cells that share it, so a segment and its slot name one vertex, found again from every cell.
 
 use crate::extract::mesh::Mesh;
-use crate::extract::reference::{Construction, Grid, sample_blended_field, surface_vertex};
+use crate::extract::reference::{Construction, Grid, cells_and_values, sample_blended_field, surface_vertex};
 use crate::extract::tables::CORNER_OFFSETS;
 use crate::scene::Sphere;
 use crate::scene::params::view::Split;
@@ -218,37 +218,29 @@ const fn case_counts() -> [usize; 16] {
 pub fn extract_tetrahedra(spheres: &[Sphere], iso: f32, grid: Grid, construction: Construction) -> Mesh {
     let values = sample_blended_field(spheres, grid, construction.terms);
     let mut mesh = Mesh::default();
-    let n = grid.cells_per_axis;
-    for z in 0..n {
-        for y in 0..n {
-            for x in 0..n {
-                let cell = UVec3::new(x, y, z);
-                let corner = |c: usize| cell + UVec3::from_array(CORNER_OFFSETS[c]);
-                let value = |c: usize| values[grid.point_index(corner(c))];
-                let inside: [bool; 8] = std::array::from_fn(|c| value(c) > iso);
-                if inside.iter().all(|&i| i) || !inside.iter().any(|&i| i) {
-                    continue;
-                }
-                for t in tetrahedra(construction.split, [x, y, z]) {
-                    let case = (0..4).fold(0, |m, i| m | (inside[t[i]] as usize) << i);
-                    for triangle in &TETRAHEDRON_TRIANGLES[case][..TETRAHEDRON_TRIANGLE_COUNTS[case]] {
-                        for &[i, j] in triangle {
-                            let (a, b) = (t[i], t[j]);
-                            let (a, b) = if grid.point_index(corner(a)) < grid.point_index(corner(b)) {
-                                (a, b)
-                            } else {
-                                (b, a)
-                            };
-                            let end =
-                                |c: usize| (grid.point(corner(c)), value(c), grid.is_boundary(corner(c)));
-                            let (p, normal) = surface_vertex(spheres, iso, construction, end(a), end(b));
-                            let (low, slot) = segment_slot(a, b);
-                            let id = grid.point_index(cell + UVec3::from_array(low)) as u64 * SLOTS as u64;
-                            mesh.positions.push(p);
-                            mesh.normals.push(normal);
-                            mesh.edge_ids.push(id + slot as u64);
-                        }
-                    }
+    for (cell, f) in cells_and_values(&values, grid) {
+        let corner = |c: usize| cell + UVec3::from_array(CORNER_OFFSETS[c]);
+        let inside = f.map(|v| v > iso);
+        if inside.iter().all(|&i| i) || !inside.iter().any(|&i| i) {
+            continue;
+        }
+        for t in tetrahedra(construction.split, cell.to_array()) {
+            let case = (0..4).fold(0, |m, i| m | (inside[t[i]] as usize) << i);
+            for triangle in &TETRAHEDRON_TRIANGLES[case][..TETRAHEDRON_TRIANGLE_COUNTS[case]] {
+                for &[i, j] in triangle {
+                    let (a, b) = (t[i], t[j]);
+                    let (a, b) = if grid.point_index(corner(a)) < grid.point_index(corner(b)) {
+                        (a, b)
+                    } else {
+                        (b, a)
+                    };
+                    let end = |c: usize| (grid.point(corner(c)), f[c], grid.is_boundary(corner(c)));
+                    let (p, normal) = surface_vertex(spheres, iso, construction, end(a), end(b));
+                    let (low, slot) = segment_slot(a, b);
+                    let id = grid.point_index(cell + UVec3::from_array(low)) as u64 * SLOTS as u64;
+                    mesh.positions.push(p);
+                    mesh.normals.push(normal);
+                    mesh.edge_ids.push(id + slot as u64);
                 }
             }
         }
