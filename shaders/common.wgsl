@@ -72,6 +72,10 @@ struct Counters {
     vertices: atomic<u32>,
     indices: atomic<u32>,
     active_cells: atomic<u32>,
+    // Level of detail's two words (LodCounters in extract/lod.wgsl).
+    _lod: vec2<u32>,
+    // Dual contouring's crossings, written after the mesh's vertices (extract/dual.wgsl).
+    crossings: atomic<u32>,
 }
 
 // The same counters, read-only, for passes that only need the totals.

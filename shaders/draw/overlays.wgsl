@@ -14,8 +14,8 @@ struct Overlays {
     _pad0: u32,
     _pad1: u32,
     _pad2: u32,
-    // Eight indirect draws of four words (src/draw/views/, `Draw`).
-    draws: array<u32, 32>,
+    // Nine indirect draws of four words (src/draw/views/, `Draw`).
+    draws: array<u32, 36>,
 }
 
 @group(0) @binding(34) var<storage, read_write> overlays: Overlays;
@@ -151,4 +151,7 @@ fn plan_overlays() {
     set_draw(6u, 2u, min(atomicLoad(&overlays.segment_count), 2u * n * n));
     // Level of detail's kept blocks: 12 edges and two diagonals on each of six faces.
     set_draw(7u, 48u, min(atomicLoad(&counters.active_blocks), grid.max_blocks));
+    // Dual contouring's crossings on the GPU: two vertices each, in the records after the mesh's.
+    set_draw(8u, 2u * min(atomicLoad(&counters.crossings), grid.max_vertices - vertex_count), 1u);
+    overlays.draws[34u] = 2u * vertex_count;
 }

@@ -20,7 +20,9 @@ struct LodCounters {
     lod_overflowed: u32,
     // Levels at or below it were held back from splitting.
     lod_floor: u32,
-    _pad: array<u32, 58>,
+    // Dual contouring's crossings (Counters in common.wgsl).
+    crossings: u32,
+    _pad: array<u32, 57>,
     level_triangles: array<atomic<u32>, 12>,
     level_blocks: array<atomic<u32>, 12>,
 }

@@ -158,9 +158,9 @@ pub trait Extractor: wgpu::WasmNotSendSync {
     /// its mesh would draw again (benchmarks time the meshing itself).
     fn forget_mesh(&mut self) {}
 
-    /// The records after the mesh's vertices in the vertex buffer that hold the crossings of the
-    /// grid's edges (point, normal), for `display=normals` with dual contouring.
-    fn crossings(&self) -> Option<std::ops::Range<u32>> {
+    /// Where the crossings of the grid's edges (point, normal) lie after the mesh's vertices in the
+    /// vertex buffer, for `display=normals` with dual contouring; `None` without them.
+    fn crossings(&self) -> Option<Crossings> {
         None
     }
 
@@ -173,4 +173,13 @@ pub trait Extractor: wgpu::WasmNotSendSync {
     fn lod_summary(&self) -> Option<LodSummary> {
         None
     }
+}
+
+/// Where an extractor wrote dual contouring's crossings, after the mesh's vertices.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Crossings {
+    /// These vertex records (a mesh made on the CPU).
+    Listed(std::ops::Range<u32>),
+    /// As many as the device counted (`crossings` in the counters), from the mesh's last vertex on.
+    Counted,
 }

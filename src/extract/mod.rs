@@ -31,7 +31,7 @@ pub use metaballs_core::extract::{decider, field, interior, kernel, mesh, refere
 pub mod uniforms;
 
 pub use extractor::{
-    Capabilities, Extractor, GivenMesh, Job, LodJob, LodSummary, MeshCount, Output, Viewpoint,
+    Capabilities, Crossings, Extractor, GivenMesh, Job, LodJob, LodSummary, MeshCount, Output, Viewpoint,
 };
 
 /// Builds an extractor on a device, compiling what every renderer on that device shares (its
@@ -44,11 +44,15 @@ pub const EXTRACTORS: &[Compile] = &[
     cpu::CpuExtractor::compile,
     lod::gpu::LodGpuExtractor::compile,
     lod::cpu::LodCpuExtractor::compile,
+    #[cfg(any(not(target_arch = "wasm32"), not(feature = "webgpu")))]
     cpu::SurfaceNetsExtractor::compile,
+    #[cfg(any(not(target_arch = "wasm32"), not(feature = "webgpu")))]
     cpu::DualContouringExtractor::compile,
     gpu::GpuExtractor::compile_tetrahedra,
     #[cfg(any(not(target_arch = "wasm32"), not(feature = "webgpu")))]
     cpu::TetrahedraExtractor::compile,
+    gpu::GpuExtractor::compile_surface_nets,
+    gpu::GpuExtractor::compile_dual_contouring,
 ];
 
 /// The extractors `device` can run, in the order of [`EXTRACTORS`].

@@ -18,7 +18,8 @@ pub struct GridUniform {
     pub max_cells: u32,
     /// Bit 0: vertices at edge midpoints; bit 1: blend by max; bit 2: ambiguous faces by the asymptotic
     /// decider; bit 3: MC33; bits 4 and 5: the kernel's index (`FLAG_*` and `KERNEL_SHIFT` in
-    /// `shaders/common.wgsl`); bit 6: marching tetrahedra's five-way split.
+    /// `shaders/common.wgsl`); bit 6: marching tetrahedra's five-way split; bit 7: dual contouring (else surface nets) on the
+    /// GPU's dual pass.
     pub flags: u32,
     /// The step-through of the march: only cells up to this one (x fastest, then y, then z) give
     /// triangles; `u32::MAX` on each axis when the march is off.
@@ -80,7 +81,10 @@ pub struct CounterBlock {
     pub lod_overflowed: u32,
     /// Levels at or below it were held back from splitting, after a frame ran out of room.
     pub lod_floor: u32,
-    pub _pad: [u32; 58],
+    /// Dual contouring's crossings on the GPU, written after the mesh's vertices (for
+    /// `display=normals`).
+    pub crossings: u32,
+    pub _pad: [u32; 57],
     pub level_triangles: [u32; LEVEL_SLOTS],
     pub level_blocks: [u32; LEVEL_SLOTS],
     pub _pad_measures: [u32; 40],

@@ -8,7 +8,7 @@ use crate::extract::uniforms::GridUniform;
 use crate::scene::BOX_HALF_EXTENT;
 use crate::scene::math;
 use crate::scene::params::Settings;
-use crate::scene::params::view::{Blend, CaseTable, Interpolation, March, Projection, Split};
+use crate::scene::params::view::{Blend, CaseTable, Interpolation, March, Method, Projection, Split};
 use glam::{Mat4, UVec3, Vec3};
 
 impl Renderer {
@@ -31,7 +31,8 @@ impl Renderer {
                 | ((self.settings.view.case_table != CaseTable::Classic) as u32) << 2
                 | ((self.settings.view.case_table == CaseTable::Mc33) as u32) << 3
                 | self.settings.view.kernel.index() << 4
-                | ((self.settings.view.split == Split::Five) as u32) << 6,
+                | ((self.settings.view.split == Split::Five) as u32) << 6
+                | ((self.settings.view.method == Method::DualContouring) as u32) << 7,
             march: March::on_grid(self.settings.view.march, grid.cells_per_axis).unwrap_or([u32::MAX; 3]),
             blobbiness: self.settings.view.blobbiness,
         };

@@ -16,7 +16,7 @@ use metaballs::extract::mesh::IndexedMesh;
 use metaballs::extract::reference::{self, Construction, Grid};
 use metaballs::extract::tables::CORNER_OFFSETS;
 use metaballs::scene::Sphere;
-use metaballs::scene::params::view::{Blend, Method};
+use metaballs::scene::params::view::{Blend, MeshOn, Method};
 use metaballs::{Scene, Settings};
 
 /// The cells whose corners lie on both sides of `iso`, counted on the oracle's samples.
@@ -39,15 +39,17 @@ fn crossed_cells(values: &[f32], iso: f32, grid: Grid) -> usize {
 
 #[test]
 fn surface_nets_make_one_vertex_per_crossed_cell_and_closed_surfaces() {
-    dual_method_meets_the_shared_scenes(Method::SurfaceNets, "surface-nets");
+    dual_method_meets_the_shared_scenes(Method::SurfaceNets, MeshOn::Cpu, "surface-nets");
+    dual_method_meets_the_shared_scenes(Method::SurfaceNets, MeshOn::Gpu, "gpu-surface-nets");
 }
 
 #[test]
 fn dual_contouring_makes_one_vertex_per_crossed_cell_and_closed_surfaces() {
-    dual_method_meets_the_shared_scenes(Method::DualContouring, "dual-contouring");
+    dual_method_meets_the_shared_scenes(Method::DualContouring, MeshOn::Cpu, "dual-contouring");
+    dual_method_meets_the_shared_scenes(Method::DualContouring, MeshOn::Gpu, "gpu-dual-contouring");
 }
 
-fn dual_method_meets_the_shared_scenes(method: Method, source: &str) {
+fn dual_method_meets_the_shared_scenes(method: Method, mesh_on: MeshOn, source: &str) {
     let scenes = oracle_scenes(30);
     with_renderer(settings(1, 1, 16, 1.0), 16, 16, |o| {
         let mut with_surface = 0;
@@ -61,6 +63,7 @@ fn dual_method_meets_the_shared_scenes(method: Method, source: &str) {
             scene.construction.terms.set_in(&mut settings.view);
             settings.view.case_table = scene.construction.case_table;
             settings.view.method = method;
+            settings.view.mesh_on = mesh_on;
             o.renderer.set_settings(settings).unwrap();
             o.renderer.set_scene(Scene::from_spheres(scene.spheres.clone()).unwrap());
             let nets = pollster::block_on(o.renderer.extract_mesh());
@@ -117,6 +120,7 @@ fn surface_nets_follow_the_setting_and_leave_level_of_detail_to_marching_cubes()
     with_renderer(settings(3, 4, 32, 1.0), 32, 32, |o| {
         let mut settings = *o.renderer.settings();
         settings.view.method = Method::SurfaceNets;
+        settings.view.mesh_on = MeshOn::Cpu;
         o.renderer.set_settings(settings).unwrap();
         o.render();
         assert_eq!(o.renderer.mesh_source(), "surface-nets");
@@ -128,20 +132,25 @@ fn surface_nets_follow_the_setting_and_leave_level_of_detail_to_marching_cubes()
         settings.view.method = Method::MarchingCubes;
         o.renderer.set_settings(settings).unwrap();
         o.render();
-        assert_ne!(o.renderer.mesh_source(), "surface-nets");
+        assert_eq!(o.renderer.mesh_source(), "cpu");
+        settings.view.method = Method::SurfaceNets;
+        settings.view.mesh_on = MeshOn::Gpu;
+        o.renderer.set_settings(settings).unwrap();
+        o.render();
+        assert_eq!(o.renderer.mesh_source(), "gpu-surface-nets");
     });
 }
 
 /// The circle where two overlapping balls' spheres meet: its centre, its axis (from the first ball's
 /// centre to the second's) and its radius.
-struct Crease {
+pub(crate) struct Crease {
     centre: Vec3,
     axis: Vec3,
     radius: f32,
 }
 
 impl Crease {
-    fn of((ca, ra): (Vec3, f32), (cb, rb): (Vec3, f32)) -> Crease {
+    pub(crate) fn of((ca, ra): (Vec3, f32), (cb, rb): (Vec3, f32)) -> Crease {
         let d = ca.distance(cb);
         let axis = (cb - ca) / d;
         let along = (d * d + ra * ra - rb * rb) / (2.0 * d);
@@ -190,7 +199,7 @@ fn triangle_distance(x: Vec3, [a, b, c]: [Vec3; 3]) -> f32 {
 /// How far, in cells, the exact crease (the circle where the two spheres meet) lies from `mesh`
 /// at its farthest: the largest distance from a point of the circle to the nearest triangle. Marching
 /// cubes and surface nets cut across the fold, so the circle lies under their meshes.
-fn crease_error(mesh: &IndexedMesh, crease: &Crease, cell: f32) -> f32 {
+pub(crate) fn crease_error(mesh: &IndexedMesh, crease: &Crease, cell: f32) -> f32 {
     let u = crease.axis.any_orthonormal_vector();
     let v = crease.axis.cross(u);
     let triangles: Vec<[Vec3; 3]> =
@@ -206,7 +215,7 @@ fn crease_error(mesh: &IndexedMesh, crease: &Crease, cell: f32) -> f32 {
 }
 
 /// The crease scene: two spheres off the grid's symmetries, meeting in a circle of radius 0.4.
-fn crease_spheres() -> [Sphere; 2] {
+pub(crate) fn crease_spheres() -> [Sphere; 2] {
     [
         Sphere::from_signed(Vec3::new(-0.31, 0.023, -0.017), 0.5, Vec3::ZERO),
         Sphere::from_signed(Vec3::new(0.29, 0.013, 0.031), 0.5, Vec3::ZERO),
@@ -271,6 +280,13 @@ fn dual_contouring_keeps_the_crease_of_a_union_of_two_spheres_sharp() {
 
 #[test]
 fn dual_contourings_views_show_its_ranks_and_crossings_on_a_fresh_renderer() {
+    // On the CPU, the mesher's marks and crossings are uploaded; on the GPU, the dual pass writes them.
+    for mesh_on in ["cpu", "gpu"] {
+        views_show_ranks_and_crossings(mesh_on);
+    }
+}
+
+fn views_show_ranks_and_crossings(mesh_on: &str) {
     let blue = |p: &[u8]| p[2] as i32 > p[0] as i32 + 60 && p[2] as i32 > p[1] as i32 + 30;
     let magenta = |p: &[u8]| p[0] as i32 > p[1] as i32 + 60 && p[2] as i32 > p[1] as i32 + 60;
     let yellow = |p: &[u8]| p[0] > 170 && p[1] > 130 && (p[2] as i32) < p[1] as i32 - 60;
@@ -285,12 +301,16 @@ fn dual_contourings_views_show_its_ranks_and_crossings_on_a_fresh_renderer() {
             let mut settings = *o.renderer.settings();
             settings = settings.with_parameter("blend", "max").unwrap();
             settings = settings.with_parameter("method", method).unwrap();
+            settings = settings.with_parameter("mesh-on", mesh_on).unwrap();
             for (key, value) in view.split('&').filter_map(|pair| pair.split_once('=')) {
                 settings = settings.with_parameter(key, value).unwrap();
             }
             o.renderer.set_settings(settings).unwrap();
             let pixels = o.render_rgba();
-            let name = format!("dual_{method}_{}.png", view.replace(['=', '&'], "_"));
+            let mesher = method.replace('_', "-");
+            let expected = if mesh_on == "gpu" { format!("gpu-{mesher}") } else { mesher };
+            assert_eq!(o.renderer.mesh_source(), expected);
+            let name = format!("dual_{mesh_on}_{method}_{}.png", view.replace(['=', '&'], "_"));
             metaballs::offscreen::write_png(&output_dir().join(name), 320, 240, &pixels).unwrap();
             pixels
         })
@@ -298,7 +318,7 @@ fn dual_contourings_views_show_its_ranks_and_crossings_on_a_fresh_renderer() {
     // Ranks: the balls are faces (blue), the crease between them an edge (magenta).
     let ranks = picture("dual_contouring", "color_by=rank");
     let (faces, edges) = (share(&ranks, &blue), share(&ranks, &magenta));
-    println!("rank view: {faces:.3} of the picture faces, {edges:.4} edges");
+    println!("{mesh_on}: rank view: {faces:.3} of the picture faces, {edges:.4} edges");
     assert!(faces > 0.05 && edges > 0.001 && edges < faces / 5.0, "faces {faces}, edges {edges}");
     // Surface nets have no QEF: the view falls back to the material's colour, drawn all the same.
     let nets = picture("surface_nets", "color_by=rank&display=wireframe");
@@ -307,7 +327,7 @@ fn dual_contourings_views_show_its_ranks_and_crossings_on_a_fresh_renderer() {
     // The crossings' normals: yellow segments, with dual contouring only.
     let crossings = share(&picture("dual_contouring", "display=normals"), &yellow);
     let none = share(&picture("surface_nets", "display=normals"), &yellow);
-    println!("crossing segments: {crossings:.4} of the picture; {none:.4} with surface nets");
+    println!("{mesh_on}: crossing segments: {crossings:.4} of the picture; {none:.4} with surface nets");
     assert!(crossings > 0.005 && none < crossings / 20.0, "{crossings} against {none}");
 }
 
@@ -321,6 +341,7 @@ fn the_rank_view_of_a_still_figure_meshed_elsewhere_shows_the_ranks() {
         let mut settings = *o.renderer.settings();
         settings = settings.with_parameter("blend", "max").unwrap();
         settings = settings.with_parameter("method", "dual_contouring").unwrap();
+        settings = settings.with_parameter("mesh-on", "cpu").unwrap();
         o.renderer.set_settings(settings).unwrap();
         let job = o.renderer.cpu_job().expect("dual contouring is meshed on the CPU");
         o.renderer.give_mesh(Meshers::default().mesh(&job).unwrap());

@@ -15,6 +15,7 @@ mod cpu_mesher;
 mod critical;
 mod decider;
 mod dual;
+mod dual_gpu;
 mod editing;
 mod exact;
 mod export;

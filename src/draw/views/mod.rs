@@ -5,6 +5,7 @@
 
 use crate::device::{bind_buffers, bind_buffers_to, bindings};
 use crate::draw::uniforms::ShadingUniform;
+use crate::extract::Crossings;
 use crate::extract::buffers::MeshBuffers;
 use crate::extract::gpu::scene_buffers::SceneBuffers;
 use crate::extract::reference::Grid;
@@ -23,11 +24,13 @@ enum Draw {
     Ambiguous = 5,
     Contour = 6,
     LodBlocks = 7,
+    /// Dual contouring's crossings as the device counted them.
+    Crossings = 8,
 }
 
 /// Bytes before the draws in the overlay buffer (the segment counter, padded).
 const DRAWS_OFFSET: u64 = 16;
-const OVERLAY_BYTES: u64 = DRAWS_OFFSET + 8 * 16;
+const OVERLAY_BYTES: u64 = DRAWS_OFFSET + 9 * 16;
 /// Side of the axis gizmo's square, in pixels.
 const GIZMO_PIXELS: f32 = 72.0;
 
@@ -94,7 +97,7 @@ pub struct ViewFrame<'a> {
     pub options: &'a ViewOptions,
     pub selected: bool,
     /// The vertex records holding the crossings of the grid's edges, where the mesher wrote them.
-    pub crossings: Option<std::ops::Range<u32>>,
+    pub crossings: Option<Crossings>,
 }
 
 /// One renderer's view resources for one grid: the slice's samples and contour, the overlay counts
@@ -284,9 +287,13 @@ impl ViewState {
         if options.display == Display::Normals {
             self.indirect(pass, &p.normals, Draw::Normals);
             // Dual contouring's Hermite data: each crossing with the field's normal, two vertices each.
-            if let Some(crossings) = &frame.crossings {
-                pass.set_pipeline(&p.crossings);
-                pass.draw(2 * crossings.start..2 * crossings.end, 0..1);
+            match &frame.crossings {
+                Some(Crossings::Listed(listed)) => {
+                    pass.set_pipeline(&p.crossings);
+                    pass.draw(2 * listed.start..2 * listed.end, 0..1);
+                }
+                Some(Crossings::Counted) => self.indirect(pass, &p.crossings, Draw::Crossings),
+                None => {}
             }
         }
         exact::draw_beside_mesh(pass, p, options, size);

@@ -12,7 +12,7 @@ pub use dual::{DualContouringMesher, SurfaceNetsMesher};
 pub use mesher::CpuMesher;
 pub use tetra::TetraMesher;
 
-use super::extractor::{Capabilities, Extractor, GivenMesh, Job, MeshCount, Output};
+use super::extractor::{Capabilities, Crossings, Extractor, GivenMesh, Job, MeshCount, Output};
 use super::mesh::IndexedMesh;
 use super::uniforms::Counters;
 use crate::scene::params::view::Method;
@@ -240,9 +240,9 @@ impl<M: CpuMeshing> Extractor for CpuMeshExtractor<M> {
         self.crossings = 0;
     }
 
-    fn crossings(&self) -> Option<std::ops::Range<u32>> {
+    fn crossings(&self) -> Option<Crossings> {
         let first = (self.mesher.vertices().len() / 6) as u32;
-        (self.crossings > 0).then_some(first..first + self.crossings)
+        (self.crossings > 0).then_some(Crossings::Listed(first..first + self.crossings))
     }
 
     fn give_mesh(&mut self, mesh: GivenMesh) {

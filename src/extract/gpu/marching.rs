@@ -1,8 +1,9 @@
-//! The marching passes over the active cells, one struct for both methods: marching cubes
-//! (`shaders/extract/marching_cubes.wgsl`) and marching tetrahedra
-//! (`shaders/extract/marching_tetrahedra.wgsl`), each after the part they share
-//! (`shaders/extract/cells.wgsl`). Vertices on the edges (and with tetrahedra, the diagonals) each
-//! cell owns, then triangles as indices into them, then the indexed indirect draw's arguments.
+//! The passes over the active cells, one struct for every method: marching cubes
+//! (`shaders/extract/marching_cubes.wgsl`), marching tetrahedra
+//! (`shaders/extract/marching_tetrahedra.wgsl`) and the dual methods, surface nets and dual contouring
+//! (`shaders/extract/dual.wgsl`), each after the part they share (`shaders/extract/cells.wgsl`).
+//! Vertices (on the edges, and with tetrahedra the diagonals, each cell owns; with the dual methods
+//! one in each cell), then triangles as indices into them, then the indexed indirect draw's arguments.
 
 use crate::device::{COMMON_WGSL, bind_buffers, bindings, compute_pipeline, shader_module, wgsl};
 use crate::extract::buffers::MeshBuffers;
@@ -42,6 +43,18 @@ fn tetra_table() -> Vec<u32> {
     table
 }
 
+/// Which passes: they differ in their tables and buffers.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Kind {
+    Cubes,
+    /// The tables' binding is `TETRA_TABLE`, and the vertices of the seven segments each active cell
+    /// owns are kept in a buffer of the pass's own (the mesh's holds three a cell).
+    Tetrahedra,
+    /// No table; the quads read the vertices (for their shorter diagonal) and write each triangle's
+    /// QEF marks into `LOD_DATA`.
+    Dual,
+}
+
 /// Owns one method's marching pipelines, its tables on the GPU, and bind groups for the current
 /// buffers.
 #[derive(Clone)]
@@ -51,10 +64,7 @@ pub struct MarchingPass {
     triangles: wgpu::ComputePipeline,
     finalize: wgpu::ComputePipeline,
     table: wgpu::Buffer,
-    /// Marching tetrahedra: the tables' binding is `TETRA_TABLE`, and the vertices of the seven
-    /// segments each active cell owns are kept in a buffer of the pass's own (the mesh's holds three a
-    /// cell).
-    tetrahedra: bool,
+    kind: Kind,
     groups: Option<[wgpu::BindGroup; 3]>,
 }
 
@@ -68,7 +78,7 @@ impl MarchingPass {
             source,
             ["make_vertices", "make_triangles"],
             variant_table(),
-            false,
+            Kind::Cubes,
         )
     }
 
@@ -76,7 +86,13 @@ impl MarchingPass {
     pub fn tetrahedra(device: &wgpu::Device) -> Self {
         let source = wgsl!("extract/marching_tetrahedra.wgsl");
         let entries = ["make_tetra_vertices", "make_tetra_triangles"];
-        Self::new(device, "marching tetrahedra", source, entries, &tetra_table(), true)
+        Self::new(device, "marching tetrahedra", source, entries, &tetra_table(), Kind::Tetrahedra)
+    }
+
+    /// Surface nets and dual contouring (`FLAG_QEF` in the grid's flags chooses).
+    pub fn dual(device: &wgpu::Device) -> Self {
+        let source = wgsl!("extract/dual.wgsl");
+        Self::new(device, "dual methods", source, ["make_dual_vertices", "make_dual_quads"], &[0], Kind::Dual)
     }
 
     fn new(
@@ -85,7 +101,7 @@ impl MarchingPass {
         source: &str,
         [vertices, triangles]: [&str; 2],
         table: &[u32],
-        tetrahedra: bool,
+        kind: Kind,
     ) -> Self {
         let module = shader_module(device, label, &[COMMON_WGSL, CELLS_WGSL, source]);
         let pipeline = |entry| compute_pipeline(device, label, &module, entry);
@@ -99,7 +115,7 @@ impl MarchingPass {
                 contents: bytemuck::cast_slice(table),
                 usage: wgpu::BufferUsages::STORAGE,
             }),
-            tetrahedra,
+            kind,
             groups: None,
         }
     }
@@ -112,7 +128,7 @@ impl MarchingPass {
         let limits = device.limits();
         let per_block = 64 * SLOTS as u64 * 4;
         let most = limits.max_storage_buffer_binding_size.min(limits.max_buffer_size) / per_block;
-        let own = self.tetrahedra.then(|| {
+        let own = (self.kind == Kind::Tetrahedra).then(|| {
             device.create_buffer(&wgpu::BufferDescriptor {
                 label: Some(self.label),
                 size: ((mesh.capacity.blocks as u64).min(most) * per_block).max(16),
@@ -121,9 +137,31 @@ impl MarchingPass {
             })
         });
         let edge_vertices = own.as_ref().unwrap_or(&mesh.edge_vertices);
-        let table = if self.tetrahedra { bindings::TETRA_TABLE } else { bindings::TRIANGLE_TABLE };
         let group =
             |pipeline, buffers: &[(u32, &wgpu::Buffer)]| bind_buffers(device, self.label, pipeline, buffers);
+        let mut triangles = vec![
+            (bindings::GRID, &scene.grid),
+            (bindings::COUNTERS, &mesh.counters),
+            (bindings::ACTIVE_BLOCKS, &mesh.active_blocks),
+            (bindings::BLOCK_SLOTS, &mesh.block_slots),
+            (bindings::EDGE_VERTICES, edge_vertices),
+            (bindings::INDICES, &mesh.indices),
+            (bindings::ACTIVE_CELLS, &mesh.active_cells),
+        ];
+        triangles.extend(match self.kind {
+            Kind::Cubes => {
+                vec![(bindings::TRIANGLE_TABLE, &self.table), (bindings::CELL_CASES, &mesh.cell_cases)]
+            }
+            Kind::Tetrahedra => {
+                vec![(bindings::TETRA_TABLE, &self.table), (bindings::CELL_CASES, &mesh.cell_cases)]
+            }
+            Kind::Dual => vec![
+                (bindings::SPHERES, &scene.spheres),
+                (bindings::BLOCK_VALUES, &mesh.block_values),
+                (bindings::VERTICES, &mesh.vertices),
+                (bindings::LOD_DATA, &mesh.lod_data),
+            ],
+        });
         self.groups = Some([
             group(
                 &self.vertices,
@@ -138,20 +176,7 @@ impl MarchingPass {
                     (bindings::ACTIVE_CELLS, &mesh.active_cells),
                 ],
             ),
-            group(
-                &self.triangles,
-                &[
-                    (bindings::GRID, &scene.grid),
-                    (bindings::COUNTERS, &mesh.counters),
-                    (bindings::ACTIVE_BLOCKS, &mesh.active_blocks),
-                    (bindings::BLOCK_SLOTS, &mesh.block_slots),
-                    (table, &self.table),
-                    (bindings::CELL_CASES, &mesh.cell_cases),
-                    (bindings::EDGE_VERTICES, edge_vertices),
-                    (bindings::INDICES, &mesh.indices),
-                    (bindings::ACTIVE_CELLS, &mesh.active_cells),
-                ],
-            ),
+            group(&self.triangles, &triangles),
             group(
                 &self.finalize,
                 &[

@@ -1,6 +1,7 @@
 //! Extraction in compute shaders, all on the device: the block pass bounds the field over blocks of 4³
 //! cells and lists those the surface may cross, the field pass evaluates them and lists the crossed
-//! cells, and the marching passes (cubes, or tetrahedra) write shared vertices and indices. Counters feed indirect
+//! cells, and the per-cell passes (marching cubes or tetrahedra, surface nets or dual contouring) write
+//! shared vertices and indices. Counters feed indirect
 //! dispatches and the indexed indirect draw; nothing is read back.
 
 pub mod blocks;
@@ -8,7 +9,7 @@ pub mod field;
 pub mod marching;
 pub mod scene_buffers;
 
-use super::extractor::{Capabilities, Extractor, Job, MeshCount, Output};
+use super::extractor::{Capabilities, Crossings, Extractor, Job, MeshCount, Output};
 use super::uniforms::Counters;
 use crate::device::has_compute;
 use crate::scene::params::view::Method;
@@ -30,7 +31,7 @@ struct Passes {
 /// compiled pipelines and bind their own buffers.
 #[derive(Clone)]
 pub struct GpuExtractor {
-    /// Marching cubes, or marching tetrahedra.
+    /// Marching cubes or tetrahedra, surface nets or dual contouring.
     method: Method,
     compiled: Arc<OnceLock<Passes>>,
     /// This renderer's passes, bound to its current buffers; `None` until a frame uses them after the
@@ -50,6 +51,16 @@ impl GpuExtractor {
         Self::of(device, Method::MarchingTetrahedra)
     }
 
+    /// Surface nets' passes (`method=surface_nets`), likewise.
+    pub fn compile_surface_nets(device: &wgpu::Device) -> Option<Box<dyn Extractor>> {
+        Self::of(device, Method::SurfaceNets)
+    }
+
+    /// Dual contouring's passes (`method=dual_contouring`), likewise.
+    pub fn compile_dual_contouring(device: &wgpu::Device) -> Option<Box<dyn Extractor>> {
+        Self::of(device, Method::DualContouring)
+    }
+
     fn of(device: &wgpu::Device, method: Method) -> Option<Box<dyn Extractor>> {
         if !has_compute(device) {
             return None;
@@ -63,7 +74,12 @@ impl GpuExtractor {
 
 impl Extractor for GpuExtractor {
     fn name(&self) -> &'static str {
-        if self.method == Method::MarchingCubes { "gpu" } else { "gpu-tetrahedra" }
+        match self.method {
+            Method::MarchingCubes => "gpu",
+            Method::MarchingTetrahedra => "gpu-tetrahedra",
+            Method::SurfaceNets => "gpu-surface-nets",
+            Method::DualContouring => "gpu-dual-contouring",
+        }
     }
 
     fn capabilities(&self) -> Capabilities {
@@ -89,6 +105,10 @@ impl Extractor for GpuExtractor {
         usize::from(self.compiled.get().is_some())
     }
 
+    fn crossings(&self) -> Option<Crossings> {
+        (self.method == Method::DualContouring).then_some(Crossings::Counted)
+    }
+
     /// The passes read the scene from the uniforms the renderer uploaded: nothing to do before them.
     fn prepare(&mut self, _job: &Job) -> Option<Counters> {
         None
@@ -102,10 +122,10 @@ impl Extractor for GpuExtractor {
                 .get_or_init(|| Passes {
                     blocks: BlockPass::new(device),
                     field: FieldPass::new(device),
-                    marching: if self.method == Method::MarchingCubes {
-                        MarchingPass::cubes(device)
-                    } else {
-                        MarchingPass::tetrahedra(device)
+                    marching: match self.method {
+                        Method::MarchingCubes => MarchingPass::cubes(device),
+                        Method::MarchingTetrahedra => MarchingPass::tetrahedra(device),
+                        Method::SurfaceNets | Method::DualContouring => MarchingPass::dual(device),
                     },
                 })
                 .clone();
