@@ -2,9 +2,9 @@
 //! packed as numbers, meshed from them by the same CPU meshers, and the mesh handed back to the
 //! extractor that draws it, which takes it in place of meshing when the job is still the frame's.
 
+use super::{CpuMesher, CpuMeshing};
 #[cfg(any(not(target_arch = "wasm32"), not(feature = "webgpu")))]
-use super::TetraMesher;
-use super::{CpuMesher, CpuMeshing, DualContouringMesher, SurfaceNetsMesher};
+use super::{DualContouringMesher, SurfaceNetsMesher, TetraMesher};
 use crate::extract::extractor::{GivenMesh, Job};
 use crate::extract::kernel::Terms;
 use crate::extract::reference::{Construction, Grid};
@@ -48,10 +48,8 @@ pub fn pack(method: Method, job: &Job) -> Vec<f32> {
 #[derive(Default)]
 pub struct Meshers {
     marching_cubes: CpuMesher,
-    surface_nets: SurfaceNetsMesher,
-    dual_contouring: DualContouringMesher,
     #[cfg(any(not(target_arch = "wasm32"), not(feature = "webgpu")))]
-    tetrahedra: TetraMesher,
+    others: Others,
     /// The last job was marching cubes.
     marched: bool,
 }
@@ -64,15 +62,15 @@ impl Meshers {
         self.marched = method == Method::MarchingCubes;
         let mesher: &mut dyn CpuMeshed = match method {
             Method::MarchingCubes => &mut self.marching_cubes,
-            Method::SurfaceNets => &mut self.surface_nets,
-            Method::DualContouring => &mut self.dual_contouring,
             #[cfg(any(not(target_arch = "wasm32"), not(feature = "webgpu")))]
-            Method::MarchingTetrahedra => &mut self.tetrahedra,
-            // The WebGPU page meshes marching tetrahedra in compute shaders alone.
+            Method::SurfaceNets => &mut self.others.surface_nets,
+            #[cfg(any(not(target_arch = "wasm32"), not(feature = "webgpu")))]
+            Method::DualContouring => &mut self.others.dual_contouring,
+            #[cfg(any(not(target_arch = "wasm32"), not(feature = "webgpu")))]
+            Method::MarchingTetrahedra => &mut self.others.tetrahedra,
+            // The WebGPU page meshes every method but marching cubes in compute shaders alone.
             #[cfg(all(target_arch = "wasm32", feature = "webgpu"))]
-            Method::MarchingTetrahedra => {
-                return Err("marching tetrahedra meshes on the GPU in this build".into());
-            }
+            _ => return Err(format!("{} meshes on the GPU in this build", method.word())),
         };
         mesher.mesh_it(&job);
         Ok(mesher.given(packed.to_vec()))
@@ -107,6 +105,16 @@ impl Meshers {
     pub fn decided_cells(&self) -> &[[u32; 4]] {
         if self.marched { self.marching_cubes.decided_cells() } else { &[] }
     }
+}
+
+/// The meshers of the methods other than marching cubes, which the WebGPU page's WebAssembly leaves
+/// out (it meshes them in compute shaders).
+#[cfg(any(not(target_arch = "wasm32"), not(feature = "webgpu")))]
+#[derive(Default)]
+struct Others {
+    surface_nets: SurfaceNetsMesher,
+    dual_contouring: DualContouringMesher,
+    tetrahedra: TetraMesher,
 }
 
 /// A slab's mesh (`Meshers::mesh_slab`), borrowed from the mesher that made it.

@@ -94,12 +94,12 @@ cpu_meshing!(TetraMesher, "cpu-tetrahedra", Method::MarchingTetrahedra);
 
 /// Marching cubes on the CPU (`mesh-on=cpu`, and everything on WebGL2).
 pub type CpuExtractor = CpuMeshExtractor<CpuMesher>;
-/// Surface nets on the CPU (`method=surface_nets`).
+/// Surface nets on the CPU (`method=surface_nets`), and the two below: natively and on WebGL2. The
+/// WebGPU page meshes these methods in compute shaders alone, so that its WebAssembly stays small.
 pub type SurfaceNetsExtractor = CpuMeshExtractor<SurfaceNetsMesher>;
 /// Dual contouring on the CPU (`method=dual_contouring`).
 pub type DualContouringExtractor = CpuMeshExtractor<DualContouringMesher>;
-/// Marching tetrahedra on the CPU (`method=marching_tetrahedra`): natively and on WebGL2. The WebGPU
-/// page meshes it in compute shaders alone, so that its WebAssembly stays small.
+/// Marching tetrahedra on the CPU (`method=marching_tetrahedra`).
 pub type TetrahedraExtractor = CpuMeshExtractor<TetraMesher>;
 
 /// A CPU mesher and what it last uploaded.
