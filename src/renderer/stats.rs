@@ -101,6 +101,8 @@ pub(super) struct Reading {
     pub frame: u64,
     pub capacity: Capacity,
     pub counters: Counters,
+    /// Dual contouring's crossings on the GPU, after the mesh's vertices.
+    pub crossings: u32,
     pub levels: LevelCounts,
     /// False when the mesh was uploaded, so the counters say nothing of it.
     pub counted: bool,
@@ -178,6 +180,7 @@ impl StatsRing {
                 frame: slot.frame,
                 capacity: slot.capacity,
                 counters: block.counters,
+                crossings: block.crossings,
                 levels: block.levels(),
                 counted: slot.counted,
                 measures: slot.measured.then_some(block.measures),
@@ -238,7 +241,9 @@ impl Renderer {
         #[cfg(not(target_arch = "wasm32"))]
         let _ = self.device.poll(wgpu::PollType::Poll);
         let grid = self.grid();
-        for Reading { frame, capacity, counters, levels, counted, measures } in self.stats.ring.take_ready() {
+        for Reading { frame, capacity, counters, crossings, levels, counted, measures } in
+            self.stats.ring.take_ready()
+        {
             if let Some(sums) = measures {
                 self.teaching.take_measures(frame, &sums);
             }
@@ -249,8 +254,10 @@ impl Renderer {
             let bytes = self.stage.buffers.bytes();
             let stats = FrameStats::from_counts(frame, grid, capacity, counters, overflowed, bytes, levels);
             self.stats.offer(stats);
-            // Grow once per size: figures from frames drawn with smaller buffers than now are stale.
-            self.stage.plan_growth(capacity, &counters, largest_capacity(self.context.limits(), grid));
+            // Grow once per size: figures from frames drawn with smaller buffers than now are stale. The
+            // vertex buffer makes room for dual contouring's crossings after the mesh's vertices too.
+            let room = Counters { vertices: counters.vertices.saturating_add(crossings), ..counters };
+            self.stage.plan_growth(capacity, &room, largest_capacity(self.context.limits(), grid));
         }
     }
 
