@@ -174,8 +174,9 @@ test('the lecture compares marching cubes, surface nets and dual contouring on o
     hud: e.shadowRoot.getElementById('hud-error-text').textContent,
   })));
   assert.match(stats[0].adapter, /CPU|GPU/);
-  assert.match(stats[1].adapter, /SURFACE-NETS/);
-  assert.match(stats[2].adapter, /DUAL-CONTOURING/);
+  // The WebGPU page meshes the dual methods in compute shaders.
+  assert.match(stats[1].adapter, /GPU-SURFACE-NETS/);
+  assert.match(stats[2].adapter, /GPU-DUAL-CONTOURING/);
   // The dual methods make two triangles per crossed edge; all three meshes are of one size.
   for (const s of stats) assert.ok(Math.abs(s.triangles / stats[0].triangles - 1) < 0.1, JSON.stringify(stats));
   // Surface nets' vertices are averages off the surface; dual contouring's sit on it, as the HUD says.
@@ -185,8 +186,38 @@ test('the lecture compares marching cubes, surface nets and dual contouring on o
   await page.$$eval(figures, (es) => es[2].setAttribute('color-by', 'rank'));
   await page.waitForFunction((sel) => document.querySelectorAll(sel)[2].shadowRoot.textContent.includes('minimiser'), figures);
   await shot('lecture-creases-rank');
+  // The crease's cells are edges (magenta), written by the dual pass on the GPU.
+  const handles = await page.$$(figures);
+  const edges = await colourShare(handles[2], 'magenta');
+  // The crossings' normals (yellow) with dual contouring; surface nets have none.
+  await page.$$eval(figures, (es) => es.forEach((e) => { e.setAttribute('color-by', 'none'); e.setAttribute('display', 'normals'); }));
+  await page.waitForFunction((sel) => [...document.querySelectorAll(sel)].every((e) => e.display === 'normals'), figures);
+  await page.$$eval(figures, (es) => Promise.all(es.map((e) => e.nextFrame())));
+  await shot('lecture-creases-normals');
+  const crossings = await colourShare(handles[2], 'yellow');
+  const none = await colourShare(handles[1], 'yellow');
+  console.log(`creases: rank view ${edges.toFixed(4)} edges; crossings ${crossings.toFixed(4)}, surface nets ${none.toFixed(4)}`);
+  assert.ok(edges > 0.0005, `the rank view shows the crease's edges: ${edges}`);
+  assert.ok(crossings > 0.003 && none < crossings / 20, `crossings ${crossings} against ${none}`);
   assert.deepEqual(errors, []);
 });
+
+// The share of a figure's picture in a colour: 'magenta' (a QEF of rank 2, an edge) or 'yellow' (a
+// crossing's normal).
+function colourShare(figure, colour) {
+  return figure.evaluate(async (e, colour) => {
+    const image = await createImageBitmap(await e.picture(1));
+    const context = new OffscreenCanvas(image.width, image.height).getContext('2d');
+    context.drawImage(image, 0, 0);
+    const { data } = context.getImageData(0, 0, image.width, image.height);
+    let count = 0;
+    for (let i = 0; i < data.length; i += 4) {
+      const [r, g, b] = [data[i], data[i + 1], data[i + 2]];
+      count += colour === 'magenta' ? r > g + 60 && b > g + 60 : r > 170 && g > 130 && b < g - 60;
+    }
+    return count / (data.length / 4);
+  }, colour);
+}
 
 test('the lecture compares the kernels on the same spheres, each measured against its own exact surface', async () => {
   const { page, errors, figures, shot } = await lectureTrio('kernels');
