@@ -1,14 +1,16 @@
 // The dual methods over the active cells, one invocation per cell, after cells.wgsl: surface nets and
 // dual contouring, as core/src/extract/cpu/dual.rs, hermite.rs and qef.rs make them on the CPU.
 //
-// `make_dual_vertices`: each crossed cell finds the crossings on its twelve edges and makes its one
-// vertex, at their mean (surface nets) or at the minimiser of their quadratic error function within
-// SLACK of the cell (dual contouring, flag FLAG_QEF); its slots in edge_vertices hold the vertex's index
-// (slot 0) and, with dual contouring, its QEF's rank plus STRAYED where the minimiser left the cell
-// (slot 1). `make_dual_quads`: each crossed edge leaving a cell's lowest corner joins the four cells
-// around it with a quad, split along its shorter diagonal; with dual contouring each triangle's corners'
-// marks go to lod_data (what color-by=rank reads), and the crossings of the edges each cell owns are
-// appended after the mesh's vertices, for display=normals.
+// `make_dual_crossings`: each crossed cell finds the crossings on the three edges leaving its lowest
+// corner (marching cubes' vertex with surface nets; the Hermite data with dual contouring) into
+// edge_crossings, so each crossing is found once. `make_dual_vertices`: each crossed cell makes its one
+// vertex from the crossings on its twelve edges, at their mean (surface nets) or at the minimiser of
+// their quadratic error function within SLACK of the cell (dual contouring, flag FLAG_QEF); its slots in
+// edge_vertices hold the vertex's index (slot 0) and, with dual contouring, its QEF's rank plus STRAYED
+// where the minimiser left the cell (slot 1). `make_dual_quads`: each crossed edge leaving a cell's
+// lowest corner joins the four cells around it with a quad, split along its shorter diagonal; with dual
+// contouring each triangle's corners' marks go to lod_data (what color-by=rank reads), and the
+// crossings are copied after the mesh's vertices, for display=normals.
 
 // In grid.flags: dual contouring (else surface nets).
 const FLAG_QEF: u32 = 128u;
@@ -29,6 +31,9 @@ const JACOBI_SWEEPS: u32 = 8u;
 const NO_ENERGY: f32 = 3.0e38;
 
 @group(0) @binding(14) var<storage, read_write> lod_data: array<u32>;
+// Slot s, cell c, axis k: the crossing on the edge leaving the cell's lowest corner along k, position
+// then normal, at ((s * 64 + c) * 3 + k) * 6.
+@group(0) @binding(24) var<storage, read_write> edge_crossings: array<f32>;
 
 fn qef_on() -> bool {
     return (grid.flags & FLAG_QEF) != 0u;
@@ -204,6 +209,45 @@ fn edge_offset(axis: u32, k: u32) -> vec3<u32> {
     return unit((axis + 1u) % 3u) * (k & 1u) + unit((axis + 2u) % 3u) * (k >> 1u);
 }
 
+// Where the crossing on the edge leaving `cell`'s lowest corner along `axis` is kept, or INVALID past
+// the end of a buffer too small for every active block (the largest grids).
+fn crossing_slot(cell: vec3<u32>, axis: u32) -> u32 {
+    let slot = block_slots[block_index(cell / BLOCK_CELLS)];
+    let at = cell % BLOCK_CELLS;
+    let record = ((slot * 64u + at.x + BLOCK_CELLS * (at.y + BLOCK_CELLS * at.z)) * 3u + axis) * 6u;
+    return select(INVALID, record, slot < grid.max_blocks && record + 6u <= arrayLength(&edge_crossings));
+}
+
+fn read_crossing(record: u32) -> EdgeVertex {
+    let c = &edge_crossings;
+    return EdgeVertex(vec3<f32>(c[record], c[record + 1u], c[record + 2u]), vec3<f32>(c[record + 3u], c[record + 4u], c[record + 5u]));
+}
+
+@compute @workgroup_size(64)
+fn make_dual_crossings(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_invocation_index) index: u32) {
+    let reference = active_cell(workgroup, index);
+    if (reference == INVALID) {
+        return;
+    }
+    let slot = reference / 64u;
+    let at = local_cell(reference % 64u);
+    let cell = block_coords(active_blocks[slot]) * BLOCK_CELLS + at;
+    for (var axis = 0u; axis < 3u; axis++) {
+        let fa = value_at(slot, at);
+        let fb = value_at(slot, at + unit(axis));
+        let record = crossing_slot(cell, axis);
+        if ((fa > grid.iso) != (fb > grid.iso) && record != INVALID) {
+            let c = crossing(cell, cell + unit(axis), fa, fb);
+            edge_crossings[record] = c.position.x;
+            edge_crossings[record + 1u] = c.position.y;
+            edge_crossings[record + 2u] = c.position.z;
+            edge_crossings[record + 3u] = c.normal.x;
+            edge_crossings[record + 4u] = c.normal.y;
+            edge_crossings[record + 5u] = c.normal.z;
+        }
+    }
+}
+
 @compute @workgroup_size(64)
 fn make_dual_vertices(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_invocation_index) index: u32) {
     let reference = active_cell(workgroup, index);
@@ -216,15 +260,17 @@ fn make_dual_vertices(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(loca
     var points: array<vec3<f32>, 12>;
     var normals: array<vec3<f32>, 12>;
     var count = 0u;
+    var lost = false;
     var mass = vec3<f32>(0.0);
     var normal = vec3<f32>(0.0);
     for (var axis = 0u; axis < 3u; axis++) {
         for (var k = 0u; k < 4u; k++) {
             let o = edge_offset(axis, k);
-            let fa = value_at(slot, at + o);
-            let fb = value_at(slot, at + o + unit(axis));
-            if ((fa > grid.iso) != (fb > grid.iso)) {
-                let c = crossing(cell + o, cell + o + unit(axis), fa, fb);
+            if ((value_at(slot, at + o) > grid.iso) != (value_at(slot, at + o + unit(axis)) > grid.iso)) {
+                // The edge's lowest corner is a crossed cell's, whose crossing it is.
+                let record = crossing_slot(cell + o, axis);
+                lost = lost || record == INVALID;
+                let c = read_crossing(select(record, 0u, record == INVALID));
                 points[count] = c.position;
                 normals[count] = c.normal;
                 mass += c.position;
@@ -250,11 +296,15 @@ fn make_dual_vertices(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(loca
     }
     let len2 = dot(normal, normal);
     let n = select(vec3<f32>(0.0, 0.0, 1.0), normal * inverseSqrt(len2), len2 > 0.0);
-    var vertex = atomicAdd(&counters.vertices, 1u);
-    if (vertex < grid.max_vertices) {
-        write_vertex(vertex, p, n);
-    } else {
-        vertex = INVALID;
+    // A cell missing a crossing (its block past the crossings' buffer) gets no vertex.
+    var vertex = INVALID;
+    if (!lost) {
+        vertex = atomicAdd(&counters.vertices, 1u);
+        if (vertex < grid.max_vertices) {
+            write_vertex(vertex, p, n);
+        } else {
+            vertex = INVALID;
+        }
     }
     edge_vertices[reference * 3u] = vertex;
     edge_vertices[reference * 3u + 1u] = mark;
@@ -286,11 +336,12 @@ fn make_dual_quads(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_i
         if (inside == (fb > grid.iso)) {
             continue;
         }
-        if (qef_on()) {
+        let kept = crossing_slot(cell, axis);
+        if (qef_on() && kept != INVALID) {
             // The edge's crossing, for display=normals, after the mesh's vertices where there is room.
             let record = first_crossing + atomicAdd(&counters.crossings, 1u);
             if (record < grid.max_vertices) {
-                let c = crossing(cell, cell + unit(axis), fa, fb);
+                let c = read_crossing(kept);
                 write_vertex(record, c.position, c.normal);
             }
         }

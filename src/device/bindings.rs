@@ -59,6 +59,8 @@ bindings! {
     TRIANGLE_TABLE = 17,
     /// Marching tetrahedra's splits and cases (`shaders/extract/marching_tetrahedra.wgsl`).
     TETRA_TABLE = 21,
+    /// The dual methods' crossings on the edges each active cell owns (`shaders/extract/dual.wgsl`).
+    EDGE_CROSSINGS = 24,
 
     /// Level of detail's uniforms (`shaders/extract/lod.wgsl`).
     LOD = 20,

@@ -50,22 +50,27 @@ enum Kind {
     /// The tables' binding is `TETRA_TABLE`, and the vertices of the seven segments each active cell
     /// owns are kept in a buffer of the pass's own (the mesh's holds three a cell).
     Tetrahedra,
-    /// No table; the quads read the vertices (for their shorter diagonal) and write each triangle's
-    /// QEF marks into `LOD_DATA`.
+    /// No table; a first dispatch finds the crossings of the three edges each active cell owns into a
+    /// buffer of the pass's own (`EDGE_CROSSINGS`), and the quads read the vertices (for their shorter
+    /// diagonal) and write each triangle's QEF marks into `LOD_DATA`.
     Dual,
 }
 
-/// Owns one method's marching pipelines, its tables on the GPU, and bind groups for the current
+/// Owns one method's per-cell pipelines, its tables on the GPU, and bind groups for the current
 /// buffers.
 #[derive(Clone)]
 pub struct MarchingPass {
     label: &'static str,
+    /// With the dual methods, the crossings before the vertices.
+    crossings: Option<wgpu::ComputePipeline>,
     vertices: wgpu::ComputePipeline,
     triangles: wgpu::ComputePipeline,
     finalize: wgpu::ComputePipeline,
     table: wgpu::Buffer,
     kind: Kind,
-    groups: Option<[wgpu::BindGroup; 3]>,
+    /// In the order the dispatches run: vertices, triangles, draw, and with the dual methods the
+    /// crossings first.
+    groups: Vec<wgpu::BindGroup>,
 }
 
 impl MarchingPass {
@@ -76,7 +81,8 @@ impl MarchingPass {
             device,
             "marching cubes",
             source,
-            ["make_vertices", "make_triangles"],
+            "make_vertices",
+            "make_triangles",
             variant_table(),
             Kind::Cubes,
         )
@@ -85,21 +91,30 @@ impl MarchingPass {
     /// Marching tetrahedra, either split.
     pub fn tetrahedra(device: &wgpu::Device) -> Self {
         let source = wgsl!("extract/marching_tetrahedra.wgsl");
-        let entries = ["make_tetra_vertices", "make_tetra_triangles"];
-        Self::new(device, "marching tetrahedra", source, entries, &tetra_table(), Kind::Tetrahedra)
+        let (vertices, triangles) = ("make_tetra_vertices", "make_tetra_triangles");
+        Self::new(
+            device,
+            "marching tetrahedra",
+            source,
+            vertices,
+            triangles,
+            &tetra_table(),
+            Kind::Tetrahedra,
+        )
     }
 
     /// Surface nets and dual contouring (`FLAG_QEF` in the grid's flags chooses).
     pub fn dual(device: &wgpu::Device) -> Self {
         let source = wgsl!("extract/dual.wgsl");
-        Self::new(device, "dual methods", source, ["make_dual_vertices", "make_dual_quads"], &[0], Kind::Dual)
+        Self::new(device, "dual methods", source, "make_dual_vertices", "make_dual_quads", &[0], Kind::Dual)
     }
 
     fn new(
         device: &wgpu::Device,
         label: &'static str,
         source: &str,
-        [vertices, triangles]: [&str; 2],
+        vertices: &str,
+        triangles: &str,
         table: &[u32],
         kind: Kind,
     ) -> Self {
@@ -107,6 +122,7 @@ impl MarchingPass {
         let pipeline = |entry| compute_pipeline(device, label, &module, entry);
         Self {
             label,
+            crossings: (kind == Kind::Dual).then(|| pipeline("make_dual_crossings")),
             vertices: pipeline(vertices),
             triangles: pipeline(triangles),
             finalize: pipeline("finalize_draw"),
@@ -116,29 +132,48 @@ impl MarchingPass {
                 usage: wgpu::BufferUsages::STORAGE,
             }),
             kind,
-            groups: None,
+            groups: Vec::new(),
         }
+    }
+
+    /// A buffer of the pass's own with `per_block` bytes for each of the mesh's active blocks, or as
+    /// many blocks as one binding holds: the cells of blocks past it get no vertices (their triangles
+    /// are left out, as when the vertex buffer is full).
+    fn own_buffer(&self, device: &wgpu::Device, mesh: &MeshBuffers, per_block: u64) -> wgpu::Buffer {
+        let limits = device.limits();
+        let most = limits.max_storage_buffer_binding_size.min(limits.max_buffer_size) / per_block;
+        device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some(self.label),
+            size: ((mesh.capacity.blocks as u64).min(most) * per_block).max(16),
+            usage: wgpu::BufferUsages::STORAGE,
+            mapped_at_creation: false,
+        })
     }
 
     /// Binds the passes to new buffers.
     pub fn bind(&mut self, device: &wgpu::Device, scene: &SceneBuffers, mesh: &MeshBuffers) {
-        // As many active blocks' segments as the mesh holds blocks, or as one binding holds: the cells
-        // of blocks past it get no vertices (their triangles are left out, as when the vertex buffer is
-        // full).
-        let limits = device.limits();
-        let per_block = 64 * SLOTS as u64 * 4;
-        let most = limits.max_storage_buffer_binding_size.min(limits.max_buffer_size) / per_block;
-        let own = (self.kind == Kind::Tetrahedra).then(|| {
-            device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some(self.label),
-                size: ((mesh.capacity.blocks as u64).min(most) * per_block).max(16),
-                usage: wgpu::BufferUsages::STORAGE,
-                mapped_at_creation: false,
-            })
-        });
-        let edge_vertices = own.as_ref().unwrap_or(&mesh.edge_vertices);
+        // Tetrahedra's vertices on seven segments a cell; the dual methods' crossings on three edges a
+        // cell, six floats each.
+        let own = match self.kind {
+            Kind::Cubes => None,
+            Kind::Tetrahedra => Some(self.own_buffer(device, mesh, 64 * SLOTS as u64 * 4)),
+            Kind::Dual => Some(self.own_buffer(device, mesh, 64 * 3 * 6 * 4)),
+        };
+        let edge_vertices = match self.kind {
+            Kind::Tetrahedra => own.as_ref().unwrap_or(&mesh.edge_vertices),
+            _ => &mesh.edge_vertices,
+        };
         let group =
             |pipeline, buffers: &[(u32, &wgpu::Buffer)]| bind_buffers(device, self.label, pipeline, buffers);
+        let mut vertices = vec![
+            (bindings::GRID, &scene.grid),
+            (bindings::COUNTERS, &mesh.counters),
+            (bindings::ACTIVE_BLOCKS, &mesh.active_blocks),
+            (bindings::BLOCK_VALUES, &mesh.block_values),
+            (bindings::EDGE_VERTICES, edge_vertices),
+            (bindings::VERTICES, &mesh.vertices),
+            (bindings::ACTIVE_CELLS, &mesh.active_cells),
+        ];
         let mut triangles = vec![
             (bindings::GRID, &scene.grid),
             (bindings::COUNTERS, &mesh.counters),
@@ -148,64 +183,76 @@ impl MarchingPass {
             (bindings::INDICES, &mesh.indices),
             (bindings::ACTIVE_CELLS, &mesh.active_cells),
         ];
-        triangles.extend(match self.kind {
-            Kind::Cubes => {
-                vec![(bindings::TRIANGLE_TABLE, &self.table), (bindings::CELL_CASES, &mesh.cell_cases)]
-            }
-            Kind::Tetrahedra => {
-                vec![(bindings::TETRA_TABLE, &self.table), (bindings::CELL_CASES, &mesh.cell_cases)]
-            }
-            Kind::Dual => vec![
-                (bindings::SPHERES, &scene.spheres),
-                (bindings::BLOCK_VALUES, &mesh.block_values),
-                (bindings::VERTICES, &mesh.vertices),
-                (bindings::LOD_DATA, &mesh.lod_data),
-            ],
-        });
-        self.groups = Some([
-            group(
-                &self.vertices,
-                &[
-                    (bindings::GRID, &scene.grid),
-                    (bindings::SPHERES, &scene.spheres),
-                    (bindings::COUNTERS, &mesh.counters),
-                    (bindings::ACTIVE_BLOCKS, &mesh.active_blocks),
+        let mut groups = Vec::new();
+        match (self.kind, &own, &self.crossings) {
+            (Kind::Dual, Some(crossings), Some(first)) => {
+                let kept = (bindings::EDGE_CROSSINGS, crossings);
+                groups.push(group(
+                    first,
+                    &[
+                        (bindings::GRID, &scene.grid),
+                        (bindings::SPHERES, &scene.spheres),
+                        (bindings::COUNTERS, &mesh.counters),
+                        (bindings::ACTIVE_BLOCKS, &mesh.active_blocks),
+                        (bindings::BLOCK_SLOTS, &mesh.block_slots),
+                        (bindings::BLOCK_VALUES, &mesh.block_values),
+                        (bindings::ACTIVE_CELLS, &mesh.active_cells),
+                        kept,
+                    ],
+                ));
+                vertices.extend([(bindings::BLOCK_SLOTS, &mesh.block_slots), kept]);
+                triangles.extend([
                     (bindings::BLOCK_VALUES, &mesh.block_values),
-                    (bindings::EDGE_VERTICES, edge_vertices),
                     (bindings::VERTICES, &mesh.vertices),
-                    (bindings::ACTIVE_CELLS, &mesh.active_cells),
-                ],
-            ),
-            group(&self.triangles, &triangles),
-            group(
-                &self.finalize,
-                &[
-                    (bindings::GRID, &scene.grid),
-                    (bindings::COUNTERS, &mesh.counters),
-                    (bindings::DRAW_ARGS, &mesh.draw_args),
-                ],
-            ),
-        ]);
+                    (bindings::LOD_DATA, &mesh.lod_data),
+                    kept,
+                ]);
+            }
+            (Kind::Tetrahedra, ..) => {
+                vertices.push((bindings::SPHERES, &scene.spheres));
+                triangles
+                    .extend([(bindings::TETRA_TABLE, &self.table), (bindings::CELL_CASES, &mesh.cell_cases)]);
+            }
+            _ => {
+                vertices.push((bindings::SPHERES, &scene.spheres));
+                triangles.extend([
+                    (bindings::TRIANGLE_TABLE, &self.table),
+                    (bindings::CELL_CASES, &mesh.cell_cases),
+                ]);
+            }
+        }
+        groups.push(group(&self.vertices, &vertices));
+        groups.push(group(&self.triangles, &triangles));
+        groups.push(group(
+            &self.finalize,
+            &[
+                (bindings::GRID, &scene.grid),
+                (bindings::COUNTERS, &mesh.counters),
+                (bindings::DRAW_ARGS, &mesh.draw_args),
+            ],
+        ));
+        self.groups = groups;
     }
 
-    /// Vertices, then triangles, then the draw arguments, over the active cells.
+    /// (With the dual methods, the crossings, then) vertices, then triangles, then the draw arguments,
+    /// over the active cells.
     pub fn encode(
         &self,
         encoder: &mut wgpu::CommandEncoder,
         mesh: &MeshBuffers,
         timestamp_writes: Option<wgpu::ComputePassTimestampWrites>,
     ) {
-        let [vertices, triangles, finalize] = self.groups.as_ref().expect("MarchingPass::bind before encode");
+        assert!(!self.groups.is_empty(), "MarchingPass::bind before encode");
         let mut pass = encoder
             .begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some(self.label), timestamp_writes });
-        pass.set_pipeline(&self.vertices);
-        pass.set_bind_group(0, vertices, &[]);
-        pass.dispatch_workgroups_indirect(&mesh.cell_dispatch, 0);
-        pass.set_pipeline(&self.triangles);
-        pass.set_bind_group(0, triangles, &[]);
-        pass.dispatch_workgroups_indirect(&mesh.cell_dispatch, 0);
+        let pipelines = self.crossings.iter().chain([&self.vertices, &self.triangles]);
+        for (pipeline, group) in pipelines.zip(&self.groups) {
+            pass.set_pipeline(pipeline);
+            pass.set_bind_group(0, group, &[]);
+            pass.dispatch_workgroups_indirect(&mesh.cell_dispatch, 0);
+        }
         pass.set_pipeline(&self.finalize);
-        pass.set_bind_group(0, finalize, &[]);
+        pass.set_bind_group(0, self.groups.last(), &[]);
         pass.dispatch_workgroups(1, 1, 1);
     }
 }
