@@ -219,6 +219,31 @@ function colourShare(figure, colour) {
   }, colour);
 }
 
+test('the lecture cuts cells into tetrahedra both ways, beside marching cubes on the same spheres', async () => {
+  const { page, errors } = await open('www/examples/lecture.html');
+  const figure = '#tetrahedra metaballs-view';
+  await page.$eval('#tetrahedra', (e) => e.scrollIntoView());
+  const settled = async (before) => {
+    await page.waitForFunction(([sel, b]) => {
+      const s = document.querySelector(sel).stats;
+      return s.triangles > 0 && s.triangles !== b;
+    }, [figure, before], { timeout: 60000 });
+    return page.$eval(figure, (e) => ({ adapter: e.stats.adapter, triangles: e.stats.triangles }));
+  };
+  const six = await settled(0);
+  assert.match(six.adapter, /TETRAHEDRA/);
+  await page.locator('#tetrahedra').screenshot({ path: path.join(outputDir, 'e2e-lecture-tetrahedra-six.png') });
+  await page.$eval(figure, (e) => e.setAttribute('split', 'five'));
+  const five = await settled(six.triangles);
+  await page.locator('#tetrahedra').screenshot({ path: path.join(outputDir, 'e2e-lecture-tetrahedra-five.png') });
+  await page.$eval(figure, (e) => e.setAttribute('method', 'marching_cubes'));
+  const cubes = await settled(five.triangles);
+  console.log(`tetrahedra: six ${six.triangles}, five ${five.triangles}, marching cubes ${cubes.triangles} triangles`);
+  // Five tetrahedra a cell cut fewer triangles than six, and both more than marching cubes.
+  assert.ok(six.triangles > five.triangles && five.triangles > cubes.triangles, JSON.stringify([six, five, cubes]));
+  assert.deepEqual(errors, []);
+});
+
 test('the lecture compares the kernels on the same spheres, each measured against its own exact surface', async () => {
   const { page, errors, figures, shot } = await lectureTrio('kernels');
   await shot('lecture-kernels');
