@@ -38,6 +38,23 @@ fn active_cell(workgroup: vec3<u32>, local: u32) -> u32 {
     return active_cells[id];
 }
 
+// An active cell as the per-cell passes read it: `reference` as in active_cells (INVALID for an
+// invocation past the last, whose other fields mean nothing), its block's slot, its place in its block
+// and in the grid.
+struct Active {
+    reference: u32,
+    slot: u32,
+    at: vec3<u32>,
+    cell: vec3<u32>,
+}
+
+fn active_at(workgroup: vec3<u32>, local: u32) -> Active {
+    let reference = active_cell(workgroup, local);
+    let slot = select(reference / 64u, 0u, reference == INVALID);
+    let at = local_cell(reference % 64u);
+    return Active(reference, slot, at, block_coords(active_blocks[slot]) * BLOCK_CELLS + at);
+}
+
 fn write_vertex(index: u32, p: vec3<f32>, n: vec3<f32>) {
     let o = index * 6u;
     vertices[o] = p.x;
@@ -89,16 +106,12 @@ fn owned_segment(cell: vec3<u32>, k: u32) -> Segment {
 // slots a cell (INVALID where a segment is not crossed or the budget was full). A crossed segment's
 // lowest corner is always an active cell's, so every vertex is made once.
 fn make_owned_vertices(workgroup: vec3<u32>, index: u32, count: u32, per_cell: u32) {
-    let reference = active_cell(workgroup, index);
-    if (reference == INVALID) {
-        return;
-    }
-    let slot = reference / 64u;
-    let local = reference % 64u;
-    let at = local_cell(local);
-    let cell = block_coords(active_blocks[slot]) * BLOCK_CELLS + at;
+    let a = active_at(workgroup, index);
+    let slot = a.slot;
+    let at = a.at;
+    let cell = a.cell;
     // The segments' vertices of a block past the buffer's room are not made.
-    if ((slot * 64u + local + 1u) * per_cell > arrayLength(&edge_vertices)) {
+    if (a.reference == INVALID || (a.reference + 1u) * per_cell > arrayLength(&edge_vertices)) {
         return;
     }
     var crossed = 0u;
@@ -123,7 +136,7 @@ fn make_owned_vertices(workgroup: vec3<u32>, index: u32, count: u32, per_cell: u
             }
             next += 1u;
         }
-        edge_vertices[(slot * 64u + local) * per_cell + k] = index;
+        edge_vertices[a.reference * per_cell + k] = index;
     }
 }
 

@@ -225,13 +225,13 @@ fn read_crossing(record: u32) -> EdgeVertex {
 
 @compute @workgroup_size(64)
 fn make_dual_crossings(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_invocation_index) index: u32) {
-    let reference = active_cell(workgroup, index);
-    if (reference == INVALID) {
+    let a = active_at(workgroup, index);
+    if (a.reference == INVALID) {
         return;
     }
-    let slot = reference / 64u;
-    let at = local_cell(reference % 64u);
-    let cell = block_coords(active_blocks[slot]) * BLOCK_CELLS + at;
+    let slot = a.slot;
+    let at = a.at;
+    let cell = a.cell;
     for (var axis = 0u; axis < 3u; axis++) {
         let fa = value_at(slot, at);
         let fb = value_at(slot, at + unit(axis));
@@ -250,13 +250,13 @@ fn make_dual_crossings(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(loc
 
 @compute @workgroup_size(64)
 fn make_dual_vertices(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_invocation_index) index: u32) {
-    let reference = active_cell(workgroup, index);
-    if (reference == INVALID || (reference + 1u) * 3u > arrayLength(&edge_vertices)) {
+    let a = active_at(workgroup, index);
+    if (a.reference == INVALID || (a.reference + 1u) * 3u > arrayLength(&edge_vertices)) {
         return;
     }
-    let slot = reference / 64u;
-    let at = local_cell(reference % 64u);
-    let cell = block_coords(active_blocks[slot]) * BLOCK_CELLS + at;
+    let slot = a.slot;
+    let at = a.at;
+    let cell = a.cell;
     var points: array<vec3<f32>, 12>;
     var normals: array<vec3<f32>, 12>;
     var count = 0u;
@@ -306,8 +306,8 @@ fn make_dual_vertices(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(loca
             vertex = INVALID;
         }
     }
-    edge_vertices[reference * 3u] = vertex;
-    edge_vertices[reference * 3u + 1u] = mark;
+    edge_vertices[a.reference * 3u] = vertex;
+    edge_vertices[a.reference * 3u + 1u] = mark;
 }
 
 fn vertex_position(i: u32) -> vec3<f32> {
@@ -321,13 +321,13 @@ fn cell_mark(cell: vec3<u32>) -> u32 {
 
 @compute @workgroup_size(64)
 fn make_dual_quads(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_invocation_index) index: u32) {
-    let reference = active_cell(workgroup, index);
-    if (reference == INVALID) {
+    let a = active_at(workgroup, index);
+    if (a.reference == INVALID) {
         return;
     }
-    let slot = reference / 64u;
-    let at = local_cell(reference % 64u);
-    let cell = block_coords(active_blocks[slot]) * BLOCK_CELLS + at;
+    let slot = a.slot;
+    let at = a.at;
+    let cell = a.cell;
     let first_crossing = min(atomicLoad(&counters.vertices), grid.max_vertices);
     for (var axis = 0u; axis < 3u; axis++) {
         let fa = value_at(slot, at);

@@ -40,15 +40,13 @@ fn make_vertices(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_inv
 
 @compute @workgroup_size(64)
 fn make_triangles(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_invocation_index) index: u32) {
-    let reference = active_cell(workgroup, index);
-    if (reference == INVALID) {
+    let a = active_at(workgroup, index);
+    if (a.reference == INVALID) {
         return;
     }
-    let slot = reference / 64u;
-    let local = reference % 64u;
     // The cell's case and, with the decider, its choices on its ambiguous faces and, with MC33, its
     // interior's join pick its variant.
-    let cell_entry = cell_cases[reference];
+    let cell_entry = cell_cases[a.reference];
     let chosen = ((cell_entry >> CHOSEN_SHIFT) & 0x3fu) * INTERIOR_CODES + ((cell_entry >> INTERIOR_SHIFT) & 7u);
     let variant = triangle_table[triangle_table[cell_entry & CASE_BITS] + chosen];
     let first_triangle = variant >> 8u;
@@ -56,7 +54,7 @@ fn make_triangles(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_in
     if (triangle_count == 0u) {
         return;
     }
-    let cell = block_coords(active_blocks[slot]) * BLOCK_CELLS + local_cell(local);
+    let cell = a.cell;
     // Part way through the march, the cells not reached yet give no triangles.
     if (!marched(cell)) {
         return;

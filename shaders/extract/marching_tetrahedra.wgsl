@@ -40,13 +40,12 @@ fn segment_vertex(cell: vec3<u32>, c: u32, d: u32) -> u32 {
 
 @compute @workgroup_size(64)
 fn make_tetra_triangles(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_invocation_index) index: u32) {
-    let reference = active_cell(workgroup, index);
-    if (reference == INVALID) {
+    let a = active_at(workgroup, index);
+    if (a.reference == INVALID) {
         return;
     }
-    let slot = reference / 64u;
-    let cell = block_coords(active_blocks[slot]) * BLOCK_CELLS + local_cell(reference % 64u);
-    let inside = cell_cases[reference] & CASE_BITS;
+    let cell = a.cell;
+    let inside = cell_cases[a.reference] & CASE_BITS;
     let row = select(0u, 1u + u32(odd(cell)), five_way());
     let count = select(6u, 5u, five_way());
     var cases: array<u32, 6>;
