@@ -1,6 +1,6 @@
 // Shared by the compute passes: the grid, the spheres, the field, and the blocks of cells that
-// empty-space skipping works on. Mirrors `GridUniform` and `Counters` in src/extract/uniforms.rs and the oracle
-// in src/extract/reference.rs.
+// empty-space skipping works on. Mirrors `GridUniform` and `Counters` (with `CounterBlock`'s next three
+// words) in src/extract/uniforms.rs and the oracle in src/extract/reference.rs.
 
 struct Grid {
     box_min: vec3<f32>,
@@ -16,7 +16,8 @@ struct Grid {
     // Bit 0: vertices at edge midpoints (else interpolated); bit 1: blend by max (else sum); bit 2:
     // ambiguous faces joined by the asymptotic decider (else the classic table); bit 3: and the cell's
     // interior resolved too (MC33); bits 4 and 5 (KERNEL_SHIFT): the kernel; bit 6 (FLAG_FIVE in
-    // extract/cells.wgsl): marching tetrahedra cuts cells into five tetrahedra.
+    // extract/cells.wgsl): marching tetrahedra cuts cells into five tetrahedra; bit 7 (FLAG_QEF in
+    // extract/dual.wgsl): the dual pass places vertices by dual contouring (else surface nets).
     flags: u32,
     // The step-through of the march: only the cells up to this one (x fastest, then y, then z) give
     // triangles; all of them when it is u32's largest value on each axis.

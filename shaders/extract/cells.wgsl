@@ -1,6 +1,6 @@
-// What the per-cell passes of both marching methods share (marching_cubes.wgsl and
-// marching_tetrahedra.wgsl follow it in one module): the mesh buffers, the active cell an invocation
-// works on, the vertices the cells own, and the indexed indirect draw.
+// What the per-cell passes share (marching_cubes.wgsl, marching_tetrahedra.wgsl or dual.wgsl follows it
+// in one module): the mesh buffers, the active cell an invocation works on, the vertices the cells own,
+// and the indexed indirect draw.
 
 @group(0) @binding(2) var<storage, read_write> counters: Counters;
 @group(0) @binding(3) var<storage, read> active_blocks: array<u32>;
@@ -11,7 +11,8 @@
 // Slot s, cell c: the case at s * 64 + c.
 @group(0) @binding(7) var<storage, read> cell_cases: array<u32>;
 // Slot s, cell c, the k-th of the PER_CELL vertices a cell owns: the vertex at (s * 64 + c) * PER_CELL + k
-// (INVALID where the budget was full).
+// (INVALID where the budget was full). The dual methods keep each cell's one vertex in slot 0 and its
+// QEF's mark in slot 1.
 @group(0) @binding(10) var<storage, read_write> edge_vertices: array<u32>;
 // Per vertex, 6 floats: position, then outward normal.
 @group(0) @binding(11) var<storage, read_write> vertices: array<f32>;

@@ -31,8 +31,8 @@ const JACOBI_SWEEPS: u32 = 8u;
 const NO_ENERGY: f32 = 3.0e38;
 
 @group(0) @binding(14) var<storage, read_write> lod_data: array<u32>;
-// Slot s, cell c, axis k: the crossing on the edge leaving the cell's lowest corner along k, position
-// then normal, at ((s * 64 + c) * 3 + k) * 6.
+// Slot s, cell c, axis k: the crossing on the edge leaving the cell's lowest corner along k, at
+// ((s * 64 + c) * 3 + k) * 3: its parameter along the edge, then its normal in octahedral coordinates.
 @group(0) @binding(24) var<storage, read_write> edge_crossings: array<f32>;
 
 fn qef_on() -> bool {
@@ -42,9 +42,15 @@ fn qef_on() -> bool {
 // The crossing on the edge from grid point `a` to `b`: with surface nets, marching cubes' vertex; with
 // dual contouring, where the field itself crosses iso (Illinois regula falsi from the samples'
 // interpolation) and its outward normal there, the Hermite data (`hermite` in hermite.rs).
-fn crossing(a: vec3<u32>, b: vec3<u32>, fa: f32, fb: f32) -> EdgeVertex {
+struct Crossing {
+    // Its parameter along the edge, from a (0) to b (1).
+    along: f32,
+    normal: vec3<f32>,
+}
+
+fn crossing(a: vec3<u32>, b: vec3<u32>, fa: f32, fb: f32) -> Crossing {
     if (!qef_on() || (grid.flags & FLAG_MIDPOINT) != 0u || is_boundary(a) || is_boundary(b)) {
-        return edge_vertex(a, b, fa, fb);
+        return Crossing(edge_parameter(fa, fb), edge_vertex(a, b, fa, fb).normal);
     }
     let pa = grid_point(a);
     let pb = grid_point(b);
@@ -81,14 +87,14 @@ fn crossing(a: vec3<u32>, b: vec3<u32>, fa: f32, fb: f32) -> EdgeVertex {
             last = 1;
         }
     }
-    let p = pa + (pb - pa) * clamp(t, EDGE_MARGIN, 1.0 - EDGE_MARGIN);
-    let g = outward_gradient(p);
+    let along = clamp(t, EDGE_MARGIN, 1.0 - EDGE_MARGIN);
+    let g = outward_gradient(pa + (pb - pa) * along);
     let len2 = dot(g, g);
     var n = normalize(select(pa - pb, pb - pa, fa > grid.iso));
     if (len2 > 0.0) {
         n = g * inverseSqrt(len2);
     }
-    return EdgeVertex(p, n);
+    return Crossing(along, n);
 }
 
 // The eigenvalues (in the diagonal) and unit eigenvectors (columns of `v`) of a symmetric matrix, by
@@ -175,10 +181,10 @@ fn solve_qef(ata: mat3x3<f32>, atb: vec3<f32>, mass: vec3<f32>, low: vec3<f32>, 
     let trace = ata[0][0] + ata[1][1] + ata[2][2];
     let bias = MASS_BIAS * max(trace, 1.1754944e-38);
     let a = ata + mat3x3<f32>(vec3<f32>(bias, 0.0, 0.0), vec3<f32>(0.0, bias, 0.0), vec3<f32>(0.0, 0.0, bias));
-    let from = wide_low - mass;
-    let to = wide_high - mass;
-    let margin = 1e-6 * max(max(to.x - from.x, to.y - from.y), to.z - from.z);
-    var best = clamp(point - mass, from, to);
+    let lowest = wide_low - mass;
+    let highest = wide_high - mass;
+    let margin = 1e-6 * max(max(highest.x - lowest.x, highest.y - lowest.y), highest.z - lowest.z);
+    var best = clamp(point - mass, lowest, highest);
     var least = NO_ENERGY;
     for (var face = 0u; face < 27u; face++) {
         // 0: free, 1: at the lower bound, 2: at the upper bound, per axis; the system's rows are A's
@@ -189,15 +195,15 @@ fn solve_qef(ata: mat3x3<f32>, atb: vec3<f32>, mass: vec3<f32>, low: vec3<f32>, 
         for (var i = 0u; i < 3u; i++) {
             if (at[i] > 0u) {
                 m[i] = vec3<f32>(unit(i));
-                r[i] = select(to[i], from[i], at[i] == 1u);
+                r[i] = select(highest[i], lowest[i], at[i] == 1u);
             }
         }
         // Rows m[i]: y = (r₀ m₁ × m₂ + r₁ m₂ × m₀ + r₂ m₀ × m₁) / det.
         let det = dot(m[0], cross(m[1], m[2]));
         let y = (r.x * cross(m[1], m[2]) + r.y * cross(m[2], m[0]) + r.z * cross(m[0], m[1])) / det;
         let energy = dot(y, a * y) - 2.0 * dot(y, atb);
-        if (all(abs(y) < vec3<f32>(NO_ENERGY)) && all(y >= from - margin) && all(y <= to + margin) && energy < least) {
-            best = clamp(y, from, to);
+        if (all(abs(y) < vec3<f32>(NO_ENERGY)) && all(y >= lowest - margin) && all(y <= highest + margin) && energy < least) {
+            best = clamp(y, lowest, highest);
             least = energy;
         }
     }
@@ -214,13 +220,32 @@ fn edge_offset(axis: u32, k: u32) -> vec3<u32> {
 fn crossing_slot(cell: vec3<u32>, axis: u32) -> u32 {
     let slot = block_slots[block_index(cell / BLOCK_CELLS)];
     let at = cell % BLOCK_CELLS;
-    let record = ((slot * 64u + at.x + BLOCK_CELLS * (at.y + BLOCK_CELLS * at.z)) * 3u + axis) * 6u;
-    return select(INVALID, record, slot < grid.max_blocks && record + 6u <= arrayLength(&edge_crossings));
+    let record = ((slot * 64u + at.x + BLOCK_CELLS * (at.y + BLOCK_CELLS * at.z)) * 3u + axis) * 3u;
+    return select(INVALID, record, slot < grid.max_blocks && record + 3u <= arrayLength(&edge_crossings));
 }
 
-fn read_crossing(record: u32) -> EdgeVertex {
-    let c = &edge_crossings;
-    return EdgeVertex(vec3<f32>(c[record], c[record + 1u], c[record + 2u]), vec3<f32>(c[record + 3u], c[record + 4u], c[record + 5u]));
+fn signs(v: vec2<f32>) -> vec2<f32> {
+    return select(vec2<f32>(-1.0), vec2<f32>(1.0), v >= vec2<f32>(0.0));
+}
+
+// A unit vector on the octahedron |x| + |y| + |z| = 1, its lower half folded over the upper.
+fn octahedral(n: vec3<f32>) -> vec2<f32> {
+    let p = n.xy / (abs(n.x) + abs(n.y) + abs(n.z));
+    return select(p, (1.0 - abs(p.yx)) * signs(p), n.z < 0.0);
+}
+
+fn from_octahedral(e: vec2<f32>) -> vec3<f32> {
+    let z = 1.0 - abs(e.x) - abs(e.y);
+    return normalize(vec3<f32>(select(e, (1.0 - abs(e.yx)) * signs(e), z < 0.0), z));
+}
+
+// The crossing kept at `record` on the edge leaving `cell` along `axis`: its point, found again from
+// its parameter exactly as `crossing` found it, and its normal.
+fn read_crossing(cell: vec3<u32>, axis: u32, record: u32) -> EdgeVertex {
+    let pa = grid_point(cell);
+    let pb = grid_point(cell + unit(axis));
+    let p = pa + (pb - pa) * edge_crossings[record];
+    return EdgeVertex(p, from_octahedral(vec2<f32>(edge_crossings[record + 1u], edge_crossings[record + 2u])));
 }
 
 @compute @workgroup_size(64)
@@ -238,12 +263,10 @@ fn make_dual_crossings(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(loc
         let record = crossing_slot(cell, axis);
         if ((fa > grid.iso) != (fb > grid.iso) && record != INVALID) {
             let c = crossing(cell, cell + unit(axis), fa, fb);
-            edge_crossings[record] = c.position.x;
-            edge_crossings[record + 1u] = c.position.y;
-            edge_crossings[record + 2u] = c.position.z;
-            edge_crossings[record + 3u] = c.normal.x;
-            edge_crossings[record + 4u] = c.normal.y;
-            edge_crossings[record + 5u] = c.normal.z;
+            let e = octahedral(c.normal);
+            edge_crossings[record] = c.along;
+            edge_crossings[record + 1u] = e.x;
+            edge_crossings[record + 2u] = e.y;
         }
     }
 }
@@ -270,7 +293,7 @@ fn make_dual_vertices(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(loca
                 // The edge's lowest corner is a crossed cell's, whose crossing it is.
                 let record = crossing_slot(cell + o, axis);
                 lost = lost || record == INVALID;
-                let c = read_crossing(select(record, 0u, record == INVALID));
+                let c = read_crossing(cell + o, axis, select(record, 0u, record == INVALID));
                 points[count] = c.position;
                 normals[count] = c.normal;
                 mass += c.position;
@@ -341,7 +364,7 @@ fn make_dual_quads(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_i
             // The edge's crossing, for display=normals, after the mesh's vertices where there is room.
             let record = first_crossing + atomicAdd(&counters.crossings, 1u);
             if (record < grid.max_vertices) {
-                let c = read_crossing(kept);
+                let c = read_crossing(cell, axis, kept);
                 write_vertex(record, c.position, c.normal);
             }
         }
@@ -381,7 +404,7 @@ fn make_dual_quads(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_i
             }
             write_triangle(first + 3u * t, triangle);
             let triangle_index = first / 3u + t;
-            if (qef_on() && triangle_index < arrayLength(&lod_data)) {
+            if (qef_on() && triangle_index < min(grid.max_indices / 3u, arrayLength(&lod_data))) {
                 lod_data[triangle_index] = mark;
             }
         }

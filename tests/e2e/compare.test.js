@@ -241,6 +241,9 @@ test('the lecture cuts cells into tetrahedra both ways, beside marching cubes on
   console.log(`tetrahedra: six ${six.triangles}, five ${five.triangles}, marching cubes ${cubes.triangles} triangles`);
   // Five tetrahedra a cell cut fewer triangles than six, and both more than marching cubes.
   assert.ok(six.triangles > five.triangles && five.triangles > cubes.triangles, JSON.stringify([six, five, cubes]));
+  // The counts the figure's caption gives.
+  const caption = await page.textContent('#tetrahedra figcaption');
+  for (const { triangles } of [six, five, cubes]) assert.ok(caption.includes(triangles.toLocaleString('en')), `${triangles}: ${caption}`);
   assert.deepEqual(errors, []);
 });
 

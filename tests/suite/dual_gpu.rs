@@ -1,6 +1,8 @@
 //! The dual methods in compute shaders (`shaders/extract/dual.wgsl`) against their CPU meshers
 //! (`core/src/extract/cpu/dual.rs`, the methods' reference) on the scenes every extractor meets: the
-//! same vertex in each crossed cell, the same quads, and with dual contouring the same QEF marks.
+//! same vertex in each crossed cell, the same quads facing the same way, split along the same diagonal
+//! but where the two are as long to rounding. The QEF's marks are compared as the rank view draws them
+//! (`dual::dual_contourings_views_show_…`).
 
 use crate::common;
 
@@ -11,6 +13,7 @@ use metaballs::extract::mesh::IndexedMesh;
 use metaballs::extract::reference::Grid;
 use metaballs::scene::params::view::{MeshOn, Method};
 use metaballs::{Scene, Settings};
+use std::collections::HashSet;
 
 /// For each vertex of `ours`, the vertex of `theirs` nearest it, and how far it lies.
 fn nearest(ours: &IndexedMesh, theirs: &IndexedMesh) -> Vec<(usize, f32)> {
@@ -46,6 +49,12 @@ fn quads(triangles: &[[u32; 3]]) -> Vec<[u32; 4]> {
     quads
 }
 
+/// A triangle turned so that its least corner comes first (the same triangle, facing the same way).
+fn turned(t: [u32; 3]) -> [u32; 3] {
+    let first = (0..3).min_by_key(|&i| t[i]).unwrap();
+    std::array::from_fn(|i| t[(first + i) % 3])
+}
+
 #[test]
 fn the_dual_methods_on_the_gpu_equal_their_cpu_meshers() {
     let scenes = oracle_scenes(40);
@@ -53,7 +62,7 @@ fn the_dual_methods_on_the_gpu_equal_their_cpu_meshers() {
         for (method, name) in
             [(Method::SurfaceNets, "gpu-surface-nets"), (Method::DualContouring, "gpu-dual-contouring")]
         {
-            let (mut with_surface, mut largest) = (0, 0.0f32);
+            let (mut with_surface, mut largest, mut ties) = (0, 0.0f32, 0);
             for scene in &scenes {
                 let what = format!("{name}: {}", scene.what);
                 let terms = scene.construction.terms;
@@ -95,12 +104,27 @@ fn the_dual_methods_on_the_gpu_equal_their_cpu_meshers() {
                         "{what}: two vertices on one of the CPU's"
                     );
                 }
+                let apart = matched.iter().fold(0.0f32, |m, &(_, d)| m.max(d));
                 let mapped: Vec<[u32; 3]> =
                     ours.triangles.iter().map(|t| t.map(|i| matched[i as usize].0 as u32)).collect();
                 assert_eq!(quads(&mapped), quads(&theirs.triangles), "{what}: the quads differ");
+                // Each quad split along the CPU's diagonal, unless its diagonals are as long to rounding.
+                let split: HashSet<[u32; 3]> = theirs.triangles.iter().map(|t| turned(*t)).collect();
+                for pair in mapped.chunks_exact(2) {
+                    if !pair.iter().all(|t| split.contains(&turned(*t))) {
+                        let [a, b, c, d] = quads(pair)[0].map(|i| theirs.positions[i as usize]);
+                        // With each corner within δ of the CPU's, |ac|² − |bd|² moves by at most
+                        // 4δ (|ac| + |bd|) + 8δ².
+                        let (ac, bd) = (a.distance(c), b.distance(d));
+                        let bound = 4.0 * apart * (ac + bd) + 8.0 * apart * apart + 1e-6 * cell * cell;
+                        assert!((ac * ac - bd * bd).abs() <= bound, "{what}: a quad split the other way");
+                        ties += 1;
+                    }
+                }
             }
             println!(
-                "{name}: {with_surface} scenes with a surface; vertices at most {largest:.2e} cells apart"
+                "{name}: {with_surface} scenes with a surface; vertices at most {largest:.2e} cells apart; \
+                 {ties} quads split the other way at a tie"
             );
             assert!(with_surface >= 30, "{name}: only {with_surface} scenes had a surface");
         }

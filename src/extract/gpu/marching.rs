@@ -153,11 +153,11 @@ impl MarchingPass {
     /// Binds the passes to new buffers.
     pub fn bind(&mut self, device: &wgpu::Device, scene: &SceneBuffers, mesh: &MeshBuffers) {
         // Tetrahedra's vertices on seven segments a cell; the dual methods' crossings on three edges a
-        // cell, six floats each.
+        // cell, three floats each (2,304 bytes a block: at 128 MiB a binding, 58,254 blocks).
         let own = match self.kind {
             Kind::Cubes => None,
             Kind::Tetrahedra => Some(self.own_buffer(device, mesh, 64 * SLOTS as u64 * 4)),
-            Kind::Dual => Some(self.own_buffer(device, mesh, 64 * 3 * 6 * 4)),
+            Kind::Dual => Some(self.own_buffer(device, mesh, 64 * 3 * 3 * 4)),
         };
         let edge_vertices = match self.kind {
             Kind::Tetrahedra => own.as_ref().unwrap_or(&mesh.edge_vertices),
