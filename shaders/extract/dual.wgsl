@@ -254,15 +254,12 @@ fn make_dual_crossings(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(loc
     if (a.reference == INVALID) {
         return;
     }
-    let slot = a.slot;
-    let at = a.at;
-    let cell = a.cell;
     for (var axis = 0u; axis < 3u; axis++) {
-        let fa = value_at(slot, at);
-        let fb = value_at(slot, at + unit(axis));
-        let record = crossing_slot(cell, axis);
+        let fa = value_at(a.slot, a.at);
+        let fb = value_at(a.slot, a.at + unit(axis));
+        let record = crossing_slot(a.cell, axis);
         if ((fa > grid.iso) != (fb > grid.iso) && record != INVALID) {
-            let c = crossing(cell, cell + unit(axis), fa, fb);
+            let c = crossing(a.cell, a.cell + unit(axis), fa, fb);
             let e = octahedral(c.normal);
             edge_crossings[record] = c.along;
             edge_crossings[record + 1u] = e.x;
@@ -277,9 +274,6 @@ fn make_dual_vertices(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(loca
     if (a.reference == INVALID || (a.reference + 1u) * 3u > arrayLength(&edge_vertices)) {
         return;
     }
-    let slot = a.slot;
-    let at = a.at;
-    let cell = a.cell;
     var points: array<vec3<f32>, 12>;
     var normals: array<vec3<f32>, 12>;
     var count = 0u;
@@ -289,11 +283,11 @@ fn make_dual_vertices(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(loca
     for (var axis = 0u; axis < 3u; axis++) {
         for (var k = 0u; k < 4u; k++) {
             let o = edge_offset(axis, k);
-            if ((value_at(slot, at + o) > grid.iso) != (value_at(slot, at + o + unit(axis)) > grid.iso)) {
+            if ((value_at(a.slot, a.at + o) > grid.iso) != (value_at(a.slot, a.at + o + unit(axis)) > grid.iso)) {
                 // The edge's lowest corner is a crossed cell's, whose crossing it is.
-                let record = crossing_slot(cell + o, axis);
+                let record = crossing_slot(a.cell + o, axis);
                 lost = lost || record == INVALID;
-                let c = read_crossing(cell + o, axis, select(record, 0u, record == INVALID));
+                let c = read_crossing(a.cell + o, axis, select(record, 0u, record == INVALID));
                 points[count] = c.position;
                 normals[count] = c.normal;
                 mass += c.position;
@@ -313,7 +307,7 @@ fn make_dual_vertices(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(loca
             ata += mat3x3<f32>(n * n.x, n * n.y, n * n.z);
             atb += n * dot(n, points[i] - mass);
         }
-        let solved = solve_qef(ata, atb, mass, grid_point(cell), grid_point(cell + 1u), SLACK * grid.cell_size);
+        let solved = solve_qef(ata, atb, mass, grid_point(a.cell), grid_point(a.cell + 1u), SLACK * grid.cell_size);
         p = solved.point;
         mark = solved.mark;
     }
@@ -348,33 +342,30 @@ fn make_dual_quads(@builtin(workgroup_id) workgroup: vec3<u32>, @builtin(local_i
     if (a.reference == INVALID) {
         return;
     }
-    let slot = a.slot;
-    let at = a.at;
-    let cell = a.cell;
     let first_crossing = min(atomicLoad(&counters.vertices), grid.max_vertices);
     for (var axis = 0u; axis < 3u; axis++) {
-        let fa = value_at(slot, at);
-        let fb = value_at(slot, at + unit(axis));
+        let fa = value_at(a.slot, a.at);
+        let fb = value_at(a.slot, a.at + unit(axis));
         let inside = fa > grid.iso;
         if (inside == (fb > grid.iso)) {
             continue;
         }
-        let kept = crossing_slot(cell, axis);
+        let kept = crossing_slot(a.cell, axis);
         if (qef_on() && kept != INVALID) {
             // The edge's crossing, for display=normals, after the mesh's vertices where there is room.
             let record = first_crossing + atomicAdd(&counters.crossings, 1u);
             if (record < grid.max_vertices) {
-                let c = read_crossing(cell, axis, kept);
+                let c = read_crossing(a.cell, axis, kept);
                 write_vertex(record, c.position, c.normal);
             }
         }
         let u = unit((axis + 1u) % 3u);
         let v = unit((axis + 2u) % 3u);
-        if (dot(cell, u) == 0u || dot(cell, v) == 0u) {
+        if (dot(a.cell, u) == 0u || dot(a.cell, v) == 0u) {
             continue;
         }
         // The four cells around the edge, counter-clockwise seen from +axis.
-        let cells = array<vec3<u32>, 4>(cell - u - v, cell - v, cell, cell - u);
+        let cells = array<vec3<u32>, 4>(a.cell - u - v, a.cell - v, a.cell, a.cell - u);
         var around: array<u32, 4>;
         var marks: array<u32, 4>;
         var lost = false;
